@@ -1,0 +1,13 @@
+// The subcommands of xval. Each add*Command registers its options on `app`
+// and sets `run` to its action when it is the subcommand chosen.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+
+namespace xval::cli {
+
+void addRenderCommand(CLI::App& app, std::function<int()>& run);
+
+}  // namespace xval::cli

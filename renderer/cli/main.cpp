@@ -1,0 +1,39 @@
+// xval: the toolkit's command-line tool. One subcommand per file
+// (cli/cmd_*.cpp); this file only wires them together.
+//
+// Exit status: 0 success; 1 the command failed (bad scene, I/O error, ...);
+// 2 bad command line.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+
+#include "cli/commands.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "xval: cross-validates lighting models between a reference renderer, POV-Ray and "
+      "Blender.\nScene files are JSON (docs/scene-format.md)."};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "xval 0.1.0");
+  std::function<int()> run;
+  xval::cli::addRenderCommand(app, run);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  }
+  try {
+    return run();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "xval: error: %s\n", e.what());
+    return 1;
+  }
+}

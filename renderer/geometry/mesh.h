@@ -1,0 +1,34 @@
+// TriangleMesh: the one geometry representation every renderer consumes.
+//
+// Every shape is tessellated to this; the reference renderer, the POV-Ray
+// mesh2 and the glTF buffers hold exactly these positions, normals, uvs and
+// triangles. Triangles wind counter-clockwise seen from the side their
+// vertex normals point to. uv follows glTF: (0,0) is the image's top-left
+// texel corner, v runs down the image.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace xval {
+
+struct TriangleMesh {
+  std::vector<glm::dvec3> positions;
+  std::vector<glm::dvec3> normals;  // unit length
+  std::vector<glm::dvec2> uvs;
+  std::vector<glm::u32vec3> triangles;
+
+  size_t vertexCount() const { return positions.size(); }
+  size_t triangleCount() const { return triangles.size(); }
+};
+
+TriangleMesh tessellateTorusKnot(const TorusKnot& k);
+TriangleMesh tessellateSphere(const UvSphere& s);
+TriangleMesh tessellatePlane(const Plane& p);
+TriangleMesh tessellate(const Shape& shape);
+
+}  // namespace xval

@@ -1,0 +1,38 @@
+// Image: what every renderer returns, in memory.
+//
+// rgba: the final colour (each sample saturated to [0,1], as the paper's
+// render target did, then box-filtered over the pixel's samples) with
+// alpha = the fraction of samples that hit geometry; background samples
+// are 0, so colour is premultiplied by coverage. Values are the models'
+// stored-value encoding: no transfer function is applied on output.
+// raw: the same box filter over the unsaturated model colour (for
+// diagnosis; empty when a renderer cannot provide it).
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <vector>
+
+namespace xval {
+
+struct Image {
+  int width = 0, height = 0;
+  std::vector<float> rgba;  // 4 floats per pixel, row 0 at the top
+  std::vector<float> raw;   // 3 floats per pixel, or empty
+
+  Image() = default;
+  Image(int w, int h, bool with_raw)
+      : width(w), height(h), rgba(size_t(w) * h * 4, 0.0f),
+        raw(with_raw ? size_t(w) * h * 3 : 0, 0.0f) {}
+  float* pixel(int x, int y) { return &rgba[(size_t(y) * width + x) * 4]; }
+  const float* pixel(int x, int y) const { return &rgba[(size_t(y) * width + x) * 4]; }
+};
+
+// OpenEXR (32-bit float; channels R,G,B,A and, when present, raw.R, raw.G,
+// raw.B) or, by extension .png, a 16-bit RGB PNG (over black, no alpha)
+// holding round(v * 65535) of the clamped values, no gamma. Throws std::runtime_error naming the file.
+void writeImage(const Image& img, const std::filesystem::path& file);
+// Reads R,G,B,A (and raw.* when present) from any file OpenImageIO reads.
+Image readImage(const std::filesystem::path& file);
+
+}  // namespace xval

@@ -1,0 +1,95 @@
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "image/image.h"
+
+namespace xval {
+
+namespace OIIO = OIIO_NAMESPACE;
+
+namespace {
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+}  // namespace
+
+void writeImage(const Image& img, const std::filesystem::path& file) {
+  const std::string name = file.string();
+  const std::string ext = lower(file.extension().string());
+  if (ext != ".exr" && ext != ".png")
+    throw std::runtime_error(name + ": unsupported output extension \"" + ext +
+                             "\" (expected .exr or .png)");
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+  // Write to a temporary name and rename: an interrupted write never leaves
+  // a file that looks complete.
+  const std::string tmp = name + ".partial" + ext;
+  auto out = OIIO::ImageOutput::create(tmp);
+  if (!out) throw std::runtime_error(name + ": cannot create image writer: " + OIIO::geterror());
+  const size_t n = size_t(img.width) * img.height;
+  bool ok;
+  if (ext == ".exr") {
+    const bool raw = !img.raw.empty();
+    OIIO::ImageSpec spec(img.width, img.height, raw ? 7 : 4, OIIO::TypeDesc::FLOAT);
+    spec.channelnames = {"R", "G", "B", "A"};
+    if (raw) spec.channelnames.insert(spec.channelnames.end(), {"raw.R", "raw.G", "raw.B"});
+    spec.alpha_channel = 3;
+    spec.attribute("compression", "zip");
+    spec.attribute("oiio:ColorSpace", "Linear");
+    std::vector<float> buf(n * spec.nchannels);
+    for (size_t i = 0; i < n; ++i) {
+      std::copy_n(&img.rgba[i * 4], 4, &buf[i * spec.nchannels]);
+      if (raw) std::copy_n(&img.raw[i * 3], 3, &buf[i * spec.nchannels + 4]);
+    }
+    ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::FLOAT, buf.data());
+  } else {
+    // RGB over black (the colour is premultiplied by coverage), no alpha.
+    OIIO::ImageSpec spec(img.width, img.height, 3, OIIO::TypeDesc::UINT16);
+    std::vector<uint16_t> buf(n * 3);
+    for (size_t i = 0; i < n; ++i)
+      for (int c = 0; c < 3; ++c)
+        buf[i * 3 + c] =
+            uint16_t(std::lround(std::clamp(img.rgba[i * 4 + c], 0.0f, 1.0f) * 65535.0f));
+    ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::UINT16, buf.data());
+  }
+  ok = out->close() && ok;
+  if (!ok) {
+    std::filesystem::remove(tmp);
+    throw std::runtime_error(name + ": cannot write image: " + out->geterror());
+  }
+  std::filesystem::rename(tmp, file);
+}
+
+Image readImage(const std::filesystem::path& file) {
+  const std::string name = file.string();
+  auto in = OIIO::ImageInput::open(name);
+  if (!in) throw std::runtime_error(name + ": cannot open image: " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  const int nc = spec.nchannels;
+  std::vector<float> buf(size_t(spec.width) * spec.height * nc);
+  if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, buf.data()))
+    throw std::runtime_error(name + ": cannot read image: " + in->geterror());
+  auto channel = [&spec](const char* c) {
+    for (int i = 0; i < spec.nchannels; ++i)
+      if (spec.channelnames[i] == c) return i;
+    return -1;
+  };
+  int ch[4] = {channel("R"), channel("G"), channel("B"), channel("A")};
+  if (ch[0] < 0 || ch[1] < 0 || ch[2] < 0)
+    throw std::runtime_error(name + ": image has no R, G, B channels");
+  int raw[3] = {channel("raw.R"), channel("raw.G"), channel("raw.B")};
+  bool has_raw = raw[0] >= 0 && raw[1] >= 0 && raw[2] >= 0;
+  Image img(spec.width, spec.height, has_raw);
+  for (size_t i = 0; i < size_t(spec.width) * spec.height; ++i) {
+    for (int c = 0; c < 4; ++c)
+      img.rgba[i * 4 + c] = ch[c] >= 0 ? buf[i * nc + ch[c]] : 1.0f;
+    if (has_raw)
+      for (int c = 0; c < 3; ++c) img.raw[i * 3 + c] = buf[i * nc + raw[c]];
+  }
+  return img;
+}
+
+}  // namespace xval

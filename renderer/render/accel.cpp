@@ -1,0 +1,162 @@
+#include "render/accel.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "render/ray_triangle.h"
+
+namespace xval {
+
+struct Accel::DoubleGeometry {
+  const TriangleMesh* mesh;
+  uint32_t id;
+  float pad;  // outward padding of every box, in scene units
+};
+
+namespace {
+
+// Embree reports errors through a C callback: remember the message, and
+// checkDevice() turns it into an exception on our side of the call.
+void embreeError(void* user, RTCError, const char* str) {
+  *static_cast<std::string*>(user) = str ? str : "unknown error";
+}
+
+// The ray query's context: Embree passes it to the callbacks.
+struct DoubleContext {
+  RTCIntersectContext embree;  // must be first
+  RayShear shear;
+  double best_t;
+  Hit hit;
+};
+
+float roundUp(double v) {
+  float f = float(v);
+  return double(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+float roundDown(double v) {
+  float f = float(v);
+  return double(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+
+void boundsFn(const RTCBoundsFunctionArguments* args) {
+  auto* g = static_cast<const Accel::DoubleGeometry*>(args->geometryUserPtr);
+  const auto& tri = g->mesh->triangles[args->primID];
+  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+  for (int k = 0; k < 3; ++k) {
+    lo = glm::min(lo, g->mesh->positions[tri[k]]);
+    hi = glm::max(hi, g->mesh->positions[tri[k]]);
+  }
+  RTCBounds* b = args->bounds_o;
+  b->lower_x = roundDown(lo.x) - g->pad, b->lower_y = roundDown(lo.y) - g->pad;
+  b->lower_z = roundDown(lo.z) - g->pad;
+  b->upper_x = roundUp(hi.x) + g->pad, b->upper_y = roundUp(hi.y) + g->pad;
+  b->upper_z = roundUp(hi.z) + g->pad;
+}
+
+void intersectFn(const RTCIntersectFunctionNArguments* args) {
+  if (!args->valid[0]) return;
+  auto* g = static_cast<const Accel::DoubleGeometry*>(args->geometryUserPtr);
+  auto* ctx = reinterpret_cast<DoubleContext*>(args->context);
+  const auto& tri = g->mesh->triangles[args->primID];
+  const auto& P = g->mesh->positions;
+  TriangleHit th;
+  if (!intersectTriangle(ctx->shear, P[tri[0]], P[tri[1]], P[tri[2]], 0.0, ctx->best_t, th))
+    return;
+  ctx->best_t = th.t;
+  ctx->hit = {true, g->id, args->primID, th.t, th.b1, th.b2};
+  // Shrink Embree's float t_far conservatively (rounded up, padded).
+  float& tfar = RTCRayN_tfar(reinterpret_cast<RTCRayN*>(args->rayhit), args->N, 0);
+  tfar = std::min(tfar, roundUp(th.t * (1.0 + 1e-6)));
+}
+
+}  // namespace
+
+Accel::Accel(const std::vector<TriangleMesh>& meshes, Precision precision)
+    : precision_(precision) {
+  device_ = rtcNewDevice(nullptr);
+  if (!device_) throw std::runtime_error("Embree: cannot create a device");
+  rtcSetDeviceErrorFunction(device_, embreeError, &error_);
+  scene_ = rtcNewScene(device_);
+  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
+
+  // Padding for the double path: relative to the scene's size.
+  double extent = 0.0;
+  for (const auto& m : meshes)
+    for (const auto& p : m.positions) extent = std::max(extent, glm::length(p));
+
+  for (uint32_t id = 0; id < meshes.size(); ++id) {
+    const TriangleMesh& m = meshes[id];
+    RTCGeometry geom;
+    if (precision == Precision::Float) {
+      geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+      auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+          geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+          m.positions.size()));
+      for (size_t i = 0; i < m.positions.size(); ++i)
+        for (int k = 0; k < 3; ++k) v[i * 3 + k] = float(m.positions[i][k]);
+      auto* ix = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
+          geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t),
+          m.triangles.size()));
+      for (size_t i = 0; i < m.triangles.size(); ++i)
+        for (int k = 0; k < 3; ++k) ix[i * 3 + k] = m.triangles[i][k];
+    } else {
+      double_geoms_.push_back(std::make_unique<DoubleGeometry>(
+          DoubleGeometry{&m, id, float(std::max(extent, 1e-30) * 1e-5)}));
+      geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
+      rtcSetGeometryUserPrimitiveCount(geom, unsigned(m.triangles.size()));
+      rtcSetGeometryUserData(geom, double_geoms_.back().get());
+      rtcSetGeometryBoundsFunction(geom, boundsFn, nullptr);
+      rtcSetGeometryIntersectFunction(geom, intersectFn);
+    }
+    rtcCommitGeometry(geom);
+    rtcAttachGeometryByID(scene_, geom, id);
+    rtcReleaseGeometry(geom);
+  }
+  rtcCommitScene(scene_);
+  if (rtcGetDeviceError(device_) != RTC_ERROR_NONE || !error_.empty())
+    throw std::runtime_error("Embree: building the scene failed: " + error_);
+}
+
+Accel::~Accel() {
+  if (scene_) rtcReleaseScene(scene_);
+  if (device_) rtcReleaseDevice(device_);
+}
+
+Hit Accel::intersect(glm::dvec3 origin, glm::dvec3 dir) const {
+  return precision_ == Precision::Float ? intersectFloat(origin, dir)
+                                        : intersectDouble(origin, dir);
+}
+
+Hit Accel::intersectFloat(glm::dvec3 o, glm::dvec3 d) const {
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  RTCRayHit rh{};
+  rh.ray.org_x = float(o.x), rh.ray.org_y = float(o.y), rh.ray.org_z = float(o.z);
+  rh.ray.dir_x = float(d.x), rh.ray.dir_y = float(d.y), rh.ray.dir_z = float(d.z);
+  rh.ray.tnear = 0.0f;
+  rh.ray.tfar = std::numeric_limits<float>::infinity();
+  rh.ray.mask = 0xFFFFFFFFu;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(scene_, &ctx, &rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return {};
+  return {true, rh.hit.geomID, rh.hit.primID, rh.ray.tfar, rh.hit.u, rh.hit.v};
+}
+
+Hit Accel::intersectDouble(glm::dvec3 o, glm::dvec3 d) const {
+  DoubleContext ctx{{}, RayShear(o, d), std::numeric_limits<double>::infinity(), {}};
+  rtcInitIntersectContext(&ctx.embree);
+  RTCRayHit rh{};
+  rh.ray.org_x = float(o.x), rh.ray.org_y = float(o.y), rh.ray.org_z = float(o.z);
+  rh.ray.dir_x = float(d.x), rh.ray.dir_y = float(d.y), rh.ray.dir_z = float(d.z);
+  rh.ray.tnear = 0.0f;
+  rh.ray.tfar = std::numeric_limits<float>::infinity();
+  rh.ray.mask = 0xFFFFFFFFu;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(scene_, &ctx.embree, &rh);
+  return ctx.hit;
+}
+
+}  // namespace xval

@@ -1,0 +1,55 @@
+// Accel: closest-hit ray queries over the scene's triangle meshes, with
+// Embree's BVH.
+//
+// Float path: Embree's own triangles and single-precision intersection.
+// Double path (the reference): Embree user geometry; Embree traverses its
+// BVH over boxes padded outward (so float rounding of the ray cannot make
+// it skip a box the exact ray enters), and every candidate triangle is
+// tested by the double-precision watertight test (render/ray_triangle.h)
+// against the double ray. The closest double hit wins; the float ray's
+// t_far is only ever shrunk to a value rounded up, so no closer candidate
+// is culled.
+#pragma once
+
+#include <embree3/rtcore.h>
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "geometry/mesh.h"
+#include "scene/scene.h"
+
+namespace xval {
+
+struct Hit {
+  bool hit = false;
+  uint32_t mesh = 0, triangle = 0;
+  double t = 0.0, b1 = 0.0, b2 = 0.0;  // barycentrics of vertices 1 and 2
+};
+
+class Accel {
+ public:
+  Accel(const std::vector<TriangleMesh>& meshes, Precision precision);
+  ~Accel();
+  Accel(const Accel&) = delete;
+  Accel& operator=(const Accel&) = delete;
+
+  Hit intersect(glm::dvec3 origin, glm::dvec3 dir) const;
+
+  struct DoubleGeometry;  // per-mesh data for the user-geometry callbacks
+
+ private:
+  Hit intersectFloat(glm::dvec3 origin, glm::dvec3 dir) const;
+  Hit intersectDouble(glm::dvec3 origin, glm::dvec3 dir) const;
+
+  Precision precision_;
+  RTCDevice device_ = nullptr;
+  RTCScene scene_ = nullptr;
+  std::vector<std::unique_ptr<DoubleGeometry>> double_geoms_;
+  std::string error_;
+};
+
+}  // namespace xval

@@ -1,0 +1,87 @@
+// JsonReader: checked access to one JSON object of a scene file.
+//
+// Every accessor records the key as known; finish() then rejects any key
+// that was never asked for (an unknown field). Every error names the file,
+// the field path (e.g. "lights[1].attenuation.linear") and the bad value.
+#pragma once
+
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+#include <initializer_list>
+#include <optional>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace xval {
+
+// An error in a scene file; what() is the whole message.
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Range constraint for numbers: lo/hi are bounds, open or closed.
+struct Range {
+  double lo = -1e300, hi = 1e300;
+  bool lo_open = false, hi_open = false;
+  static Range any() { return {}; }
+  static Range nonNegative() { return {0.0, 1e300, false, false}; }
+  static Range positive() { return {0.0, 1e300, true, false}; }
+  static Range closed(double a, double b) { return {a, b, false, false}; }
+  static Range openClosed(double a, double b) { return {a, b, true, false}; }
+  static Range open(double a, double b) { return {a, b, true, true}; }
+  bool contains(double v) const;
+  std::string describe() const;
+};
+
+class JsonReader {
+ public:
+  JsonReader(const nlohmann::json& value, std::string path, std::string file);
+
+  const std::string& path() const { return path_; }
+  bool has(std::string_view key) const;
+
+  double number(std::string_view key, double fallback, Range r = Range::any());
+  double requireNumber(std::string_view key, Range r = Range::any());
+  int integer(std::string_view key, int fallback, int lo, int hi);
+  glm::dvec3 vec3(std::string_view key, glm::dvec3 fallback, Range r = Range::any());
+  glm::dvec3 requireVec3(std::string_view key, Range r = Range::any());
+  glm::dvec2 vec2(std::string_view key, glm::dvec2 fallback, Range r = Range::any());
+  std::string string(std::string_view key, std::string fallback);
+  std::string requireString(std::string_view key);
+  // One of `allowed`; the error lists them.
+  std::string choice(std::string_view key, std::string fallback,
+                     std::initializer_list<std::string_view> allowed);
+  std::string requireChoice(std::string_view key,
+                            std::initializer_list<std::string_view> allowed);
+  std::optional<JsonReader> object(std::string_view key);
+  JsonReader requireObject(std::string_view key);
+  // Elements of an array field, each as a reader (objects only).
+  std::vector<JsonReader> objectArray(std::string_view key, bool required);
+
+  // Rejects keys nobody asked for. Call after reading every field.
+  void finish() const;
+
+  // Throws a SceneError about `key` of this object.
+  [[noreturn]] void fail(std::string_view key, const std::string& problem) const;
+  [[noreturn]] void failValue(std::string_view key, const std::string& expected) const;
+
+ private:
+  const nlohmann::json* find(std::string_view key);
+  std::string fieldPath(std::string_view key) const;
+  double toNumber(const nlohmann::json& v, const std::string& where, Range r) const;
+
+  const nlohmann::json& value_;
+  std::string path_;
+  std::string file_;
+  std::set<std::string, std::less<>> known_;
+};
+
+// A short, printable rendering of a JSON value for error messages.
+std::string describeJson(const nlohmann::json& v);
+
+}  // namespace xval

@@ -1,0 +1,167 @@
+// Scene: the plain description every renderer and exporter reads.
+//
+// Loaded and validated from JSON by scene_loader.h (docs/scene-format.md
+// documents every field, unit and default). Conventions, fixed here once:
+//  - world space is right-handed, +y up (as glTF); lengths in scene units;
+//  - angles in the JSON are degrees and are named *_deg;
+//  - colours are in the texture's stored encoding (display-referred values
+//    in [0,1] for 8-bit images), never linearised: the lighting models work
+//    on stored values, as the paper's shader did.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace xval {
+
+using dvec3 = glm::dvec3;
+using dvec2 = glm::dvec2;
+
+struct Camera {
+  dvec3 position{0.0, 0.0, 4.2};
+  dvec3 target{0.0, 0.0, 0.0};
+  dvec3 up{0.0, 1.0, 0.0};
+  double fov_y_deg = 45.0;  // full vertical field of view
+  int width = 256;          // pixels
+  int height = 256;         // pixels
+};
+
+// --- geometry -----------------------------------------------------------
+// A p-q torus knot on a torus of radii (major_radius, minor_radius), swept
+// as a tube of radius tube_radius. Centre line (t in [0, 2 pi)):
+//   c(t) = ((R + r cos(q t)) cos(p t), (R + r cos(q t)) sin(p t), r sin(q t))
+struct TorusKnot {
+  int p = 2;
+  int q = 3;
+  double major_radius = 1.0;
+  double minor_radius = 0.4;
+  double tube_radius = 0.15;
+  int segments_along = 768;  // 768 x 40 -> 61,440 triangles, 31,529 vertices
+  int segments_around = 40;
+  dvec2 uv_repeat{16.0, 2.0};  // texture repeats along / around the tube
+  dvec3 center{0.0};
+};
+
+// A latitude-longitude sphere mesh (poles on +-y).
+struct UvSphere {
+  dvec3 center{0.0};
+  double radius = 1.0;
+  int segments_longitude = 64;
+  int segments_latitude = 32;
+  dvec2 uv_repeat{1.0, 1.0};
+};
+
+// A rectangle centred at `center`, facing `normal`. Its in-plane u axis is
+// normalize(cross(up_hint, normal)) with up_hint = +y, or -z when the normal
+// is (anti)parallel to y; its v axis is cross(normal, u_axis) negated so v
+// runs "down" the image, as glTF uv does.
+struct Plane {
+  dvec3 center{0.0};
+  dvec3 normal{0.0, 0.0, 1.0};
+  dvec2 size{2.0, 2.0};
+  dvec2 uv_repeat{1.0, 1.0};
+};
+
+using Shape = std::variant<TorusKnot, UvSphere, Plane>;
+
+// --- texture ------------------------------------------------------------
+enum class TextureFilter { Nearest, Bilinear };
+
+struct TextureSpec {
+  enum class Source { Brick, Image };
+  Source source = Source::Brick;
+  std::filesystem::path path;  // Source::Image: resolved against the scene file
+  TextureFilter filter = TextureFilter::Bilinear;
+};
+
+// --- lighting models (../shared/models.md) ------------------------------
+// Classic Phong. variant Paper (paper eq. 3, seed 003):
+//   F = C (x) (ka A + kd sum att Lc D) + ks sum att Lc S
+// variant Course (seed 004, specular tinted, per-light ambient):
+//   F = C (x) (ka A + sum att Lc (ka + cone (kd D + ks S)))
+struct ClassicPhong {
+  enum class Variant { Paper, Course };
+  Variant variant = Variant::Paper;
+  double ka = 1.0, kd = 1.0, ks = 1.0;
+  double shininess = 55.0;
+};
+
+// The paper's YIQ luma model (Table 1 listing), generalised to several
+// lights by summing before the listing's outer saturate.
+struct YiqLuma {
+  double kd = 1.0, ks = 1.0;
+  double shininess = 55.0;
+  double luma_offset = 0.1;  // the listing's literal "- 0.1"
+};
+
+// Forsyth's family; x = N.L per light; colours multiply the light colour.
+struct Lambert { dvec3 c0{1.0}; };
+struct WrapAround { dvec3 c0{1.0}; double factor = 0.5; };
+struct Hemispherical { dvec3 c0{1.0}; dvec3 c2{0.0}; };
+struct BiDirectional { dvec3 c0{1.0}; dvec3 c2{0.0}; };
+struct Trilight { dvec3 c0{1.0}; dvec3 c1{0.0}; dvec3 c2{0.0}; };
+
+using LightingModel = std::variant<ClassicPhong, YiqLuma, Lambert, WrapAround,
+                                   Hemispherical, BiDirectional, Trilight>;
+
+struct Material {
+  LightingModel model = ClassicPhong{};
+  std::optional<TextureSpec> texture;  // none: every point has base_color
+  dvec3 base_color{1.0};
+};
+
+// --- lights -------------------------------------------------------------
+// att(d) = 1 / (constant + linear d + quadratic d^2); (1,0,0) = none.
+struct Attenuation {
+  double constant = 1.0, linear = 0.0, quadratic = 0.0;
+  bool isNone() const { return constant == 1.0 && linear == 0.0 && quadratic == 0.0; }
+};
+
+struct PointLight { dvec3 position{0.0}; dvec3 color{1.0}; Attenuation attenuation; };
+// `direction` is the direction the light travels (unit after loading).
+struct DirectionalLight { dvec3 direction{0.0, -1.0, 0.0}; dvec3 color{1.0}; };
+// Hard cone: lit where the angle between the spot axis and the direction
+// from the light to the point is <= cutoff_deg.
+struct SpotLight {
+  dvec3 position{0.0};
+  dvec3 direction{0.0, -1.0, 0.0};  // unit after loading
+  double cutoff_deg = 30.0;
+  dvec3 color{1.0};
+  Attenuation attenuation;
+};
+struct AmbientLight { dvec3 color{0.1}; };
+
+using Light = std::variant<PointLight, DirectionalLight, SpotLight, AmbientLight>;
+
+// --- shading and render settings ----------------------------------------
+enum class ShadingMode { Flat, Gouraud, Phong };
+enum class Precision { Float, Double };
+
+struct RenderSettings {
+  int spp = 1;  // a perfect square: an n x n stratified grid, box filter
+  Precision precision = Precision::Double;
+};
+
+struct Scene {
+  std::string name;
+  std::filesystem::path source_file;  // for messages and relative paths
+  Camera camera;
+  std::vector<Shape> objects;
+  Material material;
+  std::vector<Light> lights;
+  ShadingMode shading = ShadingMode::Phong;
+  RenderSettings render;
+};
+
+const char* toString(ShadingMode m);
+const char* toString(Precision p);
+const char* toString(TextureFilter f);
+const char* modelName(const LightingModel& m);
+
+}  // namespace xval

@@ -1,0 +1,293 @@
+#include "scene/scene_loader.h"
+
+#include <cmath>
+#include <fstream>
+#include <numeric>
+#include <sstream>
+
+namespace xval {
+
+using nlohmann::json;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+dvec3 requireDirection(JsonReader& r, std::string_view key) {
+  dvec3 d = r.requireVec3(key);
+  double len = glm::length(d);
+  if (!(len > 1e-300) || !std::isfinite(len))
+    r.fail(key, "expected a non-zero direction, got [" + std::to_string(d.x) + ", " +
+                    std::to_string(d.y) + ", " + std::to_string(d.z) + "]");
+  return d / len;
+}
+
+Camera readCamera(JsonReader r) {
+  Camera c;
+  c.position = r.requireVec3("position");
+  c.target = r.requireVec3("target");
+  c.up = r.vec3("up", c.up);
+  c.fov_y_deg = r.number("fov_y_deg", c.fov_y_deg, Range::open(0.0, 180.0));
+  c.width = r.integer("width", c.width, 1, kMaxImageSide);
+  c.height = r.integer("height", c.height, 1, kMaxImageSide);
+  r.finish();
+  if ((long long)c.width * c.height > kMaxImagePixels)
+    r.fail("width", "width x height = " + std::to_string((long long)c.width * c.height) +
+                        " pixels exceeds the limit of " + std::to_string(kMaxImagePixels));
+  dvec3 fwd = c.target - c.position;
+  if (!(glm::length(fwd) > 0.0))
+    r.fail("target", "target equals position; the camera has no viewing direction");
+  if (!(glm::length(c.up) > 0.0)) r.fail("up", "expected a non-zero direction, got [0, 0, 0]");
+  double s = glm::length(glm::cross(glm::normalize(fwd), glm::normalize(c.up)));
+  if (!(s > 1e-9)) r.fail("up", "is parallel to the viewing direction (target - position)");
+  return c;
+}
+
+TorusKnot readKnot(JsonReader& r) {
+  TorusKnot k;
+  k.p = r.integer("p", k.p, 1, 1000);
+  k.q = r.integer("q", k.q, 1, 1000);
+  if (std::gcd(k.p, k.q) != 1)
+    r.fail("q", "p = " + std::to_string(k.p) + " and q = " + std::to_string(k.q) +
+                    " are not coprime: that is a torus link, not a knot");
+  k.major_radius = r.number("major_radius", k.major_radius, Range::positive());
+  k.minor_radius = r.number("minor_radius", k.minor_radius, Range::positive());
+  k.tube_radius = r.number("tube_radius", k.tube_radius, Range::positive());
+  k.segments_along = r.integer("segments_along", k.segments_along, 3, 1 << 20);
+  k.segments_around = r.integer("segments_around", k.segments_around, 3, 1 << 16);
+  if ((long long)(k.segments_along + 1) * (k.segments_around + 1) > kMaxMeshVertices)
+    r.fail("segments_along", "the mesh would exceed " + std::to_string(kMaxMeshVertices) +
+                                 " vertices");
+  k.uv_repeat = r.vec2("uv_repeat", k.uv_repeat, Range::positive());
+  k.center = r.vec3("center", k.center);
+  return k;
+}
+
+UvSphere readSphere(JsonReader& r) {
+  UvSphere s;
+  s.center = r.vec3("center", s.center);
+  s.radius = r.number("radius", s.radius, Range::positive());
+  s.segments_longitude = r.integer("segments_longitude", s.segments_longitude, 3, 1 << 16);
+  s.segments_latitude = r.integer("segments_latitude", s.segments_latitude, 2, 1 << 16);
+  if ((long long)(s.segments_longitude + 1) * (s.segments_latitude + 1) > kMaxMeshVertices)
+    r.fail("segments_longitude", "the mesh would exceed " + std::to_string(kMaxMeshVertices) +
+                                     " vertices");
+  s.uv_repeat = r.vec2("uv_repeat", s.uv_repeat, Range::positive());
+  return s;
+}
+
+Plane readPlane(JsonReader& r) {
+  Plane p;
+  p.center = r.vec3("center", p.center);
+  p.normal = r.has("normal") ? requireDirection(r, "normal") : p.normal;
+  p.size = r.vec2("size", p.size, Range::positive());
+  p.uv_repeat = r.vec2("uv_repeat", p.uv_repeat, Range::positive());
+  return p;
+}
+
+Shape readObject(JsonReader r) {
+  std::string shape = r.requireChoice("shape", {"torus_knot", "sphere", "plane"});
+  Shape out;
+  if (shape == "torus_knot") out = readKnot(r);
+  else if (shape == "sphere") out = readSphere(r);
+  else out = readPlane(r);
+  r.finish();
+  return out;
+}
+
+Attenuation readAttenuation(JsonReader& r) {
+  Attenuation a;
+  auto o = r.object("attenuation");
+  if (!o) return a;
+  // constant > 0 keeps 1/(c + l d + q d^2) finite for a light on the surface.
+  a.constant = o->number("constant", a.constant, Range::positive());
+  a.linear = o->number("linear", a.linear, Range::nonNegative());
+  a.quadratic = o->number("quadratic", a.quadratic, Range::nonNegative());
+  o->finish();
+  return a;
+}
+
+Light readLight(JsonReader r) {
+  std::string type = r.requireChoice("type", {"point", "directional", "spot", "ambient"});
+  Light out;
+  if (type == "point") {
+    PointLight l;
+    l.position = r.requireVec3("position");
+    l.color = r.vec3("color", l.color, Range::nonNegative());
+    l.attenuation = readAttenuation(r);
+    out = l;
+  } else if (type == "directional") {
+    DirectionalLight l;
+    l.direction = requireDirection(r, "direction");
+    l.color = r.vec3("color", l.color, Range::nonNegative());
+    out = l;
+  } else if (type == "spot") {
+    SpotLight l;
+    l.position = r.requireVec3("position");
+    l.direction = requireDirection(r, "direction");
+    l.cutoff_deg = r.number("cutoff_deg", l.cutoff_deg, Range::openClosed(0.0, 90.0));
+    l.color = r.vec3("color", l.color, Range::nonNegative());
+    l.attenuation = readAttenuation(r);
+    out = l;
+  } else {
+    AmbientLight l;
+    l.color = r.vec3("color", l.color, Range::nonNegative());
+    out = l;
+  }
+  r.finish();
+  return out;
+}
+
+LightingModel readModel(JsonReader r) {
+  std::string type = r.requireChoice(
+      "type", {"classic_phong", "yiq_luma", "lambert", "wrap_around", "hemispherical",
+               "bidirectional", "trilight"});
+  const Range colour = Range::nonNegative();
+  LightingModel out;
+  if (type == "classic_phong") {
+    ClassicPhong m;
+    std::string v = r.choice("variant", "paper", {"paper", "course"});
+    m.variant = v == "paper" ? ClassicPhong::Variant::Paper : ClassicPhong::Variant::Course;
+    m.ka = r.number("ka", m.ka, Range::nonNegative());
+    m.kd = r.number("kd", m.kd, Range::nonNegative());
+    m.ks = r.number("ks", m.ks, Range::nonNegative());
+    m.shininess = r.number("shininess", m.shininess, Range::nonNegative());
+    out = m;
+  } else if (type == "yiq_luma") {
+    YiqLuma m;
+    m.kd = r.number("kd", m.kd, Range::nonNegative());
+    m.ks = r.number("ks", m.ks, Range::nonNegative());
+    m.shininess = r.number("shininess", m.shininess, Range::nonNegative());
+    m.luma_offset = r.number("luma_offset", m.luma_offset);
+    out = m;
+  } else if (type == "lambert") {
+    out = Lambert{r.vec3("c0", dvec3(1.0), colour)};
+  } else if (type == "wrap_around") {
+    WrapAround m;
+    m.c0 = r.vec3("c0", m.c0, colour);
+    m.factor = r.number("factor", m.factor, Range::closed(0.0, 1.0));
+    out = m;
+  } else if (type == "hemispherical") {
+    out = Hemispherical{r.vec3("c0", dvec3(1.0), colour), r.vec3("c2", dvec3(0.0), colour)};
+  } else if (type == "bidirectional") {
+    out = BiDirectional{r.vec3("c0", dvec3(1.0), colour), r.vec3("c2", dvec3(0.0), colour)};
+  } else {
+    out = Trilight{r.vec3("c0", dvec3(1.0), colour), r.vec3("c1", dvec3(0.0), colour),
+                   r.vec3("c2", dvec3(0.0), colour)};
+  }
+  r.finish();
+  return out;
+}
+
+TextureSpec readTexture(JsonReader r, const std::filesystem::path& scene_dir) {
+  TextureSpec t;
+  std::string source = r.requireChoice("source", {"brick", "image"});
+  std::string filter = r.choice("filter", "bilinear", {"nearest", "bilinear"});
+  t.filter = filter == "nearest" ? TextureFilter::Nearest : TextureFilter::Bilinear;
+  if (source == "image") {
+    t.source = TextureSpec::Source::Image;
+    std::string p = r.requireString("path");
+    if (p.empty()) r.fail("path", "expected a file path, got \"\"");
+    t.path = std::filesystem::path(p).is_absolute() ? std::filesystem::path(p)
+                                                    : scene_dir / p;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(t.path, ec))
+      r.fail("path", "texture file " + json(t.path.string()).dump() +
+                         " does not exist or is not a regular file");
+    std::ifstream probe(t.path, std::ios::binary);
+    if (!probe) r.fail("path", "texture file " + json(t.path.string()).dump() + " is not readable");
+  } else {
+    t.source = TextureSpec::Source::Brick;
+  }
+  r.finish();
+  return t;
+}
+
+Material readMaterial(JsonReader r, const std::filesystem::path& scene_dir) {
+  Material m;
+  m.model = readModel(r.requireObject("model"));
+  if (auto t = r.object("texture")) m.texture = readTexture(*t, scene_dir);
+  if (r.has("base_color") && m.texture)
+    r.fail("base_color", "is not used when material.texture is set; remove one of them");
+  m.base_color = r.vec3("base_color", m.base_color, Range::nonNegative());
+  r.finish();
+  return m;
+}
+
+RenderSettings readRender(JsonReader r) {
+  RenderSettings s;
+  s.spp = r.integer("spp", s.spp, 1, kMaxSpp);
+  int n = int(std::lround(std::sqrt(double(s.spp))));
+  if (n * n != s.spp)
+    r.fail("spp", "expected a perfect square (1, 4, 9, ..., 256: an n x n stratified grid), got " +
+                      std::to_string(s.spp));
+  std::string p = r.choice("precision", "double", {"float", "double"});
+  s.precision = p == "float" ? Precision::Float : Precision::Double;
+  r.finish();
+  return s;
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& text, const std::filesystem::path& file) {
+  const std::string fname = file.string();
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::parse_error& e) {
+    // e.what() carries the byte offset and what was expected.
+    throw SceneError(fname + ": not valid JSON: " + e.what());
+  }
+  JsonReader r(doc, "", fname);
+  Scene s;
+  s.source_file = file;
+  std::string format = r.string("format", "xval-scene/1");
+  if (format != "xval-scene/1")
+    r.failValue("format", "\"xval-scene/1\" (the only version this build reads)");
+  s.name = r.string("name", file.stem().string());
+  s.camera = readCamera(r.requireObject("camera"));
+  auto objects = r.objectArray("objects", true);
+  if (objects.empty()) r.fail("objects", "expected at least one object, got []");
+  for (auto& o : objects) s.objects.push_back(readObject(o));
+  s.material = readMaterial(r.requireObject("material"), file.parent_path());
+  for (auto& l : r.objectArray("lights", true)) s.lights.push_back(readLight(l));
+  std::string shading = r.choice("shading", "phong", {"flat", "gouraud", "phong"});
+  s.shading = shading == "flat"      ? ShadingMode::Flat
+              : shading == "gouraud" ? ShadingMode::Gouraud
+                                     : ShadingMode::Phong;
+  if (auto rs = r.object("render")) s.render = readRender(*rs);
+  r.finish();
+  return s;
+}
+
+Scene loadScene(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec))
+    throw SceneError(file.string() + ": scene file does not exist or is not a regular file");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw SceneError(file.string() + ": cannot open scene file for reading");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw SceneError(file.string() + ": error while reading the scene file");
+  return parseScene(ss.str(), file);
+}
+
+const char* toString(ShadingMode m) {
+  switch (m) {
+    case ShadingMode::Flat: return "flat";
+    case ShadingMode::Gouraud: return "gouraud";
+    case ShadingMode::Phong: return "phong";
+  }
+  return "?";
+}
+const char* toString(Precision p) { return p == Precision::Float ? "float" : "double"; }
+const char* toString(TextureFilter f) {
+  return f == TextureFilter::Nearest ? "nearest" : "bilinear";
+}
+const char* modelName(const LightingModel& m) {
+  static const char* names[] = {"classic_phong", "yiq_luma",      "lambert", "wrap_around",
+                                "hemispherical", "bidirectional", "trilight"};
+  return names[m.index()];
+}
+
+}  // namespace xval

@@ -1,0 +1,28 @@
+// Scene files: JSON -> validated Scene (docs/scene-format.md).
+#pragma once
+
+#include "scene/json_reader.h"
+#include "scene/scene.h"
+
+#include <filesystem>
+#include <string>
+
+namespace xval {
+
+// Reads and validates a scene file. Throws SceneError naming the file, the
+// field path and the bad value. Relative texture paths resolve against the
+// scene file's folder; the texture file must exist and be readable.
+Scene loadScene(const std::filesystem::path& file);
+
+// Same, from text already in memory; `file` is used in messages and to
+// resolve relative paths.
+Scene parseScene(const std::string& text, const std::filesystem::path& file);
+
+// Largest accepted image side and pixel count (an "absurd resolution" is an
+// error, not an attempt to allocate it).
+inline constexpr int kMaxImageSide = 16384;
+inline constexpr long long kMaxImagePixels = 64ll * 1024 * 1024;
+inline constexpr int kMaxSpp = 256;
+inline constexpr long long kMaxMeshVertices = 16ll * 1024 * 1024;
+
+}  // namespace xval

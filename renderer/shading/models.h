@@ -1,0 +1,95 @@
+// The lighting models as pure functions (../shared/models.md, docs/models.md).
+//
+// Templated on the scalar T (float for the fast path, double for the
+// reference path). x = N.L throughout; all vectors unit length.
+// clamp0(x) = max(x, 0); saturate(x) = min(max(x, 0), 1). Both map NaN to 0
+// (the comparisons are written so), which keeps a NaN from propagating.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+
+namespace xval::models {
+
+template <class T> using vec3 = glm::vec<3, T>;
+
+template <class T> constexpr T clamp0(T x) { return x > T(0) ? x : T(0); }
+template <class T> constexpr T saturate(T x) { return x > T(0) ? (x < T(1) ? x : T(1)) : T(0); }
+template <class T> vec3<T> saturate(vec3<T> c) {
+  return {saturate(c.x), saturate(c.y), saturate(c.z)};
+}
+
+// ---- Phong terms (paper eq. 1-2; seed 003 eq. 8.2-8.3) -----------------
+// R = 2 (N.L) N - L, the mirror direction of L about N.
+template <class T> vec3<T> reflect(vec3<T> n, vec3<T> l, T ndotl) {
+  return T(2) * ndotl * n - l;
+}
+// S = clamp(R.V)^n. n = 0 gives 1 everywhere (pow(0, 0) = 1 by the C
+// standard; HLSL leaves it undefined): a constant highlight, by choice.
+template <class T> T phongSpecular(T rdotv, T shininess) {
+  return std::pow(clamp0(rdotv), shininess);
+}
+
+// ---- Forsyth's family (seed 002), result per unit light colour ---------
+template <class T> T lambert(T x) { return clamp0(x); }
+// clamp(x + f) / (1 + f), f in [0, 1]
+template <class T> T wrapAround(T x, T f) { return clamp0(x + f) / (T(1) + f); }
+// lerp(c2, c0, (x + 1) / 2)
+template <class T> vec3<T> hemispherical(T x, vec3<T> c0, vec3<T> c2) {
+  return c2 + (c0 - c2) * ((x + T(1)) * T(0.5));
+}
+// c0 clamp(x) + c2 clamp(-x)
+template <class T> vec3<T> biDirectional(T x, vec3<T> c0, vec3<T> c2) {
+  return c0 * clamp0(x) + c2 * clamp0(-x);
+}
+// c0 clamp(x) + c1 (1 - |x|) + c2 clamp(-x)
+template <class T> vec3<T> trilight(T x, vec3<T> c0, vec3<T> c1, vec3<T> c2) {
+  return c0 * clamp0(x) + c1 * (T(1) - std::abs(x)) + c2 * clamp0(-x);
+}
+
+// ---- YIQ (paper eq. 4-5 and the Table 1 listing) ------------------------
+// The listing's coefficients, verbatim. The rows of kRgbToYiq give Y, I, Q.
+inline constexpr double kRgbToYiq[3][3] = {
+    {0.29889531, 0.58662247, 0.11448223},
+    {0.59597799, -0.27417610, -0.32180189},
+    {0.21147017, -0.52261711, 0.31114694}};
+inline constexpr double kYiqToRgb[3][3] = {
+    {1.0, 0.95608445, 0.62088850},
+    {1.0, -0.27137664, -0.64860590},
+    {1.0, -1.10561724, 1.70250126}};
+
+template <class T> T luma(vec3<T> c) {
+  return T(kRgbToYiq[0][0]) * c.x + T(kRgbToYiq[0][1]) * c.y + T(kRgbToYiq[0][2]) * c.z;
+}
+template <class T> vec3<T> rgbToYiq(vec3<T> c) {
+  vec3<T> o;
+  for (int r = 0; r < 3; ++r)
+    o[r] = T(kRgbToYiq[r][0]) * c.x + T(kRgbToYiq[r][1]) * c.y + T(kRgbToYiq[r][2]) * c.z;
+  return o;
+}
+// Without the listing's saturate (applied by the caller, once).
+template <class T> vec3<T> yiqToRgb(vec3<T> yiq) {
+  vec3<T> o;
+  for (int r = 0; r < 3; ++r)
+    o[r] = T(kYiqToRgb[r][0]) * yiq.x + T(kYiqToRgb[r][1]) * yiq.y + T(kYiqToRgb[r][2]) * yiq.z;
+  return o;
+}
+
+// The listing's LumaPhongDiffuse, literally: RGB -> YIQ, Y' = Y Dl + S - off,
+// YIQ -> RGB. Dl and S are the listing's Diffuse and Specular. Unsaturated.
+template <class T> vec3<T> yiqLumaListing(vec3<T> c, T dl, T s, T offset) {
+  vec3<T> yiq = rgbToYiq(c);
+  yiq.x = yiq.x * dl + s - offset;
+  return yiqToRgb(yiq);
+}
+// The same, reduced: the first column of YIQ->RGB is exactly (1,1,1), so
+// the round trip changes every channel by Y' - Y:
+//   F = C + (Y (Dl - 1) + S - off) (1,1,1)
+// One dot product instead of two matrix products (used by the renderer).
+template <class T> vec3<T> yiqLuma(vec3<T> c, T dl, T s, T offset) {
+  T dy = luma(c) * (dl - T(1)) + s - offset;
+  return c + vec3<T>(dy);
+}
+
+}  // namespace xval::models

@@ -1,0 +1,147 @@
+// Shader: evaluates the scene's lighting model, summed over its lights, at
+// one surface point. The per-model formulas (../shared/models.md):
+//
+//   classic_phong, variant paper (paper eq. 3, seed 003):
+//     F = C (x) (ka A + kd sum_l att Lc clamp(N.L)) + ks sum_l att Lc clamp(R.V)^n
+//   classic_phong, variant course (seed 004):
+//     F = C (x) (ka A + sum_l att Lc (ka + [lit] (kd clamp(N.L) + ks clamp(R.V)^n)))
+//   yiq_luma (Table 1 listing; Y = luma of C, Y(Lc) = luma of the light colour):
+//     Dl = saturate(A_Y + kd sum_l att Y(Lc) saturate(N.L))
+//     S  = ks sum_l att Y(Lc) saturate(R.V)^n
+//     F  = C + (Y Dl + S - luma_offset - Y) (1,1,1)
+//   lambert / wrap_around / hemispherical / bidirectional / trilight:
+//     F = C (x) (A + sum_l att Lc (x) forsyth(N.L))
+// A is the summed colour of the ambient lights; [lit] is 0 outside a spot
+// cone, where (except course's per-light ambient) a light adds nothing.
+// R = 2 (N.L) N - L is not gated by N.L (the listing does not gate it).
+// The result is unsaturated; the renderer saturates the final pixel colour
+// once (the paper's render target did), so the listing's YIQtoRGB saturate
+// is that same single saturate.
+//
+// Only what the scene uses is computed: no specular term when ks = 0, no
+// attenuation when it is (1,0,0), no texture fetch without a texture (the
+// caller passes C).
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+#include "scene/scene.h"
+#include "shading/lights.h"
+#include "shading/models.h"
+
+namespace xval {
+
+template <class T> class Shader {
+ public:
+  using V = glm::vec<3, T>;
+
+  explicit Shader(const Material& m, const std::vector<Light>& lights) {
+    prepareLights<T>(lights, ambient_, lights_);
+    ambient_luma_ = models::luma(ambient_);
+    kind_ = Kind(m.model.index());
+    std::visit([this](const auto& mm) { this->setParams(mm); }, m.model);
+  }
+
+  bool usesSpecular() const { return specular_; }
+  const std::vector<PreparedLight<T>>& lights() const { return lights_; }
+
+  // p: surface point, n: unit normal, v: unit direction to the eye, c: the
+  // surface colour (texture or base colour).
+  V shade(V p, V n, V v, V c) const {
+    using namespace models;
+    switch (kind_) {
+      case Kind::ClassicPhong: {
+        if (course_) {
+          V acc = ka_ * ambient_;
+          for (const auto& l : lights_) {
+            LightSample<T> s = sampleLight(l, p);
+            V w = s.att * l.color;
+            T term = ka_;
+            if (s.lit) {
+              T x = glm::dot(n, s.L);
+              term += kd_ * clamp0(x);
+              if (specular_) term += ks_ * phongSpecular(glm::dot(reflect(n, s.L, x), v), n_);
+            }
+            acc += w * term;
+          }
+          return c * acc;
+        }
+        V diff(0), spec(0);
+        for (const auto& l : lights_) {
+          LightSample<T> s = sampleLight(l, p);
+          if (!s.lit) continue;
+          V w = s.att * l.color;
+          T x = glm::dot(n, s.L);
+          diff += w * clamp0(x);
+          if (specular_) spec += w * phongSpecular(glm::dot(reflect(n, s.L, x), v), n_);
+        }
+        return c * (ka_ * ambient_ + kd_ * diff) + ks_ * spec;
+      }
+      case Kind::YiqLuma: {
+        T dsum = 0, ssum = 0;
+        for (const auto& l : lights_) {
+          LightSample<T> s = sampleLight(l, p);
+          if (!s.lit) continue;
+          T w = s.att * l.color_luma;
+          T x = glm::dot(n, s.L);
+          dsum += w * saturate(x);
+          if (specular_)
+            ssum += w * std::pow(saturate(glm::dot(reflect(n, s.L, x), v)), n_);
+        }
+        T dl = saturate(ambient_luma_ + kd_ * dsum);
+        return yiqLuma(c, dl, ks_ * ssum, offset_);
+      }
+      default: {
+        V acc = ambient_;
+        for (const auto& l : lights_) {
+          LightSample<T> s = sampleLight(l, p);
+          if (!s.lit) continue;
+          acc += s.att * l.color * forsyth(glm::dot(n, s.L));
+        }
+        return c * acc;
+      }
+    }
+  }
+
+ private:
+  enum class Kind { ClassicPhong, YiqLuma, Lambert, WrapAround, Hemispherical, BiDirectional,
+                    Trilight };
+
+  V forsyth(T x) const {
+    using namespace models;
+    switch (kind_) {
+      case Kind::Lambert: return c0_ * lambert(x);
+      case Kind::WrapAround: return c0_ * wrapAround(x, factor_);
+      case Kind::Hemispherical: return hemispherical(x, c0_, c2_);
+      case Kind::BiDirectional: return biDirectional(x, c0_, c2_);
+      default: return trilight(x, c0_, c1_, c2_);
+    }
+  }
+
+  void setParams(const ClassicPhong& m) {
+    course_ = m.variant == ClassicPhong::Variant::Course;
+    ka_ = T(m.ka), kd_ = T(m.kd), ks_ = T(m.ks), n_ = T(m.shininess);
+    specular_ = m.ks != 0.0;
+  }
+  void setParams(const YiqLuma& m) {
+    kd_ = T(m.kd), ks_ = T(m.ks), n_ = T(m.shininess), offset_ = T(m.luma_offset);
+    specular_ = m.ks != 0.0;
+  }
+  void setParams(const Lambert& m) { c0_ = V(m.c0); }
+  void setParams(const WrapAround& m) { c0_ = V(m.c0), factor_ = T(m.factor); }
+  void setParams(const Hemispherical& m) { c0_ = V(m.c0), c2_ = V(m.c2); }
+  void setParams(const BiDirectional& m) { c0_ = V(m.c0), c2_ = V(m.c2); }
+  void setParams(const Trilight& m) { c0_ = V(m.c0), c1_ = V(m.c1), c2_ = V(m.c2); }
+
+  Kind kind_ = Kind::ClassicPhong;
+  std::vector<PreparedLight<T>> lights_;
+  V ambient_{0};
+  T ambient_luma_ = 0;
+  bool course_ = false, specular_ = false;
+  T ka_ = 1, kd_ = 1, ks_ = 1, n_ = 55, offset_ = T(0.1), factor_ = 0;
+  V c0_{1}, c1_{0}, c2_{0};
+};
+
+}  // namespace xval

@@ -1,0 +1,69 @@
+// Texture: an RGB image of stored values, looked up with wrap addressing.
+//
+// Values are the image's stored code values scaled to [0,1] (8-bit: c/255),
+// never linearised. Addressing follows glTF: uv (0,0) is the top-left
+// corner of the image, u runs right, v runs down; texel (ix, iy) has its
+// centre at ((ix + 0.5)/W, (iy + 0.5)/H). Wrap: only frac(u), frac(v) count.
+//   nearest:  ix = floor(frac(u) W), iy = floor(frac(v) H)
+//   bilinear: x = frac(u) W - 0.5, x0 = floor(x), wx = x - x0 (same in y),
+//             the four texels (x0, x0+1) x (y0, y0+1) taken modulo W, H.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace xval {
+
+struct Texture {
+  int width = 0, height = 0;
+  std::vector<float> rgb;  // row 0 = top of the image, 3 floats per texel
+  std::vector<unsigned char> rgb8;  // the 8-bit codes when the source had them
+
+  glm::vec3 texel(int x, int y) const {
+    const float* p = &rgb[(size_t(y) * width + x) * 3];
+    return {p[0], p[1], p[2]};
+  }
+
+  template <class T>
+  glm::vec<3, T> lookup(glm::vec<2, T> uv, TextureFilter f) const {
+    T fu = uv.x - std::floor(uv.x), fv = uv.y - std::floor(uv.y);
+    if (f == TextureFilter::Nearest) {
+      int ix = std::min(int(fu * width), width - 1);
+      int iy = std::min(int(fv * height), height - 1);
+      return glm::vec<3, T>(texel(ix, iy));
+    }
+    T x = fu * width - T(0.5), y = fv * height - T(0.5);
+    T x0f = std::floor(x), y0f = std::floor(y);
+    T wx = x - x0f, wy = y - y0f;
+    int x0 = int(x0f), y0 = int(y0f);
+    int x1 = x0 + 1, y1 = y0 + 1;
+    if (x0 < 0) x0 += width;
+    if (y0 < 0) y0 += height;
+    if (x1 >= width) x1 -= width;
+    if (y1 >= height) y1 -= height;
+    using V = glm::vec<3, T>;
+    V top = V(texel(x0, y0)) * (T(1) - wx) + V(texel(x1, y0)) * wx;
+    V bottom = V(texel(x0, y1)) * (T(1) - wx) + V(texel(x1, y1)) * wx;
+    return top * (T(1) - wy) + bottom * wy;
+  }
+};
+
+// Loads an image file through OpenImageIO (any format it reads; 8-bit and
+// 16-bit integer images keep their code values; alpha is dropped; grey is
+// replicated). Throws std::runtime_error naming the file on failure.
+Texture loadTextureImage(const std::filesystem::path& file);
+
+// The texture a material uses (brick generated in code, or its image).
+Texture loadTexture(const TextureSpec& spec);
+
+// Writes an 8-bit RGB PNG holding exactly the texture's code values
+// (only for textures that have 8-bit codes).
+void writeTexturePng(const Texture& t, const std::filesystem::path& file);
+
+}  // namespace xval

@@ -1,0 +1,69 @@
+// Texture image I/O through OpenImageIO.
+#include <OpenImageIO/imageio.h>
+
+#include <stdexcept>
+
+#include "texture/brick.h"
+#include "texture/texture.h"
+
+namespace xval {
+
+namespace OIIO = OIIO_NAMESPACE;
+
+Texture loadTextureImage(const std::filesystem::path& file) {
+  auto in = OIIO::ImageInput::open(file.string());
+  if (!in)
+    throw std::runtime_error(file.string() + ": cannot read texture image: " +
+                             OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+    throw std::runtime_error(file.string() + ": texture image has no pixels");
+  if (spec.width > 16384 || spec.height > 16384)
+    throw std::runtime_error(file.string() + ": texture image is " + std::to_string(spec.width) +
+                             "x" + std::to_string(spec.height) +
+                             ", larger than the 16384x16384 limit");
+  Texture t;
+  t.width = spec.width;
+  t.height = spec.height;
+  const int nc = spec.nchannels;
+  const bool is8 = spec.format == OIIO::TypeDesc::UINT8;
+  std::vector<float> px(size_t(t.width) * t.height * nc);
+  // OIIO converts integer formats to float as code/(2^bits - 1), exactly
+  // the stored-value convention the models use.
+  if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, px.data()))
+    throw std::runtime_error(file.string() + ": cannot decode texture image: " + in->geterror());
+  std::vector<unsigned char> px8;
+  if (is8) {
+    px8.resize(px.size());
+    if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::UINT8, px8.data()))
+      throw std::runtime_error(file.string() + ": cannot decode texture image: " + in->geterror());
+  }
+  t.rgb.resize(size_t(t.width) * t.height * 3);
+  if (is8) t.rgb8.resize(t.rgb.size());
+  for (size_t i = 0; i < size_t(t.width) * t.height; ++i) {
+    for (int c = 0; c < 3; ++c) {
+      int sc = nc >= 3 ? c : 0;  // grey (and grey+alpha) replicate
+      t.rgb[i * 3 + c] = px[i * nc + sc];
+      if (is8) t.rgb8[i * 3 + c] = px8[i * nc + sc];
+    }
+  }
+  return t;
+}
+
+Texture loadTexture(const TextureSpec& spec) {
+  return spec.source == TextureSpec::Source::Brick ? makeBrickTexture()
+                                                   : loadTextureImage(spec.path);
+}
+
+void writeTexturePng(const Texture& t, const std::filesystem::path& file) {
+  if (t.rgb8.size() != size_t(t.width) * t.height * 3)
+    throw std::runtime_error(file.string() + ": texture has no 8-bit codes to write");
+  auto out = OIIO::ImageOutput::create(file.string());
+  if (!out) throw std::runtime_error(file.string() + ": cannot create PNG: " + OIIO::geterror());
+  OIIO::ImageSpec spec(t.width, t.height, 3, OIIO::TypeDesc::UINT8);
+  if (!out->open(file.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, t.rgb8.data()) ||
+      !out->close())
+    throw std::runtime_error(file.string() + ": cannot write PNG: " + out->geterror());
+}
+
+}  // namespace xval
