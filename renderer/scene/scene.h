@@ -40,11 +40,11 @@ struct TorusKnot {
   int p = 2;
   int q = 3;
   double major_radius = 1.0;
-  double minor_radius = 0.4;
-  double tube_radius = 0.15;
+  double minor_radius = 0.45;
+  double tube_radius = 0.22;
   int segments_along = 768;  // 768 x 40 -> 61,440 triangles, 31,529 vertices
   int segments_around = 40;
-  dvec2 uv_repeat{16.0, 2.0};  // texture repeats along / around the tube
+  dvec2 uv_repeat{12.0, 2.0};  // texture repeats along / around the tube
   dvec3 center{0.0};
 };
 
