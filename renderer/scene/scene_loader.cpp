@@ -237,6 +237,9 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file) {
   } catch (const json::parse_error& e) {
     // e.what() carries the byte offset and what was expected.
     throw SceneError(fname + ": not valid JSON: " + e.what());
+  } catch (const json::exception& e) {
+    // e.g. a number too large for a double ("number overflow parsing '1e999'").
+    throw SceneError(fname + ": not valid JSON: " + e.what());
   }
   JsonReader r(doc, "", fname);
   Scene s;

@@ -83,7 +83,7 @@ void prepareLights(const std::vector<Light>& lights, glm::vec<3, T>& ambient,
       pl.cos_cutoff = T(std::cos(s->cutoff_deg * 3.14159265358979323846 / 180.0));
       set_att(s->attenuation);
     }
-    pl.color_luma = models::luma(pl.color);
+    pl.color_luma = models::lightLuma(pl.color);
     out.push_back(pl);
   }
 }

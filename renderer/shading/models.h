@@ -62,6 +62,13 @@ inline constexpr double kYiqToRgb[3][3] = {
 template <class T> T luma(vec3<T> c) {
   return T(kRgbToYiq[0][0]) * c.x + T(kRgbToYiq[0][1]) * c.y + T(kRgbToYiq[0][2]) * c.z;
 }
+// A light's intensity for the YIQ model: its luma, normalised so that white
+// (1,1,1) is exactly 1 (the listing's luma row sums to 1.00000001).
+template <class T> T lightLuma(vec3<T> c) {
+  constexpr double white = kRgbToYiq[0][0] + kRgbToYiq[0][1] + kRgbToYiq[0][2];
+  return T(kRgbToYiq[0][0] / white) * c.x + T(kRgbToYiq[0][1] / white) * c.y +
+         T(kRgbToYiq[0][2] / white) * c.z;
+}
 template <class T> vec3<T> rgbToYiq(vec3<T> c) {
   vec3<T> o;
   for (int r = 0; r < 3; ++r)

@@ -5,7 +5,8 @@
 //     F = C (x) (ka A + kd sum_l att Lc clamp(N.L)) + ks sum_l att Lc clamp(R.V)^n
 //   classic_phong, variant course (seed 004):
 //     F = C (x) (ka A + sum_l att Lc (ka + [lit] (kd clamp(N.L) + ks clamp(R.V)^n)))
-//   yiq_luma (Table 1 listing; Y = luma of C, Y(Lc) = luma of the light colour):
+//   yiq_luma (Table 1 listing; Y = luma of C; Y(Lc) = luma of a light colour,
+//   normalised so white is 1; A_Y = Y(A)):
 //     Dl = saturate(A_Y + kd sum_l att Y(Lc) saturate(N.L))
 //     S  = ks sum_l att Y(Lc) saturate(R.V)^n
 //     F  = C + (Y Dl + S - luma_offset - Y) (1,1,1)
@@ -39,7 +40,7 @@ template <class T> class Shader {
 
   explicit Shader(const Material& m, const std::vector<Light>& lights) {
     prepareLights<T>(lights, ambient_, lights_);
-    ambient_luma_ = models::luma(ambient_);
+    ambient_luma_ = models::lightLuma(ambient_);
     kind_ = Kind(m.model.index());
     std::visit([this](const auto& mm) { this->setParams(mm); }, m.model);
   }

@@ -1,0 +1,170 @@
+// The renderer end to end on scenes whose image is known analytically, and
+// the BVH against brute force.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "camera/camera.h"
+#include "geometry/mesh.h"
+#include "render/accel.h"
+#include "render/ray_triangle.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+
+using namespace xval;
+
+namespace {
+
+Scene litPlane(ShadingMode mode) {
+  Scene s;
+  s.camera.width = 32, s.camera.height = 24;
+  Plane p;
+  s.objects = {p};
+  s.material.model = Lambert{glm::dvec3(1.0)};
+  s.material.base_color = {0.5, 0.25, 0.125};
+  s.lights = {DirectionalLight{{0, 0, -1}, glm::dvec3(1.0)}};
+  s.shading = mode;
+  return s;
+}
+
+}  // namespace
+
+// A plane facing the camera, lit head-on by a directional Lambert light:
+// every covered pixel is exactly the base colour, in every shading mode
+// and precision; pixels off the plane are 0 with alpha 0.
+TEST(Renderer, HeadOnLambertPlaneIsExactlyTheBaseColour) {
+  for (ShadingMode mode : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) {
+    for (Precision prec : {Precision::Double, Precision::Float}) {
+      Scene s = litPlane(mode);
+      RenderOptions o;
+      o.precision = prec;
+      Image img = renderScene(s, o);
+      const float* centre = img.pixel(16, 12);
+      EXPECT_EQ(centre[0], 0.5f);
+      EXPECT_EQ(centre[1], 0.25f);
+      EXPECT_EQ(centre[2], 0.125f);
+      EXPECT_EQ(centre[3], 1.0f);
+      const float* corner = img.pixel(0, 0);  // the plane spans +-1, the view +-1.74
+      EXPECT_EQ(corner[3], 0.0f);
+      EXPECT_EQ(corner[0], 0.0f);
+    }
+  }
+}
+
+// Lambert on a finely tessellated sphere with Phong shading: each pixel
+// equals max(N.L, 0) of the exact sphere normal at the hit, up to the
+// tessellation error. With dtheta = pi/128 between rings the chord sags by
+// r (1 - cos(dtheta/2)) = 7.5e-5 inside the sphere; the hit moves by up to
+// sag / cos(i) along the ray, turning the normal by sag tan(i) <= 1.3e-4
+// for cos(i) >= 0.5; interpolating unit normals across a facet adds at most
+// dtheta^2 / 8 = 7.5e-5. The bound below is their sum, rounded up.
+TEST(Renderer, SphereLambertMatchesAnalyticNormal) {
+  Scene s;
+  s.camera.width = s.camera.height = 64;
+  UvSphere sph;
+  sph.segments_longitude = 256, sph.segments_latitude = 128;
+  s.objects = {sph};
+  s.material.model = Lambert{glm::dvec3(1.0)};
+  glm::dvec3 dir = glm::normalize(glm::dvec3(-1, -1, -1));
+  s.lights = {DirectionalLight{dir, glm::dvec3(1.0)}};
+  Image img = renderScene(s, RenderOptions{});
+  CameraRays cam(s.camera);
+  double worst = 0;
+  int covered = 0;
+  for (int j = 0; j < 64; ++j) {
+    for (int i = 0; i < 64; ++i) {
+      glm::dvec3 d = cam.direction(i + 0.5, j + 0.5), o = cam.origin;
+      // Exact sphere hit.
+      double b = glm::dot(o, d), c = glm::dot(o, o) - 1.0, disc = b * b - c;
+      if (disc < 0.0 || img.pixel(i, j)[3] == 0.0f) continue;
+      glm::dvec3 n = glm::normalize(o + (-b - std::sqrt(disc)) * d);
+      if (glm::dot(n, -d) < 0.5) continue;  // cos(i) >= 0.5 only
+      double expect = std::max(0.0, glm::dot(n, -dir));
+      worst = std::max(worst, std::abs(img.pixel(i, j)[0] - expect));
+      ++covered;
+    }
+  }
+  EXPECT_GT(covered, 700);  // the disc is ~1120 px, 3/4 of it has cos(i) >= 0.5
+  EXPECT_LT(worst, 2.1e-4);
+}
+
+// Embree's traversal with the double-precision callback finds exactly the
+// closest hit that brute force over all triangles finds.
+TEST(Renderer, DoubleAccelMatchesBruteForce) {
+  TorusKnot k;
+  k.segments_along = 96, k.segments_around = 12;
+  std::vector<TriangleMesh> meshes{tessellateTorusKnot(k)};
+  Accel accel(meshes, Precision::Double);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int hits = 0;
+  for (int i = 0; i < 3000; ++i) {
+    glm::dvec3 o(u(rng) * 0.5, u(rng) * 0.5, 4.0);
+    glm::dvec3 d = glm::normalize(glm::dvec3(u(rng) * 1.5, u(rng) * 1.5, 0) - o);
+    Hit h = accel.intersect(o, d);
+    RayShear r(o, d);
+    double best = 1e300;
+    uint32_t best_tri = 0;
+    for (uint32_t t = 0; t < meshes[0].triangles.size(); ++t) {
+      const auto& tri = meshes[0].triangles[t];
+      TriangleHit th;
+      if (intersectTriangle(r, meshes[0].positions[tri[0]], meshes[0].positions[tri[1]],
+                            meshes[0].positions[tri[2]], 0.0, best, th))
+        best = th.t, best_tri = t;
+    }
+    ASSERT_EQ(h.hit, best < 1e300) << i;
+    if (h.hit) {
+      ++hits;
+      EXPECT_EQ(h.t, best);
+      EXPECT_EQ(h.triangle, best_tri);
+    }
+  }
+  EXPECT_GT(hits, 500);
+}
+
+// The float path agrees with the double path away from silhouettes.
+TEST(Renderer, FloatAgreesWithDoubleOnThePaperKnot) {
+  Scene s = loadScene(std::string(XVAL_REFERENCE_DIR) + "/scenes/fig1_yiq_front.json");
+  s.camera.width = s.camera.height = 128;
+  RenderOptions od, of;
+  of.precision = Precision::Float;
+  Image a = renderScene(s, od), b = renderScene(s, of);
+  int mask_diff = 0, covered = 0;
+  std::vector<float> errs;
+  for (size_t i = 0; i < size_t(128 * 128); ++i) {
+    bool ha = a.rgba[i * 4 + 3] > 0, hb = b.rgba[i * 4 + 3] > 0;
+    if (ha != hb) { ++mask_diff; continue; }
+    if (!ha) continue;
+    ++covered;
+    for (int c = 0; c < 3; ++c) errs.push_back(std::abs(a.rgba[i * 4 + c] - b.rgba[i * 4 + c]));
+  }
+  std::sort(errs.begin(), errs.end());
+  EXPECT_GT(covered, 3000);
+  EXPECT_LT(mask_diff, 10);
+  EXPECT_LT(errs[size_t(errs.size() * 0.999)], 2e-3);
+}
+
+// With n x n samples, a silhouette pixel gets fractional alpha, and an
+// interior pixel of constant colour keeps its exact value.
+TEST(Renderer, StratifiedSamplesGiveFractionalCoverage) {
+  Scene s = litPlane(ShadingMode::Phong);
+  // Half-width 0.95 puts the plane's edges at x = 16 +- 6.553 px: 2 of the
+  // 4 sample columns of pixels 22 and 9 are covered.
+  std::get<Plane>(s.objects[0]).size = {1.9, 1.9};
+  RenderOptions o;
+  o.spp = 16;
+  Image img = renderScene(s, o);
+  EXPECT_EQ(img.pixel(16, 12)[0], 0.5f);
+  EXPECT_EQ(img.pixel(16, 12)[3], 1.0f);
+  int partial = 0;
+  for (int i = 0; i < 32; ++i) {
+    float a = img.pixel(i, 12)[3];
+    if (a > 0.0f && a < 1.0f) {
+      ++partial;
+      EXPECT_NEAR(img.pixel(i, 12)[0], 0.5f * a, 1e-6);  // premultiplied
+    }
+  }
+  EXPECT_EQ(partial, 2);  // the plane's left and right edges
+  EXPECT_EQ(img.pixel(22, 12)[3], 0.5f);
+  EXPECT_EQ(img.pixel(9, 12)[3], 0.5f);
+}

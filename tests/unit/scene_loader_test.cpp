@@ -1,0 +1,193 @@
+// Scene files: one test per kind of bad input; each asserts that the
+// message names the file, the field path and the bad value.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "scene/scene_loader.h"
+
+using namespace xval;
+
+namespace {
+
+const char* kValid = R"({
+  "format": "xval-scene/1",
+  "name": "t",
+  "camera": {"position": [0, 0, 4], "target": [0, 0, 0], "width": 64, "height": 48},
+  "objects": [{"shape": "sphere"}],
+  "material": {"model": {"type": "classic_phong"}},
+  "lights": [{"type": "point", "position": [1, 2, 3]}]
+})";
+
+// Applies a textual substitution to the valid scene and expects a
+// SceneError containing every `needles` string.
+void expectError(const std::string& from, const std::string& to,
+                 std::initializer_list<std::string> needles) {
+  std::string text = kValid;
+  auto pos = text.find(from);
+  ASSERT_NE(pos, std::string::npos) << from;
+  text.replace(pos, from.size(), to);
+  try {
+    parseScene(text, "dir/scene.json");
+    FAIL() << "no error for: " << to;
+  } catch (const SceneError& e) {
+    std::string msg = e.what();
+    EXPECT_NE(msg.find("dir/scene.json"), std::string::npos) << msg;
+    for (const auto& n : needles) EXPECT_NE(msg.find(n), std::string::npos) << "'" << n << "' not in: " << msg;
+  }
+}
+
+}  // namespace
+
+TEST(SceneLoader, ValidSceneLoadsWithDefaults) {
+  Scene s = parseScene(kValid, "scene.json");
+  EXPECT_EQ(s.name, "t");
+  EXPECT_EQ(s.camera.width, 64);
+  EXPECT_EQ(s.camera.height, 48);
+  EXPECT_DOUBLE_EQ(s.camera.fov_y_deg, 45.0);
+  ASSERT_EQ(s.objects.size(), 1u);
+  EXPECT_TRUE(std::holds_alternative<UvSphere>(s.objects[0]));
+  EXPECT_EQ(s.shading, ShadingMode::Phong);
+  EXPECT_EQ(s.render.spp, 1);
+  EXPECT_EQ(s.render.precision, Precision::Double);
+  const auto& p = std::get<ClassicPhong>(s.material.model);
+  EXPECT_DOUBLE_EQ(p.shininess, 55.0);
+  EXPECT_FALSE(s.material.texture.has_value());
+}
+
+TEST(SceneLoader, TruncatedJson) {
+  try {
+    parseScene(std::string(kValid).substr(0, 60), "dir/scene.json");
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("dir/scene.json: not valid JSON"), std::string::npos);
+  }
+}
+
+TEST(SceneLoader, UnknownField) {
+  expectError("\"name\": \"t\"", "\"name\": \"t\", \"colour\": 3", {"colour", "unknown field"});
+  expectError("{\"shape\": \"sphere\"}", "{\"shape\": \"sphere\", \"radius_m\": 2}",
+              {"objects[0].radius_m", "unknown field"});
+}
+
+TEST(SceneLoader, WrongType) {
+  expectError("\"width\": 64", "\"width\": \"64\"", {"camera.width", "\"64\"", "integer"});
+  expectError("\"position\": [1, 2, 3]", "\"position\": [1, \"x\", 3]",
+              {"lights[0].position[1]", "\"x\""});
+}
+
+TEST(SceneLoader, MissingRequiredValue) {
+  expectError("\"target\": [0, 0, 0], ", "", {"camera.target", "missing"});
+  expectError("\"position\": [1, 2, 3]", "\"color\": [1, 1, 1]", {"lights[0].position", "missing"});
+}
+
+TEST(SceneLoader, NanIsRejected) {
+  // JSON has no NaN literal: the parser names the position.
+  std::string text = kValid;
+  text.replace(text.find("[1, 2, 3]"), 9, "[NaN, 2, 3]");
+  try {
+    parseScene(text, "dir/scene.json");
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("dir/scene.json: not valid JSON"), std::string::npos);
+  }
+}
+
+TEST(SceneLoader, NonFiniteNumberIsRejected) {
+  // A literal too large for a double is rejected by the parser, with the
+  // literal in the message.
+  std::string text = kValid;
+  text.replace(text.find("[1, 2, 3]"), 9, "[1e999, 2, 3]");
+  try {
+    parseScene(text, "dir/scene.json");
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("dir/scene.json: not valid JSON"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("1e999"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SceneLoader, NegativeResolution) {
+  expectError("\"width\": 64", "\"width\": -64", {"camera.width", "-64", "[1, 16384]"});
+}
+
+TEST(SceneLoader, AbsurdResolution) {
+  expectError("\"width\": 64, \"height\": 48", "\"width\": 16384, \"height\": 16384",
+              {"camera.width", "exceeds"});
+}
+
+TEST(SceneLoader, ZeroLengthDirection) {
+  expectError("{\"type\": \"point\", \"position\": [1, 2, 3]}",
+              "{\"type\": \"directional\", \"direction\": [0, 0, 0]}",
+              {"lights[0].direction", "non-zero direction"});
+}
+
+TEST(SceneLoader, OutOfRangeNumbers) {
+  expectError("\"width\": 64", "\"width\": 64, \"fov_y_deg\": 180", {"camera.fov_y_deg", "180"});
+  expectError("{\"type\": \"classic_phong\"}", "{\"type\": \"classic_phong\", \"shininess\": -1}",
+              {"material.model.shininess", "-1"});
+  expectError("{\"type\": \"classic_phong\"}", "{\"type\": \"wrap_around\", \"factor\": 1.5}",
+              {"material.model.factor", "1.5"});
+}
+
+TEST(SceneLoader, UnknownChoice) {
+  expectError("{\"type\": \"classic_phong\"}", "{\"type\": \"blinn\"}",
+              {"material.model.type", "\"blinn\"", "classic_phong"});
+  expectError("\"name\": \"t\"", "\"name\": \"t\", \"shading\": \"smooth\"", {"shading", "smooth"});
+}
+
+TEST(SceneLoader, SppMustBeAPerfectSquare) {
+  expectError("\"name\": \"t\"", "\"name\": \"t\", \"render\": {\"spp\": 8}", {"render.spp", "8", "perfect square"});
+}
+
+TEST(SceneLoader, NotAKnot) {
+  expectError("{\"shape\": \"sphere\"}", "{\"shape\": \"torus_knot\", \"p\": 2, \"q\": 4}",
+              {"objects[0].q", "coprime"});
+}
+
+TEST(SceneLoader, BaseColorAndTextureTogether) {
+  expectError("{\"type\": \"classic_phong\"}}",
+              "{\"type\": \"classic_phong\"}, \"texture\": {\"source\": \"brick\"}, \"base_color\": [1, 0, 0]}",
+              {"material.base_color"});
+}
+
+TEST(SceneLoader, MissingTextureFile) {
+  expectError("{\"type\": \"classic_phong\"}}",
+              "{\"type\": \"classic_phong\"}, \"texture\": {\"source\": \"image\", \"path\": \"no/such.png\"}}",
+              {"material.texture.path", "no/such.png", "does not exist"});
+}
+
+TEST(SceneLoader, AttenuationConstantMustBePositive) {
+  expectError("\"position\": [1, 2, 3]",
+              "\"position\": [1, 2, 3], \"attenuation\": {\"constant\": 0, \"quadratic\": 1}",
+              {"lights[0].attenuation.constant", "> 0"});
+}
+
+TEST(SceneLoader, CameraLookingAlongUp) {
+  expectError("\"target\": [0, 0, 0]", "\"target\": [0, 5, 4]", {"camera.up", "parallel"});
+}
+
+TEST(SceneLoader, MissingFileAndRelativeTexturePath) {
+  EXPECT_THROW(loadScene("/no/such/scene.json"), SceneError);
+  auto dir = std::filesystem::temp_directory_path() / "xval_loader_test";
+  std::filesystem::create_directories(dir);
+  { std::ofstream(dir / "tex.png") << "not really a png"; }
+  std::string text = kValid;
+  text.replace(text.find("{\"type\": \"classic_phong\"}}"), 26,
+               "{\"type\": \"classic_phong\"}, \"texture\": {\"source\": \"image\", \"path\": \"tex.png\"}}");
+  { std::ofstream(dir / "s.json") << text; }
+  Scene s = loadScene(dir / "s.json");
+  ASSERT_TRUE(s.material.texture.has_value());
+  EXPECT_EQ(s.material.texture->path, dir / "tex.png");
+}
+
+TEST(SceneLoader, EveryReferenceSceneLoads) {
+  int n = 0;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(XVAL_REFERENCE_DIR)) {
+    if (e.path().extension() != ".json") continue;
+    EXPECT_NO_THROW(loadScene(e.path())) << e.path();
+    ++n;
+  }
+  EXPECT_GE(n, 20);
+}
