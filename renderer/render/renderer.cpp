@@ -3,6 +3,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <mutex>
 #include <optional>
 #include <thread>
 
@@ -97,6 +98,8 @@ void renderT(const Scene& scene, const std::vector<TriangleMesh>& meshes, const 
   const bool want_raw = !img.raw.empty();
   std::atomic<int> next_row{0}, rows_done{0};
   auto t_trace = Clock::now();
+  std::mutex progress_lock;
+  auto last_report = t_trace;
 
   auto worker = [&]() {
     for (int j = next_row++; j < H; j = next_row++) {
@@ -142,30 +145,24 @@ void renderT(const Scene& scene, const std::vector<TriangleMesh>& meshes, const 
         if (want_raw)
           for (int k = 0; k < 3; ++k) img.raw[(size_t(j) * W + i) * 3 + k] = float(sum_raw[k] * inv);
       }
-      ++rows_done;
+      int done = ++rows_done;
+      // Progress, at most once a second, from whichever thread gets there.
+      if (opt.progress && progress_lock.try_lock()) {
+        if (secondsSince(last_report) >= 1.0 && done < H) {
+          last_report = Clock::now();
+          double f = double(done) / H, el = secondsSince(t_trace);
+          std::fprintf(stderr, "  render: %5.1f%%  %.1f s elapsed, ~%.1f s left\n", 100.0 * f,
+                       el, el * (1.0 - f) / f);
+        }
+        progress_lock.unlock();
+      }
     }
   };
 
   int threads = opt.threads > 0 ? opt.threads : int(std::max(1u, std::thread::hardware_concurrency()));
   std::vector<std::thread> pool;
   for (int k = 1; k < threads; ++k) pool.emplace_back(worker);
-  if (opt.progress) {
-    // The calling thread reports progress while the pool works.
-    std::thread main_worker(worker);
-    auto last = Clock::now();
-    while (rows_done.load() < H) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(50));
-      if (secondsSince(last) >= 1.0) {
-        last = Clock::now();
-        double f = double(rows_done.load()) / H, el = secondsSince(t_trace);
-        std::fprintf(stderr, "  render: %5.1f%%  %.1f s elapsed, ~%.1f s left\n", 100.0 * f, el,
-                     f > 0 ? el * (1.0 - f) / f : 0.0);
-      }
-    }
-    main_worker.join();
-  } else {
-    worker();
-  }
+  worker();
   for (auto& t : pool) t.join();
   stats.trace_seconds += secondsSince(t_trace);
 }
