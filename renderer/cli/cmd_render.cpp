@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "povray/pov_render.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 
@@ -16,6 +17,9 @@ struct RenderArgs {
   std::string precision;
   int threads = 0;
   bool quiet = false;
+  std::string renderer = "reference";
+  std::string work_dir;
+  double timeout = kDefaultToolTimeoutSeconds;
 };
 }  // namespace
 
@@ -40,6 +44,16 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--threads", args->threads, "Worker threads (default: all hardware threads)")
       ->check(CLI::Range(1, 1024));
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr");
+  cmd->add_option("--renderer", args->renderer,
+                  "reference (default), or povray: export, run POV-Ray with a time-out and "
+                  "return its image as linear float (alpha = hit mask)")
+      ->check(CLI::IsMember({"reference", "povray"}));
+  cmd->add_option("--work-dir", args->work_dir,
+                  "Folder for an external renderer's export, log and raw output (default: "
+                  "OUT's folder/OUT-stem.RENDERER)");
+  cmd->add_option("--timeout", args->timeout,
+                  "Seconds before an external renderer is killed and the render fails (default 600)")
+      ->check(CLI::PositiveNumber);
   cmd->callback([args, &run]() {
     run = [args]() {
       Scene scene = loadScene(args->scene);
@@ -56,6 +70,22 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
         opt.precision = args->precision == "float" ? Precision::Float : Precision::Double;
       opt.threads = args->threads;
       opt.progress = !args->quiet;
+      if (args->renderer != "reference") {
+        if (args->spp || !args->precision.empty())
+          throw std::runtime_error("--spp and --precision apply to the reference renderer only");
+        std::filesystem::path out(args->output);
+        std::filesystem::path work = args->work_dir.empty()
+            ? out.parent_path() / (out.stem().string() + "." + args->renderer)
+            : std::filesystem::path(args->work_dir);
+        ExternalRenderInfo info;
+        Image img = renderWithPovray(scene, work, args->timeout, &info);
+        writeImage(img, out);
+        if (!args->quiet)
+          std::fprintf(stderr, "xval render: wrote %s (%s, %dx%d): %.3f s (whole process), work dir %s\n",
+                       args->output.c_str(), args->renderer.c_str(), img.width, img.height,
+                       info.seconds, work.c_str());
+        return 0;
+      }
       RenderStats stats;
       Image img = renderScene(scene, opt, &stats);
       writeImage(img, args->output);

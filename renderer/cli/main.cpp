@@ -18,6 +18,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "xval 0.1.0");
   std::function<int()> run;
   xval::cli::addRenderCommand(app, run);
+  xval::cli::addExportCommand(app, run);
+  xval::cli::addCompareCommand(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -29,6 +29,9 @@ struct TriangleMesh {
 TriangleMesh tessellateTorusKnot(const TorusKnot& k);
 TriangleMesh tessellateSphere(const UvSphere& s);
 TriangleMesh tessellatePlane(const Plane& p);
+// The shape's mesh with every attribute rounded to float32 (the precision of
+// glTF buffers and POV-Ray's mesh2), so that all renderers trace the very
+// same triangles. Normals stay unit length to float32 precision.
 TriangleMesh tessellate(const Shape& shape);
 
 }  // namespace xval

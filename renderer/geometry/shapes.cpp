@@ -56,8 +56,19 @@ TriangleMesh tessellatePlane(const Plane& p) {
   return m;
 }
 
+namespace {
+// Rounds every attribute to the nearest float32. glTF buffers and POV-Ray's
+// mesh2 store float32; rounding here makes the reference renderer trace
+// exactly the triangles the other renderers receive.
+void roundToFloat(TriangleMesh& m) {
+  for (auto& p : m.positions) p = glm::dvec3(glm::vec3(p));
+  for (auto& n : m.normals) n = glm::dvec3(glm::vec3(n));
+  for (auto& uv : m.uvs) uv = glm::dvec2(glm::vec2(uv));
+}
+}  // namespace
+
 TriangleMesh tessellate(const Shape& shape) {
-  return std::visit(
+  TriangleMesh m = std::visit(
       [](const auto& s) -> TriangleMesh {
         using S = std::decay_t<decltype(s)>;
         if constexpr (std::is_same_v<S, TorusKnot>) return tessellateTorusKnot(s);
@@ -65,6 +76,8 @@ TriangleMesh tessellate(const Shape& shape) {
         else return tessellatePlane(s);
       },
       shape);
+  roundToFloat(m);
+  return m;
 }
 
 }  // namespace xval

@@ -11,6 +11,7 @@
 #include "geometry/mesh.h"
 #include "render/accel.h"
 #include "shading/shader.h"
+#include "shading/surface_colour.h"
 #include "texture/texture.h"
 
 namespace xval {
@@ -37,19 +38,9 @@ template <class T> struct ShadedMesh {
   std::vector<glm::vec<2, T>> uv;
 };
 
-template <class T> struct SurfaceColour {
-  const Texture* texture;
-  TextureFilter filter;
-  glm::vec<3, T> base;
-  glm::vec<3, T> at(glm::vec<2, T> uv) const {
-    return texture ? texture->lookup(uv, filter) : base;
-  }
-};
-
 template <class T>
 ShadedMesh<T> prepareMesh(const TriangleMesh& m, ShadingMode mode, const Shader<T>& shader,
                           const SurfaceColour<T>& colour, glm::vec<3, T> eye) {
-  using V = glm::vec<3, T>;
   ShadedMesh<T> s;
   s.src = &m;
   s.p.reserve(m.positions.size());
@@ -67,13 +58,7 @@ ShadedMesh<T> prepareMesh(const TriangleMesh& m, ShadingMode mode, const Shader<
       s.face_n.emplace_back(g);
     }
   }
-  if (mode == ShadingMode::Gouraud) {
-    s.vertex_colour.resize(s.p.size());
-    for (size_t i = 0; i < s.p.size(); ++i) {
-      V v = glm::normalize(eye - s.p[i]);
-      s.vertex_colour[i] = shader.shade(s.p[i], s.n[i], v, colour.at(s.uv[i]));
-    }
-  }
+  if (mode == ShadingMode::Gouraud) s.vertex_colour = gouraudVertexColours(shader, m, colour, eye);
   return s;
 }
 
@@ -83,10 +68,7 @@ void renderT(const Scene& scene, const std::vector<TriangleMesh>& meshes, const 
   using V = glm::vec<3, T>;
   auto t0 = Clock::now();
   const Shader<T> shader(scene.material, scene.lights);
-  const SurfaceColour<T> colour{texture,
-                                scene.material.texture ? scene.material.texture->filter
-                                                       : TextureFilter::Nearest,
-                                V(scene.material.base_color)};
+  const SurfaceColour<T> colour(scene.material, texture);
   const CameraRays cam(scene.camera);
   const V eye(cam.origin);
   std::vector<ShadedMesh<T>> shaded;

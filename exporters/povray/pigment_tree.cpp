@@ -1,0 +1,128 @@
+#include "povray/pigment_tree.h"
+
+#include <functional>
+
+#include "povray/sdl.h"
+
+namespace xval::pov {
+
+Pigment constant(glm::dvec3 c) { return affine(glm::dmat3(0.0), c); }
+
+Pigment affine(glm::dmat3 m, glm::dvec3 b) {
+  auto n = std::make_shared<PigmentNode>();
+  n->kind = PigmentNode::Kind::Leaf;
+  n->m = m;
+  n->b = b;
+  return n;
+}
+
+Pigment map(std::string pattern, std::vector<std::pair<double, Pigment>> entries) {
+  auto n = std::make_shared<PigmentNode>();
+  n->kind = PigmentNode::Kind::Map;
+  n->pattern = std::move(pattern);
+  n->entries = std::move(entries);
+  return n;
+}
+
+Pigment times(std::string pattern, Pigment p) {
+  return map(std::move(pattern), {{0.0, constant(glm::dvec3(0.0))}, {1.0, std::move(p)}});
+}
+
+Pigment sum(std::vector<Pigment> parts) {
+  if (parts.size() == 1) return parts[0];
+  auto n = std::make_shared<PigmentNode>();
+  n->kind = PigmentNode::Kind::Sum;
+  n->children = std::move(parts);
+  return n;
+}
+
+Pigment mapLeaves(const Pigment& p, const std::function<Pigment(const PigmentNode&)>& fn) {
+  switch (p->kind) {
+    case PigmentNode::Kind::Leaf: return fn(*p);
+    case PigmentNode::Kind::Map: {
+      std::vector<std::pair<double, Pigment>> e;
+      for (const auto& [v, c] : p->entries) e.emplace_back(v, mapLeaves(c, fn));
+      return map(p->pattern, std::move(e));
+    }
+    case PigmentNode::Kind::Sum: {
+      std::vector<Pigment> c;
+      for (const auto& ch : p->children) c.push_back(mapLeaves(ch, fn));
+      return sum(std::move(c));
+    }
+  }
+  return p;
+}
+
+Pigment scaled(const Pigment& p, double k) {
+  return mapLeaves(p, [k](const PigmentNode& l) { return affine(l.m * k, l.b * k); });
+}
+
+bool usesTexture(const Pigment& p) {
+  switch (p->kind) {
+    case PigmentNode::Kind::Leaf: return p->m != glm::dmat3(0.0);
+    case PigmentNode::Kind::Map:
+      for (const auto& e : p->entries)
+        if (usesTexture(e.second)) return true;
+      return false;
+    case PigmentNode::Kind::Sum:
+      for (const auto& c : p->children)
+        if (usesTexture(c)) return true;
+      return false;
+  }
+  return false;
+}
+
+namespace {
+
+std::string pad(int n) { return std::string(size_t(n) * 2, ' '); }
+
+// out = sum_ch C.ch m[ch] + b: an average of n parts, each carrying n
+// times its term, so that the average is the sum.
+std::string leafSdl(const PigmentNode& l, int ind) {
+  static const char* channel[3] = {"red", "green", "blue"};
+  int n = l.b != glm::dvec3(0.0) ? 1 : 0;
+  for (int ch = 0; ch < 3; ++ch) n += l.m[ch] != glm::dvec3(0.0) ? 1 : 0;
+  if (n == 0 || (n == 1 && l.b != glm::dvec3(0.0))) return pad(ind) + "rgb " + vec(l.b);
+  std::vector<std::string> parts;
+  for (int ch = 0; ch < 3; ++ch) {
+    glm::dvec3 col = l.m[ch];
+    if (col == glm::dvec3(0.0)) continue;
+    // C.ch in [0,1] is the pattern value; the colour_map scales it.
+    parts.push_back("uv_mapping function { XvalTexture(x, y, z)." + std::string(channel[ch]) +
+                    " } colour_map { [0 rgb 0] [1 rgb " + vec(col * double(n)) + "] }");
+  }
+  if (l.b != glm::dvec3(0.0)) parts.push_back("rgb " + vec(l.b * double(n)));
+  if (n == 1) return pad(ind) + parts[0];
+  std::string s = pad(ind) + "average pigment_map {\n";
+  for (const auto& part : parts) s += pad(ind + 1) + "[1 " + part + "]\n";
+  return s + pad(ind) + "}";
+}
+
+// A pigment body (what goes inside `pigment { }` or a pigment_map entry).
+std::string bodySdl(const Pigment& p, int ind) {
+  switch (p->kind) {
+    case PigmentNode::Kind::Leaf: return leafSdl(*p, ind);
+    case PigmentNode::Kind::Map: {
+      std::string s = pad(ind) + p->pattern + "\n" + pad(ind) + "pigment_map {\n";
+      for (const auto& [v, c] : p->entries)
+        s += pad(ind + 1) + "[" + num(v) + "\n" + bodySdl(c, ind + 2) + "]\n";
+      return s + pad(ind) + "}";
+    }
+    case PigmentNode::Kind::Sum: {
+      const double n = double(p->children.size());
+      std::string s = pad(ind) + "average pigment_map {\n";
+      for (const auto& c : p->children)
+        s += pad(ind + 1) + "[1\n" + bodySdl(scaled(c, n), ind + 2) + "]\n";
+      return s + pad(ind) + "}";
+    }
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string toSdl(const Pigment& p, int ind) {
+  return pad(ind) + "pigment {\n" + bodySdl(p, ind + 1) + "\n" + pad(ind) + "}";
+}
+
+}  // namespace xval::pov

@@ -1,0 +1,55 @@
+// POV-Ray 3.7 exporter: the scene as a self-contained folder that POV-Ray
+// renders, in ONE render, into the image the reference renderer makes.
+//
+// Written: scene.pov, scene.ini (every option that matters; render with
+// `povray scene.ini` from the folder), texture.png when the material has a
+// texture, README.txt. No user string reaches the SDL except, made safe, in
+// a comment: the texture is always copied to "texture.png".
+//
+// How each part of a model is computed (docs/povray-export.md):
+//  - geometry: mesh2 with the same positions, normals (Phong shading; none
+//    for flat shading, so POV-Ray uses the face normal) and uv_vectors
+//    (u, 1 - v: POV-Ray's image_map runs v bottom-up).
+//  - camera: location, direction, right and up set explicitly so that the
+//    primary ray of pixel (i, j) is the reference renderer's.
+//  - everything but the specular term is an emission pigment built from
+//    blend maps (pigment_tree.h) over
+//      * slope { point_at P } / slope { -dir } with `sine_wave frequency
+//        -0.5 phase 0.75`, which is exactly (1 + N.L) / 2, so any piecewise
+//        linear function of N.L is a pigment_map;
+//      * position functions for attenuation 1/(c + l d + q d^2) and for the
+//        spot cone;
+//      * the texture colour through function { pigment { image_map } }.
+//  - the specular term is POV-Ray's own `phong` (exactly
+//    ks max(R.V,0)^n Lc att, white), with `double_illuminate` to remove its
+//    N.L > 0 gate (the paper does not gate), `fade_distance`/`fade_power`
+//    or a texture_map over the attenuation function for attenuation, and a
+//    hard-edged spotlight for the cone.
+//  - Gouraud: per-vertex colours (the model evaluated at the vertices by
+//    the reference shader) in a mesh2 texture_list, interpolated by
+//    POV-Ray.
+// What cannot be exact in one render is refused with an ExportError that
+// says why (never an approximation in silence).
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+#include "scene/scene.h"
+
+namespace xval {
+
+class ExportError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct PovExport {
+  std::filesystem::path pov, ini, dir;
+  std::string output_name = "scene.png";  // written by POV-Ray into dir
+};
+
+PovExport exportPov(const Scene& scene, const std::filesystem::path& dir);
+
+}  // namespace xval

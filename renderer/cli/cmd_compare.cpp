@@ -1,0 +1,56 @@
+// xval compare A.exr B.exr [--tolerance-16bit T] [--fraction F] [--diff D.exr] [--json]
+#include <cstdio>
+#include <memory>
+
+#include "cli/commands.h"
+#include "image/compare.h"
+
+namespace xval::cli {
+
+void addCompareCommand(CLI::App& app, std::function<int()>& run) {
+  struct Args {
+    std::string a, b, diff;
+    double tol16 = 2.0, fraction = 0.999;
+    bool json = false;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "compare",
+      "Compare two renders of one scene over the pixels both cover (alpha > 0): max abs, "
+      "99.9th percentile, RMSE, PSNR, fraction within tolerance, hit-mask disagreements (on "
+      "silhouettes or not).\nExit 0 when within tolerance, 1 when not, 2 on errors.");
+  cmd->add_option("a", args->a, "First image")->required()->check(CLI::ExistingFile);
+  cmd->add_option("b", args->b, "Second image")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--tolerance-16bit", args->tol16, "Per-pixel tolerance in 1/65535 (default 2)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--fraction", args->fraction,
+                  "Fraction of covered pixels that must be within it (default 0.999)")
+      ->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--diff", args->diff, "Write |a - b| to this image");
+  cmd->add_flag("--json", args->json, "Print the metrics as JSON");
+  cmd->callback([args, &run]() {
+    run = [args]() {
+      Image a = readImage(args->a), b = readImage(args->b);
+      Tolerance t{args->tol16 / 65535.0, args->fraction};
+      CompareMetrics m = compareImages(a, b, t.max_abs);
+      if (!args->diff.empty()) writeImage(differenceImage(a, b), args->diff);
+      if (args->json) {
+        std::printf("%s\n", toJson(m, t).c_str());
+      } else {
+        std::printf(
+            "covered %lld px, mask disagreements %lld (%lld on silhouettes)\n"
+            "max %.3f  p99.9 %.3f  RMSE %.4f (x/65535)  PSNR %.1f dB  within %.3g: %.5f%%  -> %s\n",
+            m.covered_both, m.mask_disagree, m.mask_disagree_silhouette, m.max_abs * 65535,
+            m.p999_abs * 65535, m.rmse * 65535, m.psnr_db, args->tol16, 100 * m.fraction_within,
+            t.passes(m) ? "PASS" : "FAIL");
+        std::printf("pixels by error (x/65535):");
+        const char* names[7] = {"<=0.5", "<=1", "<=2", "<=4", "<=16", "<=256", ">256"};
+        for (int i = 0; i < 7; ++i) std::printf(" %s:%lld", names[i], m.histogram[i]);
+        std::printf("\nworst pixel (%d, %d)\n", m.worst_x, m.worst_y);
+      }
+      return t.passes(m) ? 0 : 1;
+    };
+  });
+}
+
+}  // namespace xval::cli

@@ -1,0 +1,34 @@
+// xval export pov SCENE.json -o DIR/
+#include <cstdio>
+#include <memory>
+
+#include "cli/commands.h"
+#include "povray/pov_exporter.h"
+#include "scene/scene_loader.h"
+
+namespace xval::cli {
+
+void addExportCommand(CLI::App& app, std::function<int()>& run) {
+  struct Args {
+    std::string format, scene, dir;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "export",
+      "Write a scene for an external renderer.\n  pov: a self-contained POV-Ray 3.7 folder "
+      "(scene.pov, scene.ini, texture.png, README.txt);\n       render it with `povray "
+      "scene.ini` from that folder.");
+  cmd->add_option("format", args->format, "Target format")->required()->check(CLI::IsMember({"pov"}));
+  cmd->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output", args->dir, "Output folder (created)")->required();
+  cmd->callback([args, &run]() {
+    run = [args]() {
+      Scene scene = loadScene(args->scene);
+      PovExport ex = exportPov(scene, args->dir);
+      std::fprintf(stderr, "xval export: wrote %s and %s\n", ex.pov.c_str(), ex.ini.c_str());
+      return 0;
+    };
+  });
+}
+
+}  // namespace xval::cli

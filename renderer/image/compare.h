@@ -1,0 +1,54 @@
+// Comparing two renders of one scene, over the pixels both cover.
+//
+// hit = alpha > 0. Pixels where exactly one image hits are "mask
+// disagreements"; those on a silhouette (their 3x3 neighbourhood in either
+// image holds both hits and misses) are expected where two renderers'
+// intersection arithmetic differ, any other is a real disagreement. Colour
+// metrics use the pixels both images hit; a pixel's error is its largest
+// channel difference. OpenImageIO's ImageBufAlgo::compare has no masks and
+// no percentiles, hence this.
+#pragma once
+
+#include <string>
+
+#include "image/image.h"
+
+namespace xval {
+
+struct CompareMetrics {
+  int width = 0, height = 0;
+  long long covered_both = 0;      // pixels both images hit
+  long long mask_disagree = 0;     // hit in one image only
+  long long mask_disagree_silhouette = 0;  // ... of those, on a silhouette
+  double max_abs = 0.0;            // over covered_both pixels, largest channel difference
+  double p999_abs = 0.0;           // 99.9th percentile of the per-pixel error
+  double rmse = 0.0;               // over covered_both pixels and the 3 channels
+  double psnr_db = 0.0;            // 20 log10(1 / rmse); infinite when equal
+  double fraction_within = 1.0;    // of covered_both pixels with error <= tolerance
+  double tolerance = 0.0;          // the per-pixel tolerance used for fraction_within
+  int worst_x = -1, worst_y = -1;  // where max_abs is
+  // Pixels by error in 1/65535: <= 0.5, 1, 2, 4, 16, 256, and above.
+  static constexpr double kHistogramEdges16[6] = {0.5, 1, 2, 4, 16, 256};
+  long long histogram[7] = {0, 0, 0, 0, 0, 0, 0};
+};
+
+// A declared tolerance: per-pixel error <= max_abs on at least `fraction`
+// of the pixels both images cover, and no mask disagreement off silhouettes.
+struct Tolerance {
+  double max_abs = 2.0 / 65535.0;
+  double fraction = 0.999;
+  bool passes(const CompareMetrics& m) const {
+    return m.fraction_within >= fraction && m.mask_disagree == m.mask_disagree_silhouette &&
+           m.covered_both > 0;
+  }
+};
+
+// Throws std::runtime_error when the images differ in size.
+CompareMetrics compareImages(const Image& a, const Image& b, double tolerance);
+
+// |a - b| per channel (RGB, alpha = 1 where either hits), for looking at.
+Image differenceImage(const Image& a, const Image& b);
+
+std::string toJson(const CompareMetrics& m, const Tolerance& t);
+
+}  // namespace xval

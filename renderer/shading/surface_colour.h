@@ -1,0 +1,48 @@
+// SurfaceColour: the C of the models at a uv: the texture (with the
+// material's filter) when there is one, else the base colour; no texture
+// fetch without a texture.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+#include "geometry/mesh.h"
+#include "scene/scene.h"
+#include "shading/shader.h"
+#include "texture/texture.h"
+
+namespace xval {
+
+template <class T> struct SurfaceColour {
+  const Texture* texture = nullptr;
+  TextureFilter filter = TextureFilter::Nearest;
+  glm::vec<3, T> base{1};
+
+  SurfaceColour(const Material& m, const Texture* tex)
+      : texture(tex),
+        filter(m.texture ? m.texture->filter : TextureFilter::Nearest),
+        base(m.base_color) {}
+
+  glm::vec<3, T> at(glm::vec<2, T> uv) const {
+    return texture ? texture->lookup(uv, filter) : base;
+  }
+};
+
+// Gouraud shading's vertex colours: the model at each vertex (its position
+// and normal, the texture at its uv, V towards `eye`), unsaturated.
+template <class T>
+std::vector<glm::vec<3, T>> gouraudVertexColours(const Shader<T>& shader, const TriangleMesh& m,
+                                                 const SurfaceColour<T>& colour,
+                                                 glm::vec<3, T> eye) {
+  using V = glm::vec<3, T>;
+  std::vector<V> out(m.positions.size());
+  for (size_t i = 0; i < out.size(); ++i) {
+    V p(m.positions[i]);
+    out[i] = shader.shade(p, V(m.normals[i]), glm::normalize(eye - p),
+                          colour.at(glm::vec<2, T>(m.uvs[i])));
+  }
+  return out;
+}
+
+}  // namespace xval
