@@ -33,9 +33,15 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
   bool ok;
   if (ext == ".exr") {
     const bool raw = !img.raw.empty();
-    OIIO::ImageSpec spec(img.width, img.height, raw ? 7 : 4, OIIO::TypeDesc::FLOAT);
+    const bool diag = !img.depth.empty();
+    OIIO::ImageSpec spec(img.width, img.height, 4 + (raw ? 3 : 0) + (diag ? 2 : 0),
+                         OIIO::TypeDesc::FLOAT);
     spec.channelnames = {"R", "G", "B", "A"};
     if (raw) spec.channelnames.insert(spec.channelnames.end(), {"raw.R", "raw.G", "raw.B"});
+    if (diag) {
+      spec.channelnames.insert(spec.channelnames.end(), {"Z", "backfacing"});
+      spec.z_channel = 4 + (raw ? 3 : 0);
+    }
     spec.alpha_channel = 3;
     spec.attribute("compression", "zip");
     spec.attribute("oiio:ColorSpace", "Linear");
@@ -43,6 +49,10 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
     for (size_t i = 0; i < n; ++i) {
       std::copy_n(&img.rgba[i * 4], 4, &buf[i * spec.nchannels]);
       if (raw) std::copy_n(&img.raw[i * 3], 3, &buf[i * spec.nchannels + 4]);
+      if (diag) {
+        buf[i * spec.nchannels + spec.z_channel] = img.depth[i];
+        buf[i * spec.nchannels + spec.z_channel + 1] = img.backfacing[i];
+      }
     }
     ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::FLOAT, buf.data());
   } else {
@@ -83,7 +93,12 @@ Image readImage(const std::filesystem::path& file) {
   int raw[3] = {channel("raw.R"), channel("raw.G"), channel("raw.B")};
   bool has_raw = raw[0] >= 0 && raw[1] >= 0 && raw[2] >= 0;
   Image img(spec.width, spec.height, has_raw);
+  int zc = channel("Z"), bc = channel("backfacing");
+  if (zc < 0 || bc < 0) img.depth.clear(), img.backfacing.clear();
+  else if (img.depth.empty())
+    img.depth.resize(size_t(spec.width) * spec.height), img.backfacing.resize(img.depth.size());
   for (size_t i = 0; i < size_t(spec.width) * spec.height; ++i) {
+    if (zc >= 0 && bc >= 0) img.depth[i] = buf[i * nc + zc], img.backfacing[i] = buf[i * nc + bc];
     for (int c = 0; c < 4; ++c)
       img.rgba[i * 4 + c] = ch[c] >= 0 ? buf[i * nc + ch[c]] : 1.0f;
     if (has_raw)

@@ -87,13 +87,15 @@ void renderT(const Scene& scene, const std::vector<TriangleMesh>& meshes, const 
     for (int j = next_row++; j < H; j = next_row++) {
       for (int i = 0; i < W; ++i) {
         V sum_final(0), sum_raw(0);
-        int hits = 0;
+        int hits = 0, backfacing = 0;
+        double nearest = 0.0;
         for (int sy = 0; sy < n; ++sy) {
           for (int sx = 0; sx < n; ++sx) {
             double x = i + (sx + 0.5) / n, y = j + (sy + 0.5) / n;
             glm::dvec3 dir = cam.direction(x, y);
             Hit h = accel.intersect(cam.origin, dir);
             if (!h.hit) continue;
+            if (hits == 0 || h.t < nearest) nearest = h.t;
             const ShadedMesh<T>& m = shaded[h.mesh];
             const auto& tri = m.src->triangles[h.triangle];
             const T b1 = T(h.b1), b2 = T(h.b2), b0 = T(1) - b1 - b2;
@@ -113,6 +115,7 @@ void renderT(const Scene& scene, const std::vector<TriangleMesh>& meshes, const 
               }
               glm::vec<2, T> uv = b0 * m.uv[tri[0]] + b1 * m.uv[tri[1]] + b2 * m.uv[tri[2]];
               V v = glm::normalize(eye - p);
+              backfacing += glm::dot(nrm, v) < T(0);
               c = shader.shade(p, nrm, v, colour.at(uv));
             }
             sum_final += models::saturate(c);
@@ -124,8 +127,12 @@ void renderT(const Scene& scene, const std::vector<TriangleMesh>& meshes, const 
         float* px = img.pixel(i, j);
         for (int k = 0; k < 3; ++k) px[k] = float(sum_final[k] * inv);
         px[3] = float(T(hits) * inv);
-        if (want_raw)
-          for (int k = 0; k < 3; ++k) img.raw[(size_t(j) * W + i) * 3 + k] = float(sum_raw[k] * inv);
+        if (want_raw) {
+          const size_t at = size_t(j) * W + i;
+          for (int k = 0; k < 3; ++k) img.raw[at * 3 + k] = float(sum_raw[k] * inv);
+          img.depth[at] = float(nearest);
+          img.backfacing[at] = hits ? float(backfacing) / float(hits) : 0.0f;
+        }
       }
       int done = ++rows_done;
       // Progress, at most once a second, from whichever thread gets there.
