@@ -32,7 +32,7 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
     run = [args]() {
       Image a = readImage(args->a), b = readImage(args->b);
       Tolerance t{args->tol16 / 65535.0, args->fraction};
-      CompareMetrics m = compareImages(a, b, t.max_abs);
+      CompareMetrics m = compareImages(a, b, t);
       if (!args->diff.empty()) writeImage(differenceImage(a, b), args->diff);
       if (args->json) {
         std::printf("%s\n", toJson(m, t).c_str());
@@ -46,7 +46,9 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
         std::printf("pixels by error (x/65535):");
         const char* names[7] = {"<=0.5", "<=1", "<=2", "<=4", "<=16", "<=256", ">256"};
         for (int i = 0; i < 7; ++i) std::printf(" %s:%lld", names[i], m.histogram[i]);
-        std::printf("\nworst pixel (%d, %d)\n", m.worst_x, m.worst_y);
+        std::printf("\nover tolerance: %lld (occlusion edge %lld, backfacing normal %lld, unexplained %lld)\n",
+                    m.over_tolerance, m.over_occlusion_edge, m.over_backfacing, m.over_unexplained);
+        std::printf("worst pixel (%d, %d)\n", m.worst_x, m.worst_y);
       }
       return t.passes(m) ? 0 : 1;
     };

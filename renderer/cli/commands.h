@@ -11,5 +11,6 @@ namespace xval::cli {
 void addRenderCommand(CLI::App& app, std::function<int()>& run);
 void addExportCommand(CLI::App& app, std::function<int()>& run);
 void addCompareCommand(CLI::App& app, std::function<int()>& run);
+void addCrosscheckCommand(CLI::App& app, std::function<int()>& run);
 
 }  // namespace xval::cli

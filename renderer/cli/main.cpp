@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   xval::cli::addRenderCommand(app, run);
   xval::cli::addExportCommand(app, run);
   xval::cli::addCompareCommand(app, run);
+  xval::cli::addCrosscheckCommand(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

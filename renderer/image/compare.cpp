@@ -25,9 +25,28 @@ bool onSilhouette(const Image& img, int x, int y) {
     }
   return any_hit && any_miss;
 }
+
+// A depth jump of more than 5% to a neighbour, or a neighbour missed: the
+// pixel sits where one surface occludes another.
+bool onOcclusionEdge(const Image& img, int x, int y) {
+  if (img.depth.empty()) return false;
+  const float z = img.depth[size_t(y) * img.width + x];
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      int xx = x + dx, yy = y + dy;
+      if (xx < 0 || yy < 0 || xx >= img.width || yy >= img.height || !hit(img, xx, yy)) return true;
+      if (std::abs(img.depth[size_t(yy) * img.width + xx] - z) > 0.05f * z) return true;
+    }
+  return false;
+}
+
+bool backfacing(const Image& img, int x, int y) {
+  return !img.backfacing.empty() && img.backfacing[size_t(y) * img.width + x] > 0.0f;
+}
 }  // namespace
 
-CompareMetrics compareImages(const Image& a, const Image& b, double tolerance) {
+CompareMetrics compareImages(const Image& a, const Image& b, const Tolerance& t) {
+  const double tolerance = t.max_abs;
   if (a.width != b.width || a.height != b.height)
     throw std::runtime_error("cannot compare a " + std::to_string(a.width) + "x" +
                              std::to_string(a.height) + " image with a " +
@@ -47,6 +66,9 @@ CompareMetrics compareImages(const Image& a, const Image& b, double tolerance) {
         continue;
       }
       if (!ha) continue;
+      const bool bf = backfacing(a, x, y) || backfacing(b, x, y);
+      m.backfacing_pixels += bf;
+      if (bf && t.exclude_backfacing) continue;
       ++m.covered_both;
       double e = 0.0;
       for (int c = 0; c < 3; ++c) {
@@ -61,6 +83,12 @@ CompareMetrics compareImages(const Image& a, const Image& b, double tolerance) {
       while (bin < 6 && e * 65535.0 > CompareMetrics::kHistogramEdges16[bin]) ++bin;
       ++m.histogram[bin];
       within += e <= tolerance;
+      if (e > tolerance) {
+        ++m.over_tolerance;
+        if (bf) ++m.over_backfacing;
+        else if (onOcclusionEdge(a, x, y) || onOcclusionEdge(b, x, y)) ++m.over_occlusion_edge;
+        else ++m.over_unexplained;
+      }
     }
   }
   if (m.covered_both > 0) {
@@ -104,9 +132,16 @@ std::string toJson(const CompareMetrics& m, const Tolerance& t) {
       {"psnr_db", finite(m.psnr_db)},
       {"fraction_within", m.fraction_within},
       {"worst_pixel", {m.worst_x, m.worst_y}},
+      {"backfacing_pixels", m.backfacing_pixels},
+      {"over_tolerance", {{"total", m.over_tolerance},
+                          {"occlusion_edge", m.over_occlusion_edge},
+                          {"backfacing_normal", m.over_backfacing},
+                          {"unexplained", m.over_unexplained}}},
       {"histogram_16bit", {{"edges", CompareMetrics::kHistogramEdges16},
                            {"counts", m.histogram}}},
-      {"tolerance", {{"max_abs_16bit", t.max_abs * 65535.0}, {"fraction", t.fraction}}},
+      {"tolerance", {{"max_abs_16bit", t.max_abs * 65535.0},
+                     {"fraction", t.fraction},
+                     {"exclude_backfacing", t.exclude_backfacing}}},
       {"pass", t.passes(m)}};
   return j.dump(2);
 }

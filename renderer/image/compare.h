@@ -27,6 +27,13 @@ struct CompareMetrics {
   double fraction_within = 1.0;    // of covered_both pixels with error <= tolerance
   double tolerance = 0.0;          // the per-pixel tolerance used for fraction_within
   int worst_x = -1, worst_y = -1;  // where max_abs is
+  // Pixels over the tolerance, by known cause (from the first image's
+  // depth and backfacing diagnostics, when it has them):
+  long long over_tolerance = 0;
+  long long over_occlusion_edge = 0;  // a depth jump (> 5%) or the mask edge in the 3x3 neighbourhood
+  long long over_backfacing = 0;      // shading normal facing away from the eye (N.V < 0)
+  long long over_unexplained = 0;     // neither
+  long long backfacing_pixels = 0;    // covered pixels with N.V < 0 at some sample
   // Pixels by error in 1/65535: <= 0.5, 1, 2, 4, 16, 256, and above.
   static constexpr double kHistogramEdges16[6] = {0.5, 1, 2, 4, 16, 256};
   long long histogram[7] = {0, 0, 0, 0, 0, 0, 0};
@@ -34,9 +41,13 @@ struct CompareMetrics {
 
 // A declared tolerance: per-pixel error <= max_abs on at least `fraction`
 // of the pixels both images cover, and no mask disagreement off silhouettes.
+// With exclude_backfacing, pixels whose shading normal faces away from the
+// eye are left out of the colour metrics (for a renderer that documents
+// turning such normals around); they are still counted.
 struct Tolerance {
   double max_abs = 2.0 / 65535.0;
   double fraction = 0.999;
+  bool exclude_backfacing = false;
   bool passes(const CompareMetrics& m) const {
     return m.fraction_within >= fraction && m.mask_disagree == m.mask_disagree_silhouette &&
            m.covered_both > 0;
@@ -44,7 +55,7 @@ struct Tolerance {
 };
 
 // Throws std::runtime_error when the images differ in size.
-CompareMetrics compareImages(const Image& a, const Image& b, double tolerance);
+CompareMetrics compareImages(const Image& a, const Image& b, const Tolerance& t);
 
 // |a - b| per channel (RGB, alpha = 1 where either hits), for looking at.
 Image differenceImage(const Image& a, const Image& b);

@@ -190,6 +190,30 @@ std::string JsonReader::requireChoice(std::string_view key,
   return choice(key, "", allowed);
 }
 
+bool JsonReader::boolean(std::string_view key, bool fallback) {
+  const json* v = find(key);
+  if (!v) return fallback;
+  if (!v->is_boolean()) failValue(key, "true or false");
+  return v->get<bool>();
+}
+
+std::vector<std::string> JsonReader::stringArray(std::string_view key, bool required) {
+  const json* v = find(key);
+  std::vector<std::string> out;
+  if (!v) {
+    if (required) fail(key, "required field is missing (expected an array of strings)");
+    return out;
+  }
+  if (!v->is_array()) failValue(key, "an array of strings");
+  for (size_t i = 0; i < v->size(); ++i) {
+    if (!(*v)[i].is_string())
+      throw SceneError(file_ + ": " + fieldPath(key) + "[" + std::to_string(i) +
+                       "]: expected a string, got " + describeJson((*v)[i]));
+    out.push_back((*v)[i].get<std::string>());
+  }
+  return out;
+}
+
 std::optional<JsonReader> JsonReader::object(std::string_view key) {
   const json* v = find(key);
   if (!v) return std::nullopt;

@@ -58,6 +58,8 @@ class JsonReader {
                      std::initializer_list<std::string_view> allowed);
   std::string requireChoice(std::string_view key,
                             std::initializer_list<std::string_view> allowed);
+  bool boolean(std::string_view key, bool fallback);
+  std::vector<std::string> stringArray(std::string_view key, bool required);
   std::optional<JsonReader> object(std::string_view key);
   JsonReader requireObject(std::string_view key);
   // Elements of an array field, each as a reader (objects only).

@@ -1,0 +1,100 @@
+// xval crosscheck SCENE.json --renderer povray -o DIR [--tolerances FILE]
+//
+// Renders the scene with the reference renderer and with an external
+// renderer, compares them with the declared tolerance, and writes
+// DIR/reference.exr, DIR/<renderer>.exr, DIR/diff.exr, DIR/metrics.json.
+// Exit 0: within tolerance; 1: not; 2: an error (bad scene, renderer
+// missing, failing or timing out: never a pass).
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+
+#include "cli/commands.h"
+#include "image/compare.h"
+#include "povray/pov_render.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+#include "validate/tolerances.h"
+
+namespace xval::cli {
+
+void addCrosscheckCommand(CLI::App& app, std::function<int()>& run) {
+  struct Args {
+    std::string scene, renderer = "povray", dir, tolerances;
+    double timeout = kDefaultToolTimeoutSeconds;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "crosscheck",
+      "Render a scene with the reference renderer and an external one, and compare them with "
+      "the tolerance declared for that case.\nExit 0 within tolerance, 1 outside, 2 on an error "
+      "(a missing, failing or hanging renderer is an error, never a pass).");
+  cmd->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--renderer", args->renderer, "External renderer (povray)")
+      ->check(CLI::IsMember({"povray"}));
+  cmd->add_option("-o,--output", args->dir, "Output folder")->required();
+  cmd->add_option("--tolerances", args->tolerances,
+                  "Tolerance file (default: reference/tolerances.json beside the scene's folder, "
+                  "else the built-in default 2/65535 on 99.9%)");
+  cmd->add_option("--timeout", args->timeout, "Seconds before the external renderer is killed")
+      ->check(CLI::PositiveNumber);
+  cmd->callback([args, &run]() {
+    run = [args]() -> int {
+      try {
+        Scene scene = loadScene(args->scene);
+        std::filesystem::path dir(args->dir);
+        std::filesystem::create_directories(dir);
+        std::filesystem::remove(dir / "metrics.json");
+        std::filesystem::path tol_file = args->tolerances;
+        if (tol_file.empty()) {
+          auto guess = std::filesystem::path(args->scene).parent_path().parent_path() / "tolerances.json";
+          if (std::filesystem::exists(guess)) tol_file = guess;
+        }
+        ToleranceTable table;
+        if (!tol_file.empty()) table = loadTolerances(tol_file);
+        std::string reason;
+        Tolerance tol = table.lookup(scene.name, args->renderer, &reason);
+
+        auto t0 = std::chrono::steady_clock::now();
+        RenderOptions opt = defaultOptions(scene);
+        opt.precision = Precision::Double;  // the exact reference path
+        Image ref = renderScene(scene, opt);
+        double ref_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        writeImage(ref, dir / "reference.exr");
+        ExternalRenderInfo info;
+        Image ext = renderWithPovray(scene, dir / (args->renderer + ".work"), args->timeout, &info);
+        writeImage(ext, dir / (args->renderer + ".exr"));
+        CompareMetrics m = compareImages(ref, ext, tol);
+        writeImage(differenceImage(ref, ext), dir / "diff.exr");
+        nlohmann::json j = nlohmann::json::parse(toJson(m, tol));
+        j["scene"] = scene.name;
+        j["renderer"] = args->renderer;
+        j["tolerance_reason"] = reason;
+        j["seconds"] = {{"reference", ref_s}, {args->renderer, info.seconds}};
+        {
+          std::ofstream f(dir / "metrics.json.partial");
+          f << j.dump(2) << "\n";
+        }
+        std::filesystem::rename(dir / "metrics.json.partial", dir / "metrics.json");
+        const bool pass = tol.passes(m);
+        std::printf(
+            "%s vs %s: %s  max %.2f  p99.9 %.2f  RMSE %.3f (x/65535)  within %.0f: %.4f%% (need "
+            "%.2f%%)  masks: %lld off (%lld on silhouettes)  over tolerance: %lld (occlusion edge "
+            "%lld, backfacing normal %lld, unexplained %lld)  time: reference %.2f s, %s %.2f s\n",
+            scene.name.c_str(), args->renderer.c_str(), pass ? "PASS" : "FAIL",
+            m.max_abs * 65535, m.p999_abs * 65535, m.rmse * 65535, tol.max_abs * 65535,
+            100 * m.fraction_within, 100 * tol.fraction, m.mask_disagree,
+            m.mask_disagree_silhouette, m.over_tolerance, m.over_occlusion_edge, m.over_backfacing,
+            m.over_unexplained, ref_s, args->renderer.c_str(), info.seconds);
+        if (!reason.empty()) std::printf("  declared tolerance: %s\n", reason.c_str());
+        return pass ? 0 : 1;
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "xval crosscheck: error: %s\n", e.what());
+        return 2;
+      }
+    };
+  });
+}
+
+}  // namespace xval::cli

@@ -1,0 +1,15 @@
+# Exports a scene and renders it with plain `povray scene.ini` in its folder.
+file(REMOVE_RECURSE ${WORK})
+execute_process(COMMAND ${XVAL} export pov ${SCENE} -o ${WORK} RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "xval export pov failed: ${rc}")
+endif()
+execute_process(COMMAND povray scene.ini WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc
+                OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 600)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "povray scene.ini failed (${rc}):\n${err}")
+endif()
+if(NOT EXISTS ${WORK}/scene.png)
+  message(FATAL_ERROR "povray scene.ini wrote no scene.png")
+endif()
+message(STATUS "povray scene.ini wrote ${WORK}/scene.png")
