@@ -30,7 +30,8 @@ constexpr double kPi = 3.14159265358979323846;
 // (1 + N.L) / 2 for a light, exactly (docs/povray-export.md).
 std::string slopePattern(const Light& l) {
   std::string base;
-  if (auto* d = std::get_if<DirectionalLight>(&l)) base = "slope { " + vec(-d->direction) + " }";
+  if (auto* d = std::get_if<DirectionalLight>(&l))
+    base = "slope { " + vec(-glm::normalize(d->direction)) + " }";
   else if (auto* p = std::get_if<PointLight>(&l)) base = "slope { point_at " + vec(p->position) + " }";
   else base = "slope { point_at " + vec(std::get<SpotLight>(l).position) + " }";
   return base + " sine_wave frequency -0.5 phase 0.75";

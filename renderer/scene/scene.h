@@ -124,13 +124,14 @@ struct Attenuation {
 };
 
 struct PointLight { dvec3 position{0.0}; dvec3 color{1.0}; Attenuation attenuation; };
-// `direction` is the direction the light travels (unit after loading).
+// `direction` is the direction the light travels (any non-zero length;
+// normalised where used).
 struct DirectionalLight { dvec3 direction{0.0, -1.0, 0.0}; dvec3 color{1.0}; };
 // Hard cone: lit where the angle between the spot axis and the direction
 // from the light to the point is <= cutoff_deg.
 struct SpotLight {
   dvec3 position{0.0};
-  dvec3 direction{0.0, -1.0, 0.0};  // unit after loading
+  dvec3 direction{0.0, -1.0, 0.0};  // any non-zero length
   double cutoff_deg = 30.0;
   dvec3 color{1.0};
   Attenuation attenuation;

@@ -19,7 +19,7 @@ dvec3 requireDirection(JsonReader& r, std::string_view key) {
   if (!(len > 1e-300) || !std::isfinite(len))
     r.fail(key, "expected a non-zero direction, got [" + std::to_string(d.x) + ", " +
                     std::to_string(d.y) + ", " + std::to_string(d.z) + "]");
-  return d / len;
+  return d;  // kept as written (so a scene round-trips); users normalise
 }
 
 Camera readCamera(JsonReader r) {

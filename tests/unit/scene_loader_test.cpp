@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "scene/scene_loader.h"
+#include "scene/scene_writer.h"
 
 using namespace xval;
 
@@ -187,6 +188,21 @@ TEST(SceneLoader, EveryReferenceSceneLoads) {
   for (const auto& e : std::filesystem::recursive_directory_iterator(std::string(XVAL_REFERENCE_DIR) + "/scenes")) {
     if (e.path().extension() != ".json") continue;
     EXPECT_NO_THROW(loadScene(e.path())) << e.path();
+    ++n;
+  }
+  EXPECT_GE(n, 20);
+}
+
+// sceneToJson is the loader's inverse: every reference scene survives a
+// write/read round trip unchanged (compared through its JSON text).
+TEST(SceneWriter, RoundTripsEveryReferenceScene) {
+  int n = 0;
+  for (const auto& e : std::filesystem::directory_iterator(std::string(XVAL_REFERENCE_DIR) + "/scenes")) {
+    if (e.path().extension() != ".json") continue;
+    Scene a = loadScene(e.path());
+    std::string text = sceneToJson(a).dump();
+    Scene b = parseScene(text, e.path());
+    EXPECT_EQ(sceneToJson(b).dump(), text) << e.path();
     ++n;
   }
   EXPECT_GE(n, 20);

@@ -1,0 +1,98 @@
+#include "scene/scene_writer.h"
+
+namespace xval {
+
+using J = nlohmann::ordered_json;
+
+namespace {
+J v3(glm::dvec3 v) { return J::array({v.x, v.y, v.z}); }
+J v2(glm::dvec2 v) { return J::array({v.x, v.y}); }
+
+J attenuation(const Attenuation& a) {
+  return {{"constant", a.constant}, {"linear", a.linear}, {"quadratic", a.quadratic}};
+}
+
+J shape(const Shape& s) {
+  if (auto* k = std::get_if<TorusKnot>(&s))
+    return {{"shape", "torus_knot"},        {"p", k->p},
+            {"q", k->q},                    {"major_radius", k->major_radius},
+            {"minor_radius", k->minor_radius}, {"tube_radius", k->tube_radius},
+            {"segments_along", k->segments_along}, {"segments_around", k->segments_around},
+            {"uv_repeat", v2(k->uv_repeat)}, {"center", v3(k->center)}};
+  if (auto* p = std::get_if<UvSphere>(&s))
+    return {{"shape", "sphere"},
+            {"center", v3(p->center)},
+            {"radius", p->radius},
+            {"segments_longitude", p->segments_longitude},
+            {"segments_latitude", p->segments_latitude},
+            {"uv_repeat", v2(p->uv_repeat)}};
+  const auto& p = std::get<Plane>(s);
+  return {{"shape", "plane"},
+          {"center", v3(p.center)},
+          {"normal", v3(p.normal)},
+          {"size", v2(p.size)},
+          {"uv_repeat", v2(p.uv_repeat)}};
+}
+
+J model(const LightingModel& m) {
+  if (auto* p = std::get_if<ClassicPhong>(&m))
+    return {{"type", "classic_phong"},
+            {"variant", p->variant == ClassicPhong::Variant::Paper ? "paper" : "course"},
+            {"ka", p->ka}, {"kd", p->kd}, {"ks", p->ks}, {"shininess", p->shininess}};
+  if (auto* y = std::get_if<YiqLuma>(&m))
+    return {{"type", "yiq_luma"}, {"kd", y->kd}, {"ks", y->ks}, {"shininess", y->shininess},
+            {"luma_offset", y->luma_offset}};
+  if (auto* l = std::get_if<Lambert>(&m)) return {{"type", "lambert"}, {"c0", v3(l->c0)}};
+  if (auto* w = std::get_if<WrapAround>(&m))
+    return {{"type", "wrap_around"}, {"c0", v3(w->c0)}, {"factor", w->factor}};
+  if (auto* h = std::get_if<Hemispherical>(&m))
+    return {{"type", "hemispherical"}, {"c0", v3(h->c0)}, {"c2", v3(h->c2)}};
+  if (auto* b = std::get_if<BiDirectional>(&m))
+    return {{"type", "bidirectional"}, {"c0", v3(b->c0)}, {"c2", v3(b->c2)}};
+  const auto& t = std::get<Trilight>(m);
+  return {{"type", "trilight"}, {"c0", v3(t.c0)}, {"c1", v3(t.c1)}, {"c2", v3(t.c2)}};
+}
+
+J light(const Light& l) {
+  if (auto* p = std::get_if<PointLight>(&l))
+    return {{"type", "point"}, {"position", v3(p->position)}, {"color", v3(p->color)},
+            {"attenuation", attenuation(p->attenuation)}};
+  if (auto* d = std::get_if<DirectionalLight>(&l))
+    return {{"type", "directional"}, {"direction", v3(d->direction)}, {"color", v3(d->color)}};
+  if (auto* s = std::get_if<SpotLight>(&l))
+    return {{"type", "spot"},          {"position", v3(s->position)},
+            {"direction", v3(s->direction)}, {"cutoff_deg", s->cutoff_deg},
+            {"color", v3(s->color)},   {"attenuation", attenuation(s->attenuation)}};
+  return {{"type", "ambient"}, {"color", v3(std::get<AmbientLight>(l).color)}};
+}
+}  // namespace
+
+J sceneToJson(const Scene& s, const std::string* texture_path) {
+  J j;
+  j["format"] = "xval-scene/1";
+  j["name"] = s.name;
+  const Camera& c = s.camera;
+  j["camera"] = {{"position", v3(c.position)}, {"target", v3(c.target)}, {"up", v3(c.up)},
+                 {"fov_y_deg", c.fov_y_deg},   {"width", c.width},      {"height", c.height}};
+  j["objects"] = J::array();
+  for (const auto& o : s.objects) j["objects"].push_back(shape(o));
+  J mat = {{"model", model(s.material.model)}};
+  if (s.material.texture) {
+    const TextureSpec& t = *s.material.texture;
+    J tex = {{"source", t.source == TextureSpec::Source::Brick ? "brick" : "image"}};
+    if (t.source == TextureSpec::Source::Image)
+      tex["path"] = texture_path ? *texture_path : t.path.string();
+    tex["filter"] = toString(t.filter);
+    mat["texture"] = tex;
+  } else {
+    mat["base_color"] = v3(s.material.base_color);
+  }
+  j["material"] = mat;
+  j["lights"] = J::array();
+  for (const auto& l : s.lights) j["lights"].push_back(light(l));
+  j["shading"] = toString(s.shading);
+  j["render"] = {{"spp", s.render.spp}, {"precision", toString(s.render.precision)}};
+  return j;
+}
+
+}  // namespace xval
