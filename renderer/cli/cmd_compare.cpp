@@ -46,8 +46,9 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
         std::printf("pixels by error (x/65535):");
         const char* names[7] = {"<=0.5", "<=1", "<=2", "<=4", "<=16", "<=256", ">256"};
         for (int i = 0; i < 7; ++i) std::printf(" %s:%lld", names[i], m.histogram[i]);
-        std::printf("\nover tolerance: %lld (occlusion edge %lld, backfacing normal %lld, unexplained %lld)\n",
-                    m.over_tolerance, m.over_occlusion_edge, m.over_backfacing, m.over_unexplained);
+        std::printf("\nover tolerance: %lld (occlusion edge %lld, backfacing normal %lld, grazing %lld, unexplained %lld)\n",
+                    m.over_tolerance, m.over_occlusion_edge, m.over_backfacing, m.over_grazing,
+                    m.over_unexplained);
         std::printf("worst pixel (%d, %d)\n", m.worst_x, m.worst_y);
       }
       return t.passes(m) ? 0 : 1;

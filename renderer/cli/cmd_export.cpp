@@ -1,8 +1,9 @@
-// xval export pov SCENE.json -o DIR/
+// xval export pov|gltf SCENE.json -o DIR/
 #include <cstdio>
 #include <memory>
 
 #include "cli/commands.h"
+#include "gltf/gltf_exporter.h"
 #include "povray/pov_exporter.h"
 #include "scene/scene_loader.h"
 
@@ -17,13 +18,19 @@ void addExportCommand(CLI::App& app, std::function<int()>& run) {
       "export",
       "Write a scene for an external renderer.\n  pov: a self-contained POV-Ray 3.7 folder "
       "(scene.pov, scene.ini, texture.png, README.txt);\n       render it with `povray "
-      "scene.ini` from that folder.");
-  cmd->add_option("format", args->format, "Target format")->required()->check(CLI::IsMember({"pov"}));
+      "scene.ini` from that folder.\n  gltf: glTF 2.0 (scene.gltf, scene.bin, texture.png) with the "
+      "lighting model in the scene's extras,\n       for exporters/blender/render_gltf.py.");
+  cmd->add_option("format", args->format, "Target format")->required()->check(CLI::IsMember({"pov", "gltf"}));
   cmd->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args->dir, "Output folder (created)")->required();
   cmd->callback([args, &run]() {
     run = [args]() {
       Scene scene = loadScene(args->scene);
+      if (args->format == "gltf") {
+        GltfExport ex = exportGltf(scene, args->dir);
+        std::fprintf(stderr, "xval export: wrote %s\n", ex.gltf.c_str());
+        return 0;
+      }
       PovExport ex = exportPov(scene, args->dir);
       std::fprintf(stderr, "xval export: wrote %s and %s\n", ex.pov.c_str(), ex.ini.c_str());
       return 0;

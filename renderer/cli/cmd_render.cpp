@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "blender/blender_render.h"
 #include "povray/pov_render.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
@@ -45,9 +46,9 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
       ->check(CLI::Range(1, 1024));
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr");
   cmd->add_option("--renderer", args->renderer,
-                  "reference (default), or povray: export, run POV-Ray with a time-out and "
-                  "return its image as linear float (alpha = hit mask)")
-      ->check(CLI::IsMember({"reference", "povray"}));
+                  "reference (default), povray or blender: export, run the external renderer "
+                  "with a time-out and return its image as linear float (alpha = hit mask)")
+      ->check(CLI::IsMember({"reference", "povray", "blender"}));
   cmd->add_option("--work-dir", args->work_dir,
                   "Folder for an external renderer's export, log and raw output (default: "
                   "OUT's folder/OUT-stem.RENDERER)");
@@ -78,7 +79,9 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
             ? out.parent_path() / (out.stem().string() + "." + args->renderer)
             : std::filesystem::path(args->work_dir);
         ExternalRenderInfo info;
-        Image img = renderWithPovray(scene, work, args->timeout, &info);
+        Image img = args->renderer == "povray"
+                        ? renderWithPovray(scene, work, args->timeout, &info)
+                        : renderWithBlender(scene, work, args->timeout, &info);
         writeImage(img, out);
         if (!args->quiet)
           std::fprintf(stderr, "xval render: wrote %s (%s, %dx%d): %.3f s (whole process), work dir %s\n",

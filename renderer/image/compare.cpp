@@ -40,6 +40,13 @@ bool onOcclusionEdge(const Image& img, int x, int y) {
   return false;
 }
 
+// Grazing incidence: float rounding of the hit point is amplified by
+// 1/|cos|; below 0.1 that is more than ten-fold.
+constexpr float kGrazingCos = 0.1f;
+bool grazing(const Image& img, int x, int y) {
+  return !img.incidence.empty() && img.incidence[size_t(y) * img.width + x] < kGrazingCos;
+}
+
 bool backfacing(const Image& img, int x, int y) {
   return !img.backfacing.empty() && img.backfacing[size_t(y) * img.width + x] > 0.0f;
 }
@@ -87,6 +94,7 @@ CompareMetrics compareImages(const Image& a, const Image& b, const Tolerance& t)
         ++m.over_tolerance;
         if (bf) ++m.over_backfacing;
         else if (onOcclusionEdge(a, x, y) || onOcclusionEdge(b, x, y)) ++m.over_occlusion_edge;
+        else if (grazing(a, x, y) || grazing(b, x, y)) ++m.over_grazing;
         else ++m.over_unexplained;
       }
     }
@@ -136,6 +144,7 @@ std::string toJson(const CompareMetrics& m, const Tolerance& t) {
       {"over_tolerance", {{"total", m.over_tolerance},
                           {"occlusion_edge", m.over_occlusion_edge},
                           {"backfacing_normal", m.over_backfacing},
+                          {"grazing", m.over_grazing},
                           {"unexplained", m.over_unexplained}}},
       {"histogram_16bit", {{"edges", CompareMetrics::kHistogramEdges16},
                            {"counts", m.histogram}}},

@@ -32,7 +32,8 @@ struct CompareMetrics {
   long long over_tolerance = 0;
   long long over_occlusion_edge = 0;  // a depth jump (> 5%) or the mask edge in the 3x3 neighbourhood
   long long over_backfacing = 0;      // shading normal facing away from the eye (N.V < 0)
-  long long over_unexplained = 0;     // neither
+  long long over_grazing = 0;         // the ray meets its triangle at |cos| < 0.1
+  long long over_unexplained = 0;     // none of these
   long long backfacing_pixels = 0;    // covered pixels with N.V < 0 at some sample
   // Pixels by error in 1/65535: <= 0.5, 1, 2, 4, 16, 256, and above.
   static constexpr double kHistogramEdges16[6] = {0.5, 1, 2, 4, 16, 256};

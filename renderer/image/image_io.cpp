@@ -34,12 +34,12 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
   if (ext == ".exr") {
     const bool raw = !img.raw.empty();
     const bool diag = !img.depth.empty();
-    OIIO::ImageSpec spec(img.width, img.height, 4 + (raw ? 3 : 0) + (diag ? 2 : 0),
+    OIIO::ImageSpec spec(img.width, img.height, 4 + (raw ? 3 : 0) + (diag ? 3 : 0),
                          OIIO::TypeDesc::FLOAT);
     spec.channelnames = {"R", "G", "B", "A"};
     if (raw) spec.channelnames.insert(spec.channelnames.end(), {"raw.R", "raw.G", "raw.B"});
     if (diag) {
-      spec.channelnames.insert(spec.channelnames.end(), {"Z", "backfacing"});
+      spec.channelnames.insert(spec.channelnames.end(), {"Z", "backfacing", "incidence"});
       spec.z_channel = 4 + (raw ? 3 : 0);
     }
     spec.alpha_channel = 3;
@@ -52,6 +52,7 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
       if (diag) {
         buf[i * spec.nchannels + spec.z_channel] = img.depth[i];
         buf[i * spec.nchannels + spec.z_channel + 1] = img.backfacing[i];
+        buf[i * spec.nchannels + spec.z_channel + 2] = img.incidence[i];
       }
     }
     ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::FLOAT, buf.data());
@@ -93,12 +94,17 @@ Image readImage(const std::filesystem::path& file) {
   int raw[3] = {channel("raw.R"), channel("raw.G"), channel("raw.B")};
   bool has_raw = raw[0] >= 0 && raw[1] >= 0 && raw[2] >= 0;
   Image img(spec.width, spec.height, has_raw);
-  int zc = channel("Z"), bc = channel("backfacing");
-  if (zc < 0 || bc < 0) img.depth.clear(), img.backfacing.clear();
-  else if (img.depth.empty())
-    img.depth.resize(size_t(spec.width) * spec.height), img.backfacing.resize(img.depth.size());
+  int zc = channel("Z"), bc = channel("backfacing"), ic = channel("incidence");
+  const bool diag = zc >= 0 && bc >= 0 && ic >= 0;
+  img.depth.assign(diag ? size_t(spec.width) * spec.height : 0, 0.0f);
+  img.backfacing.assign(img.depth.size(), 0.0f);
+  img.incidence.assign(img.depth.size(), 0.0f);
   for (size_t i = 0; i < size_t(spec.width) * spec.height; ++i) {
-    if (zc >= 0 && bc >= 0) img.depth[i] = buf[i * nc + zc], img.backfacing[i] = buf[i * nc + bc];
+    if (diag) {
+      img.depth[i] = buf[i * nc + zc];
+      img.backfacing[i] = buf[i * nc + bc];
+      img.incidence[i] = buf[i * nc + ic];
+    }
     for (int c = 0; c < 4; ++c)
       img.rgba[i * 4 + c] = ch[c] >= 0 ? buf[i * nc + ch[c]] : 1.0f;
     if (has_raw)

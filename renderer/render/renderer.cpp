@@ -62,6 +62,13 @@ ShadedMesh<T> prepareMesh(const TriangleMesh& m, ShadingMode mode, const Shader<
   return s;
 }
 
+// |cos| between a ray and the hit triangle's plane normal.
+double geometricIncidence(const TriangleMesh& m, const glm::u32vec3& t, glm::dvec3 dir) {
+  glm::dvec3 g = glm::cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]);
+  double len = glm::length(g);
+  return len > 0.0 ? std::abs(glm::dot(g / len, dir)) : 0.0;
+}
+
 template <class T>
 void renderT(const Scene& scene, const std::vector<TriangleMesh>& meshes, const Texture* texture,
              const Accel& accel, const RenderOptions& opt, Image& img, RenderStats& stats) {
@@ -88,7 +95,7 @@ void renderT(const Scene& scene, const std::vector<TriangleMesh>& meshes, const 
       for (int i = 0; i < W; ++i) {
         V sum_final(0), sum_raw(0);
         int hits = 0, backfacing = 0;
-        double nearest = 0.0;
+        double nearest = 0.0, incidence = 1.0;
         for (int sy = 0; sy < n; ++sy) {
           for (int sx = 0; sx < n; ++sx) {
             double x = i + (sx + 0.5) / n, y = j + (sy + 0.5) / n;
@@ -98,6 +105,7 @@ void renderT(const Scene& scene, const std::vector<TriangleMesh>& meshes, const 
             if (hits == 0 || h.t < nearest) nearest = h.t;
             const ShadedMesh<T>& m = shaded[h.mesh];
             const auto& tri = m.src->triangles[h.triangle];
+            if (want_raw) incidence = std::min(incidence, geometricIncidence(*m.src, tri, dir));
             const T b1 = T(h.b1), b2 = T(h.b2), b0 = T(1) - b1 - b2;
             V c;
             if (scene.shading == ShadingMode::Gouraud) {
@@ -132,6 +140,7 @@ void renderT(const Scene& scene, const std::vector<TriangleMesh>& meshes, const 
           for (int k = 0; k < 3; ++k) img.raw[at * 3 + k] = float(sum_raw[k] * inv);
           img.depth[at] = float(nearest);
           img.backfacing[at] = hits ? float(backfacing) / float(hits) : 0.0f;
+          img.incidence[at] = hits ? float(incidence) : 0.0f;
         }
       }
       int done = ++rows_done;

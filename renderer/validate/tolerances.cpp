@@ -41,7 +41,7 @@ ToleranceTable loadTolerances(const std::filesystem::path& file) {
     ToleranceCase tc;
     tc.scenes = c.stringArray("scenes", true);
     if (tc.scenes.empty()) c.failValue("scenes", "a non-empty array of scene names");
-    tc.renderer = c.requireChoice("renderer", {"povray", "blender"});
+    tc.renderer = c.requireChoice("renderer", {"povray", "blender", "blender-native"});
     tc.tolerance = readTolerance(c, table.default_tolerance);
     tc.reason = c.string("reason", "");
     const Tolerance& d = table.default_tolerance;

@@ -1,0 +1,103 @@
+#include "blender/blender_render.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <cstdlib>
+
+#include "common/run_process.h"
+#include "gltf/gltf_exporter.h"
+#include "povray/pov_exporter.h"
+#include "shading/models.h"
+
+namespace xval {
+
+namespace OIIO = OIIO_NAMESPACE;
+
+std::filesystem::path blenderScript() {
+  if (const char* env = std::getenv("XVAL_BLENDER_SCRIPT")) return env;
+  return XVAL_BLENDER_SCRIPT_DEFAULT;
+}
+
+namespace {
+
+// The diffuse-direct pass of a multilayer EXR (channels "<layer>.DiffDir.R"
+// ...), with alpha from the combined pass.
+Image readDiffDir(const std::filesystem::path& file) {
+  auto in = OIIO::ImageInput::open(file.string());
+  if (!in) throw ExternalToolError(file.string() + ": cannot open: " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  const int nc = spec.nchannels;
+  std::vector<float> buf(size_t(spec.width) * spec.height * nc);
+  if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, buf.data()))
+    throw ExternalToolError(file.string() + ": cannot read: " + in->geterror());
+  auto find = [&](const std::string& suffix) {
+    for (int i = 0; i < nc; ++i) {
+      const std::string& n = spec.channelnames[i];
+      if (n.size() >= suffix.size() && n.compare(n.size() - suffix.size(), suffix.size(), suffix) == 0)
+        return i;
+    }
+    throw ExternalToolError(file.string() + ": no channel *" + suffix);
+  };
+  int ch[4] = {find("DiffDir.R"), find("DiffDir.G"), find("DiffDir.B"), find("Combined.A")};
+  Image img(spec.width, spec.height, false);
+  for (size_t i = 0; i < size_t(spec.width) * spec.height; ++i)
+    for (int c = 0; c < 4; ++c) img.rgba[i * 4 + c] = buf[i * nc + ch[c]];
+  return img;
+}
+
+}  // namespace
+
+Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_dir,
+                        double timeout_seconds, ExternalRenderInfo* info, BlenderMode mode) {
+  if (scene.render.spp != 1)
+    throw ExportError("render.spp = " + std::to_string(scene.render.spp) +
+                      ": the Blender harness renders one sample through each pixel centre; "
+                      "export at spp 1");
+  const std::filesystem::path script = blenderScript();
+  if (!std::filesystem::is_regular_file(script))
+    throw ExternalToolError("Blender script " + script.string() +
+                            " not found (set XVAL_BLENDER_SCRIPT)");
+  GltfExport ex = exportGltf(scene, work_dir);
+  const std::filesystem::path out = std::filesystem::absolute(work_dir / "blender.exr");
+  std::filesystem::remove(out);
+  const std::filesystem::path log = work_dir / "blender.log";
+  ProcessResult r = runProcess(
+      {"blender", "-b", "--factory-startup", "-noaudio", "-P", std::filesystem::absolute(script).string(),
+       "--", "--gltf", std::filesystem::absolute(ex.gltf).string(), "--out", out.string(),
+       "--mode", mode == BlenderMode::Model ? "model" : "native-lambert"},
+      work_dir, log, timeout_seconds);
+  if (info) *info = {r.seconds, log};
+  if (!r.ok())
+    throw ExternalToolError("blender (" + ex.gltf.string() + "): " + r.describe() +
+                            "\nlast lines of " + log.string() + ":\n" + tailOfFile(log));
+  if (!std::filesystem::exists(out))
+    throw ExternalToolError("blender (" + ex.gltf.string() + ") exited 0 but wrote no image " +
+                            out.string() + "\nlast lines of " + log.string() + ":\n" +
+                            tailOfFile(log));
+  Image img;
+  try {
+    img = mode == BlenderMode::Model ? readImage(out) : readDiffDir(out);
+  } catch (const ExternalToolError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw ExternalToolError(std::string("blender wrote an unreadable image: ") + e.what());
+  }
+  if (img.width != scene.camera.width || img.height != scene.camera.height)
+    throw ExternalToolError("blender wrote a " + std::to_string(img.width) + "x" +
+                            std::to_string(img.height) + " image, expected " +
+                            std::to_string(scene.camera.width) + "x" +
+                            std::to_string(scene.camera.height));
+  if (mode == BlenderMode::Model) {
+    // One sample per pixel: saturating the pixel is the reference
+    // renderer's per-sample saturate. Keep the unsaturated value as raw.
+    img.raw.resize(size_t(img.width) * img.height * 3);
+    for (size_t i = 0; i < size_t(img.width) * img.height; ++i)
+      for (int c = 0; c < 3; ++c) {
+        img.raw[i * 3 + c] = img.rgba[i * 4 + c];
+        img.rgba[i * 4 + c] = models::saturate(img.rgba[i * 4 + c]);
+      }
+  }
+  return img;
+}
+
+}  // namespace xval

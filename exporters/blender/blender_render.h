@@ -1,0 +1,29 @@
+// Rendering a scene with Blender 3.4: export glTF, run
+//   blender -b --factory-startup -P exporters/blender/render_gltf.py -- ...
+// with a time-out, and read its float EXR back as an Image (alpha = hit
+// mask; colours saturated per pixel as the reference renderer's per-sample
+// saturate at 1 spp, the unsaturated values kept in raw).
+#pragma once
+
+#include <filesystem>
+
+#include "image/image.h"
+#include "povray/pov_render.h"  // ExternalToolError, ExternalRenderInfo
+#include "scene/scene.h"
+
+namespace xval {
+
+enum class BlenderMode {
+  Model,          // the scene's lighting model as shader nodes (emission)
+  NativeLambert,  // Blender's own Diffuse BSDF, diffuse-direct pass
+};
+
+// The render_gltf.py script: $XVAL_BLENDER_SCRIPT, else the copy beside the
+// xval executable's source tree (compiled in), which must exist.
+std::filesystem::path blenderScript();
+
+Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_dir,
+                        double timeout_seconds, ExternalRenderInfo* info = nullptr,
+                        BlenderMode mode = BlenderMode::Model);
+
+}  // namespace xval

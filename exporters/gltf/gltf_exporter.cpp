@@ -1,0 +1,257 @@
+#include "gltf/gltf_exporter.h"
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <tiny_gltf.h>
+
+#include <cmath>
+#include <cstring>
+#include <optional>
+
+#include "camera/camera.h"
+#include "geometry/mesh.h"
+#include "povray/pov_exporter.h"  // ExportError
+#include "scene/scene_writer.h"
+#include "shading/shader.h"
+#include "shading/surface_colour.h"
+#include "texture/texture.h"
+
+namespace xval {
+
+namespace {
+
+constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
+constexpr int kUInt = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+
+// Appends raw bytes to buffer 0 (4-byte aligned) and returns a view.
+int addView(tinygltf::Model& m, const void* data, size_t bytes, int target) {
+  auto& buf = m.buffers[0].data;
+  while (buf.size() % 4) buf.push_back(0);
+  tinygltf::BufferView v;
+  v.buffer = 0;
+  v.byteOffset = buf.size();
+  v.byteLength = bytes;
+  if (target) v.target = target;
+  const auto* p = static_cast<const unsigned char*>(data);
+  buf.insert(buf.end(), p, p + bytes);
+  m.bufferViews.push_back(v);
+  return int(m.bufferViews.size() - 1);
+}
+
+int addVec3(tinygltf::Model& m, const std::vector<glm::dvec3>& values, bool minmax) {
+  std::vector<float> f;
+  f.reserve(values.size() * 3);
+  std::vector<double> lo(3, 1e300), hi(3, -1e300);
+  for (const auto& v : values)
+    for (int k = 0; k < 3; ++k) {
+      float x = float(v[k]);
+      f.push_back(x);
+      lo[k] = std::min(lo[k], double(x));
+      hi[k] = std::max(hi[k], double(x));
+    }
+  tinygltf::Accessor a;
+  a.bufferView = addView(m, f.data(), f.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
+  a.componentType = kFloat;
+  a.count = values.size();
+  a.type = TINYGLTF_TYPE_VEC3;
+  if (minmax) a.minValues = lo, a.maxValues = hi;
+  m.accessors.push_back(a);
+  return int(m.accessors.size() - 1);
+}
+
+int addVec2(tinygltf::Model& m, const std::vector<glm::dvec2>& values) {
+  std::vector<float> f;
+  for (const auto& v : values) f.push_back(float(v.x)), f.push_back(float(v.y));
+  tinygltf::Accessor a;
+  a.bufferView = addView(m, f.data(), f.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
+  a.componentType = kFloat;
+  a.count = values.size();
+  a.type = TINYGLTF_TYPE_VEC2;
+  m.accessors.push_back(a);
+  return int(m.accessors.size() - 1);
+}
+
+int addIndices(tinygltf::Model& m, const std::vector<glm::u32vec3>& tris) {
+  std::vector<uint32_t> idx;
+  for (const auto& t : tris) idx.insert(idx.end(), {t[0], t[1], t[2]});
+  tinygltf::Accessor a;
+  a.bufferView =
+      addView(m, idx.data(), idx.size() * sizeof(uint32_t), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  a.componentType = kUInt;
+  a.count = idx.size();
+  a.type = TINYGLTF_TYPE_SCALAR;
+  m.accessors.push_back(a);
+  return int(m.accessors.size() - 1);
+}
+
+// Unit quaternion (x, y, z, w) of the rotation with the given columns.
+std::vector<double> quaternion(glm::dvec3 x, glm::dvec3 y, glm::dvec3 z) {
+  glm::dmat3 r(x, y, z);
+  glm::dquat q = glm::quat_cast(r);
+  q = glm::normalize(q);
+  return {q.x, q.y, q.z, q.w};
+}
+
+// A node whose local -Z points along `dir`.
+std::vector<double> lookAlong(glm::dvec3 dir) {
+  glm::dvec3 z = -glm::normalize(dir);
+  glm::dvec3 hint = std::abs(z.y) > 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+  glm::dvec3 x = glm::normalize(glm::cross(hint, z));
+  glm::dvec3 y = glm::cross(z, x);
+  return quaternion(x, y, z);
+}
+
+tinygltf::Value attenuationExtras(const Attenuation& a) {
+  tinygltf::Value::Object o;
+  o["xval_attenuation"] = tinygltf::Value(tinygltf::Value::Array{
+      tinygltf::Value(a.constant), tinygltf::Value(a.linear), tinygltf::Value(a.quadratic)});
+  return tinygltf::Value(o);
+}
+
+}  // namespace
+
+GltfExport exportGltf(const Scene& scene, const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  GltfExport ex{dir / "scene.gltf", dir};
+  tinygltf::Model m;
+  m.asset.version = "2.0";
+  m.asset.generator = "xval export gltf";
+  m.buffers.resize(1);
+  m.buffers[0].uri = "scene.bin";
+
+  std::optional<Texture> texture;
+  const bool textured = scene.material.texture.has_value();
+  if (textured) {
+    texture = loadTexture(*scene.material.texture);
+    if (texture->rgb8.empty())
+      throw ExportError("texture " + scene.material.texture->path.string() +
+                        " is not 8-bit; the exporters copy textures as 8-bit PNG");
+    writeTexturePng(*texture, dir / "texture.png");
+    tinygltf::Image img;
+    img.uri = "texture.png";
+    img.mimeType = "image/png";
+    m.images.push_back(img);
+    tinygltf::Sampler s;
+    const bool nearest = scene.material.texture->filter == TextureFilter::Nearest;
+    s.magFilter = nearest ? TINYGLTF_TEXTURE_FILTER_NEAREST : TINYGLTF_TEXTURE_FILTER_LINEAR;
+    s.minFilter = nearest ? TINYGLTF_TEXTURE_FILTER_NEAREST : TINYGLTF_TEXTURE_FILTER_LINEAR;
+    s.wrapS = s.wrapT = TINYGLTF_TEXTURE_WRAP_REPEAT;
+    m.samplers.push_back(s);
+    tinygltf::Texture t;
+    t.source = 0;
+    t.sampler = 0;
+    m.textures.push_back(t);
+  }
+  tinygltf::Material mat;
+  mat.name = "xval_material";
+  mat.doubleSided = true;  // the paper's shader: CullMode None
+  mat.pbrMetallicRoughness.metallicFactor = 0.0;
+  if (textured) {
+    mat.pbrMetallicRoughness.baseColorTexture.index = 0;
+  } else {
+    glm::dvec3 b = glm::clamp(scene.material.base_color, 0.0, 1.0);
+    mat.pbrMetallicRoughness.baseColorFactor = {b.x, b.y, b.z, 1.0};
+  }
+  m.materials.push_back(mat);
+
+  tinygltf::Scene gs;
+  const CameraRays cam(scene.camera);
+  std::optional<Shader<double>> shader;
+  if (scene.shading == ShadingMode::Gouraud) shader.emplace(scene.material, scene.lights);
+  for (size_t k = 0; k < scene.objects.size(); ++k) {
+    TriangleMesh mesh = tessellate(scene.objects[k]);
+    tinygltf::Primitive prim;
+    prim.mode = TINYGLTF_MODE_TRIANGLES;
+    prim.material = 0;
+    prim.attributes["POSITION"] = addVec3(m, mesh.positions, true);
+    prim.attributes["NORMAL"] = addVec3(m, mesh.normals, false);
+    if (textured) prim.attributes["TEXCOORD_0"] = addVec2(m, mesh.uvs);
+    if (shader) {
+      SurfaceColour<double> sc(scene.material, texture ? &*texture : nullptr);
+      prim.attributes["_XVAL_GOURAUD"] =
+          addVec3(m, gouraudVertexColours(*shader, mesh, sc, cam.origin), false);
+    }
+    prim.indices = addIndices(m, mesh.triangles);
+    tinygltf::Mesh gm;
+    gm.name = "xval_mesh_" + std::to_string(k);
+    gm.primitives.push_back(prim);
+    m.meshes.push_back(gm);
+    tinygltf::Node n;
+    n.name = "xval_object_" + std::to_string(k);
+    n.mesh = int(m.meshes.size() - 1);
+    m.nodes.push_back(n);
+    gs.nodes.push_back(int(m.nodes.size() - 1));
+  }
+
+  tinygltf::Camera c;
+  c.type = "perspective";
+  c.name = "xval_camera";
+  c.perspective.yfov = scene.camera.fov_y_deg * 3.14159265358979323846 / 180.0;
+  c.perspective.aspectRatio = double(scene.camera.width) / scene.camera.height;
+  c.perspective.znear = 1e-6 * std::max(1.0, glm::length(scene.camera.position));
+  c.perspective.zfar = 1e9 * std::max(1.0, glm::length(scene.camera.position));
+  m.cameras.push_back(c);
+  tinygltf::Node cn;
+  cn.name = "xval_camera";
+  cn.camera = 0;
+  cn.translation = {cam.origin.x, cam.origin.y, cam.origin.z};
+  cn.rotation = quaternion(cam.right, cam.up, -cam.forward);
+  m.nodes.push_back(cn);
+  gs.nodes.push_back(int(m.nodes.size() - 1));
+
+  for (const Light& l : scene.lights) {
+    tinygltf::Light gl;
+    tinygltf::Node ln;
+    glm::dvec3 colour;
+    if (auto* p = std::get_if<PointLight>(&l)) {
+      gl.type = "point";
+      colour = p->color;
+      ln.translation = {p->position.x, p->position.y, p->position.z};
+      gl.extras = attenuationExtras(p->attenuation);
+    } else if (auto* s = std::get_if<SpotLight>(&l)) {
+      gl.type = "spot";
+      colour = s->color;
+      ln.translation = {s->position.x, s->position.y, s->position.z};
+      ln.rotation = lookAlong(s->direction);
+      gl.spot.outerConeAngle = s->cutoff_deg * 3.14159265358979323846 / 180.0;
+      gl.spot.innerConeAngle = gl.spot.outerConeAngle * (1.0 - 1e-6);
+      gl.extras = attenuationExtras(s->attenuation);
+    } else if (auto* d = std::get_if<DirectionalLight>(&l)) {
+      gl.type = "directional";
+      colour = d->color;
+      ln.rotation = lookAlong(d->direction);
+    } else {
+      continue;  // ambient: in the scene extras only
+    }
+    double peak = std::max({colour.x, colour.y, colour.z});
+    gl.intensity = peak;
+    gl.color = peak > 0 ? std::vector<double>{colour.x / peak, colour.y / peak, colour.z / peak}
+                        : std::vector<double>{1.0, 1.0, 1.0};
+    gl.name = "xval_light_" + std::to_string(m.lights.size());
+    m.lights.push_back(gl);
+    ln.name = gl.name;
+    tinygltf::Value::Object ext;
+    ext["light"] = tinygltf::Value(int(m.lights.size() - 1));
+    ln.extensions["KHR_lights_punctual"] = tinygltf::Value(ext);
+    m.nodes.push_back(ln);
+    gs.nodes.push_back(int(m.nodes.size() - 1));
+  }
+
+  const std::string exported_texture = "texture.png";
+  tinygltf::Value::Object extras;
+  extras["xval"] = tinygltf::Value(sceneToJson(scene, textured ? &exported_texture : nullptr).dump());
+  gs.extras = tinygltf::Value(extras);
+  gs.name = "xval_scene";
+  m.scenes.push_back(gs);
+  m.defaultScene = 0;
+  if (!m.lights.empty()) m.extensionsUsed.push_back("KHR_lights_punctual");
+
+  tinygltf::TinyGLTF writer;
+  if (!writer.WriteGltfSceneToFile(&m, ex.gltf.string(), /*embedImages=*/false,
+                                   /*embedBuffers=*/false, /*prettyPrint=*/true,
+                                   /*writeBinary=*/false))
+    throw ExportError(ex.gltf.string() + ": tinygltf could not write the glTF");
+  return ex;
+}
+
+}  // namespace xval
