@@ -327,6 +327,7 @@ def setup_render(scene, width, height, out, multilayer):
     c.sample_clamp_direct = 0.0
     c.sample_clamp_indirect = 0.0
     c.seed = 0
+    c.light_sampling_threshold = 0.0  # no stochastic culling of weak lights
     r.film_transparent = True
     r.resolution_x, r.resolution_y = width, height
     r.resolution_percentage = 100
@@ -370,7 +371,8 @@ def main():
     if args.mode == "native-lambert":
         for o in scene.objects:
             if o.type == "LIGHT":
-                o.data.shadow_soft_size = 0.0
+                o.data.shadow_soft_size = 0.0  # a point, not the importer's 0.25 sphere
+                o.data.cycles.cast_shadow = False  # local illumination, as the reference
         mat = bpy.data.materials.new("xval_native_lambert")
         mat.use_nodes = True
         nt = mat.node_tree

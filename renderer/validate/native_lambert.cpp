@@ -27,8 +27,8 @@ void checkNativeLambertScene(const Scene& s) {
 
 void scaleNativeLambert(const Scene& s, Image& img) {
   checkNativeLambertScene(s);
-  const double intensity = std::get<PointLight>(s.lights[0]).color.x;
-  const float k = float(4.0 * kPi * kPi / intensity);
+  // P = I watts (RAW import): DiffDir = I / (4 pi^2) max(N.L,0) / d^2.
+  const float k = float(4.0 * kPi * kPi);
   for (size_t i = 0; i < img.rgba.size(); i += 4)
     for (int c = 0; c < 3; ++c) img.rgba[i + c] = std::min(1.0f, std::max(0.0f, img.rgba[i + c] * k));
 }

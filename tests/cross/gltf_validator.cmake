@@ -1,0 +1,20 @@
+# Exports every scene of SCENES to glTF and validates them all.
+file(REMOVE_RECURSE ${WORK})
+file(GLOB scenes ${SCENES}/*.json)
+set(files "")
+foreach(scene IN LISTS scenes)
+  get_filename_component(name ${scene} NAME_WE)
+  execute_process(COMMAND ${XVAL} export gltf ${scene} -o ${WORK}/${name}
+                  RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "xval export gltf ${scene} failed (${rc}): ${err}")
+  endif()
+  list(APPEND files ${WORK}/${name}/scene.gltf)
+endforeach()
+find_program(NODE node REQUIRED)
+execute_process(COMMAND ${NODE} ${VALIDATOR} ${files} RESULT_VARIABLE rc
+                OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 600)
+message("${out}${err}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "glTF validator reported errors (exit ${rc})")
+endif()
