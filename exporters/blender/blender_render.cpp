@@ -2,7 +2,9 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <cstdio>
 #include <cstdlib>
+#include <fstream>
 
 #include "common/run_process.h"
 #include "gltf/gltf_exporter.h"
@@ -45,6 +47,21 @@ Image readDiffDir(const std::filesystem::path& file) {
   return img;
 }
 
+// Blender prints " Time: MM:SS.ss (Saving: ...)" after a render.
+double renderTimeFromLog(const std::filesystem::path& log) {
+  std::ifstream in(log);
+  std::string line;
+  double found = -1.0;
+  while (std::getline(in, line)) {
+    auto at = line.find(" Time: ");
+    int mm;
+    double ss;
+    if (at != std::string::npos && std::sscanf(line.c_str() + at, " Time: %d:%lf", &mm, &ss) == 2)
+      found = mm * 60.0 + ss;
+  }
+  return found;
+}
+
 }  // namespace
 
 Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_dir,
@@ -66,7 +83,7 @@ Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_di
        "--", "--gltf", std::filesystem::absolute(ex.gltf).string(), "--out", out.string(),
        "--mode", mode == BlenderMode::Model ? "model" : "native-lambert"},
       work_dir, log, timeout_seconds);
-  if (info) *info = {r.seconds, log};
+  if (info) *info = {r.seconds, log, renderTimeFromLog(log)};
   if (!r.ok())
     throw ExternalToolError("blender (" + ex.gltf.string() + "): " + r.describe() +
                             "\nlast lines of " + log.string() + ":\n" + tailOfFile(log));

@@ -19,8 +19,9 @@ class ExternalToolError : public std::runtime_error {
 };
 
 struct ExternalRenderInfo {
-  double seconds = 0.0;  // the tool's whole process, wall time
+  double seconds = 0.0;         // the tool's whole process, wall time
   std::filesystem::path log;
+  double render_seconds = -1.0;  // the render alone, as the tool reports it (-1: not reported)
 };
 
 inline constexpr double kDefaultToolTimeoutSeconds = 600.0;

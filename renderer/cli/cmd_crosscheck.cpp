@@ -86,6 +86,7 @@ void addCrosscheckCommand(CLI::App& app, std::function<int()>& run) {
         j["renderer"] = args->renderer;
         j["tolerance_reason"] = reason;
         j["seconds"] = {{"reference", ref_s}, {args->renderer, info.seconds}};
+        if (info.render_seconds >= 0) j["seconds"][args->renderer + "_render"] = info.render_seconds;
         {
           std::ofstream f(dir / "metrics.json.partial");
           f << j.dump(2) << "\n";
