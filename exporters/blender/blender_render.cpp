@@ -8,7 +8,6 @@
 
 #include "common/run_process.h"
 #include "gltf/gltf_exporter.h"
-#include "povray/pov_exporter.h"
 #include "shading/models.h"
 
 namespace xval {
@@ -84,13 +83,7 @@ Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_di
        "--mode", mode == BlenderMode::Model ? "model" : "native-lambert"},
       work_dir, log, timeout_seconds);
   if (info) *info = {r.seconds, log, renderTimeFromLog(log)};
-  if (!r.ok())
-    throw ExternalToolError("blender (" + ex.gltf.string() + "): " + r.describe() +
-                            "\nlast lines of " + log.string() + ":\n" + tailOfFile(log));
-  if (!std::filesystem::exists(out))
-    throw ExternalToolError("blender (" + ex.gltf.string() + ") exited 0 but wrote no image " +
-                            out.string() + "\nlast lines of " + log.string() + ":\n" +
-                            tailOfFile(log));
+  requireToolOutput("blender", ex.gltf, r, out);
   Image img;
   try {
     img = mode == BlenderMode::Model ? readImage(out) : readDiffDir(out);
@@ -99,11 +92,7 @@ Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_di
   } catch (const std::exception& e) {
     throw ExternalToolError(std::string("blender wrote an unreadable image: ") + e.what());
   }
-  if (img.width != scene.camera.width || img.height != scene.camera.height)
-    throw ExternalToolError("blender wrote a " + std::to_string(img.width) + "x" +
-                            std::to_string(img.height) + " image, expected " +
-                            std::to_string(scene.camera.width) + "x" +
-                            std::to_string(scene.camera.height));
+  requireImageSize("blender", img, scene);
   if (mode == BlenderMode::Model) {
     // One sample per pixel: saturating the pixel is the reference
     // renderer's per-sample saturate. Keep the unsaturated value as raw.

@@ -8,7 +8,7 @@
 #include <filesystem>
 
 #include "image/image.h"
-#include "povray/pov_render.h"  // ExternalToolError, ExternalRenderInfo
+#include "common/export_common.h"
 #include "scene/scene.h"
 
 namespace xval {

@@ -10,7 +10,7 @@
 
 #include "camera/camera.h"
 #include "geometry/mesh.h"
-#include "povray/pov_exporter.h"  // ExportError
+#include "common/export_common.h"
 #include "scene/scene_writer.h"
 #include "shading/shader.h"
 #include "shading/surface_colour.h"
@@ -119,14 +119,9 @@ GltfExport exportGltf(const Scene& scene, const std::filesystem::path& dir) {
   m.buffers.resize(1);
   m.buffers[0].uri = "scene.bin";
 
-  std::optional<Texture> texture;
-  const bool textured = scene.material.texture.has_value();
+  const std::optional<Texture> texture = exportTexture(scene, dir);
+  const bool textured = texture.has_value();
   if (textured) {
-    texture = loadTexture(*scene.material.texture);
-    if (texture->rgb8.empty())
-      throw ExportError("texture " + scene.material.texture->path.string() +
-                        " is not 8-bit; the exporters copy textures as 8-bit PNG");
-    writeTexturePng(*texture, dir / "texture.png");
     tinygltf::Image img;
     img.uri = "texture.png";
     img.mimeType = "image/png";

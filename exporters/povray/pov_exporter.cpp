@@ -413,15 +413,8 @@ PovExport exportPov(const Scene& scene, const std::filesystem::path& dir) {
 
   std::vector<TriangleMesh> meshes;
   for (const auto& o : scene.objects) meshes.push_back(tessellate(o));
-  std::optional<Texture> texture;
-  const bool textured = scene.material.texture.has_value();
-  if (textured) {
-    texture = loadTexture(*scene.material.texture);
-    if (texture->rgb8.empty())
-      throw ExportError("texture " + scene.material.texture->path.string() +
-                        " is not 8-bit; the exporters copy textures as 8-bit PNG");
-    writeTexturePng(*texture, dir / "texture.png");
-  }
+  const std::optional<Texture> texture = exportTexture(scene, dir);
+  const bool textured = texture.has_value();
   std::vector<LightInfo> lights;
   for (const auto& l : scene.lights)
     if (!std::holds_alternative<AmbientLight>(l)) lights.push_back(info(l));

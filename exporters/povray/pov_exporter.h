@@ -36,14 +36,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/export_common.h"
 #include "scene/scene.h"
 
 namespace xval {
-
-class ExportError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 struct PovExport {
   std::filesystem::path pov, ini, dir;

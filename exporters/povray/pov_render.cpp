@@ -13,24 +13,14 @@ Image renderWithPovray(const Scene& scene, const std::filesystem::path& work_dir
   const std::filesystem::path log = work_dir / "povray.log";
   ProcessResult r = runProcess({"povray", "scene.ini"}, work_dir, log, timeout_seconds);
   if (info) *info = {r.seconds, log};
-  if (!r.ok())
-    throw ExternalToolError("povray (" + ex.pov.string() + "): " + r.describe() +
-                            "\nlast lines of " + log.string() + ":\n" + tailOfFile(log));
-  if (!std::filesystem::exists(out))
-    throw ExternalToolError("povray (" + ex.pov.string() + ") exited 0 but wrote no image " +
-                            out.string() + "\nlast lines of " + log.string() + ":\n" +
-                            tailOfFile(log));
+  requireToolOutput("povray", ex.pov, r, out);
   Image img;
   try {
     img = readImage(out);
   } catch (const std::exception& e) {
     throw ExternalToolError(std::string("povray wrote an unreadable image: ") + e.what());
   }
-  if (img.width != scene.camera.width || img.height != scene.camera.height)
-    throw ExternalToolError("povray wrote a " + std::to_string(img.width) + "x" +
-                            std::to_string(img.height) + " image, expected " +
-                            std::to_string(scene.camera.width) + "x" +
-                            std::to_string(scene.camera.height));
+  requireImageSize("povray", img, scene);
   // Background: alpha 0, colour 0 (as the reference renderer's).
   for (size_t i = 0; i < img.rgba.size(); i += 4)
     if (img.rgba[i + 3] == 0.0f) img.rgba[i] = img.rgba[i + 1] = img.rgba[i + 2] = 0.0f;

@@ -130,9 +130,9 @@ Hit Accel::intersect(glm::dvec3 origin, glm::dvec3 dir) const {
                                         : intersectDouble(origin, dir);
 }
 
-Hit Accel::intersectFloat(glm::dvec3 o, glm::dvec3 d) const {
-  RTCIntersectContext ctx;
-  rtcInitIntersectContext(&ctx);
+namespace {
+// An Embree ray from (o, d), rounded to float, with no hit yet.
+RTCRayHit embreeRay(glm::dvec3 o, glm::dvec3 d) {
   RTCRayHit rh{};
   rh.ray.org_x = float(o.x), rh.ray.org_y = float(o.y), rh.ray.org_z = float(o.z);
   rh.ray.dir_x = float(d.x), rh.ray.dir_y = float(d.y), rh.ray.dir_z = float(d.z);
@@ -140,6 +140,14 @@ Hit Accel::intersectFloat(glm::dvec3 o, glm::dvec3 d) const {
   rh.ray.tfar = std::numeric_limits<float>::infinity();
   rh.ray.mask = 0xFFFFFFFFu;
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  return rh;
+}
+}  // namespace
+
+Hit Accel::intersectFloat(glm::dvec3 o, glm::dvec3 d) const {
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  RTCRayHit rh = embreeRay(o, d);
   rtcIntersect1(scene_, &ctx, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return {};
   return {true, rh.hit.geomID, rh.hit.primID, rh.ray.tfar, rh.hit.u, rh.hit.v};
@@ -148,13 +156,7 @@ Hit Accel::intersectFloat(glm::dvec3 o, glm::dvec3 d) const {
 Hit Accel::intersectDouble(glm::dvec3 o, glm::dvec3 d) const {
   DoubleContext ctx{{}, RayShear(o, d), std::numeric_limits<double>::infinity(), {}};
   rtcInitIntersectContext(&ctx.embree);
-  RTCRayHit rh{};
-  rh.ray.org_x = float(o.x), rh.ray.org_y = float(o.y), rh.ray.org_z = float(o.z);
-  rh.ray.dir_x = float(d.x), rh.ray.dir_y = float(d.y), rh.ray.dir_z = float(d.z);
-  rh.ray.tnear = 0.0f;
-  rh.ray.tfar = std::numeric_limits<float>::infinity();
-  rh.ray.mask = 0xFFFFFFFFu;
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  RTCRayHit rh = embreeRay(o, d);
   rtcIntersect1(scene_, &ctx.embree, &rh);
   return ctx.hit;
 }

@@ -1,0 +1,50 @@
+// What the exporters and external-renderer harnesses share: their errors,
+// the texture copy, and the checks on a tool's run.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "common/run_process.h"
+#include "image/image.h"
+#include "scene/scene.h"
+#include "texture/texture.h"
+
+namespace xval {
+
+// A scene an exporter cannot express exactly (the message says why).
+class ExportError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// An external renderer is missing, failed, timed out or wrote no image.
+class ExternalToolError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct ExternalRenderInfo {
+  double seconds = 0.0;          // the tool's whole process, wall time
+  std::filesystem::path log;
+  double render_seconds = -1.0;  // the render alone, as the tool reports it (-1: not reported)
+};
+
+inline constexpr double kDefaultToolTimeoutSeconds = 600.0;
+
+// Loads the material's texture and writes it as DIR/texture.png (8-bit
+// codes; the exporters never pass the user's path on). None without a
+// texture. Throws ExportError for a texture without 8-bit codes.
+std::optional<Texture> exportTexture(const Scene& scene, const std::filesystem::path& dir);
+
+// Throws ExternalToolError, with the tail of the log, unless `r` succeeded
+// and wrote `output`.
+void requireToolOutput(const std::string& tool, const std::filesystem::path& input,
+                       const ProcessResult& r, const std::filesystem::path& output);
+
+// Throws ExternalToolError unless `img` has the scene camera's size.
+void requireImageSize(const std::string& tool, const Image& img, const Scene& scene);
+
+}  // namespace xval
