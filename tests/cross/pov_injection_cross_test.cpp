@@ -1,10 +1,12 @@
-// POV-Ray renders the export of a scene whose strings are SDL, and the
-// result matches the reference renderer (the strings changed nothing).
+// POV-Ray and Blender render the exports of a scene whose strings are SDL
+// and Python, and the results match the reference renderer (the strings
+// changed nothing).
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
 #include "image/compare.h"
+#include "blender/blender_render.h"
 #include "povray/pov_render.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
@@ -13,25 +15,40 @@
 using namespace xval;
 namespace fs = std::filesystem;
 
-TEST(PovrayCross, HostileTexturePathAndNameRenderCorrectly) {
-  fs::path dir = fs::temp_directory_path() / "xval_cross_inject";
+namespace {
+Scene hostileScene(const fs::path& dir) {
   fs::remove_all(dir);
   fs::create_directories(dir);
-  const std::string evil = "q\"uote } #declare Evil = 1;\n#end\n.png";
+  const std::string evil = "q\"uote } #declare Evil = 1;\n#end\n__import__('os').system('false')'.png";
   writeTexturePng(makeBrickTexture(), dir / evil);
   nlohmann::json j = {
-      {"name", "n\" } #declare E = 2;\n"},
+      {"name", "n\" } #declare E = 2;\n\"\"\"; import os; os._exit(3) #"},
       {"camera", {{"position", {0, 0, 3.5}}, {"target", {0, 0, 0}}, {"width", 96}, {"height", 96}}},
       {"objects", {{{"shape", "sphere"}}}},
       {"material",
        {{"model", {{"type", "lambert"}}},
-        {"texture", {{"source", "image"}, {"path", evil}, {"filter", "bilinear"}}}}},
+        {"texture", {{"source", "image"}, {"path", evil}, {"filter", "nearest"}}}}},
       {"lights", {{{"type", "directional"}, {"direction", {-0.3, -0.4, -1}}}}}};
-  Scene s = parseScene(j.dump(), dir / "scene.json");
+  return parseScene(j.dump(), dir / "scene.json");
+}
+}  // namespace
+
+TEST(PovrayCross, HostileTexturePathAndNameRenderCorrectly) {
+  Scene s = hostileScene(fs::temp_directory_path() / "xval_cross_inject_pov");
   Image ref = renderScene(s, RenderOptions{});
-  Image pov = renderWithPovray(s, dir / "work", 600.0);
+  Image pov = renderWithPovray(s, fs::temp_directory_path() / "xval_cross_inject_pov" / "work", 600.0);
   Tolerance t;
   CompareMetrics m = compareImages(ref, pov, t);
+  EXPECT_TRUE(t.passes(m)) << toJson(m, t);
+  EXPECT_GT(m.covered_both, 1000);
+}
+
+TEST(BlenderCross, HostileTexturePathAndNameRenderCorrectly) {
+  Scene s = hostileScene(fs::temp_directory_path() / "xval_cross_inject_blender");
+  Image ref = renderScene(s, RenderOptions{});
+  Image bl = renderWithBlender(s, fs::temp_directory_path() / "xval_cross_inject_blender" / "work", 600.0);
+  Tolerance t;
+  CompareMetrics m = compareImages(ref, bl, t);
   EXPECT_TRUE(t.passes(m)) << toJson(m, t);
   EXPECT_GT(m.covered_both, 1000);
 }

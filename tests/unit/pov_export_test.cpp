@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "povray/pov_exporter.h"
+#include "blender/blender_render.h"
 #include "povray/pov_render.h"
 #include "scene/scene_loader.h"
 #include "texture/brick.h"
@@ -111,8 +112,8 @@ TEST(PovExport, RefusesWhatOneRenderCannotComputeExactly) {
   }
 }
 
-// Stand-in povray executables on PATH.
-class FakePovray : public ::testing::Test {
+// Stand-in povray and blender executables on PATH.
+class FakeTool : public ::testing::Test {
  protected:
   void SetUp() override {
     // Per test: CTest may run these in parallel processes.
@@ -121,8 +122,8 @@ class FakePovray : public ::testing::Test {
     old_path_ = std::getenv("PATH") ? std::getenv("PATH") : "";
   }
   void TearDown() override { setenv("PATH", old_path_.c_str(), 1); }
-  void install(const std::string& script) {
-    fs::path p = bin_ / "povray";
+  void install(const std::string& script, const std::string& tool = "povray") {
+    fs::path p = bin_ / tool;
     std::ofstream(p) << "#!/bin/sh\n" << script << "\n";
     fs::permissions(p, fs::perms::owner_all);
     setenv("PATH", (bin_.string() + ":/usr/bin:/bin").c_str(), 1);
@@ -135,28 +136,36 @@ class FakePovray : public ::testing::Test {
     }
     return "(no error)";
   }
+  std::string blenderErrorOf(double timeout = 30.0) {
+    try {
+      renderWithBlender(smallScene(), freshDir("fakework_" + name_), timeout);
+    } catch (const ExternalToolError& e) {
+      return e.what();
+    }
+    return "(no error)";
+  }
   fs::path bin_;
   std::string old_path_, name_;
 };
 
-TEST_F(FakePovray, FailingPovrayIsAnErrorWithItsLogTail) {
+TEST_F(FakeTool, FailingPovrayIsAnErrorWithItsLogTail) {
   install("echo 'Parse Error: something broke'; exit 3");
   std::string e = errorOf();
   EXPECT_NE(e.find("exit code 3"), std::string::npos) << e;
   EXPECT_NE(e.find("Parse Error: something broke"), std::string::npos) << e;
 }
 
-TEST_F(FakePovray, CrashingPovrayIsAnError) {
+TEST_F(FakeTool, CrashingPovrayIsAnError) {
   install("kill -SEGV $$");
   EXPECT_NE(errorOf().find("signal 11"), std::string::npos);
 }
 
-TEST_F(FakePovray, PovrayWritingNoImageIsAnError) {
+TEST_F(FakeTool, PovrayWritingNoImageIsAnError) {
   install("echo rendered; exit 0");
   EXPECT_NE(errorOf().find("wrote no image"), std::string::npos);
 }
 
-TEST_F(FakePovray, HangingPovrayIsKilledAfterTheTimeout) {
+TEST_F(FakeTool, HangingPovrayIsKilledAfterTheTimeout) {
   install("sleep 30");
   auto t0 = std::chrono::steady_clock::now();
   std::string e = errorOf(1.0);
@@ -165,7 +174,30 @@ TEST_F(FakePovray, HangingPovrayIsKilledAfterTheTimeout) {
   EXPECT_LT(s, 10.0);
 }
 
-TEST_F(FakePovray, MissingPovrayIsAnError) {
+TEST_F(FakeTool, MissingPovrayIsAnError) {
   setenv("PATH", bin_.string().c_str(), 1);  // empty folder
   EXPECT_NE(errorOf().find("not found on PATH"), std::string::npos);
+}
+
+TEST_F(FakeTool, FailingBlenderIsAnErrorWithItsLogTail) {
+  install("echo 'Python: Traceback: KeyError xval'; exit 1", "blender");
+  std::string e = blenderErrorOf();
+  EXPECT_NE(e.find("exit code 1"), std::string::npos) << e;
+  EXPECT_NE(e.find("KeyError xval"), std::string::npos) << e;
+}
+
+TEST_F(FakeTool, BlenderWritingNoImageIsAnError) {
+  install("echo 'Blender quit'; exit 0", "blender");
+  EXPECT_NE(blenderErrorOf().find("wrote no image"), std::string::npos);
+}
+
+TEST_F(FakeTool, HangingBlenderIsKilledAfterTheTimeout) {
+  install("sleep 30", "blender");
+  std::string e = blenderErrorOf(1.0);
+  EXPECT_NE(e.find("timed out"), std::string::npos) << e;
+}
+
+TEST_F(FakeTool, MissingBlenderIsAnError) {
+  setenv("PATH", bin_.string().c_str(), 1);
+  EXPECT_NE(blenderErrorOf().find("not found on PATH"), std::string::npos);
 }
