@@ -4,6 +4,9 @@
 
 #include "cli/commands.h"
 #include "image/compare.h"
+#include "image/perceptual.h"
+
+#include <nlohmann/json.hpp>
 
 namespace xval::cli {
 
@@ -34,9 +37,16 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
       Tolerance t{args->tol16 / 65535.0, args->fraction};
       CompareMetrics m = compareImages(a, b, t);
       if (!args->diff.empty()) writeImage(differenceImage(a, b), args->diff);
+      PerceptualMetrics pm = perceptualMetrics(a, b);
       if (args->json) {
-        std::printf("%s\n", toJson(m, t).c_str());
+        nlohmann::json j = nlohmann::json::parse(toJson(m, t));
+        j["ssim"] = pm.ssim;
+        j["ciede2000"] = {{"mean", pm.ciede2000_mean}, {"max", pm.ciede2000_max}};
+        j["yiq_delta"] = {{"mean", pm.yiq_mean}, {"max", pm.yiq_max}};
+        std::printf("%s\n", j.dump(2).c_str());
       } else {
+        std::printf("SSIM %.6f  CIEDE2000 mean %.4f max %.4f  YIQ delta mean %.3g max %.3g\n", pm.ssim,
+                    pm.ciede2000_mean, pm.ciede2000_max, pm.yiq_mean, pm.yiq_max);
         std::printf(
             "covered %lld px, mask disagreements %lld (%lld on silhouettes)\n"
             "max %.3f  p99.9 %.3f  RMSE %.4f (x/65535)  PSNR %.1f dB  within %.3g: %.5f%%  -> %s\n",

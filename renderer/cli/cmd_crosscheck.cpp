@@ -12,6 +12,7 @@
 
 #include "cli/commands.h"
 #include "image/compare.h"
+#include "image/perceptual.h"
 #include "blender/blender_render.h"
 #include "povray/pov_render.h"
 #include "validate/native_lambert.h"
@@ -82,6 +83,10 @@ void addCrosscheckCommand(CLI::App& app, std::function<int()>& run) {
         CompareMetrics m = compareImages(ref, ext, tol);
         writeImage(differenceImage(ref, ext), dir / "diff.exr");
         nlohmann::json j = nlohmann::json::parse(toJson(m, tol));
+        PerceptualMetrics pm = perceptualMetrics(ref, ext);
+        j["ssim"] = pm.ssim;
+        j["ciede2000"] = {{"mean", pm.ciede2000_mean}, {"max", pm.ciede2000_max}};
+        j["yiq_delta"] = {{"mean", pm.yiq_mean}, {"max", pm.yiq_max}};
         j["scene"] = scene.name;
         j["renderer"] = args->renderer;
         j["tolerance_reason"] = reason;

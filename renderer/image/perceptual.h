@@ -1,0 +1,38 @@
+// Perceptual colour differences and structural similarity.
+//
+// Inputs are colours in the models' stored encoding. For CIELAB they are
+// taken as sRGB-encoded (IEC 61966-2-1; display-referred 8-bit texture
+// values are), decoded to linear sRGB, then XYZ (D65) and CIELAB with the
+// D65 reference white.
+//   ciede2000: Sharma, Wu, Dalal, "The CIEDE2000 color-difference
+//              formula: implementation notes ..." (2005), kL = kC = kH = 1;
+//   yiqDelta:  Kotsarenko & Ramos (2010), "Measuring perceived color
+//              difference using YIQ NTSC transmission color space in mobile
+//              applications": sqrt(0.5053 dY^2 + 0.299 dI^2 + 0.1957 dQ^2)
+//              with the YIQ matrix of their 2012 listing (models.h);
+//   ssim:      Wang, Bovik, Sheikh, Simoncelli (2004) on the YIQ luma, an
+//              11x11 Gaussian window (sigma 1.5), K1 = 0.01, K2 = 0.03,
+//              dynamic range 1, averaged over the windows centred on
+//              pixels both images cover.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "image/image.h"
+
+namespace xval {
+
+glm::dvec3 srgbToLab(glm::dvec3 srgb);
+double ciede2000(glm::dvec3 lab1, glm::dvec3 lab2);
+double yiqDelta(glm::dvec3 rgb1, glm::dvec3 rgb2);
+
+struct PerceptualMetrics {
+  double ssim = 1.0;
+  double ciede2000_mean = 0.0, ciede2000_max = 0.0;
+  double yiq_mean = 0.0, yiq_max = 0.0;
+};
+
+// Over the pixels both images cover (alpha > 0).
+PerceptualMetrics perceptualMetrics(const Image& a, const Image& b);
+
+}  // namespace xval
