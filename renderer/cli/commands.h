@@ -12,5 +12,6 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run);
 void addExportCommand(CLI::App& app, std::function<int()>& run);
 void addCompareCommand(CLI::App& app, std::function<int()>& run);
 void addCrosscheckCommand(CLI::App& app, std::function<int()>& run);
+void addGenerateCommand(CLI::App& app, std::function<int()>& run);
 
 }  // namespace xval::cli

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   xval::cli::addExportCommand(app, run);
   xval::cli::addCompareCommand(app, run);
   xval::cli::addCrosscheckCommand(app, run);
+  xval::cli::addGenerateCommand(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -7,6 +7,9 @@
 
 #include "scene/scene_loader.h"
 #include "scene/scene_writer.h"
+#include "scene/scene_generator.h"
+
+#include <sstream>
 
 using namespace xval;
 
@@ -206,4 +209,36 @@ TEST(SceneWriter, RoundTripsEveryReferenceScene) {
     ++n;
   }
   EXPECT_GE(n, 20);
+}
+
+// The committed Figure 1 scenes are exactly what their spec generates
+// (regenerate: xval generate reference/specs/fig1.json -o reference/scenes).
+TEST(SceneGenerator, Fig1SpecGeneratesTheCommittedScenes) {
+  auto scenes = generateScenes(std::string(XVAL_REFERENCE_DIR) + "/specs/fig1.json");
+  ASSERT_EQ(scenes.size(), 6u);
+  for (const auto& g : scenes) {
+    std::ifstream in(std::string(XVAL_REFERENCE_DIR) + "/scenes/" + g.name + ".json");
+    ASSERT_TRUE(in) << g.name;
+    std::stringstream s;
+    s << in.rdbuf();
+    EXPECT_EQ(s.str(), g.json.dump(2) + "\n") << g.name;
+  }
+}
+
+TEST(SceneGenerator, InvalidCombinationNamesTheSpecAndTheField) {
+  auto dir = std::filesystem::temp_directory_path() / "xval_gen_test";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "spec.json") << R"({"format": "xval-generate/1",
+    "base": {"camera": {"position": [0,0,4], "target": [0,0,0]}, "objects": [{"shape": "sphere"}],
+             "material": {"model": {"type": "lambert"}}, "lights": []},
+    "axes": [{"name": "m", "values": {"ok": {}, "bad": {"/material/model/kd": 1}}}],
+    "name": "s_{m}"})";
+  try {
+    generateScenes(dir / "spec.json");
+    FAIL();
+  } catch (const SceneError& e) {
+    std::string m = e.what();
+    EXPECT_NE(m.find("spec.json: combination (m=bad)"), std::string::npos) << m;
+    EXPECT_NE(m.find("material.model.kd: unknown field"), std::string::npos) << m;
+  }
 }

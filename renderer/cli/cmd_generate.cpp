@@ -1,0 +1,53 @@
+// xval generate SPEC.json -o DIR/ [--render]
+#include <cstdio>
+#include <fstream>
+#include <memory>
+
+#include "cli/commands.h"
+#include "render/renderer.h"
+#include "scene/scene_generator.h"
+#include "scene/scene_loader.h"
+
+namespace xval::cli {
+
+void addGenerateCommand(CLI::App& app, std::function<int()>& run) {
+  struct Args {
+    std::string spec, dir;
+    bool render = false;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "generate",
+      "Write the scene files of a matrix spec (every combination of one value per axis; "
+      "format in renderer/scene/scene_generator.h), each validated, optionally with its "
+      "reference-renderer image.");
+  cmd->add_option("spec", args->spec, "Generator spec (JSON)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output", args->dir, "Output folder")->required();
+  cmd->add_flag("--render", args->render, "Also render each scene (DIR/NAME.exr, double precision)");
+  cmd->callback([args, &run]() {
+    run = [args]() {
+      std::vector<GeneratedScene> scenes = generateScenes(args->spec);
+      std::filesystem::path dir(args->dir);
+      std::filesystem::create_directories(dir);
+      for (size_t i = 0; i < scenes.size(); ++i) {
+        const auto& g = scenes[i];
+        const std::filesystem::path file = dir / (g.name + ".json");
+        {
+          std::ofstream f(file.string() + ".partial");
+          f << g.json.dump(2) << "\n";
+          if (!f) throw std::runtime_error(file.string() + ": cannot write");
+        }
+        std::filesystem::rename(file.string() + ".partial", file);
+        std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, scenes.size(), file.c_str());
+        if (args->render) {
+          Scene s = loadScene(file);
+          writeImage(renderScene(s, defaultOptions(s)), dir / (g.name + ".exr"));
+        }
+      }
+      std::fprintf(stderr, "xval generate: %zu scenes in %s\n", scenes.size(), args->dir.c_str());
+      return 0;
+    };
+  });
+}
+
+}  // namespace xval::cli

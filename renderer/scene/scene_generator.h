@@ -1,0 +1,40 @@
+// Scene sets generated from a matrix spec (`xval generate`).
+//
+// Spec file (JSON):
+//   {
+//     "format": "xval-generate/1",
+//     "base": { ...a scene file's fields... },
+//     "axes": [
+//       {"name": "model", "values": {
+//          "phong": {"/material/model": {"type": "classic_phong"}},
+//          "yiq":   {"/material/model": {"type": "yiq_luma"}}}},
+//       {"name": "placement", "values": {
+//          "front":    {"/lights/0/position": [-0.5, 2.0, 1.25]},
+//          "specular": {"/material/model/kd": 0}}},
+//       ...
+//     ],
+//     "name": "fig1_{model}_{placement}"
+//   }
+// Every combination of one value per axis (in axis order) gives a scene:
+// the base with each value's JSON-pointer patches applied in turn (later
+// axes override earlier ones), named by the template. Each scene is then
+// validated like a scene file; an error names the spec, the combination
+// and the field.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace xval {
+
+struct GeneratedScene {
+  std::string name;
+  nlohmann::ordered_json json;  // the scene file's content
+};
+
+std::vector<GeneratedScene> generateScenes(const std::filesystem::path& spec_file);
+
+}  // namespace xval
