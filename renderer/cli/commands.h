@@ -13,5 +13,6 @@ void addExportCommand(CLI::App& app, std::function<int()>& run);
 void addCompareCommand(CLI::App& app, std::function<int()>& run);
 void addCrosscheckCommand(CLI::App& app, std::function<int()>& run);
 void addGenerateCommand(CLI::App& app, std::function<int()>& run);
+void addValidateCommand(CLI::App& app, std::function<int()>& run);
 
 }  // namespace xval::cli

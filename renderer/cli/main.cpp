@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   xval::cli::addCompareCommand(app, run);
   xval::cli::addCrosscheckCommand(app, run);
   xval::cli::addGenerateCommand(app, run);
+  xval::cli::addValidateCommand(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
