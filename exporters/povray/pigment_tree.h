@@ -43,8 +43,9 @@ Pigment map(std::string pattern, std::vector<std::pair<double, Pigment>> entries
 Pigment times(std::string pattern, Pigment p);
 Pigment sum(std::vector<Pigment> parts);
 Pigment scaled(const Pigment& p, double k);
-// Leaf-wise: every leaf f(C) becomes f(C) (x) mask... used as C (x) K.
-// Replaces every leaf (M, b) by (diag(c) M', ...) as given by `fn`.
+// The same tree with every leaf replaced by fn(leaf); the maps and sums
+// stay. Since every node is linear in its leaves, this is how a factor is
+// pushed into a tree (e.g. K -> C (x) K with leaves diag(k) C).
 Pigment mapLeaves(const Pigment& p, const std::function<Pigment(const PigmentNode&)>& fn);
 
 bool usesTexture(const Pigment& p);

@@ -111,10 +111,6 @@ std::vector<std::pair<double, dvec3>> diffuseBreakpoints(const LightingModel& mo
   return {};
 }
 
-struct Emission {
-  Pigment pigment;
-};
-
 dvec3 ambientSum(const Scene& s) {
   dvec3 a(0.0);
   for (const auto& l : s.lights)

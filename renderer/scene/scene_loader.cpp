@@ -11,8 +11,6 @@ using nlohmann::json;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 dvec3 requireDirection(JsonReader& r, std::string_view key) {
   dvec3 d = r.requireVec3(key);
   double len = glm::length(d);
