@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
 # The main job, from a fresh Debian 12 machine: install what is missing,
-# build, and render the default reference scene set (reference/scenes/)
-# with the reference renderer into results/renders/ (EXR + 16-bit PNG per
-# scene, and timings.tsv).
+# build, render the default reference scene set (reference/scenes/) with
+# the reference renderer into results/renders/ (EXR + 16-bit PNG per scene,
+# and timings.tsv), then validate it against POV-Ray and Blender into
+# results/validation/ (results.json; exit 1 if a case is outside its
+# tolerance, 2 on an error).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/build.sh
 bash scripts/render-reference.sh
+build/renderer/xval validate reference/scenes -o results/validation
