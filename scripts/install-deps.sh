@@ -12,6 +12,8 @@ packages=(
   libtinygltf-dev libembree-dev libgtest-dev libgmock-dev libbenchmark-dev
   # external renderers and what Blender's glTF add-on needs
   povray blender python3-numpy
+  # the report: plots, and the headless browser its test opens it in
+  gnuplot-nox chromium
 )
 # Node.js for the Khronos glTF Validator (tests): Debian's, unless a node
 # is already installed.

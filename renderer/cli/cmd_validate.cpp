@@ -3,7 +3,8 @@
 // Renders every scene with the reference renderer, POV-Ray and Blender
 // (independent renders in parallel, up to --jobs), compares every pair
 // (reference-povray, reference-blender, povray-blender) with the declared
-// tolerances, attributes each disagreement, and writes results.json.
+// tolerances, attributes each disagreement, and writes results.json and,
+// from it alone, report.html (validate/report.h).
 // Exit 0: every case within tolerance; 1: some case outside; 2: an error
 // (bad scene, renderer missing or broken). Files are written under
 // temporary names and renamed, so an interrupted run leaves no file that
@@ -28,6 +29,7 @@
 #include "povray/pov_render.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
+#include "validate/report.h"
 #include "validate/tolerances.h"
 
 namespace xval::cli {
@@ -131,7 +133,8 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
   CLI::App* cmd = app.add_subcommand(
       "validate",
       "Render scenes with the reference renderer, POV-Ray and Blender, compare every pair with "
-      "the declared tolerances, attribute each disagreement, and write results.json.\nExit 0 "
+      "the declared tolerances, attribute each disagreement, and write results.json and "
+      "report.html.\nExit 0 "
       "when every case passes, 1 when any fails, 2 on an error (bad scene, renderer missing or "
       "broken).");
   cmd->add_option("scenes", args->inputs, "Scene files or folders (default: reference/scenes)");
@@ -303,9 +306,10 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
         results["wall_seconds"] = std::chrono::duration<double>(Clock::now() - t_start).count();
         results["cases"] = jcases;
         writeAtomically(dir / "results.json", results.dump(2) + "\n");
+        writeReport(dir / "results.json", dir / "report.html");
         std::fprintf(stderr, "xval validate: %zu scenes, %s; wrote %s\n", cases.size(),
                      any_error ? "ERRORS" : any_fail ? "some cases FAIL" : "all pass",
-                     (dir / "results.json").c_str());
+                     (dir / "report.html").c_str());
         return any_error ? 2 : any_fail ? 1 : 0;
       } catch (const std::exception& e) {
         std::fprintf(stderr, "xval validate: error: %s\n", e.what());

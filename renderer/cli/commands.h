@@ -14,5 +14,6 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run);
 void addCrosscheckCommand(CLI::App& app, std::function<int()>& run);
 void addGenerateCommand(CLI::App& app, std::function<int()>& run);
 void addValidateCommand(CLI::App& app, std::function<int()>& run);
+void addReportCommand(CLI::App& app, std::function<int()>& run);
 
 }  // namespace xval::cli

@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   xval::cli::addCrosscheckCommand(app, run);
   xval::cli::addGenerateCommand(app, run);
   xval::cli::addValidateCommand(app, run);
+  xval::cli::addReportCommand(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,284 @@
+#include "validate/report.h"
+
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "image/image.h"
+
+namespace xval {
+
+using J = nlohmann::json;
+
+std::string htmlEscape(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    switch (c) {
+      case '&': o += "&amp;"; break;
+      case '<': o += "&lt;"; break;
+      case '>': o += "&gt;"; break;
+      case '"': o += "&quot;"; break;
+      case '\'': o += "&#39;"; break;
+      default: o += c;
+    }
+  }
+  return o;
+}
+
+namespace {
+
+constexpr double kHeatMin16 = 1.0, kHeatMax16 = 4096.0;
+
+// Black -> blue -> cyan -> green -> yellow -> red -> white over t in [0,1].
+glm::vec3 ramp(double t) {
+  static const glm::vec3 stops[] = {{0, 0, 0}, {0, 0, 1}, {0, 1, 1}, {0, 1, 0},
+                                    {1, 1, 0}, {1, 0, 0}, {1, 1, 1}};
+  t = std::clamp(t, 0.0, 1.0) * 6.0;
+  int i = std::min(5, int(t));
+  float f = float(t - i);
+  return stops[i] * (1.0f - f) + stops[i + 1] * f;
+}
+
+double heatT(double err16) {
+  if (err16 <= kHeatMin16) return err16 / kHeatMin16 * (1.0 / 7.0);  // 0..1 LSB: the first seventh
+  return 1.0 / 7.0 + (6.0 / 7.0) * std::log(err16 / kHeatMin16) / std::log(kHeatMax16 / kHeatMin16);
+}
+
+void writeHeatMap(const std::filesystem::path& diff_exr, const std::filesystem::path& png) {
+  Image d = readImage(diff_exr);
+  Image h(d.width, d.height, false);
+  for (size_t i = 0; i < size_t(d.width) * d.height; ++i) {
+    glm::vec3 c(0.35f);  // not covered by either render
+    if (d.rgba[i * 4 + 3] > 0) {
+      double e = std::max({d.rgba[i * 4], d.rgba[i * 4 + 1], d.rgba[i * 4 + 2]}) * 65535.0;
+      c = ramp(heatT(e));
+    }
+    for (int k = 0; k < 3; ++k) h.rgba[i * 4 + k] = c[k];
+    h.rgba[i * 4 + 3] = 1.0f;
+  }
+  writeImage(h, png);
+}
+
+void writeScale(const std::filesystem::path& png) {
+  Image s(512, 16, false);
+  for (int x = 0; x < 512; ++x) {
+    glm::vec3 c = ramp(x / 511.0);
+    for (int y = 0; y < 16; ++y) {
+      float* p = s.pixel(x, y);
+      p[0] = c.r, p[1] = c.g, p[2] = c.b, p[3] = 1.0f;
+    }
+  }
+  writeImage(s, png);
+}
+
+std::string fmt(double v, int prec = 3) {
+  if (!std::isfinite(v)) return "inf";
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*f", prec, v);
+  return b;
+}
+
+// The p99.9 error of every pair of every case, as a gnuplot bar chart.
+void writePlot(const J& cases, const std::filesystem::path& dir) {
+  const std::filesystem::path dat = dir / "p999.dat", gp = dir / "p999.gp";
+  {
+    std::ofstream d(dat);
+    d << "# case ref-povray ref-blender povray-blender (p99.9 error, 1/65535)\n";
+    int i = 0;
+    for (const auto& c : cases) {
+      d << i++;
+      for (const auto& p : c["pairs"])
+        d << " " << (p.contains("metrics") ? std::max(0.01, p["metrics"]["p999_abs_16bit"].get<double>()) : 0.01);
+      d << "\n";
+    }
+  }
+  {
+    std::ofstream g(gp);
+    g << "set terminal pngcairo size 1100,460 font ',9' noenhanced\nset output 'p999.png'\n"
+         "set logscale y\nset yrange [0.01:*]\nset ylabel 'p99.9 error (1/65535)'\n"
+         "set style data histogram\nset style histogram cluster gap 1\n"
+         "set style fill solid 0.8 border -1\nset boxwidth 0.9\nset key outside top center horizontal\n"
+         "set xtics rotate by -45 scale 0\nset grid ytics\n";
+    g << "set xtics (";
+    int i = 0;
+    for (const auto& c : cases) {
+      // gnuplot string: scene names are [A-Za-z0-9_.-] (validated by the
+      // loader's file naming) but quote-escape anyway.
+      std::string n = c["scene"].get<std::string>();
+      std::string safe;
+      for (char ch : n) safe += (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-' || ch == '.') ? ch : '_';
+      g << (i ? ", " : "") << "'" << safe << "' " << i;
+      ++i;
+    }
+    g << ")\n";
+    g << "plot 'p999.dat' using 2 title 'reference-povray', '' using 3 title 'reference-blender', "
+         "'' using 4 title 'povray-blender'\n";
+  }
+  std::string cmd = "cd '" + dir.string() + "' && gnuplot p999.gp 2> p999.log";
+  if (dir.string().find('\'') != std::string::npos)
+    throw std::runtime_error(dir.string() + ": report folder names with quotes are not supported");
+  if (std::system(cmd.c_str()) != 0 || !std::filesystem::exists(dir / "p999.png"))
+    throw std::runtime_error("gnuplot failed or is missing (Debian package gnuplot-nox); see " +
+                             (dir / "p999.log").string());
+}
+
+}  // namespace
+
+void writeReport(const std::filesystem::path& results_json, const std::filesystem::path& html) {
+  std::ifstream in(results_json);
+  if (!in) throw std::runtime_error(results_json.string() + ": cannot open");
+  J r;
+  try {
+    r = J::parse(in);
+  } catch (const J::exception& e) {
+    throw std::runtime_error(results_json.string() + ": not valid JSON: " + e.what());
+  }
+  if (r.value("format", "") != "xval-results/1")
+    throw std::runtime_error(results_json.string() + ": format: expected \"xval-results/1\"");
+  const std::filesystem::path dir = results_json.parent_path().empty() ? "." : results_json.parent_path();
+  J cases = r["cases"];
+  // Failures (and errors) first, then by name.
+  std::stable_sort(cases.begin(), cases.end(), [](const J& a, const J& b) {
+    return a["pass"].get<bool>() < b["pass"].get<bool>();
+  });
+  writeScale(dir / "heat_scale.png");
+  writePlot(cases, dir);
+
+  int pass = 0, fail = 0, err = 0;
+  for (const auto& c : cases) {
+    bool e = false;
+    for (const auto& p : c["pairs"]) e |= p.contains("error");
+    (e ? err : c["pass"].get<bool>() ? pass : fail)++;
+  }
+  std::ostringstream h;
+  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
+    << "<title>xval report</title>\n<style>\n"
+    << "body{font-family:sans-serif;margin:1.5em;color:#222}table{border-collapse:collapse;margin:.5em 0}"
+    << "td,th{border:1px solid #bbb;padding:2px 6px;font-size:13px;text-align:right}"
+    << "th{background:#eee}td.l,th.l{text-align:left}.pass{color:#070;font-weight:bold}"
+    << ".fail{color:#b00;font-weight:bold}.err{color:#b60;font-weight:bold}"
+    << ".case{border-top:2px solid #888;margin-top:1.5em;padding-top:.5em}"
+    << ".imgs{display:flex;flex-wrap:wrap;gap:10px}.imgs figure{margin:0}"
+    << ".imgs img{width:256px;image-rendering:pixelated;border:1px solid #999}"
+    << "figcaption{font-size:12px;text-align:center}.reason{font-size:12px;color:#444;max-width:900px}"
+    << "</style></head><body>\n";
+  h << "<h1>xval cross-validation report</h1>\n";
+  h << "<p>" << cases.size() << " scenes: <span class=\"pass\">" << pass << " pass</span>, "
+    << "<span class=\"fail\">" << fail << " fail</span>, <span class=\"err\">" << err
+    << " errors</span>. Wall time " << fmt(r.value("wall_seconds", 0.0), 1)
+    << " s. Failures are listed first. Errors are in 1/65535 of the full scale.</p>\n";
+  h << "<table><tr><th class=\"l\">provenance</th><th class=\"l\"></th></tr>";
+  for (auto it = r["provenance"].begin(); it != r["provenance"].end(); ++it)
+    h << "<tr><td class=\"l\">" << htmlEscape(it.key()) << "</td><td class=\"l\">"
+      << htmlEscape(it.value().is_string() ? it.value().get<std::string>() : it.value().dump()) << "</td></tr>";
+  h << "</table>\n";
+  h << "<h2>Summary</h2>\n<table><tr><th class=\"l\">scene</th><th class=\"l\">verdict</th>"
+       "<th class=\"l\">who deviates</th>";
+  for (const char* p : {"reference-povray", "reference-blender", "povray-blender"})
+    h << "<th>" << p << "<br>p99.9 / max</th>";
+  h << "</tr>\n";
+  for (const auto& c : cases) {
+    const std::string id = htmlEscape(c["scene"].get<std::string>());
+    h << "<tr><td class=\"l\"><a href=\"#" << id << "\">" << id << "</a></td><td class=\"l "
+      << (c["pass"].get<bool>() ? "pass\">PASS" : "fail\">FAIL") << "</td><td class=\"l\">"
+      << htmlEscape(c["attribution"].get<std::string>()) << "</td>";
+    for (const auto& p : c["pairs"]) {
+      if (!p.contains("metrics")) {
+        h << "<td class=\"err\">error</td>";
+        continue;
+      }
+      const J& m = p["metrics"];
+      h << "<td class=\"" << (p["pass"].get<bool>() ? "pass" : "fail") << "\">"
+        << fmt(m["p999_abs_16bit"], 2) << " / " << fmt(m["max_abs_16bit"], 1) << "</td>";
+    }
+    h << "</tr>\n";
+  }
+  h << "</table>\n<figure><img src=\"p999.png\" alt=\"p99.9 error per scene and pair\">"
+       "<figcaption>p99.9 error per scene and pair (log scale; gnuplot)</figcaption></figure>\n";
+
+  h << "<h2>Cases</h2>\n<p>Heat maps: largest channel difference per pixel, "
+       "<img src=\"heat_scale.png\" alt=\"scale\" style=\"width:300px;height:12px;vertical-align:middle\">"
+       " from 0 through 1 (first seventh, linear) to 4096/65535 (logarithmic); grey: not covered.</p>\n";
+  for (const auto& c : cases) {
+    const std::string scene = c["scene"].get<std::string>();
+    const std::string id = htmlEscape(scene);
+    h << "<div class=\"case\" id=\"" << id << "\"><h3>" << id << " &mdash; <span class=\""
+      << (c["pass"].get<bool>() ? "pass\">PASS" : "fail\">FAIL") << "</span></h3>\n";
+    h << "<p>" << htmlEscape(c["attribution"].get<std::string>()) << ". Reproduce: <code>xval validate "
+      << htmlEscape(c["file"].get<std::string>()) << " -o DIR</code></p>\n<div class=\"imgs\">";
+    for (const char* renderer : {"reference", "povray", "blender"}) {
+      if (!c["renders"].contains(renderer)) continue;
+      const J& rr = c["renders"][renderer];
+      h << "<figure><img src=\"" << htmlEscape(rr["image"].get<std::string>()) << "\" alt=\""
+        << renderer << "\"><figcaption>" << renderer << ", "
+        << fmt(rr["seconds"], 2) << " s";
+      if (rr.contains("render_seconds")) h << " (render " << fmt(rr["render_seconds"], 2) << " s)";
+      if (rr.contains("error")) h << "<br><span class=\"err\">" << htmlEscape(rr["error"].get<std::string>()) << "</span>";
+      h << "</figcaption></figure>";
+    }
+    h << "</div>\n<div class=\"imgs\">";
+    for (const auto& p : c["pairs"]) {
+      const std::string pair = p["pair"].get<std::string>();
+      const std::filesystem::path diff = dir / scene / ("diff_" + pair + ".exr");
+      if (!p.contains("metrics") || !std::filesystem::exists(diff)) continue;
+      const std::string heat = scene + "/heat_" + pair + ".png";
+      writeHeatMap(diff, dir / heat);
+      h << "<figure><img src=\"" << htmlEscape(heat) << "\" alt=\"heat map " << htmlEscape(pair)
+        << "\"><figcaption>|" << htmlEscape(pair) << "|</figcaption></figure>";
+    }
+    h << "</div>\n<table><tr><th class=\"l\">pair</th><th>verdict</th><th>max</th><th>p99.9</th>"
+         "<th>RMSE</th><th>PSNR dB</th><th>within tol.</th><th>tol.</th><th>masks off (silh.)</th>"
+         "<th>over tol.: occl. / backf. / grazing / unexpl.</th><th>SSIM</th><th>CIEDE2000 mean / max</th>"
+         "<th>YIQ &Delta; mean / max</th></tr>\n";
+    for (const auto& p : c["pairs"]) {
+      h << "<tr><td class=\"l\">" << htmlEscape(p["pair"].get<std::string>()) << "</td>";
+      if (!p.contains("metrics")) {
+        h << "<td class=\"err\" colspan=\"12\">" << htmlEscape(p.value("error", "error")) << "</td></tr>\n";
+        continue;
+      }
+      const J& m = p["metrics"];
+      const J& o = m["over_tolerance"];
+      h << "<td class=\"" << (p["pass"].get<bool>() ? "pass\">PASS" : "fail\">FAIL") << "</td><td>"
+        << fmt(m["max_abs_16bit"], 2) << "</td><td>" << fmt(m["p999_abs_16bit"], 2) << "</td><td>"
+        << fmt(m["rmse_16bit"], 3) << "</td><td>"
+        << (m["psnr_db"].is_null() ? std::string("inf") : fmt(m["psnr_db"], 1)) << "</td><td>"
+        << fmt(100.0 * m["fraction_within"].get<double>(), 3) << "%</td><td>"
+        << fmt(m["tolerance"]["max_abs_16bit"], 0) << " on " << fmt(100.0 * m["tolerance"]["fraction"].get<double>(), 1)
+        << "%</td><td>" << m["mask_disagree"].get<long long>() << " (" << m["mask_disagree_silhouette"].get<long long>()
+        << ")</td><td>" << o["occlusion_edge"].get<long long>() << " / " << o["backfacing_normal"].get<long long>()
+        << " / " << o["grazing"].get<long long>() << " / " << o["unexplained"].get<long long>() << "</td><td>"
+        << fmt(m["ssim"], 6) << "</td><td>" << fmt(m["ciede2000"]["mean"], 4) << " / "
+        << fmt(m["ciede2000"]["max"], 3) << "</td><td>" << fmt(m["yiq_delta"]["mean"].get<double>() * 1e3, 4)
+        << "e-3 / " << fmt(m["yiq_delta"]["max"].get<double>() * 1e3, 3) << "e-3</td></tr>\n";
+    }
+    h << "</table>\n";
+    for (const auto& p : c["pairs"])
+      if (p.contains("metrics") && !p["metrics"].value("tolerance_reason", "").empty())
+        h << "<p class=\"reason\"><b>" << htmlEscape(p["pair"].get<std::string>())
+          << " tolerance:</b> " << htmlEscape(p["metrics"]["tolerance_reason"].get<std::string>()) << "</p>\n";
+    h << "</div>\n";
+  }
+  h << "<script>\nwindow.addEventListener('load', function () {\n"
+       "  var bad = [], imgs = document.images;\n"
+       "  for (var i = 0; i < imgs.length; i++)\n"
+       "    if (!imgs[i].complete || imgs[i].naturalWidth === 0) bad.push(imgs[i].getAttribute('src'));\n"
+       "  document.title = bad.length ? 'xval report: BROKEN ' + bad.join(' ')\n"
+       "                              : 'xval report: ' + imgs.length + ' images OK';\n"
+       "});\n</script>\n</body></html>\n";
+  const std::filesystem::path tmp = html.string() + ".partial";
+  {
+    std::ofstream f(tmp);
+    f << h.str();
+    if (!f) throw std::runtime_error(html.string() + ": cannot write");
+  }
+  std::filesystem::rename(tmp, html);
+}
+
+}  // namespace xval
