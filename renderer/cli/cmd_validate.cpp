@@ -29,6 +29,7 @@
 #include "povray/pov_render.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
+#include "validate/colour_stats.h"
 #include "validate/report.h"
 #include "validate/tolerances.h"
 
@@ -282,6 +283,14 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
             jpairs.push_back(jp);
           }
           jc["pairs"] = jpairs;
+          if (cs.renders["reference"].error.empty()) {
+            ColourStats st = colourStats(cs.renders["reference"].image);
+            jc["colour_stats"] = {{"lit_pixels", st.lit_pixels},
+                                  {"mean_chroma", st.mean_chroma},
+                                  {"mean_albedo_chroma", st.mean_albedo_chroma},
+                                  {"grey_fraction", st.grey_fraction},
+                                  {"hue_error_deg", st.hue_error_deg}};
+          }
           jc["attribution"] = attribute(verdict[0], verdict[1], verdict[2]);
           jc["pass"] = verdict[0] == 1 && verdict[1] == 1 && verdict[2] == 1;
           jcases.push_back(jc);

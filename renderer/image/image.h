@@ -26,7 +26,9 @@ struct Image {
   // incidence: the smallest |cos| between a sample's ray and the normal of
   // the triangle it hit (small = grazing: float rounding of a hit moves it
   // by ~1/incidence).
-  std::vector<float> depth, backfacing, incidence;
+  // albedo: the surface colour C (texture or base colour) at the first
+  // sample that hit, 3 floats per pixel (0 where nothing is hit).
+  std::vector<float> depth, backfacing, incidence, albedo;
 
   Image() = default;
   Image(int w, int h, bool with_raw)
@@ -34,13 +36,14 @@ struct Image {
         raw(with_raw ? size_t(w) * h * 3 : 0, 0.0f),
         depth(with_raw ? size_t(w) * h : 0, 0.0f),
         backfacing(with_raw ? size_t(w) * h : 0, 0.0f),
-        incidence(with_raw ? size_t(w) * h : 0, 0.0f) {}
+        incidence(with_raw ? size_t(w) * h : 0, 0.0f),
+        albedo(with_raw ? size_t(w) * h * 3 : 0, 0.0f) {}
   float* pixel(int x, int y) { return &rgba[(size_t(y) * width + x) * 4]; }
   const float* pixel(int x, int y) const { return &rgba[(size_t(y) * width + x) * 4]; }
 };
 
 // OpenEXR (32-bit float; channels R,G,B,A and, when present, raw.R, raw.G,
-// raw.B, Z, backfacing and incidence) or, by extension .png, a 16-bit RGB PNG (over black, no alpha)
+// raw.B, Z, backfacing, incidence and albedo.R/G/B) or, by extension .png, a 16-bit RGB PNG (over black, no alpha)
 // holding round(v * 65535) of the clamped values, no gamma. Throws std::runtime_error naming the file.
 void writeImage(const Image& img, const std::filesystem::path& file);
 // Reads R,G,B,A (and raw.* when present) from any file OpenImageIO reads.

@@ -96,6 +96,7 @@ void renderT(const Scene& scene, const std::vector<TriangleMesh>& meshes, const 
         V sum_final(0), sum_raw(0);
         int hits = 0, backfacing = 0;
         double nearest = 0.0, incidence = 1.0;
+        V albedo(0);
         for (int sy = 0; sy < n; ++sy) {
           for (int sx = 0; sx < n; ++sx) {
             double x = i + (sx + 0.5) / n, y = j + (sy + 0.5) / n;
@@ -108,6 +109,10 @@ void renderT(const Scene& scene, const std::vector<TriangleMesh>& meshes, const 
             if (want_raw) incidence = std::min(incidence, geometricIncidence(*m.src, tri, dir));
             const T b1 = T(h.b1), b2 = T(h.b2), b0 = T(1) - b1 - b2;
             V c;
+            if (want_raw && hits == 0) {
+              glm::vec<2, T> uv = b0 * m.uv[tri[0]] + b1 * m.uv[tri[1]] + b2 * m.uv[tri[2]];
+              albedo = colour.at(uv);
+            }
             if (scene.shading == ShadingMode::Gouraud) {
               c = b0 * m.vertex_colour[tri[0]] + b1 * m.vertex_colour[tri[1]] +
                   b2 * m.vertex_colour[tri[2]];
@@ -141,6 +146,7 @@ void renderT(const Scene& scene, const std::vector<TriangleMesh>& meshes, const 
           img.depth[at] = float(nearest);
           img.backfacing[at] = hits ? float(backfacing) / float(hits) : 0.0f;
           img.incidence[at] = hits ? float(incidence) : 0.0f;
+          for (int k = 0; k < 3; ++k) img.albedo[at * 3 + k] = float(albedo[k]);
         }
       }
       int done = ++rows_done;

@@ -129,6 +129,59 @@ void writePlot(const J& cases, const std::filesystem::path& dir) {
                              (dir / "p999.log").string());
 }
 
+const J* findCase(const J& cases, const std::string& name) {
+  for (const auto& c : cases)
+    if (c["scene"] == name && c.contains("colour_stats")) return &c["colour_stats"];
+  return nullptr;
+}
+
+// The paper's Figure 1 claims, measured on the reference renders
+// (docs/paper-claims.md states the conditions).
+std::string paperClaims(const J& cases) {
+  const char* names[] = {"fig1_phong_front", "fig1_phong_behind", "fig1_phong_specular",
+                         "fig1_yiq_front",   "fig1_yiq_behind",   "fig1_yiq_specular"};
+  const J* st[6];
+  for (int i = 0; i < 6; ++i)
+    if (!(st[i] = findCase(cases, names[i]))) return "";  // not in this run
+  auto v = [&](int i, const char* k) { return (*st[i])[k].get<double>(); };
+  std::ostringstream h;
+  h << "<h2>The paper's Figure 1 claims, measured</h2>\n<p>On the reference renders of the "
+       "Figure 1 scenes, over lit pixels (luma &gt; 0.02), colours as sRGB-coded CIELAB: mean "
+       "chroma C*, the share of grey pixels (C* &lt; 5), and the mean hue error against the "
+       "texture colour at the same pixel (where both have C* &ge; 5). See docs/paper-claims.md.</p>\n"
+       "<table><tr><th class=\"l\">scene</th><th>lit pixels</th><th>mean C*</th><th>texture mean C*</th>"
+       "<th>grey share</th><th>hue error (deg)</th></tr>\n";
+  for (int i = 0; i < 6; ++i)
+    h << "<tr><td class=\"l\">" << names[i] << "</td><td>" << (*st[i])["lit_pixels"].get<long long>()
+      << "</td><td>" << fmt(v(i, "mean_chroma"), 2) << "</td><td>" << fmt(v(i, "mean_albedo_chroma"), 2)
+      << "</td><td>" << fmt(100 * v(i, "grey_fraction"), 1) << "%</td><td>" << fmt(v(i, "hue_error_deg"), 2)
+      << "</td></tr>\n";
+  h << "</table>\n<table><tr><th class=\"l\">claim (paper, section 4)</th><th class=\"l\">condition</th>"
+       "<th>measured</th><th>verdict</th></tr>\n";
+  auto row = [&](const std::string& claim, const std::string& cond, const std::string& meas, bool ok) {
+    h << "<tr><td class=\"l\">" << claim << "</td><td class=\"l\">" << cond << "</td><td>" << meas
+      << "</td><td class=\"" << (ok ? "pass\">holds" : "fail\">does not hold") << "</td></tr>\n";
+  };
+  row("Specular only, classic Phong is grey whatever the texture",
+      "grey share of fig1_phong_specular &ge; 95%", fmt(100 * v(2, "grey_fraction"), 1) + "%",
+      v(2, "grey_fraction") >= 0.95);
+  row("Specular only, the YIQ model follows the texture",
+      "grey share of fig1_yiq_specular &le; 20% and hue error &le; 15 deg",
+      fmt(100 * v(5, "grey_fraction"), 1) + "%, " + fmt(v(5, "hue_error_deg"), 1) + " deg",
+      v(5, "grey_fraction") <= 0.2 && v(5, "hue_error_deg") <= 15.0);
+  row("Light behind, classic Phong greys out and YIQ does not",
+      "grey share: phong_behind &ge; 2 x yiq_behind, and mean C*: yiq_behind &gt; phong_behind",
+      fmt(100 * v(1, "grey_fraction"), 1) + "% vs " + fmt(100 * v(4, "grey_fraction"), 1) + "%; C* " +
+          fmt(v(4, "mean_chroma"), 1) + " vs " + fmt(v(1, "mean_chroma"), 1),
+      v(1, "grey_fraction") >= 2 * v(4, "grey_fraction") && v(4, "mean_chroma") > v(1, "mean_chroma"));
+  row("Light in front, YIQ is no worse than classic Phong",
+      "hue error: yiq_front &le; phong_front + 2 deg",
+      fmt(v(3, "hue_error_deg"), 2) + " vs " + fmt(v(0, "hue_error_deg"), 2) + " deg",
+      v(3, "hue_error_deg") <= v(0, "hue_error_deg") + 2.0);
+  h << "</table>\n";
+  return h.str();
+}
+
 }  // namespace
 
 void writeReport(const std::filesystem::path& results_json, const std::filesystem::path& html) {
@@ -203,6 +256,7 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   h << "</table>\n<figure><img src=\"p999.png\" alt=\"p99.9 error per scene and pair\">"
        "<figcaption>p99.9 error per scene and pair (log scale; gnuplot)</figcaption></figure>\n";
 
+  h << paperClaims(cases);
   h << "<h2>Cases</h2>\n<p>Heat maps: largest channel difference per pixel, "
        "<img src=\"heat_scale.png\" alt=\"scale\" style=\"width:300px;height:12px;vertical-align:middle\">"
        " from 0 through 1 (first seventh, linear) to 4096/65535 (logarithmic); grey: not covered.</p>\n";
