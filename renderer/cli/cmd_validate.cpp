@@ -41,6 +41,7 @@ using Clock = std::chrono::steady_clock;
 using J = nlohmann::ordered_json;
 
 const char* kRenderers[] = {"reference", "povray", "blender"};
+constexpr int kPreviewSide = 360;  // report images: 8-bit, at most 360 px
 
 struct RenderResult {
   Image image;
@@ -192,7 +193,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
                 rr.render_seconds = info.render_seconds;
               }
               writeImage(rr.image, cdir / (job.renderer + ".exr"));
-              writeImage(rr.image, cdir / (job.renderer + ".png"));
+              writePreviewPng(rr.image, cdir / (job.renderer + ".png"), kPreviewSide);
             } catch (const std::exception& e) {
               rr.error = e.what();
             }

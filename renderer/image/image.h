@@ -46,6 +46,10 @@ struct Image {
 // raw.B, Z, backfacing, incidence and albedo.R/G/B) or, by extension .png, a 16-bit RGB PNG (over black, no alpha)
 // holding round(v * 65535) of the clamped values, no gamma. Throws std::runtime_error naming the file.
 void writeImage(const Image& img, const std::filesystem::path& file);
+// An 8-bit RGB PNG for looking at (reports): the clamped colour over black,
+// box-filtered down by the smallest integer factor that brings the larger
+// side to at most max_side pixels.
+void writePreviewPng(const Image& img, const std::filesystem::path& file, int max_side);
 // Reads R,G,B,A (and raw.* when present) from any file OpenImageIO reads.
 Image readImage(const std::filesystem::path& file);
 

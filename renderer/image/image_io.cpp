@@ -76,6 +76,30 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
   std::filesystem::rename(tmp, file);
 }
 
+void writePreviewPng(const Image& img, const std::filesystem::path& file, int max_side) {
+  const int k = std::max(1, (std::max(img.width, img.height) + max_side - 1) / max_side);
+  const int w = img.width / k, h = img.height / k;
+  std::vector<unsigned char> px(size_t(w) * h * 3);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c) {
+        double sum = 0;
+        for (int dy = 0; dy < k; ++dy)
+          for (int dx = 0; dx < k; ++dx)
+            sum += std::clamp(img.pixel(x * k + dx, y * k + dy)[c], 0.0f, 1.0f);
+        px[(size_t(y) * w + x) * 3 + c] = (unsigned char)std::lround(sum / (k * k) * 255.0);
+      }
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+  const std::string tmp = file.string() + ".partial.png";
+  auto out = OIIO::ImageOutput::create(tmp);
+  if (!out) throw std::runtime_error(file.string() + ": cannot create PNG: " + OIIO::geterror());
+  OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::UINT8);
+  bool ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::UINT8, px.data());
+  ok = out->close() && ok;
+  if (!ok) throw std::runtime_error(file.string() + ": cannot write PNG: " + out->geterror());
+  std::filesystem::rename(tmp, file);
+}
+
 Image readImage(const std::filesystem::path& file) {
   const std::string name = file.string();
   auto in = OIIO::ImageInput::open(name);

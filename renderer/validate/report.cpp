@@ -63,7 +63,7 @@ void writeHeatMap(const std::filesystem::path& diff_exr, const std::filesystem::
     for (int k = 0; k < 3; ++k) h.rgba[i * 4 + k] = c[k];
     h.rgba[i * 4 + 3] = 1.0f;
   }
-  writeImage(h, png);
+  writePreviewPng(h, png, 360);
 }
 
 void writeScale(const std::filesystem::path& png) {
@@ -75,7 +75,7 @@ void writeScale(const std::filesystem::path& png) {
       p[0] = c.r, p[1] = c.g, p[2] = c.b, p[3] = 1.0f;
     }
   }
-  writeImage(s, png);
+  writePreviewPng(s, png, 512);
 }
 
 std::string fmt(double v, int prec = 3) {
