@@ -317,6 +317,20 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
         results["cases"] = jcases;
         writeAtomically(dir / "results.json", results.dump(2) + "\n");
         writeReport(dir / "results.json", dir / "report.html");
+        // For every failing case: how to look closer, and how to accept it.
+        for (const auto& jc : jcases) {
+          if (jc["pass"].get<bool>()) continue;
+          std::fprintf(stderr, "FAIL %s (%s)\n", jc["scene"].get<std::string>().c_str(),
+                       jc["attribution"].get<std::string>().c_str());
+          for (const char* r : {"povray", "blender"})
+            std::fprintf(stderr, "  look closer: xval crosscheck %s --renderer %s -o %s/%s.%s\n",
+                         jc["file"].get<std::string>().c_str(), r, args->dir.c_str(),
+                         jc["scene"].get<std::string>().c_str(), r);
+          std::fprintf(stderr,
+                       "  accept a documented difference: add a case with its measured reason to %s\n"
+                       "  (no golden images are kept: the reference renderer renders every run)\n",
+                       tol_file.c_str());
+        }
         std::fprintf(stderr, "xval validate: %zu scenes, %s; wrote %s\n", cases.size(),
                      any_error ? "ERRORS" : any_fail ? "some cases FAIL" : "all pass",
                      (dir / "report.html").c_str());
