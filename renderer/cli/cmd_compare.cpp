@@ -39,11 +39,7 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
       if (!args->diff.empty()) writeImage(differenceImage(a, b), args->diff);
       PerceptualMetrics pm = perceptualMetrics(a, b);
       if (args->json) {
-        nlohmann::json j = nlohmann::json::parse(toJson(m, t));
-        j["ssim"] = pm.ssim;
-        j["ciede2000"] = {{"mean", pm.ciede2000_mean}, {"max", pm.ciede2000_max}};
-        j["yiq_delta"] = {{"mean", pm.yiq_mean}, {"max", pm.yiq_max}};
-        std::printf("%s\n", j.dump(2).c_str());
+        std::printf("%s\n", toJson(m, t, &pm).c_str());
       } else {
         std::printf("SSIM %.6f  CIEDE2000 mean %.4f max %.4f  YIQ delta mean %.3g max %.3g\n", pm.ssim,
                     pm.ciede2000_mean, pm.ciede2000_max, pm.yiq_mean, pm.yiq_max);

@@ -82,11 +82,8 @@ void addCrosscheckCommand(CLI::App& app, std::function<int()>& run) {
         writeImage(ext, dir / (args->renderer + ".exr"));
         CompareMetrics m = compareImages(ref, ext, tol);
         writeImage(differenceImage(ref, ext), dir / "diff.exr");
-        nlohmann::json j = nlohmann::json::parse(toJson(m, tol));
         PerceptualMetrics pm = perceptualMetrics(ref, ext);
-        j["ssim"] = pm.ssim;
-        j["ciede2000"] = {{"mean", pm.ciede2000_mean}, {"max", pm.ciede2000_max}};
-        j["yiq_delta"] = {{"mean", pm.yiq_mean}, {"max", pm.yiq_max}};
+        nlohmann::json j = nlohmann::json::parse(toJson(m, tol, &pm));
         j["scene"] = scene.name;
         j["renderer"] = args->renderer;
         j["tolerance_reason"] = reason;

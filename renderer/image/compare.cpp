@@ -1,4 +1,5 @@
 #include "image/compare.h"
+#include "image/perceptual.h"
 
 #include <algorithm>
 #include <cmath>
@@ -123,7 +124,7 @@ Image differenceImage(const Image& a, const Image& b) {
   return d;
 }
 
-std::string toJson(const CompareMetrics& m, const Tolerance& t) {
+std::string toJson(const CompareMetrics& m, const Tolerance& t, const PerceptualMetrics* pm) {
   auto finite = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
   nlohmann::json j = {
       {"width", m.width},
@@ -152,6 +153,11 @@ std::string toJson(const CompareMetrics& m, const Tolerance& t) {
                      {"fraction", t.fraction},
                      {"exclude_backfacing", t.exclude_backfacing}}},
       {"pass", t.passes(m)}};
+  if (pm) {
+    j["ssim"] = pm->ssim;
+    j["ciede2000"] = {{"mean", pm->ciede2000_mean}, {"max", pm->ciede2000_max}};
+    j["yiq_delta"] = {{"mean", pm->yiq_mean}, {"max", pm->yiq_max}};
+  }
   return j.dump(2);
 }
 

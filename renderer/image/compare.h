@@ -61,6 +61,10 @@ CompareMetrics compareImages(const Image& a, const Image& b, const Tolerance& t)
 // |a - b| per channel (RGB, alpha = 1 where either hits), for looking at.
 Image differenceImage(const Image& a, const Image& b);
 
-std::string toJson(const CompareMetrics& m, const Tolerance& t);
+struct PerceptualMetrics;
+// The metrics as JSON; with `pm`, also ssim, ciede2000 {mean, max} and
+// yiq_delta {mean, max}.
+std::string toJson(const CompareMetrics& m, const Tolerance& t,
+                   const PerceptualMetrics* pm = nullptr);
 
 }  // namespace xval
