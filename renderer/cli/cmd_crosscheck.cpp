@@ -60,7 +60,7 @@ void addCrosscheckCommand(CLI::App& app, std::function<int()>& run) {
         ToleranceTable table;
         if (!tol_file.empty()) table = loadTolerances(tol_file);
         std::string reason;
-        Tolerance tol = table.lookup(scene.name, args->renderer, &reason);
+        Tolerance tol = table.lookup(scene, args->renderer, &reason);
 
         auto t0 = std::chrono::steady_clock::now();
         RenderOptions opt = defaultOptions(scene);

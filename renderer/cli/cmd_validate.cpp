@@ -245,15 +245,15 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
             std::string reason;
             Tolerance tol;
             if (p < 2) {
-              tol = table.lookup(cs.scene.name, pairs[p].b, &reason);
+              tol = table.lookup(cs.scene, pairs[p].b, &reason);
             } else {
               // POV-Ray vs Blender: where both are within their tolerance
               // of the reference, their difference is within the sum (the
               // triangle inequality); that holds on at least f1 + f2 - 1
               // of the pixels (the union bound on the pixels outside).
               std::string r1, r2;
-              Tolerance t1 = table.lookup(cs.scene.name, "povray", &r1);
-              Tolerance t2 = table.lookup(cs.scene.name, "blender", &r2);
+              Tolerance t1 = table.lookup(cs.scene, "povray", &r1);
+              Tolerance t2 = table.lookup(cs.scene, "blender", &r2);
               tol.max_abs = t1.max_abs + t2.max_abs;
               tol.fraction = std::max(0.0, t1.fraction + t2.fraction - 1.0);
               tol.exclude_backfacing = t1.exclude_backfacing || t2.exclude_backfacing;
@@ -324,9 +324,10 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
                          jc["file"].get<std::string>().c_str(), r, args->dir.c_str(),
                          jc["scene"].get<std::string>().c_str(), r);
           std::fprintf(stderr,
-                       "  accept a documented difference: add a case with its measured reason to %s\n"
+                       "  accept a documented difference: declare it, with its measured reason, in the\n"
+                       "  `tolerances` field of %s (defaults: %s)\n"
                        "  (no golden images are kept: the reference renderer renders every run)\n",
-                       tol_file.c_str());
+                       jc["file"].get<std::string>().c_str(), tol_file.c_str());
         }
         std::fprintf(stderr, "xval validate: %zu scenes, %s; wrote %s\n", cases.size(),
                      any_error ? "ERRORS" : any_fail ? "some cases FAIL" : "all pass",

@@ -149,6 +149,17 @@ struct RenderSettings {
   Precision precision = Precision::Double;
 };
 
+// A cross-renderer tolerance this scene declares for one external renderer
+// ("povray", "blender", "blender-native"), over the default of
+// reference/tolerances.json. An entry exists to deviate, so it must say why.
+struct DeclaredTolerance {
+  std::string renderer;
+  std::optional<double> max_abs_16bit;  // per-pixel error, in 1/65535
+  std::optional<double> fraction;       // share of covered pixels within it
+  bool exclude_backfacing = false;
+  std::string reason;
+};
+
 struct Scene {
   std::string name;
   std::filesystem::path source_file;  // for messages and relative paths
@@ -158,6 +169,7 @@ struct Scene {
   std::vector<Light> lights;
   ShadingMode shading = ShadingMode::Phong;
   RenderSettings render;
+  std::vector<DeclaredTolerance> tolerances;  // used only by comparisons
 };
 
 const char* toString(ShadingMode m);

@@ -225,6 +225,29 @@ RenderSettings readRender(JsonReader r) {
   return s;
 }
 
+std::vector<DeclaredTolerance> readTolerances(JsonReader& r) {
+  std::vector<DeclaredTolerance> out;
+  auto o = r.object("tolerances");
+  if (!o) return out;
+  for (const char* renderer : {"povray", "blender", "blender-native"}) {
+    auto t = o->object(renderer);
+    if (!t) continue;
+    DeclaredTolerance d;
+    d.renderer = renderer;
+    if (t->has("max_abs_16bit")) d.max_abs_16bit = t->number("max_abs_16bit", 0, Range::nonNegative());
+    if (t->has("fraction")) d.fraction = t->number("fraction", 0, Range::closed(0.0, 1.0));
+    d.exclude_backfacing = t->boolean("exclude_backfacing", false);
+    d.reason = t->requireString("reason");
+    if (d.reason.size() < 20)
+      t->fail("reason", "a declared tolerance needs a written reason (at least a sentence), got " +
+                            describeJson(d.reason));
+    t->finish();
+    out.push_back(d);
+  }
+  o->finish();
+  return out;
+}
+
 }  // namespace
 
 Scene parseScene(const std::string& text, const std::filesystem::path& file) {
@@ -257,6 +280,7 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file) {
               : shading == "gouraud" ? ShadingMode::Gouraud
                                      : ShadingMode::Phong;
   if (auto rs = r.object("render")) s.render = readRender(*rs);
+  s.tolerances = readTolerances(r);
   r.finish();
   return s;
 }

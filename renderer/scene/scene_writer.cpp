@@ -92,6 +92,18 @@ J sceneToJson(const Scene& s, const std::string* texture_path) {
   for (const auto& l : s.lights) j["lights"].push_back(light(l));
   j["shading"] = toString(s.shading);
   j["render"] = {{"spp", s.render.spp}, {"precision", toString(s.render.precision)}};
+  if (!s.tolerances.empty()) {
+    J t;
+    for (const auto& d : s.tolerances) {
+      J e;
+      if (d.max_abs_16bit) e["max_abs_16bit"] = *d.max_abs_16bit;
+      if (d.fraction) e["fraction"] = *d.fraction;
+      if (d.exclude_backfacing) e["exclude_backfacing"] = true;
+      e["reason"] = d.reason;
+      t[d.renderer] = e;
+    }
+    j["tolerances"] = t;
+  }
   return j;
 }
 

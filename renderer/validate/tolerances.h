@@ -1,31 +1,24 @@
-// Declared tolerances for cross-renderer comparisons: one file
-// (reference/tolerances.json) with the default and the per-case
-// exceptions; every exception that loosens the default must carry a
-// written reason, or the file is rejected.
+// Cross-renderer tolerances: the default in one file
+// (reference/tolerances.json), each exception declared by its scene, next to
+// it, in the scene file's `tolerances` field with a written reason
+// (docs/scene-format.md).
 #pragma once
 
 #include <filesystem>
 #include <string>
-#include <vector>
 
 #include "image/compare.h"
+#include "scene/scene.h"
 
 namespace xval {
 
-struct ToleranceCase {
-  std::vector<std::string> scenes;
-  std::string renderer;  // "povray", "blender"
-  Tolerance tolerance;
-  std::string reason;
-};
-
 struct ToleranceTable {
   Tolerance default_tolerance;
-  std::vector<ToleranceCase> cases;
   std::filesystem::path source;
 
-  // The tolerance for (scene, renderer) and, when it is an exception, why.
-  Tolerance lookup(const std::string& scene, const std::string& renderer,
+  // The tolerance for the scene against `renderer` and, when the scene
+  // declares its own, why.
+  Tolerance lookup(const Scene& scene, const std::string& renderer,
                    std::string* reason = nullptr) const;
 };
 

@@ -242,3 +242,24 @@ TEST(SceneGenerator, InvalidCombinationNamesTheSpecAndTheField) {
     EXPECT_NE(m.find("material.model.kd: unknown field"), std::string::npos) << m;
   }
 }
+
+TEST(SceneLoader, DeclaredTolerancesNeedAKnownRendererAndAReason) {
+  expectError("\"name\": \"t\"",
+              "\"name\": \"t\", \"tolerances\": {\"povray\": {\"max_abs_16bit\": 16}}",
+              {"tolerances.povray.reason", "missing"});
+  expectError("\"name\": \"t\"",
+              "\"name\": \"t\", \"tolerances\": {\"povray\": {\"max_abs_16bit\": 16, \"reason\": \"why\"}}",
+              {"tolerances.povray.reason", "written reason"});
+  expectError("\"name\": \"t\"",
+              "\"name\": \"t\", \"tolerances\": {\"mitsuba\": {\"reason\": \"a long enough reason here\"}}",
+              {"tolerances.mitsuba", "unknown field"});
+  std::string text = kValid;
+  text.replace(text.find("\"name\": \"t\""), 11,
+               "\"name\": \"t\", \"tolerances\": {\"blender\": {\"max_abs_16bit\": 8, \"fraction\": 0.99, "
+               "\"reason\": \"float32 texture coordinates in Cycles\"}}");
+  Scene s = parseScene(text, "scene.json");
+  ASSERT_EQ(s.tolerances.size(), 1u);
+  EXPECT_EQ(s.tolerances[0].renderer, "blender");
+  EXPECT_EQ(*s.tolerances[0].max_abs_16bit, 8.0);
+  EXPECT_EQ(*s.tolerances[0].fraction, 0.99);
+}
