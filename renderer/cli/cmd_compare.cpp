@@ -32,7 +32,8 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--diff", args->diff, "Write |a - b| to this image");
   cmd->add_flag("--json", args->json, "Print the metrics as JSON");
   cmd->callback([args, &run]() {
-    run = [args]() {
+    run = [args]() -> int {
+     try {
       Image a = readImage(args->a), b = readImage(args->b);
       Tolerance t{args->tol16 / 65535.0, args->fraction};
       CompareMetrics m = compareImages(a, b, t);
@@ -58,6 +59,10 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
         std::printf("worst pixel (%d, %d)\n", m.worst_x, m.worst_y);
       }
       return t.passes(m) ? 0 : 1;
+     } catch (const std::exception& e) {
+      std::fprintf(stderr, "xval compare: error: %s\n", e.what());
+      return 2;
+     }
     };
   });
 }

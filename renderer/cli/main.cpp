@@ -1,8 +1,10 @@
 // xval: the toolkit's command-line tool. One subcommand per file
 // (cli/cmd_*.cpp); this file only wires them together.
 //
-// Exit status: 0 success; 1 the command failed (bad scene, I/O error, ...);
-// 2 bad command line.
+// Exit status: 0 success; 2 bad command line; otherwise 1 when the command
+// failed (bad scene, I/O error, ...), except for the comparing commands
+// (compare, crosscheck, validate), where 1 means "outside the tolerance" and
+// 2 means an error.
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
