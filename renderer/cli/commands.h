@@ -15,5 +15,6 @@ void addCrosscheckCommand(CLI::App& app, std::function<int()>& run);
 void addGenerateCommand(CLI::App& app, std::function<int()>& run);
 void addValidateCommand(CLI::App& app, std::function<int()>& run);
 void addReportCommand(CLI::App& app, std::function<int()>& run);
+void addBenchCommand(CLI::App& app, std::function<int()>& run);
 
 }  // namespace xval::cli

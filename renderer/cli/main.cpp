@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   xval::cli::addGenerateCommand(app, run);
   xval::cli::addValidateCommand(app, run);
   xval::cli::addReportCommand(app, run);
+  xval::cli::addBenchCommand(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

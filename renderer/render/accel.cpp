@@ -153,6 +153,41 @@ Hit Accel::intersectFloat(glm::dvec3 o, glm::dvec3 d) const {
   return {true, rh.hit.geomID, rh.hit.primID, rh.ray.tfar, rh.hit.u, rh.hit.v};
 }
 
+void Accel::intersectPacket(glm::dvec3 o, const glm::dvec3* dirs, const bool* valid, Hit* out) const {
+  constexpr int N = kPacketSide * kPacketSide;
+  static_assert(N == 16, "the float path uses Embree's 16-ray packets");
+  if (precision_ == Precision::Double) {
+    for (int r = 0; r < N; ++r) out[r] = valid[r] ? intersectDouble(o, dirs[r]) : Hit{};
+    return;
+  }
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  alignas(64) int mask[N];
+  alignas(64) RTCRayHit16 rh;
+  for (int r = 0; r < N; ++r) {
+    mask[r] = valid[r] ? -1 : 0;
+    const glm::dvec3 d = valid[r] ? dirs[r] : glm::dvec3(0, 0, 1);
+    rh.ray.org_x[r] = float(o.x), rh.ray.org_y[r] = float(o.y), rh.ray.org_z[r] = float(o.z);
+    rh.ray.dir_x[r] = float(d.x), rh.ray.dir_y[r] = float(d.y), rh.ray.dir_z[r] = float(d.z);
+    rh.ray.tnear[r] = 0.0f;
+    rh.ray.tfar[r] = std::numeric_limits<float>::infinity();
+    rh.ray.time[r] = 0.0f;
+    rh.ray.mask[r] = 0xFFFFFFFFu;
+    rh.ray.id[r] = unsigned(r);
+    rh.ray.flags[r] = 0;
+    rh.hit.geomID[r] = RTC_INVALID_GEOMETRY_ID;
+  }
+  rtcIntersect16(mask, scene_, &ctx, &rh);
+  for (int r = 0; r < N; ++r) {
+    if (!valid[r] || rh.hit.geomID[r] == RTC_INVALID_GEOMETRY_ID) {
+      out[r] = Hit{};
+      continue;
+    }
+    out[r] = {true, rh.hit.geomID[r], rh.hit.primID[r], rh.ray.tfar[r], rh.hit.u[r], rh.hit.v[r]};
+  }
+}
+
 Hit Accel::intersectDouble(glm::dvec3 o, glm::dvec3 d) const {
   DoubleContext ctx{{}, RayShear(o, d), std::numeric_limits<double>::infinity(), {}};
   rtcInitIntersectContext(&ctx.embree);

@@ -1,7 +1,8 @@
 // Accel: closest-hit ray queries over the scene's triangle meshes, with
 // Embree's BVH.
 //
-// Float path: Embree's own triangles and single-precision intersection.
+// Float path: Embree's own triangles and single-precision intersection,
+// traced in 16-ray packets by the renderer.
 // Double path (the reference): Embree user geometry; Embree traverses its
 // BVH over boxes padded outward (so float rounding of the ray cannot make
 // it skip a box the exact ray enters), and every candidate triangle is
@@ -38,6 +39,13 @@ class Accel {
   Accel& operator=(const Accel&) = delete;
 
   Hit intersect(glm::dvec3 origin, glm::dvec3 dir) const;
+
+  // A packet of kPacketSide^2 rays from one origin (a kPacketSide square of
+  // pixels): the float path traces them together as one Embree 16-ray
+  // packet with the coherent-rays hint; the double path one at a time.
+  // valid[r] false: dirs[r] is ignored and out[r] is set to no hit.
+  static constexpr int kPacketSide = 4;
+  void intersectPacket(glm::dvec3 origin, const glm::dvec3* dirs, const bool* valid, Hit* out) const;
 
   struct DoubleGeometry;  // per-mesh data for the user-geometry callbacks
 

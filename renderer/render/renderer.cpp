@@ -1,11 +1,14 @@
 #include "render/renderer.h"
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 #include <thread>
+#include <variant>
 
 #include "camera/camera.h"
 #include "geometry/mesh.h"
@@ -29,6 +32,9 @@ using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
+
+constexpr int kTile = 8;  // tile side in pixels; a multiple of kPacketSide
+static_assert(kTile % Accel::kPacketSide == 0);
 
 // A mesh's attributes converted once to the working precision T.
 template <class T> struct ShadedMesh {
@@ -69,94 +75,185 @@ double geometricIncidence(const TriangleMesh& m, const glm::u32vec3& t, glm::dve
   return len > 0.0 ? std::abs(glm::dot(g / len, dir)) : 0.0;
 }
 
-template <class T>
-void renderT(const Scene& scene, const std::vector<TriangleMesh>& meshes, const Texture* texture,
-             const Accel& accel, const RenderOptions& opt, Image& img, RenderStats& stats) {
+// Everything the per-sample work needs in precision T.
+template <class T> struct Shading {
   using V = glm::vec<3, T>;
-  auto t0 = Clock::now();
-  const Shader<T> shader(scene.material, scene.lights);
-  const SurfaceColour<T> colour(scene.material, texture);
-  const CameraRays cam(scene.camera);
-  const V eye(cam.origin);
-  std::vector<ShadedMesh<T>> shaded;
-  for (const auto& m : meshes) shaded.push_back(prepareMesh<T>(m, scene.shading, shader, colour, eye));
-  stats.setup_seconds += secondsSince(t0);
+  Shader<T> shader;
+  SurfaceColour<T> colour;
+  V eye;
+  std::vector<ShadedMesh<T>> meshes;
 
+  Shading(const Scene& scene, const std::vector<TriangleMesh>& src, const Texture* texture)
+      : shader(scene.material, scene.lights),
+        colour(scene.material, texture),
+        eye(CameraRays(scene.camera).origin) {
+    for (const auto& m : src) meshes.push_back(prepareMesh<T>(m, scene.shading, shader, colour, eye));
+  }
+};
+
+// One pixel's running sums over its samples.
+template <class T> struct PixelSums {
+  glm::vec<3, T> final_sum{0}, raw_sum{0}, albedo{0};
+  int hits = 0, backfacing = 0;
+  double nearest = 0.0, incidence = 1.0;
+};
+
+}  // namespace
+
+struct PreparedScene::Impl {
+  Scene scene;
+  std::vector<TriangleMesh> meshes;
+  std::optional<Texture> texture;
+  std::optional<Accel> accel;
+  std::variant<std::monostate, Shading<float>, Shading<double>> shading;
+  Precision precision;
+  double setup_seconds = 0.0;
+  size_t triangles = 0;
+
+  template <class T>
+  void renderT(const Shading<T>& sh, const RenderOptions& opt, Image& img, RenderStats& stats) const;
+};
+
+PreparedScene::PreparedScene(const Scene& scene, Precision precision) : impl_(new Impl) {
+  auto t0 = Clock::now();
+  Impl& d = *impl_;
+  d.scene = scene;
+  d.precision = precision;
+  for (const Shape& s : scene.objects) d.meshes.push_back(tessellate(s));
+  for (const auto& m : d.meshes) d.triangles += m.triangles.size();
+  if (scene.material.texture) d.texture = loadTexture(*scene.material.texture);
+  d.accel.emplace(d.meshes, precision);
+  const Texture* tex = d.texture ? &*d.texture : nullptr;
+  if (precision == Precision::Float)
+    d.shading.emplace<Shading<float>>(d.scene, d.meshes, tex);
+  else
+    d.shading.emplace<Shading<double>>(d.scene, d.meshes, tex);
+  d.setup_seconds = secondsSince(t0);
+}
+
+PreparedScene::~PreparedScene() = default;
+Precision PreparedScene::precision() const { return impl_->precision; }
+double PreparedScene::setupSeconds() const { return impl_->setup_seconds; }
+size_t PreparedScene::triangleCount() const { return impl_->triangles; }
+
+void PreparedScene::render(const RenderOptions& opt, Image& img, RenderStats* stats_out) const {
+  const Camera& c = impl_->scene.camera;
+  if (img.width != c.width || img.height != c.height || img.rgba.size() != size_t(c.width) * c.height * 4)
+    throw std::invalid_argument("PreparedScene::render: the image is " + std::to_string(img.width) + "x" +
+                                std::to_string(img.height) + ", the camera " + std::to_string(c.width) +
+                                "x" + std::to_string(c.height));
+  if (opt.precision != impl_->precision)
+    throw std::invalid_argument(std::string("PreparedScene::render: prepared for ") +
+                                toString(impl_->precision) + ", asked for " + toString(opt.precision));
+  RenderStats stats;
+  if (auto* f = std::get_if<Shading<float>>(&impl_->shading))
+    impl_->renderT(*f, opt, img, stats);
+  else
+    impl_->renderT(std::get<Shading<double>>(impl_->shading), opt, img, stats);
+  if (stats_out) *stats_out = stats;
+}
+
+template <class T>
+void PreparedScene::Impl::renderT(const Shading<T>& sh, const RenderOptions& opt, Image& img,
+                                  RenderStats& stats) const {
+  using V = glm::vec<3, T>;
+  const CameraRays cam(scene.camera);
   const int n = int(std::lround(std::sqrt(double(opt.spp))));
   const int W = img.width, H = img.height;
-  const bool want_raw = !img.raw.empty();
-  std::atomic<int> next_row{0}, rows_done{0};
+  const bool diag = opt.diagnostics && !img.raw.empty();
+  const int tiles_x = (W + kTile - 1) / kTile, tiles_y = (H + kTile - 1) / kTile;
+  const int tiles = tiles_x * tiles_y;
+  const ShadingMode mode = scene.shading;
+  std::atomic<int> next_tile{0}, tiles_done{0};
   auto t_trace = Clock::now();
   std::mutex progress_lock;
   auto last_report = t_trace;
 
+  // One sample: shade the hit and add it to the pixel's sums.
+  auto addSample = [&](const Hit& h, const glm::dvec3& dir, PixelSums<T>& px) {
+    if (px.hits == 0 || h.t < px.nearest) px.nearest = h.t;
+    const ShadedMesh<T>& m = sh.meshes[h.mesh];
+    const auto& tri = m.src->triangles[h.triangle];
+    const T b1 = T(h.b1), b2 = T(h.b2), b0 = T(1) - b1 - b2;
+    if (diag) {
+      px.incidence = std::min(px.incidence, geometricIncidence(*m.src, tri, dir));
+      if (px.hits == 0)
+        px.albedo = sh.colour.at(b0 * m.uv[tri[0]] + b1 * m.uv[tri[1]] + b2 * m.uv[tri[2]]);
+    }
+    V c;
+    if (mode == ShadingMode::Gouraud) {
+      c = b0 * m.vertex_colour[tri[0]] + b1 * m.vertex_colour[tri[1]] + b2 * m.vertex_colour[tri[2]];
+    } else {
+      V p = b0 * m.p[tri[0]] + b1 * m.p[tri[1]] + b2 * m.p[tri[2]];
+      V nrm;
+      if (mode == ShadingMode::Flat) {
+        nrm = m.face_n[h.triangle];
+      } else {
+        nrm = b0 * m.n[tri[0]] + b1 * m.n[tri[1]] + b2 * m.n[tri[2]];
+        T len = glm::length(nrm);
+        nrm = len > T(0) ? nrm / len : V(0);  // zero-length normals stay 0
+      }
+      glm::vec<2, T> uv = b0 * m.uv[tri[0]] + b1 * m.uv[tri[1]] + b2 * m.uv[tri[2]];
+      V v = glm::normalize(sh.eye - p);
+      px.backfacing += glm::dot(nrm, v) < T(0);
+      c = sh.shader.shade(p, nrm, v, sh.colour.at(uv));
+    }
+    px.final_sum += models::saturate(c);
+    if (diag) px.raw_sum += c;
+    ++px.hits;
+  };
+
   auto worker = [&]() {
-    for (int j = next_row++; j < H; j = next_row++) {
-      for (int i = 0; i < W; ++i) {
-        V sum_final(0), sum_raw(0);
-        int hits = 0, backfacing = 0;
-        double nearest = 0.0, incidence = 1.0;
-        V albedo(0);
-        for (int sy = 0; sy < n; ++sy) {
-          for (int sx = 0; sx < n; ++sx) {
-            double x = i + (sx + 0.5) / n, y = j + (sy + 0.5) / n;
-            glm::dvec3 dir = cam.direction(x, y);
-            Hit h = accel.intersect(cam.origin, dir);
-            if (!h.hit) continue;
-            if (hits == 0 || h.t < nearest) nearest = h.t;
-            const ShadedMesh<T>& m = shaded[h.mesh];
-            const auto& tri = m.src->triangles[h.triangle];
-            if (want_raw) incidence = std::min(incidence, geometricIncidence(*m.src, tri, dir));
-            const T b1 = T(h.b1), b2 = T(h.b2), b0 = T(1) - b1 - b2;
-            V c;
-            if (want_raw && hits == 0) {
-              glm::vec<2, T> uv = b0 * m.uv[tri[0]] + b1 * m.uv[tri[1]] + b2 * m.uv[tri[2]];
-              albedo = colour.at(uv);
-            }
-            if (scene.shading == ShadingMode::Gouraud) {
-              c = b0 * m.vertex_colour[tri[0]] + b1 * m.vertex_colour[tri[1]] +
-                  b2 * m.vertex_colour[tri[2]];
-            } else {
-              V p = b0 * m.p[tri[0]] + b1 * m.p[tri[1]] + b2 * m.p[tri[2]];
-              V nrm;
-              if (scene.shading == ShadingMode::Flat) {
-                nrm = m.face_n[h.triangle];
-              } else {
-                nrm = b0 * m.n[tri[0]] + b1 * m.n[tri[1]] + b2 * m.n[tri[2]];
-                T len = glm::length(nrm);
-                nrm = len > T(0) ? nrm / len : V(0);  // zero-length normals stay 0
+    constexpr int P = Accel::kPacketSide;
+    std::array<PixelSums<T>, kTile * kTile> sums;
+    std::array<glm::dvec3, P * P> dirs;
+    std::array<bool, P * P> valid;
+    std::array<Hit, P * P> hits;
+    for (int k = next_tile++; k < tiles; k = next_tile++) {
+      const int x0 = (k % tiles_x) * kTile, y0 = (k / tiles_x) * kTile;
+      sums.fill(PixelSums<T>{});
+      for (int sy = 0; sy < n; ++sy)
+        for (int sx = 0; sx < n; ++sx)
+          for (int by = 0; by < kTile; by += P)
+            for (int bx = 0; bx < kTile; bx += P) {
+              bool any = false;
+              for (int r = 0; r < P * P; ++r) {
+                const int i = x0 + bx + r % P, j = y0 + by + r / P;
+                valid[r] = i < W && j < H;
+                any |= valid[r];
+                if (valid[r]) dirs[r] = cam.direction(i + (sx + 0.5) / n, j + (sy + 0.5) / n);
               }
-              glm::vec<2, T> uv = b0 * m.uv[tri[0]] + b1 * m.uv[tri[1]] + b2 * m.uv[tri[2]];
-              V v = glm::normalize(eye - p);
-              backfacing += glm::dot(nrm, v) < T(0);
-              c = shader.shade(p, nrm, v, colour.at(uv));
+              if (!any) continue;
+              accel->intersectPacket(cam.origin, dirs.data(), valid.data(), hits.data());
+              for (int r = 0; r < P * P; ++r)
+                if (valid[r] && hits[r].hit)
+                  addSample(hits[r], dirs[r], sums[(by + r / P) * kTile + bx + r % P]);
             }
-            sum_final += models::saturate(c);
-            sum_raw += c;
-            ++hits;
+      const T inv = T(1) / T(n * n);
+      for (int ty = 0; ty < kTile && y0 + ty < H; ++ty)
+        for (int tx = 0; tx < kTile && x0 + tx < W; ++tx) {
+          const PixelSums<T>& s = sums[ty * kTile + tx];
+          const int i = x0 + tx, j = y0 + ty;
+          float* px = img.pixel(i, j);
+          for (int q = 0; q < 3; ++q) px[q] = float(s.final_sum[q] * inv);
+          px[3] = float(T(s.hits) * inv);
+          if (diag) {
+            const size_t at = size_t(j) * W + i;
+            for (int q = 0; q < 3; ++q) img.raw[at * 3 + q] = float(s.raw_sum[q] * inv);
+            img.depth[at] = float(s.nearest);
+            img.backfacing[at] = s.hits ? float(s.backfacing) / float(s.hits) : 0.0f;
+            img.incidence[at] = s.hits ? float(s.incidence) : 0.0f;
+            for (int q = 0; q < 3; ++q) img.albedo[at * 3 + q] = float(s.albedo[q]);
           }
         }
-        const T inv = T(1) / T(n * n);
-        float* px = img.pixel(i, j);
-        for (int k = 0; k < 3; ++k) px[k] = float(sum_final[k] * inv);
-        px[3] = float(T(hits) * inv);
-        if (want_raw) {
-          const size_t at = size_t(j) * W + i;
-          for (int k = 0; k < 3; ++k) img.raw[at * 3 + k] = float(sum_raw[k] * inv);
-          img.depth[at] = float(nearest);
-          img.backfacing[at] = hits ? float(backfacing) / float(hits) : 0.0f;
-          img.incidence[at] = hits ? float(incidence) : 0.0f;
-          for (int k = 0; k < 3; ++k) img.albedo[at * 3 + k] = float(albedo[k]);
-        }
-      }
-      int done = ++rows_done;
+      int done = ++tiles_done;
       // Progress, at most once a second, from whichever thread gets there.
       if (opt.progress && progress_lock.try_lock()) {
-        if (secondsSince(last_report) >= 1.0 && done < H) {
+        if (secondsSince(last_report) >= 1.0 && done < tiles) {
           last_report = Clock::now();
-          double f = double(done) / H, el = secondsSince(t_trace);
-          std::fprintf(stderr, "  render: %5.1f%%  %.1f s elapsed, ~%.1f s left\n", 100.0 * f,
-                       el, el * (1.0 - f) / f);
+          double f = double(done) / tiles, el = secondsSince(t_trace);
+          std::fprintf(stderr, "  render: %5.1f%%  %.1f s elapsed, ~%.1f s left\n", 100.0 * f, el,
+                       el * (1.0 - f) / f);
         }
         progress_lock.unlock();
       }
@@ -164,32 +261,19 @@ void renderT(const Scene& scene, const std::vector<TriangleMesh>& meshes, const 
   };
 
   int threads = opt.threads > 0 ? opt.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  threads = std::min(threads, tiles);
   std::vector<std::thread> pool;
   for (int k = 1; k < threads; ++k) pool.emplace_back(worker);
   worker();
   for (auto& t : pool) t.join();
-  stats.trace_seconds += secondsSince(t_trace);
+  stats.setup_seconds = setup_seconds;
+  stats.trace_seconds = secondsSince(t_trace);
 }
 
-}  // namespace
-
-Image renderScene(const Scene& scene, const RenderOptions& options, RenderStats* stats_out) {
-  RenderStats stats;
-  auto t0 = Clock::now();
-  std::vector<TriangleMesh> meshes;
-  for (const Shape& s : scene.objects) meshes.push_back(tessellate(s));
-  std::optional<Texture> texture;
-  if (scene.material.texture) texture = loadTexture(*scene.material.texture);
-  Accel accel(meshes, options.precision);
-  stats.setup_seconds = secondsSince(t0);
-
-  Image img(scene.camera.width, scene.camera.height, true);
-  const Texture* tex = texture ? &*texture : nullptr;
-  if (options.precision == Precision::Float)
-    renderT<float>(scene, meshes, tex, accel, options, img, stats);
-  else
-    renderT<double>(scene, meshes, tex, accel, options, img, stats);
-  if (stats_out) *stats_out = stats;
+Image renderScene(const Scene& scene, const RenderOptions& options, RenderStats* stats) {
+  PreparedScene prepared(scene, options.precision);
+  Image img(scene.camera.width, scene.camera.height, options.diagnostics);
+  prepared.render(options, img, stats);
   return img;
 }
 

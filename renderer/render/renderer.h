@@ -13,9 +13,17 @@
 // Each sample's colour is saturated, then samples are box-filtered over an
 // n x n stratified grid at ((i + (sx + 0.5)/n), (j + (sy + 0.5)/n)); for
 // n = 1 that is the pixel centre.
+//
+// Two paths, one set of formulas:
+//   double (the reference): double-precision watertight intersection
+//     (Embree user geometry) and double shading, one ray at a time;
+//   float (the fast path): Embree's own float triangles traced as coherent
+//     16-ray packets (4 x 4 pixels at the same sub-sample offset) and float
+//     shading.
+// Work is split into 8 x 8-pixel tiles handed out to the threads in order.
 #pragma once
 
-#include <cstdio>
+#include <memory>
 
 #include "image/image.h"
 #include "scene/scene.h"
@@ -27,16 +35,45 @@ struct RenderOptions {
   Precision precision = Precision::Double;
   int threads = 0;  // 0: every hardware thread
   bool progress = false;  // progress lines on stderr
+  // Fill the diagnostic channels (raw, depth, backfacing, incidence,
+  // albedo) when the image has them allocated (Image(w, h, true)).
+  // renderScene allocates them only when this is set.
+  bool diagnostics = true;
 };
 
 // Options from the scene's render settings.
 RenderOptions defaultOptions(const Scene& scene);
 
 struct RenderStats {
-  double setup_seconds = 0.0;   // tessellation, texture, BVH build
+  double setup_seconds = 0.0;   // tessellation, texture, BVH build, per-vertex data
   double trace_seconds = 0.0;   // rays and shading
 };
 
+// A scene made ready to render many frames: tessellated, its texture
+// loaded, its BVH built for one precision. Rendering does not modify it.
+class PreparedScene {
+ public:
+  PreparedScene(const Scene& scene, Precision precision);
+  ~PreparedScene();
+  PreparedScene(const PreparedScene&) = delete;
+  PreparedScene& operator=(const PreparedScene&) = delete;
+
+  Precision precision() const;
+  double setupSeconds() const;
+  size_t triangleCount() const;
+
+  // Renders one frame into img, which must be camera-sized; diagnostic
+  // channels are written when allocated and options.diagnostics is set.
+  // options.precision must equal the prepared precision.
+  void render(const RenderOptions& options, Image& img, RenderStats* stats = nullptr) const;
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+// PreparedScene + one frame.
 Image renderScene(const Scene& scene, const RenderOptions& options, RenderStats* stats = nullptr);
 
 }  // namespace xval

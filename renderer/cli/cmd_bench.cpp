@@ -1,0 +1,196 @@
+// xval bench SCENE [--frames N] [--runs R] [--spp N] [--threads T]
+//                  [--renderers reference,povray,blender]
+//
+// Whole-frame timings of one scene, in one run, side by side:
+//   reference float:  the fast path (Embree 16-ray packets, float shading);
+//   reference double: the exact reference path;
+//   povray, blender:  the external renderer's own render time as it reports
+//                     it, and its whole process (export, start-up, parse,
+//                     render, read back).
+// For the reference renderer the scene is prepared once (tessellation,
+// texture, BVH: "setup", reported apart) and then --frames frames are
+// rendered into one image after one warm-up frame: a frame is rays +
+// shading + writing the pixels, without diagnostics (what an interactive
+// renderer redoes every frame; the paper's Table 2 counts the same).
+// Every figure is the median over the repetitions with its spread
+// (min..max); ratios are of medians. Timings are wall-clock on a machine
+// that may be shared: run it on an idle machine.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <thread>
+
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include "blender/blender_render.h"
+#include "cli/commands.h"
+#include "common/export_common.h"
+#include "povray/pov_render.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+
+namespace xval::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Spread {
+  double median = 0, min = 0, max = 0;
+  size_t n = 0;
+};
+
+Spread spread(std::vector<double> v) {
+  Spread s;
+  if (v.empty()) return s;
+  std::sort(v.begin(), v.end());
+  s.n = v.size();
+  s.min = v.front(), s.max = v.back();
+  s.median = v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+  return s;
+}
+
+std::string ms(const Spread& s) {
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "%9.2f ms  (%.2f..%.2f, n=%zu)", s.median * 1e3, s.min * 1e3,
+                s.max * 1e3, s.n);
+  return buf;
+}
+
+}  // namespace
+
+void addBenchCommand(CLI::App& app, std::function<int()>& run) {
+  struct Args {
+    std::string scene, renderers = "reference,povray,blender", json, precision = "both";
+    int frames = 20, runs = 3, spp = 0, threads = 0;
+    double timeout = kDefaultToolTimeoutSeconds;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "bench",
+      "Frame times of one scene with the reference renderer (float fast path and double "
+      "reference path) and, in the same run, POV-Ray and Blender; prints medians, spread "
+      "(min..max) and ratios. Reference frames exclude the one-time setup (tessellation, "
+      "texture, BVH), which is printed apart, and diagnostics.");
+  cmd->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--renderers", args->renderers,
+                  "Comma-separated subset of reference,povray,blender (default: all three)");
+  cmd->add_option("--frames", args->frames, "Reference frames per precision after one warm-up (default 20)")
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--runs", args->runs, "Runs of each external renderer (default 3)")
+      ->check(CLI::Range(1, 1000));
+  cmd->add_option("--spp", args->spp, "Samples per pixel for the reference renderer (default: the scene's)")
+      ->check(CLI::Range(1, 256));
+  cmd->add_option("--threads", args->threads, "Reference renderer threads (default: all hardware threads)")
+      ->check(CLI::Range(1, 1024));
+  cmd->add_option("--timeout", args->timeout, "Seconds before an external renderer is killed (default 600)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--precision", args->precision,
+                  "Reference paths to time: float (the fast path), double (the reference path) or "
+                  "both (default)")
+      ->check(CLI::IsMember({"float", "double", "both"}));
+  cmd->add_option("--json", args->json, "Also write the figures to this JSON file");
+  cmd->callback([args, &run]() {
+    run = [args]() -> int {
+      Scene scene = loadScene(args->scene);
+      std::vector<std::string> which;
+      {
+        std::stringstream ss(args->renderers);
+        std::string r;
+        while (std::getline(ss, r, ','))
+          if (r == "reference" || r == "povray" || r == "blender")
+            which.push_back(r);
+          else
+            throw std::runtime_error("--renderers: unknown renderer '" + r +
+                                     "', expected reference, povray or blender");
+      }
+      auto wants = [&](const char* r) { return std::find(which.begin(), which.end(), r) != which.end(); };
+      nlohmann::ordered_json out;
+      out["scene"] = scene.name;
+      out["width"] = scene.camera.width, out["height"] = scene.camera.height;
+      out["hardware_threads"] = std::thread::hardware_concurrency();
+      std::printf("xval bench %s (%dx%d), %u hardware threads\n", scene.name.c_str(),
+                  scene.camera.width, scene.camera.height, std::thread::hardware_concurrency());
+      std::map<std::string, double> medians;
+      if (wants("reference")) {
+        RenderOptions o = defaultOptions(scene);
+        if (args->spp) {
+          int n = 1;
+          while (n * n < args->spp) ++n;
+          if (n * n != args->spp)
+            throw std::runtime_error("--spp " + std::to_string(args->spp) +
+                                     ": expected a perfect square (1, 4, 9, ..., 256)");
+          o.spp = args->spp;
+        }
+        o.threads = args->threads;
+        o.diagnostics = false;
+        for (Precision p : {Precision::Float, Precision::Double}) {
+          if (args->precision != "both" && args->precision != toString(p)) continue;
+          o.precision = p;
+          PreparedScene prepared(scene, p);
+          Image img(scene.camera.width, scene.camera.height, false);
+          prepared.render(o, img);  // warm-up
+          std::vector<double> t;
+          for (int f = 0; f < args->frames; ++f) {
+            auto t0 = Clock::now();
+            prepared.render(o, img);
+            t.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+          }
+          Spread s = spread(t);
+          const std::string key = std::string("reference_") + toString(p);
+          medians[key] = s.median;
+          std::printf("  %-18s frame %s   setup %.1f ms once, %zu triangles, %d spp\n", key.c_str(),
+                      ms(s).c_str(), prepared.setupSeconds() * 1e3, prepared.triangleCount(), o.spp);
+          out[key] = {{"frame_median_s", s.median}, {"frame_min_s", s.min}, {"frame_max_s", s.max},
+                      {"frames", s.n}, {"setup_s", prepared.setupSeconds()}, {"spp", o.spp}};
+        }
+      }
+      for (const char* r : {"povray", "blender"}) {
+        if (!wants(r)) continue;
+        std::vector<double> whole, own;
+        const std::filesystem::path work =
+            std::filesystem::temp_directory_path() / ("xval-bench-" + std::to_string(getpid()) + "-" + r);
+        for (int k = 0; k < args->runs; ++k) {
+          ExternalRenderInfo info;
+          if (std::string(r) == "povray")
+            renderWithPovray(scene, work, args->timeout, &info);
+          else
+            renderWithBlender(scene, work, args->timeout, &info);
+          whole.push_back(info.seconds);
+          if (info.render_seconds >= 0) own.push_back(info.render_seconds);
+        }
+        std::filesystem::remove_all(work);
+        Spread sw = spread(whole), so = spread(own);
+        medians[std::string(r) + "_render"] = so.median;
+        medians[std::string(r) + "_process"] = sw.median;
+        std::printf("  %-18s render %s   whole process %s\n", r, ms(so).c_str(), ms(sw).c_str());
+        out[r] = {{"render_median_s", so.median}, {"render_min_s", so.min}, {"render_max_s", so.max},
+                  {"process_median_s", sw.median}, {"process_min_s", sw.min},
+                  {"process_max_s", sw.max}, {"runs", sw.n}};
+      }
+      // Ratios of medians, against the fast path.
+      if (medians.count("reference_float")) {
+        const double base = medians["reference_float"];
+        std::printf("  ratios to the reference float frame (medians):\n");
+        for (const auto& [k, v] : medians) {
+          if (k == "reference_float" || v <= 0) continue;
+          std::printf("    %-18s %8.1fx\n", k.c_str(), v / base);
+          out["ratios_to_reference_float"][k] = v / base;
+        }
+      }
+      if (!args->json.empty()) {
+        std::ofstream f(args->json);
+        f << out.dump(2) << "\n";
+        if (!f) throw std::runtime_error(args->json + ": cannot write");
+      }
+      return 0;
+    };
+  });
+}
+
+}  // namespace xval::cli
