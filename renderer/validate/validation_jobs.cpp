@@ -1,0 +1,551 @@
+// The jobs of `xval validate`: plan, run one job, compare (validation_jobs.h).
+#include "validate/validation_jobs.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <set>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+#include <OpenImageIO/oiioversion.h>
+
+#include "blender/blender_render.h"
+#include "common/run_process.h"
+#include "image/compare.h"
+#include "image/image.h"
+#include "image/perceptual.h"
+#include "povray/pov_render.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+#include "validate/colour_stats.h"
+#include "validate/report.h"
+#include "validate/tolerances.h"
+
+namespace xval::validation {
+
+const char* const kRenderers[3] = {"reference", "povray", "blender"};
+
+namespace {
+
+namespace fs = std::filesystem;
+using J = nlohmann::ordered_json;
+using Clock = std::chrono::steady_clock;
+
+constexpr const char* kPlanFormat = "xval-validate-plan/1";
+constexpr const char* kRecordFormat = "xval-validate-job/1";
+constexpr int kPreviewSide = 360;  // report images: 8-bit, at most 360 px
+
+double nowUnix() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
+std::string readBytes(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw std::runtime_error(file.string() + ": cannot read");
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+struct Fnv {
+  uint64_t h = 1469598103934665603ull;
+  void add(const std::string& bytes) {
+    for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
+    h = (h ^ 0xffu) * 1099511628211ull;  // separator
+  }
+  std::string hex() const {
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+    return buf;
+  }
+};
+
+// What a render depends on: the renderer, the scene file's bytes and, for an
+// image texture, the image's bytes.
+std::string inputHash(const Scene& scene, const fs::path& scene_file, const std::string& renderer) {
+  Fnv f;
+  f.add(kRecordFormat);
+  f.add(renderer);
+  f.add(readBytes(scene_file));
+  if (scene.material.texture && scene.material.texture->source == TextureSpec::Source::Image)
+    f.add(readBytes(scene.material.texture->path));
+  return f.hex();
+}
+
+// FNV-1a over the bytes of the files that define the run's settings
+// (results.json provenance.settings_hash; unchanged from the single-process
+// validate so published hashes stay comparable).
+std::string settingsHash(const std::vector<fs::path>& files) {
+  uint64_t h = 1469598103934665603ull;
+  for (const auto& f : files) {
+    std::string bytes = readBytes(f);
+    bytes += f.filename().string();
+    for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
+  }
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+void writeAtomically(const fs::path& file, const std::string& text) {
+  const fs::path tmp = file.string() + ".partial";
+  {
+    std::ofstream f(tmp);
+    f << text;
+    f.flush();
+    if (!f) throw std::runtime_error(file.string() + ": cannot write");
+  }
+  fs::rename(tmp, file);
+}
+
+std::vector<fs::path> collectScenes(const std::vector<std::string>& inputs) {
+  std::vector<fs::path> out;
+  for (const auto& in : inputs) {
+    fs::path p(in);
+    if (fs::is_directory(p)) {
+      std::vector<fs::path> files;
+      for (const auto& e : fs::directory_iterator(p))
+        if (e.path().extension() == ".json") files.push_back(e.path());
+      std::sort(files.begin(), files.end());
+      out.insert(out.end(), files.begin(), files.end());
+    } else if (fs::is_regular_file(p)) {
+      out.push_back(p);
+    } else {
+      throw std::runtime_error(in + ": no such scene file or folder");
+    }
+  }
+  if (out.empty()) throw std::runtime_error("no scene files found");
+  return out;
+}
+
+// The scene's name names its output folder.
+void checkSceneName(const std::string& name, const std::string& where) {
+  bool bad = name.empty() || name == "." || name == ".." || name.find('/') != std::string::npos;
+  for (unsigned char c : name) bad |= c < 0x20 || c == 0x7f;
+  if (bad)
+    throw std::runtime_error(where + ": name: \"" + name +
+                             "\": cannot name an output folder (expected no '/', no control "
+                             "characters, not empty, '.' or '..')");
+}
+
+std::string commandVersion(const std::vector<std::string>& argv, const fs::path& tmp) {
+  ProcessResult r = runProcess(argv, fs::current_path(), tmp, 60.0);
+  if (!r.ok()) return "unavailable (" + r.describe() + ")";
+  std::ifstream in(tmp);
+  std::string line;
+  while (std::getline(in, line))
+    if (line.find("POV-Ray") != std::string::npos || line.find("Blender") != std::string::npos ||
+        line.find("version") != std::string::npos || (line.size() == 40 && line.find(' ') == std::string::npos))
+      return line;
+  return "unknown";
+}
+
+// Who deviates, from the three pairwise verdicts.
+std::string attribute(int ref_pov, int ref_bl, int pov_bl) {
+  // 1 pass, 0 fail, -1 not compared (a render failed).
+  if (ref_pov < 0 || ref_bl < 0 || pov_bl < 0) return "incomplete (a renderer failed)";
+  if (ref_pov && ref_bl && pov_bl) return "all three agree";
+  if (!ref_pov && ref_bl && !pov_bl) return "POV-Ray deviates (reference and Blender agree)";
+  if (ref_pov && !ref_bl && !pov_bl) return "Blender deviates (reference and POV-Ray agree)";
+  if (!ref_pov && !ref_bl && pov_bl) return "the reference renderer deviates (POV-Ray and Blender agree)";
+  return "no two renderers agree on everything";
+}
+
+std::string hostName() {
+  char buf[256] = {0};
+  if (gethostname(buf, sizeof buf - 1) != 0) return "unknown";
+  return buf;
+}
+
+// Field readers for the plan and records: errors name the file and field.
+struct Reader {
+  const std::string file;
+  const J& at(const J& obj, const std::string& key, const std::string& where) const {
+    if (!obj.is_object() || !obj.contains(key))
+      throw std::runtime_error(file + ": " + where + key + ": missing");
+    return obj[key];
+  }
+  std::string str(const J& obj, const std::string& key, const std::string& where = "") const {
+    const J& v = at(obj, key, where);
+    if (!v.is_string())
+      throw std::runtime_error(file + ": " + where + key + ": " + v.dump() + ": expected a string");
+    return v.get<std::string>();
+  }
+  double num(const J& obj, const std::string& key, const std::string& where = "") const {
+    const J& v = at(obj, key, where);
+    if (!v.is_number())
+      throw std::runtime_error(file + ": " + where + key + ": " + v.dump() + ": expected a number");
+    return v.get<double>();
+  }
+};
+
+}  // namespace
+
+fs::path planFile(const fs::path& dir) { return dir / "jobs.json"; }
+
+Plan makePlan(const std::vector<std::string>& inputs, const std::string& tolerances,
+              const fs::path& dir, double timeout_seconds) {
+  Plan plan;
+  plan.dir = fs::absolute(dir).lexically_normal();
+  if (plan.dir.has_filename() == false) plan.dir = plan.dir.parent_path();
+  plan.tolerances = tolerances;
+  plan.tolerances_path = fs::absolute(tolerances).lexically_normal();
+  loadTolerances(plan.tolerances_path);  // fail early on a bad tolerance file
+  plan.timeout_seconds = timeout_seconds;
+  std::map<std::string, std::string> seen;  // scene name -> file
+  for (const auto& f : collectScenes(inputs)) {
+    Scene scene = loadScene(f);
+    checkSceneName(scene.name, f.string());
+    auto [it, fresh] = seen.emplace(scene.name, f.string());
+    if (!fresh)
+      throw std::runtime_error(f.string() + ": name: \"" + scene.name + "\": also the name of " +
+                               it->second + " (scene names name the output folders: expected unique)");
+    for (const char* r : kRenderers) {
+      RenderJob job;
+      job.index = plan.jobs.size();
+      job.scene = scene.name;
+      job.file = f.string();
+      job.path = fs::absolute(f).lexically_normal();
+      job.renderer = r;
+      job.input_hash = inputHash(scene, job.path, r);
+      plan.jobs.push_back(job);
+    }
+  }
+  plan.created_unix = nowUnix();
+  return plan;
+}
+
+void writePlan(const Plan& plan) {
+  J j;
+  j["format"] = kPlanFormat;
+  j["about"] = "xval validate's render jobs: run job K with `xval validate --plan THIS_FILE --run-job K`, "
+               "compare and report with `xval validate --plan THIS_FILE --compare-only`; outputs are "
+               "relative to this file's folder";
+  j["created_unix"] = plan.created_unix;
+  j["tolerances"] = plan.tolerances;
+  j["tolerances_path"] = plan.tolerances_path.string();
+  j["timeout_seconds"] = plan.timeout_seconds;
+  j["jobs"] = J::array();
+  for (const auto& job : plan.jobs)
+    j["jobs"].push_back({{"index", job.index},
+                         {"scene", job.scene},
+                         {"renderer", job.renderer},
+                         {"file", job.file},
+                         {"path", job.path.string()},
+                         {"input_hash", job.input_hash},
+                         {"exr", job.exr()},
+                         {"png", job.png()},
+                         {"record", job.record()}});
+  fs::create_directories(plan.dir);
+  writeAtomically(planFile(plan.dir), j.dump(2) + "\n");
+}
+
+Plan readPlan(const fs::path& file) {
+  const std::string name = file.string();
+  J j;
+  try {
+    j = J::parse(readBytes(file));
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(name + ": not valid JSON: " + e.what());
+  }
+  Reader rd{name};
+  const std::string format = rd.str(j, "format");
+  if (format != kPlanFormat)
+    throw std::runtime_error(name + ": format: \"" + format + "\": expected \"" + kPlanFormat + "\"");
+  Plan plan;
+  plan.dir = fs::absolute(file).lexically_normal().parent_path();
+  plan.created_unix = rd.num(j, "created_unix");
+  plan.tolerances = rd.str(j, "tolerances");
+  plan.tolerances_path = rd.str(j, "tolerances_path");
+  plan.timeout_seconds = rd.num(j, "timeout_seconds");
+  if (!(plan.timeout_seconds > 0))
+    throw std::runtime_error(name + ": timeout_seconds: " + j["timeout_seconds"].dump() +
+                             ": expected a positive number");
+  const J& jobs = rd.at(j, "jobs", "");
+  if (!jobs.is_array() || jobs.empty() || jobs.size() % 3 != 0)
+    throw std::runtime_error(name + ": jobs: expected a non-empty array of 3 jobs per scene, got " +
+                             (jobs.is_array() ? std::to_string(jobs.size()) + " entries" : jobs.type_name()));
+  for (size_t k = 0; k < jobs.size(); ++k) {
+    const std::string where = "jobs[" + std::to_string(k) + "].";
+    const J& e = jobs[k];
+    RenderJob job;
+    const double index = rd.num(e, "index", where);
+    if (index != double(k))
+      throw std::runtime_error(name + ": " + where + "index: " + e["index"].dump() + ": expected " +
+                               std::to_string(k));
+    job.index = k;
+    job.scene = rd.str(e, "scene", where);
+    checkSceneName(job.scene, name + ": " + where.substr(0, where.size() - 1));
+    job.renderer = rd.str(e, "renderer", where);
+    const std::string expect = kRenderers[k % 3];
+    if (job.renderer != expect)
+      throw std::runtime_error(name + ": " + where + "renderer: \"" + job.renderer + "\": expected \"" +
+                               expect + "\" (jobs go reference, povray, blender per scene)");
+    if (k % 3 != 0 && job.scene != plan.jobs[k - k % 3].scene)
+      throw std::runtime_error(name + ": " + where + "scene: \"" + job.scene + "\": expected \"" +
+                               plan.jobs[k - k % 3].scene + "\" (the three jobs of a scene are adjacent)");
+    job.file = rd.str(e, "file", where);
+    job.path = rd.str(e, "path", where);
+    job.input_hash = rd.str(e, "input_hash", where);
+    for (const auto& [key, value] : {std::pair<std::string, std::string>{"exr", job.exr()},
+                                     {"png", job.png()},
+                                     {"record", job.record()}}) {
+      const std::string got = rd.str(e, key, where);
+      if (got != value)
+        throw std::runtime_error(name + ": " + where + key + ": \"" + got + "\": expected \"" + value +
+                                 "\" (output paths follow from the scene and renderer)");
+    }
+    plan.jobs.push_back(job);
+  }
+  return plan;
+}
+
+JobRecord readRecord(const Plan& plan, const RenderJob& job) {
+  JobRecord rec;
+  const fs::path file = plan.dir / job.record();
+  if (!fs::exists(file)) {
+    rec.problem = file.string() + ": no record (the job has not run, or was interrupted)";
+    return rec;
+  }
+  try {
+    J j = J::parse(readBytes(file));
+    Reader rd{file.string()};
+    const std::string format = rd.str(j, "format");
+    if (format != kRecordFormat)
+      throw std::runtime_error(file.string() + ": format: \"" + format + "\": expected \"" + kRecordFormat + "\"");
+    const std::string scene = rd.str(j, "scene"), renderer = rd.str(j, "renderer");
+    if (scene != job.scene || renderer != job.renderer)
+      throw std::runtime_error(file.string() + ": scene/renderer: \"" + scene + "\"/\"" + renderer +
+                               "\": expected \"" + job.scene + "\"/\"" + job.renderer + "\"");
+    rec.input_hash = rd.str(j, "input_hash");
+    rec.seconds = rd.num(j, "seconds");
+    if (j.contains("render_seconds")) rec.render_seconds = rd.num(j, "render_seconds");
+    if (j.contains("error")) rec.error = rd.str(j, "error");
+    rec.present = true;
+  } catch (const std::exception& e) {
+    rec.problem = e.what();
+  }
+  return rec;
+}
+
+bool isDone(const Plan& plan, const RenderJob& job, std::string* why) {
+  auto no = [why](const std::string& w) {
+    if (why) *why = w;
+    return false;
+  };
+  JobRecord rec = readRecord(plan, job);
+  if (!rec.present) return no(rec.problem);
+  if (!rec.error.empty()) return no("the last render failed: " + rec.error);
+  if (rec.input_hash != job.input_hash)
+    return no((plan.dir / job.record()).string() + ": rendered from other inputs (input_hash " +
+              rec.input_hash + ", the plan's is " + job.input_hash + ")");
+  for (const std::string& f : {job.exr(), job.png()})
+    if (!fs::exists(plan.dir / f)) return no((plan.dir / f).string() + ": missing");
+  return true;
+}
+
+JobRecord runJob(const Plan& plan, const RenderJob& job) {
+  const fs::path cdir = plan.dir / job.scene;
+  const fs::path record = plan.dir / job.record();
+  fs::create_directories(cdir);
+  // The record is written last: remove the old one first, so that an
+  // interrupted job never leaves an "ok" beside images it did not write.
+  fs::remove(record);
+  JobRecord rec;
+  rec.input_hash = job.input_hash;
+  const auto t0 = Clock::now();
+  try {
+    Scene scene = loadScene(job.path);
+    const std::string now_hash = inputHash(scene, job.path, job.renderer);
+    if (now_hash != job.input_hash)
+      throw std::runtime_error(job.path.string() + ": changed since the plan was written (input_hash " +
+                               now_hash + ", the plan's is " + job.input_hash + "): plan again");
+    Image image;
+    if (job.renderer == "reference") {
+      RenderOptions o = defaultOptions(scene);
+      o.precision = Precision::Double;
+      o.threads = 1;  // parallelism comes from running jobs side by side
+      image = renderScene(scene, o);
+    } else {
+      ExternalRenderInfo info;
+      image = job.renderer == "povray"
+                  ? renderWithPovray(scene, cdir / "povray.work", plan.timeout_seconds, &info)
+                  : renderWithBlender(scene, cdir / "blender.work", plan.timeout_seconds, &info);
+      rec.render_seconds = info.render_seconds;
+    }
+    writeImage(image, plan.dir / job.exr());
+    writePreviewPng(image, plan.dir / job.png(), kPreviewSide);
+  } catch (const std::exception& e) {
+    rec.error = e.what();
+  }
+  rec.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  J j;
+  j["format"] = kRecordFormat;
+  j["job"] = job.index;
+  j["scene"] = job.scene;
+  j["renderer"] = job.renderer;
+  j["input_hash"] = job.input_hash;
+  j["seconds"] = rec.seconds;
+  if (rec.render_seconds >= 0) j["render_seconds"] = rec.render_seconds;
+  if (!rec.error.empty()) j["error"] = rec.error;
+  j["host"] = hostName();
+  j["finished_unix"] = nowUnix();
+  writeAtomically(record, j.dump(2) + "\n");
+  rec.present = true;
+  return rec;
+}
+
+int compareAndReport(const Plan& plan) {
+  const fs::path& dir = plan.dir;
+  ToleranceTable table = loadTolerances(plan.tolerances_path);
+  bool any_error = false, any_fail = false;
+  J jcases = J::array();
+  std::vector<fs::path> setting_files{plan.tolerances_path};
+  for (size_t first = 0; first < plan.jobs.size(); first += 3) {
+    const RenderJob& j0 = plan.jobs[first];
+    Scene scene = loadScene(j0.path);
+    if (scene.name != j0.scene)
+      throw std::runtime_error(j0.path.string() + ": name: \"" + scene.name + "\": the plan (" +
+                               planFile(dir).string() + ") says \"" + j0.scene + "\": plan again");
+    setting_files.push_back(j0.path);
+    J jc;
+    jc["scene"] = j0.scene;
+    jc["file"] = j0.file;
+    struct Render {
+      JobRecord rec;
+      Image image;
+      std::string error;
+    };
+    std::map<std::string, Render> renders;
+    for (int r = 0; r < 3; ++r) {
+      const RenderJob& job = plan.jobs[first + r];
+      Render& rr = renders[job.renderer];
+      rr.rec = readRecord(plan, job);
+      if (!rr.rec.present) {
+        rr.error = "not rendered: " + rr.rec.problem;
+      } else if (!rr.rec.error.empty()) {
+        rr.error = rr.rec.error;
+      } else if (rr.rec.input_hash != job.input_hash) {
+        rr.error = (dir / job.record()).string() + ": rendered from other inputs (input_hash " +
+                   rr.rec.input_hash + ", the plan's is " + job.input_hash + "): run the job again";
+      } else {
+        try {
+          rr.image = readImage(dir / job.exr());
+        } catch (const std::exception& e) {
+          rr.error = std::string("the record says ok but the image cannot be read: ") + e.what();
+        }
+      }
+      J jr = {{"seconds", rr.rec.seconds}, {"image", job.png()}};
+      if (rr.rec.render_seconds >= 0) jr["render_seconds"] = rr.rec.render_seconds;
+      if (!rr.error.empty()) jr["error"] = rr.error, any_error = true;
+      jc["renders"][job.renderer] = jr;
+    }
+    struct Pair { const char* a; const char* b; };
+    const Pair pairs[] = {{"reference", "povray"}, {"reference", "blender"}, {"povray", "blender"}};
+    int verdict[3];
+    J jpairs = J::array();
+    for (int p = 0; p < 3; ++p) {
+      Render& A = renders[pairs[p].a];
+      Render& B = renders[pairs[p].b];
+      const std::string key = std::string(pairs[p].a) + "-" + pairs[p].b;
+      J jp = {{"pair", key}};
+      if (!A.error.empty() || !B.error.empty()) {
+        verdict[p] = -1;
+        jp["error"] = "not compared: a render failed";
+        jpairs.push_back(jp);
+        continue;
+      }
+      std::string reason;
+      Tolerance tol;
+      if (p < 2) {
+        tol = table.lookup(scene, pairs[p].b, &reason);
+      } else {
+        // POV-Ray vs Blender: where both are within their tolerance of the
+        // reference, their difference is within the sum (the triangle
+        // inequality); that holds on at least f1 + f2 - 1 of the pixels
+        // (the union bound on the pixels outside).
+        std::string r1, r2;
+        Tolerance t1 = table.lookup(scene, "povray", &r1);
+        Tolerance t2 = table.lookup(scene, "blender", &r2);
+        tol.max_abs = t1.max_abs + t2.max_abs;
+        tol.fraction = std::max(0.0, t1.fraction + t2.fraction - 1.0);
+        tol.exclude_backfacing = t1.exclude_backfacing || t2.exclude_backfacing;
+        reason = "derived: the sum of the POV-Ray and Blender tolerances on f1 + f2 - 1 of "
+                 "the pixels (triangle inequality and union bound)";
+        // The reference's diagnostics describe the same pixels.
+        A.image.depth = renders["reference"].image.depth;
+        A.image.backfacing = renders["reference"].image.backfacing;
+        A.image.incidence = renders["reference"].image.incidence;
+      }
+      CompareMetrics m = compareImages(A.image, B.image, tol);
+      PerceptualMetrics pm = perceptualMetrics(A.image, B.image);
+      writeImage(differenceImage(A.image, B.image), dir / j0.scene / ("diff_" + key + ".exr"));
+      J jm = J::parse(toJson(m, tol, &pm));
+      jm["tolerance_reason"] = reason;
+      jp["metrics"] = jm;
+      jp["pass"] = tol.passes(m);
+      // Known differences are the classified ones and a declared reason.
+      jp["classification"] = {
+          {"known", m.over_occlusion_edge + m.over_backfacing + m.over_grazing},
+          {"unexplained", m.over_unexplained},
+          {"declared", !reason.empty()}};
+      verdict[p] = tol.passes(m) ? 1 : 0;
+      any_fail |= !tol.passes(m);
+      jpairs.push_back(jp);
+    }
+    jc["pairs"] = jpairs;
+    if (renders["reference"].error.empty()) {
+      ColourStats st = colourStats(renders["reference"].image);
+      jc["colour_stats"] = {{"lit_pixels", st.lit_pixels},
+                            {"mean_chroma", st.mean_chroma},
+                            {"mean_albedo_chroma", st.mean_albedo_chroma},
+                            {"grey_fraction", st.grey_fraction},
+                            {"hue_error_deg", st.hue_error_deg}};
+    }
+    jc["attribution"] = attribute(verdict[0], verdict[1], verdict[2]);
+    jc["pass"] = verdict[0] == 1 && verdict[1] == 1 && verdict[2] == 1;
+    jcases.push_back(jc);
+  }
+  const fs::path tmp = dir / "version.log";
+  J results;
+  results["format"] = "xval-results/1";
+  results["provenance"] = {
+      {"povray", commandVersion({"povray", "--version"}, tmp)},
+      {"blender", commandVersion({"blender", "--version"}, tmp)},
+      {"openimageio", OIIO_VERSION_STRING},
+      {"compiler", std::string("g++ ") + __VERSION__},
+      {"tolerances", plan.tolerances}};
+  results["provenance"]["git_commit"] = commandVersion({"git", "rev-parse", "HEAD"}, tmp);
+  results["provenance"]["settings_hash"] = settingsHash(setting_files);
+  fs::remove(tmp);
+  // From the plan's making to now: on a cluster this includes the time the
+  // jobs waited in the queue.
+  results["wall_seconds"] = std::max(0.0, nowUnix() - plan.created_unix);
+  results["cases"] = jcases;
+  writeAtomically(dir / "results.json", results.dump(2) + "\n");
+  writeReport(dir / "results.json", dir / "report.html");
+  // For every failing case: how to look closer, and how to accept it.
+  for (const auto& jc : jcases) {
+    if (jc["pass"].get<bool>()) continue;
+    std::fprintf(stderr, "FAIL %s (%s)\n", jc["scene"].get<std::string>().c_str(),
+                 jc["attribution"].get<std::string>().c_str());
+    for (const char* r : {"povray", "blender"})
+      std::fprintf(stderr, "  look closer: xval crosscheck %s --renderer %s -o %s/%s.%s\n",
+                   jc["file"].get<std::string>().c_str(), r, dir.c_str(),
+                   jc["scene"].get<std::string>().c_str(), r);
+    std::fprintf(stderr,
+                 "  accept a documented difference: declare it, with its measured reason, in the\n"
+                 "  `tolerances` field of %s (defaults: %s)\n"
+                 "  (no golden images are kept: the reference renderer renders every run)\n",
+                 jc["file"].get<std::string>().c_str(), plan.tolerances.c_str());
+  }
+  std::fprintf(stderr, "xval validate: %zu scenes, %s; wrote %s\n", jcases.size(),
+               any_error ? "ERRORS" : any_fail ? "some cases FAIL" : "all pass",
+               (dir / "report.html").c_str());
+  return any_error ? 2 : any_fail ? 1 : 0;
+}
+
+}  // namespace xval::validation
