@@ -16,5 +16,6 @@ void addGenerateCommand(CLI::App& app, std::function<int()>& run);
 void addValidateCommand(CLI::App& app, std::function<int()>& run);
 void addReportCommand(CLI::App& app, std::function<int()>& run);
 void addBenchCommand(CLI::App& app, std::function<int()>& run);
+void addExtremesCommand(CLI::App& app, std::function<int()>& run);
 
 }  // namespace xval::cli

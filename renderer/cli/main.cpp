@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   xval::cli::addValidateCommand(app, run);
   xval::cli::addReportCommand(app, run);
   xval::cli::addBenchCommand(app, run);
+  xval::cli::addExtremesCommand(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "image/image.h"
+#include "validate/extremes.h"
 
 namespace xval {
 
@@ -257,6 +258,7 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
        "<figcaption>p99.9 error per scene and pair (log scale; gnuplot)</figcaption></figure>\n";
 
   h << paperClaims(cases);
+  h << extremes::reportSection(dir);  // when DIR/extremes/extremes.json exists (xval extremes)
   h << "<h2>Cases</h2>\n<p>Heat maps: largest channel difference per pixel, "
        "<img src=\"heat_scale.png\" alt=\"scale\" style=\"width:300px;height:12px;vertical-align:middle\">"
        " from 0 through 1 (first seventh, linear) to 4096/65535 (logarithmic); grey: not covered.</p>\n";

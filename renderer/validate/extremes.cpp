@@ -1,0 +1,476 @@
+// The extremes matrix: its scenes, and the per-case measurement of the
+// reference renderer (validate/extremes.h; docs/extremes.md explains every
+// case and what it showed).
+//
+// Conventions of the scenes below (unless a case says otherwise):
+//   - camera at distance ~4 looking at the origin, fov 45 deg, size x size
+//     pixels, 1 spp (the exporters' condition for exact agreement);
+//   - "front" light at (-0.5, 2, 1.25) (the paper's default), "behind" at
+//     its reflection through the origin (docs/models.md);
+//   - sphere: radius 1, 64 x 32 segments; plane: 2 triangles.
+#include "validate/extremes.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+#include "geometry/mesh.h"
+#include "render/renderer.h"
+
+namespace xval::extremes {
+
+using J = nlohmann::ordered_json;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+J v3(double x, double y, double z) { return J::array({x, y, z}); }
+J v3(glm::dvec3 v) { return v3(v.x, v.y, v.z); }
+
+J camera(glm::dvec3 position, glm::dvec3 target, double fov_deg, int size,
+         glm::dvec3 up = {0, 1, 0}) {
+  return {{"position", v3(position)}, {"target", v3(target)}, {"up", v3(up)},
+          {"fov_y_deg", fov_deg},     {"width", size},        {"height", size}};
+}
+
+J scene(const std::string& name, J cam, J objects, J material, J lights,
+        const char* shading = "phong") {
+  return {{"format", "xval-scene/1"}, {"name", name},         {"camera", std::move(cam)},
+          {"objects", std::move(objects)}, {"material", std::move(material)},
+          {"lights", std::move(lights)},   {"shading", shading},
+          {"render", {{"spp", 1}, {"precision", "double"}}}};
+}
+
+J sphere(glm::dvec3 centre = {0, 0, 0}, double radius = 1.0) {
+  return {{"shape", "sphere"}, {"center", v3(centre)}, {"radius", radius},
+          {"segments_longitude", 64}, {"segments_latitude", 32}};
+}
+
+J plane(glm::dvec3 centre, glm::dvec3 normal, double side, double uv_repeat = 1.0) {
+  return {{"shape", "plane"}, {"center", v3(centre)}, {"normal", v3(normal)},
+          {"size", J::array({side, side})}, {"uv_repeat", J::array({uv_repeat, uv_repeat})}};
+}
+
+J brick() { return {{"source", "brick"}, {"filter", "bilinear"}}; }
+
+J phong(double n, bool textured = true, glm::dvec3 base = {0.8, 0.6, 0.4}) {
+  J m = {{"model", {{"type", "classic_phong"}, {"variant", "paper"}, {"ka", 1}, {"kd", 1},
+                    {"ks", 1}, {"shininess", n}}}};
+  if (textured) m["texture"] = brick();
+  else m["base_color"] = v3(base);
+  return m;
+}
+
+J yiq(double n = 55, J texture = brick()) {
+  return {{"model", {{"type", "yiq_luma"}, {"kd", 1}, {"ks", 1}, {"shininess", n},
+                     {"luma_offset", 0.1}}},
+          {"texture", std::move(texture)}};
+}
+
+J trilight(glm::dvec3 base) {
+  return {{"model", {{"type", "trilight"}, {"c0", v3(1.0, 0.85, 0.7)}, {"c1", v3(0.35, 0.5, 0.3)},
+                     {"c2", v3(0.2, 0.3, 0.6)}}},
+          {"base_color", v3(base)}};
+}
+
+J point(glm::dvec3 p) { return {{"type", "point"}, {"position", v3(p)}}; }
+J pointAtt(glm::dvec3 p, double c, double l, double q) {
+  J j = point(p);
+  j["attenuation"] = {{"constant", c}, {"linear", l}, {"quadratic", q}};
+  return j;
+}
+J directional(glm::dvec3 d) { return {{"type", "directional"}, {"direction", v3(d)}}; }
+J ambient(double a = 0.1) { return {{"type", "ambient"}, {"color", v3(a, a, a)}}; }
+
+const glm::dvec3 kFront(-0.5, 2.0, 1.25), kBehind(0.5, -2.0, -1.25), kEye(0, 0, 4.2);
+
+// The specular sweep: a brick plane z = 0 seen from (-1,-1,4) with a light
+// at the mirror position (1,1,4), so the highlight's peak (R = V) is at
+// the image centre. The field of view shrinks with n so the highlight
+// fills the frame whatever n: pow(R.V, n) falls to 1/e where the angle
+// between R and V is sqrt(2/n), i.e. at about 2.1 sqrt(2/n) on the plane
+// (both 4.24 away), and the half-height is set to 2.5 times that:
+// tan(fov/2) = 1.25 sqrt(2/n), at most 45 deg.
+Case specular(const std::string& label, double n, int size) {
+  double fov = 45.0;
+  if (n > 0) fov = std::min(45.0, 2.0 * std::atan(1.25 * std::sqrt(2.0 / n)) * 180.0 / kPi);
+  Case c;
+  c.name = "specular_n" + label;
+  c.group = "specular power";
+  c.what = "classic Phong, shininess " + label +
+           (n == 0 ? ": clamp(R.V)^0 = 1 everywhere (pow(0,0) = 1 where R.V <= 0)"
+                   : n >= 1e5 ? ": R.V within 1e-6 of 1 decides the whole highlight (float's "
+                                "1 - R.V has an ulp of 6e-8)"
+                              : ": highlight at the image centre, fov scaled to its width");
+  c.scene = scene(c.name, camera({-1, -1, 4}, {0, 0, 0}, fov, size),
+                  J::array({plane({0, 0, 0}, {0, 0, 1}, 8.0, 4.0)}), phong(n),
+                  J::array({point({1, 1, 4}), ambient()}));
+  return c;
+}
+
+// N.L sweeps: a plane facing the camera, lit by a directional light.
+Case ndotl(const std::string& name, const std::string& what, glm::dvec3 direction, J material,
+           int size) {
+  Case c;
+  c.name = name;
+  c.group = "N.L";
+  c.what = what;
+  c.scene = scene(name, camera({0, 0, 4}, {0, 0, 0}, 45, size),
+                  J::array({plane({0, 0, 0}, {0, 0, 1}, 4.0, 2.0)}), std::move(material),
+                  J::array({directional(direction), ambient()}));
+  return c;
+}
+
+// The scale cases' base: a brick sphere, classic Phong, a point light with
+// attenuation 1/(1 + 0.1 d + 0.05 d^2), everything scaled by s about the
+// origin (l / s and q / s^2, so the image is the same at every scale).
+J scaledScene(const std::string& name, double s, int size) {
+  return scene(name, camera(kEye * s, {0, 0, 0}, 45, size), J::array({sphere({0, 0, 0}, s)}),
+               phong(55), J::array({pointAtt(kFront * s, 1.0, 0.1 / s, 0.05 / (s * s)), ambient()}));
+}
+
+// The vertex of the default sphere nearest to +z (exactly the position the
+// renderers trace: float32-rounded).
+glm::dvec3 sphereVertexFacingZ() {
+  TriangleMesh m = tessellate(UvSphere{});
+  glm::dvec3 best = m.positions[0];
+  for (const auto& p : m.positions)
+    if (p.z > best.z) best = p;
+  return best;
+}
+
+}  // namespace
+
+std::vector<Case> extremesMatrix(const MatrixOptions& options) {
+  const int n = options.size;
+  if (n < 8 || n > 4096) throw std::runtime_error("extremes: size must be in [8, 4096]");
+  std::vector<Case> out;
+
+  // --- specular power ---------------------------------------------------
+  out.push_back(specular("0", 0, n));
+  out.push_back(specular("1", 1, n));
+  out.push_back(specular("55", 55, n));
+  out.push_back(specular("1e3", 1e3, n));
+  out.push_back(specular("1e6", 1e6, n));
+
+  // --- N.L ----------------------------------------------------------------
+  // Grazing: L = (sqrt(1 - e^2), 0, e), so N.L = e exactly, e = +-5e-8
+  // (within 1e-7 of 0); trilight has all three of its terms there.
+  for (double e : {5e-8, -5e-8}) {
+    const std::string name = e > 0 ? "ndotl_grazing_plus" : "ndotl_grazing_minus";
+    out.push_back(ndotl(name,
+                        std::string("trilight, directional light with N.L = ") +
+                            (e > 0 ? "+" : "-") + "5e-8 on the whole plane: the models' kinks at x = 0",
+                        {-std::sqrt(1.0 - e * e), 0.0, -e}, trilight({0.8, 0.7, 0.6}), n));
+  }
+  out.push_back(ndotl("ndotl_plus_one",
+                      "YIQ, brick, directional light along -N: N.L = 1 and R = N exactly, R.V = 1 "
+                      "at the image centre",
+                      {0, 0, -1}, yiq(), n));
+  out.push_back(ndotl("ndotl_minus_one",
+                      "YIQ, brick, directional light along +N (from behind): N.L = -1, R = -N",
+                      {0, 0, 1}, yiq(), n));
+
+  // --- light distance -----------------------------------------------------
+  {
+    // The light on a vertex of the sphere facing the camera; the image is
+    // odd-sized so the centre pixel's ray passes within 1e-16 of it. The
+    // attenuation is nearly 1/d^2 (constant 1e-9). On a convex surface a
+    // light on it is below every other point's tangent plane
+    // (N.L = -d / 2r), so trilight's back term c2 (d/2) / d^2 diverges as
+    // 1/(2d) and its middle term c1 (1 - |x|) / (1e-9 + d^2) as 1/d^2.
+    Case c;
+    c.name = "light_on_surface";
+    c.group = "light distance";
+    c.what = "light on a vertex of the sphere, attenuation 1/(1e-9 + d^2): d -> 0 at the centre "
+             "pixel (d ~ 1e-16), raw values up to 1e9";
+    c.scene = scene(c.name, camera(kEye, {0, 0, 0}, 45, n + 1), J::array({sphere()}),
+                    trilight({0.8, 0.7, 0.6}),
+                    J::array({pointAtt(sphereVertexFacingZ(), 1e-9, 0.0, 1.0), ambient()}));
+    out.push_back(c);
+  }
+  for (double far : {1e8, 1e20}) {
+    Case c;
+    c.name = far == 1e8 ? "light_far_1e8" : "light_far_1e20";
+    c.group = "light distance";
+    c.what = far == 1e8 ? "point light 1e8 away (no attenuation): L is a difference of numbers "
+                          "1e8 apart in size"
+                        : "point light 1e20 away: |p_light - p|^2 = 1e40 overflows float (max 3.4e38)";
+    c.scene = scene(c.name, camera(kEye, {0, 0, 0}, 45, n), J::array({sphere()}), phong(55),
+                    J::array({point(glm::normalize(kFront) * far), ambient()}));
+    out.push_back(c);
+  }
+
+  // --- scale ---------------------------------------------------------------
+  {
+    Case c{"scale_1", "scale", "the scale cases' base at scale 1: brick sphere, classic Phong, "
+                               "point light with attenuation 1/(1 + 0.1 d + 0.05 d^2)",
+           scaledScene("scale_1", 1.0, n)};
+    out.push_back(c);
+    Case s6{"scale_1e-6", "scale", "the base scaled by 1e-6 (attenuation l / s, q / s^2)",
+            scaledScene("scale_1e-6", 1e-6, n)};
+    out.push_back(s6);
+    Case S6{"scale_1e6", "scale", "the base scaled by 1e6 (attenuation l / s, q / s^2)",
+            scaledScene("scale_1e6", 1e6, n)};
+    out.push_back(S6);
+    // The base translated to (1e6, 1e6, 1e6): coordinates 1e6 in size,
+    // features of size 1. The float32 ulp there is 0.0625, so the eye and
+    // the light are placed on multiples of it (exact in float: the float
+    // path's ray origin is not rounded) and the sphere's vertices are
+    // rounded to it (the same triangles for every renderer).
+    const glm::dvec3 o(1e6, 1e6, 1e6);
+    Case off;
+    off.name = "offset_1e6";
+    off.group = "scale";
+    off.what = "the base translated by (1e6, 1e6, 1e6): eye - p and light - p are differences "
+               "of float numbers 1e6 in size (ulp 0.0625), the sphere 1 in radius";
+    off.scene = scene(off.name, camera(o + glm::dvec3(0, 0, 4.25), o, 45, n),
+                      J::array({sphere(o)}), phong(55),
+                      J::array({pointAtt(o + kFront, 1.0, 0.1, 0.05), ambient()}));
+    out.push_back(off);
+  }
+
+  // --- colours ---------------------------------------------------------------
+  {
+    J palette = {{"source", "image"}, {"path", kPaletteFile}, {"filter", "nearest"}};
+    struct C { const char* name; const char* what; bool yiq_model; glm::dvec3 light; };
+    for (const C& k : {C{"colours_yiq_front", "YIQ on black, white and the six saturated colours "
+                                              "(latitude bands), light in front: C + dY leaves "
+                                              "the RGB cube", true, kFront},
+                       C{"colours_yiq_behind", "the same, light behind: Y' = 0.1 Y - 0.1 + S, "
+                                               "below 0 for every colour", true, kBehind},
+                       C{"colours_phong_front", "classic Phong on the same bands, light in front",
+                         false, kFront}}) {
+      Case c;
+      c.name = k.name;
+      c.group = "colours";
+      c.what = k.what;
+      J mat = k.yiq_model ? yiq(55, palette) : phong(55);
+      if (!k.yiq_model) mat["texture"] = palette;
+      c.scene = scene(c.name, camera(kEye, {0, 0, 0}, 45, n), J::array({sphere()}), mat,
+                      J::array({point(k.light), ambient()}));
+      out.push_back(c);
+    }
+  }
+
+  // --- knot -------------------------------------------------------------------
+  {
+    Case c;
+    c.name = "knot_thin_high_pq";
+    c.group = "knot";
+    c.what = "a (97, 89) torus knot with a tube of radius 0.002 (a sixth of a pixel), 8192 x 8 "
+             "segments: high curvature and torsion for the tube frame, sub-pixel triangles";
+    J knot = {{"shape", "torus_knot"}, {"p", 97}, {"q", 89}, {"tube_radius", 0.002},
+              {"segments_along", 8192}, {"segments_around", 8}};
+    c.scene = scene(c.name, camera(kEye, {0, 0, 0}, 45, n), J::array({knot}), yiq(),
+                    J::array({point(kFront), ambient()}));
+    out.push_back(c);
+  }
+
+  // --- degenerate geometry -----------------------------------------------------
+  {
+    // Tube radius 1e-9 is below the float32 resolution of the centre line
+    // (|c| >= 0.55, ulp >= 6e-8): after the rounding every renderer gets,
+    // each ring's 9 vertices coincide (or straddle one rounding boundary),
+    // so the triangles have zero area or are 1-ulp slivers.
+    Case c;
+    c.name = "degenerate_knot_collapsed";
+    c.group = "degenerate";
+    c.what = "knot with tube radius 1e-9: every ring's vertices coincide after float32 rounding, "
+             "zero-area triangles (and 1-ulp slivers)";
+    J knot = {{"shape", "torus_knot"}, {"tube_radius", 1e-9}, {"segments_along", 768},
+              {"segments_around", 8}};
+    c.scene = scene(c.name, camera(kEye, {0, 0, 0}, 45, n), J::array({knot}), yiq(),
+                    J::array({point(kFront), ambient()}));
+    out.push_back(c);
+    // A sphere of radius 0.05 at (1e6, 1e6, 1e6): its vertices round to the
+    // 0.0625 grid there, i.e. to 27 points: most triangles have zero area,
+    // the rest join vertices whose (exact, unit) normals point in very
+    // different directions, so the interpolated normal gets short.
+    const glm::dvec3 o(1e6, 1e6, 1e6);
+    Case d;
+    d.name = "degenerate_sphere_far";
+    d.group = "degenerate";
+    d.what = "sphere of radius 0.05 at 1e6: vertices collapse onto the 0.0625 float grid, "
+             "zero-area triangles and short interpolated normals";
+    d.scene = scene(d.name, camera(o + glm::dvec3(0.125, 0.0625, 0.375), o, 45, n),
+                    J::array({sphere(o, 0.05)}), phong(55, false),
+                    J::array({point(o + glm::dvec3(-0.5, 2.0, 1.25)), ambient()}));
+    out.push_back(d);
+  }
+
+  // --- eye ---------------------------------------------------------------------
+  {
+    Case c;
+    c.name = "light_at_eye";
+    c.group = "eye";
+    c.what = "point light at the eye: L = V, R.V = 2 (N.V)^2 - 1, the highlight's peak where the "
+             "sphere faces the camera";
+    c.scene = scene(c.name, camera(kEye, {0, 0, 0}, 45, n), J::array({sphere()}), phong(55),
+                    J::array({point(kEye), ambient()}));
+    out.push_back(c);
+    // The eye on a floor plane (y = 0), looking at a sphere resting on it:
+    // every ray starts on the floor, so a ray-triangle test that accepts
+    // t = 0 hits the floor at the eye itself (eye - p = 0).
+    Case e;
+    e.name = "eye_on_surface";
+    e.group = "eye";
+    e.what = "the eye on the floor plane, a sphere resting on it: every ray starts on a surface "
+             "(t = 0 would hit it at the eye, where eye - p = 0)";
+    e.scene = scene(e.name, camera({0, 0, 4}, {0, 1, 0}, 45, n),
+                    J::array({plane({0, 0, 0}, {0, 1, 0}, 20.0, 10.0), sphere({0, 1, 0})}),
+                    phong(55), J::array({point(kFront + glm::dvec3(0, 1, 0)), ambient()}));
+    out.push_back(e);
+  }
+
+  // --- spot cone edge ------------------------------------------------------------
+  {
+    // A plane facing the camera and a spot at its centre (a corner of the
+    // four central pixels) shining along +x with a 45 deg cutoff: the cone
+    // meets the plane in the lines y = +-x, x > 0, which pass exactly
+    // through the centres of the pixels on the image's diagonals (pixel
+    // (i, i) looks at (x, -x)). The spot lies in the plane, so N.L = 0
+    // everywhere; hemispherical shading gives (c0 + c2) / 2 inside.
+    Case c;
+    c.name = "spot_cone_edge";
+    c.group = "spot";
+    c.what = "hard spot cone whose edge passes exactly through the pixel centres of both image "
+             "diagonals (x > 0): lit or not is decided by the last bit";
+    J mat = {{"model", {{"type", "hemispherical"}, {"c0", v3(1, 1, 1)}, {"c2", v3(0.2, 0.2, 0.2)}}},
+             {"base_color", v3(0.9, 0.7, 0.5)}};
+    J spot = {{"type", "spot"}, {"position", v3(0, 0, 0)}, {"direction", v3(1, 0, 0)},
+              {"cutoff_deg", 45}};
+    c.scene = scene(c.name, camera({0, 0, 4}, {0, 0, 0}, 45, n),
+                    J::array({plane({0, 0, 0}, {0, 0, 1}, 4.0)}), mat,
+                    J::array({spot, ambient()}));
+    out.push_back(c);
+  }
+  return out;
+}
+
+void writePaletteTexture(const std::filesystem::path& file) {
+  namespace OIIO = OIIO_NAMESPACE;
+  // White, black, red, green, blue, cyan, magenta, yellow, top to bottom.
+  const unsigned char px[8][3] = {{255, 255, 255}, {0, 0, 0},     {255, 0, 0},   {0, 255, 0},
+                                  {0, 0, 255},     {0, 255, 255}, {255, 0, 255}, {255, 255, 0}};
+  auto out = OIIO::ImageOutput::create(file.string());
+  if (!out) throw std::runtime_error(file.string() + ": cannot create: " + OIIO::geterror());
+  OIIO::ImageSpec spec(1, 8, 3, OIIO::TypeDesc::UINT8);
+  if (!out->open(file.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, px) ||
+      !out->close())
+    throw std::runtime_error(file.string() + ": cannot write: " + out->geterror());
+}
+
+std::vector<std::filesystem::path> writeCaseScenes(const std::vector<Case>& cases,
+                                                   const std::filesystem::path& scenes_dir) {
+  std::filesystem::create_directories(scenes_dir);
+  writePaletteTexture(scenes_dir / kPaletteFile);
+  std::vector<std::filesystem::path> files;
+  for (const Case& c : cases) {
+    const std::filesystem::path f = scenes_dir / (c.name + ".json");
+    std::ofstream o(f);
+    o << c.scene.dump(2) << "\n";
+    if (!o) throw std::runtime_error(f.string() + ": cannot write");
+    files.push_back(f);
+  }
+  return files;
+}
+
+NonFinite countNonFinite(const Image& img) {
+  NonFinite n;
+  const size_t pixels = size_t(img.width) * img.height;
+  for (size_t i = 0; i < pixels; ++i) {
+    bool bad = false;
+    for (int k = 0; k < 4; ++k) bad |= !std::isfinite(img.rgba[i * 4 + k]);
+    n.final_pixels += bad;
+    if (img.raw.size() == pixels * 3) {
+      bool bad_raw = false;
+      for (int k = 0; k < 3; ++k) bad_raw |= !std::isfinite(img.raw[i * 3 + k]);
+      n.raw_pixels += bad_raw;
+    }
+  }
+  return n;
+}
+
+ReferenceRender renderReference(const Scene& scene, Precision precision, int threads) {
+  RenderOptions o = defaultOptions(scene);
+  o.precision = precision;
+  o.threads = threads;
+  o.diagnostics = true;
+  const auto t0 = std::chrono::steady_clock::now();
+  ReferenceRender r;
+  r.image = renderScene(scene, o);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.nonfinite = countNonFinite(r.image);
+  return r;
+}
+
+CompareMetrics compareToReference(const Image& reference, const Image& other) {
+  return compareImages(reference, other, Tolerance{});
+}
+
+J metricsJson(const CompareMetrics& m) {
+  auto num = [](double v) { return std::isfinite(v) ? J(v) : J(nullptr); };
+  return {{"max_abs_16bit", num(m.max_abs * 65535.0)},
+          {"p999_abs_16bit", num(m.p999_abs * 65535.0)},
+          {"rmse_16bit", num(m.rmse * 65535.0)},
+          {"covered_both", m.covered_both},
+          {"mask_disagree", m.mask_disagree},
+          {"mask_disagree_silhouette", m.mask_disagree_silhouette},
+          {"fraction_within_2", num(m.fraction_within)},
+          {"worst_pixel", J::array({m.worst_x, m.worst_y})}};
+}
+
+namespace {
+// The report's heat-map scale (validate/report.cpp): black -> blue -> cyan
+// -> green -> yellow -> red -> white; 0..1/65535 linear over the first
+// seventh, then logarithmic up to 4096/65535.
+glm::vec3 ramp(double t) {
+  static const glm::vec3 stops[] = {{0, 0, 0}, {0, 0, 1}, {0, 1, 1}, {0, 1, 0},
+                                    {1, 1, 0}, {1, 0, 0}, {1, 1, 1}};
+  t = std::clamp(t, 0.0, 1.0) * 6.0;
+  int i = std::min(5, int(t));
+  float f = float(t - i);
+  return stops[i] * (1.0f - f) + stops[i + 1] * f;
+}
+double heatT(double err16) {
+  constexpr double lo = 1.0, hi = 4096.0;
+  if (!(err16 == err16)) return 1.0;  // NaN: the top of the scale
+  if (err16 <= lo) return err16 / lo * (1.0 / 7.0);
+  return 1.0 / 7.0 + (6.0 / 7.0) * std::log(err16 / lo) / std::log(hi / lo);
+}
+}  // namespace
+
+void writeHeatMap(const Image& a, const Image& b, const std::filesystem::path& png) {
+  Image d = differenceImage(a, b);
+  Image h(d.width, d.height, false);
+  for (size_t i = 0; i < size_t(d.width) * d.height; ++i) {
+    glm::vec3 c(0.35f);  // covered by neither render
+    if (d.rgba[i * 4 + 3] > 0) {
+      double e = std::max({d.rgba[i * 4], d.rgba[i * 4 + 1], d.rgba[i * 4 + 2]}) * 65535.0;
+      c = ramp(heatT(e));
+    }
+    for (int k = 0; k < 3; ++k) h.rgba[i * 4 + k] = c[k];
+    h.rgba[i * 4 + 3] = 1.0f;
+  }
+  writePreviewPng(h, png, std::max(d.width, d.height));
+}
+
+void writeHeatScale(const std::filesystem::path& png) {
+  Image s(512, 16, false);
+  for (int x = 0; x < 512; ++x) {
+    glm::vec3 c = ramp(x / 511.0);
+    for (int y = 0; y < 16; ++y) {
+      float* p = s.pixel(x, y);
+      p[0] = c.r, p[1] = c.g, p[2] = c.b, p[3] = 1.0f;
+    }
+  }
+  writePreviewPng(s, png, 512);
+}
+
+}  // namespace xval::extremes
