@@ -17,5 +17,6 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run);
 void addReportCommand(CLI::App& app, std::function<int()>& run);
 void addBenchCommand(CLI::App& app, std::function<int()>& run);
 void addExtremesCommand(CLI::App& app, std::function<int()>& run);
+void addTradeoffCommand(CLI::App& app, std::function<int()>& run);
 
 }  // namespace xval::cli

@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   xval::cli::addReportCommand(app, run);
   xval::cli::addBenchCommand(app, run);
   xval::cli::addExtremesCommand(app, run);
+  xval::cli::addTradeoffCommand(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

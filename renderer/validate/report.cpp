@@ -13,6 +13,7 @@
 
 #include "image/image.h"
 #include "validate/extremes.h"
+#include "validate/report_tradeoff.h"
 
 namespace xval {
 
@@ -259,6 +260,7 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
 
   h << paperClaims(cases);
   h << extremes::reportSection(dir);  // when DIR/extremes/extremes.json exists (xval extremes)
+  h << tradeoffReportSection(dir);  // when DIR/tradeoff/tradeoff.json exists (xval tradeoff)
   h << "<h2>Cases</h2>\n<p>Heat maps: largest channel difference per pixel, "
        "<img src=\"heat_scale.png\" alt=\"scale\" style=\"width:300px;height:12px;vertical-align:middle\">"
        " from 0 through 1 (first seventh, linear) to 4096/65535 (logarithmic); grey: not covered.</p>\n";

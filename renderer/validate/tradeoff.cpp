@@ -1,0 +1,262 @@
+// The trade-off sweep, the converged reference, errors and the Pareto
+// front (validate/tradeoff.h documents every parameter and default).
+#include "validate/tradeoff.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <variant>
+
+#include "image/perceptual.h"
+#include "scene/scene_loader.h"
+#include "scene/scene_writer.h"
+
+namespace xval {
+
+bool TradeoffConfig::sameKnobs(const TradeoffConfig& o) const {
+  return spp == o.spp && tessellation_factor == o.tessellation_factor && precision == o.precision &&
+         shading == o.shading && texture_filter == o.texture_filter;
+}
+
+bool validSpp(int n) {
+  if (n < 1 || n > 256) return false;
+  int r = int(std::lround(std::sqrt(double(n))));
+  return r * r == n;
+}
+
+bool hasTessellatedShapes(const Scene& scene) {
+  for (const Shape& s : scene.objects)
+    if (!std::holds_alternative<Plane>(s)) return true;
+  return false;
+}
+
+TradeoffConfig baseConfig(const Scene& scene) {
+  TradeoffConfig c;
+  c.id = "base";
+  c.group = "base";
+  c.spp = scene.render.spp;
+  c.tessellation_factor = 1.0;
+  c.precision = scene.render.precision;
+  c.shading = scene.shading;
+  if (scene.material.texture) c.texture_filter = scene.material.texture->filter;
+  return c;
+}
+
+TradeoffConfig convergedConfig(const Scene& scene, const SweepSettings& s) {
+  if (!validSpp(s.reference_spp))
+    throw std::runtime_error("reference spp " + std::to_string(s.reference_spp) +
+                             ": expected a perfect square in [1, 256]");
+  if (!(s.reference_tessellation > 0.0) || !std::isfinite(s.reference_tessellation))
+    throw std::runtime_error("reference tessellation factor " + std::to_string(s.reference_tessellation) +
+                             ": expected a finite number > 0");
+  TradeoffConfig c;
+  c.id = "converged";
+  c.group = "converged";
+  c.spp = s.reference_spp;
+  c.tessellation_factor = hasTessellatedShapes(scene) ? s.reference_tessellation : 1.0;
+  c.precision = Precision::Double;
+  c.shading = ShadingMode::Phong;
+  if (scene.material.texture) c.texture_filter = TextureFilter::Bilinear;
+  return c;
+}
+
+std::vector<TradeoffConfig> sweepConfigs(const Scene& scene, const SweepSettings& s) {
+  const TradeoffConfig base = baseConfig(scene);
+  std::vector<TradeoffConfig> out{base};
+  auto add = [&](TradeoffConfig c) {
+    for (const auto& o : out)
+      if (o.sameKnobs(c)) return;
+    out.push_back(std::move(c));
+  };
+  auto fmtFactor = [](double f) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%g", f);
+    return std::string(b);
+  };
+  for (int spp : {1, 4, 16, 64}) {
+    if (spp == 64 && s.quick) continue;
+    TradeoffConfig c = base;
+    c.id = "spp=" + std::to_string(spp), c.group = "spp", c.spp = spp;
+    add(c);
+  }
+  if (hasTessellatedShapes(scene))
+    for (double f : {0.25, 0.5, 2.0}) {
+      if (f > 1.0 && s.quick) continue;
+      TradeoffConfig c = base;
+      c.id = "tess=" + fmtFactor(f), c.group = "tessellation", c.tessellation_factor = f;
+      add(c);
+    }
+  {
+    TradeoffConfig c = base;
+    c.precision = base.precision == Precision::Double ? Precision::Float : Precision::Double;
+    c.id = std::string("precision=") + toString(c.precision), c.group = "precision";
+    add(c);
+  }
+  for (ShadingMode m : {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}) {
+    if (m == base.shading) continue;
+    TradeoffConfig c = base;
+    c.shading = m, c.id = std::string("shading=") + toString(m), c.group = "shading";
+    add(c);
+  }
+  if (base.texture_filter) {
+    TradeoffConfig c = base;
+    c.texture_filter =
+        *base.texture_filter == TextureFilter::Bilinear ? TextureFilter::Nearest : TextureFilter::Bilinear;
+    c.id = std::string("filter=") + toString(*c.texture_filter), c.group = "filter";
+    add(c);
+  }
+  const bool tess = hasTessellatedShapes(scene);
+  {
+    TradeoffConfig c = base;
+    c.id = "corner:fast", c.group = "corner";
+    c.precision = Precision::Float, c.spp = 1;
+    if (tess) c.tessellation_factor = 0.5;
+    if (c.texture_filter) c.texture_filter = TextureFilter::Nearest;
+    add(c);
+    c.id = "corner:fast-gouraud", c.shading = ShadingMode::Gouraud;
+    add(c);
+  }
+  for (int spp : {4, 16}) {
+    TradeoffConfig c = base;
+    c.id = "corner:float-" + std::to_string(spp) + "spp", c.group = "corner";
+    c.precision = Precision::Float, c.spp = spp;
+    add(c);
+  }
+  if (!s.quick) {
+    TradeoffConfig c = base;
+    c.id = "corner:accurate", c.group = "corner";
+    c.precision = Precision::Double, c.spp = 16, c.shading = ShadingMode::Phong;
+    if (tess) c.tessellation_factor = 2.0;
+    if (c.texture_filter) c.texture_filter = TextureFilter::Bilinear;
+    add(c);
+  }
+  // The converged configuration is always its own row (even when an
+  // earlier row has the same knobs): its error is the determinism check.
+  out.push_back(convergedConfig(scene, s));
+  return out;
+}
+
+std::vector<TradeoffConfig> convergenceChecks(const Scene& scene, const SweepSettings& s) {
+  const TradeoffConfig ref = convergedConfig(scene, s);
+  std::vector<TradeoffConfig> out;
+  if (hasTessellatedShapes(scene)) {
+    TradeoffConfig c = ref;
+    c.id = "check:tess-x2", c.group = "check";
+    c.tessellation_factor = ref.tessellation_factor * 2.0;
+    out.push_back(c);
+  }
+  const int n = int(std::lround(std::sqrt(double(ref.spp))));
+  const int finer = std::min(256, 4 * n * n);
+  if (finer > ref.spp) {
+    TradeoffConfig c = ref;
+    c.id = "check:spp=" + std::to_string(finer), c.group = "check";
+    c.spp = finer;
+    out.push_back(c);
+  }
+  return out;
+}
+
+int scaledSegments(int segments, double factor, int minimum) {
+  const double v = std::round(double(segments) * factor);
+  if (!(v < 2147483647.0)) return 2147483647;  // the loader refuses it, with the field
+  return std::max(minimum, int(v));
+}
+
+Scene applyConfig(const Scene& scene, const TradeoffConfig& c) {
+  Scene s = scene;
+  s.render.spp = c.spp;
+  s.render.precision = c.precision;
+  s.shading = c.shading;
+  if (s.material.texture && c.texture_filter) s.material.texture->filter = *c.texture_filter;
+  if (c.tessellation_factor != 1.0)
+    for (Shape& shape : s.objects) {
+      if (auto* k = std::get_if<TorusKnot>(&shape)) {
+        k->segments_along = scaledSegments(k->segments_along, c.tessellation_factor, 3);
+        k->segments_around = scaledSegments(k->segments_around, c.tessellation_factor, 3);
+      } else if (auto* u = std::get_if<UvSphere>(&shape)) {
+        u->segments_longitude = scaledSegments(u->segments_longitude, c.tessellation_factor, 3);
+        u->segments_latitude = scaledSegments(u->segments_latitude, c.tessellation_factor, 2);
+      }
+    }
+  // Validate the result as a scene file would be (mesh limits, ...); the
+  // message names the scene, this configuration, the field and the value.
+  const std::string label = scene.source_file.string() + " [tradeoff " + c.id + "]";
+  Scene checked = parseScene(sceneToJson(s).dump(), label);
+  checked.source_file = scene.source_file;
+  return checked;
+}
+
+TradeoffError tradeoffError(const Image& img, const Image& ref) {
+  if (img.width != ref.width || img.height != ref.height)
+    throw std::runtime_error("tradeoff error: image sizes differ (" + std::to_string(img.width) + "x" +
+                             std::to_string(img.height) + " vs " + std::to_string(ref.width) + "x" +
+                             std::to_string(ref.height) + ")");
+  TradeoffError e;
+  std::vector<double> errs;
+  double sq = 0.0, de_sum = 0.0;
+  const size_t n = size_t(img.width) * img.height;
+  for (size_t i = 0; i < n; ++i) {
+    const float* a = &img.rgba[i * 4];
+    const float* b = &ref.rgba[i * 4];
+    if (!(a[3] > 0.0f) && !(b[3] > 0.0f)) continue;
+    double worst = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const double d = double(a[k]) - double(b[k]);
+      worst = std::max(worst, std::abs(d));
+      sq += d * d;
+    }
+    errs.push_back(worst);
+    auto clamp01 = [](const float* p) {
+      return glm::dvec3(std::clamp(double(p[0]), 0.0, 1.0), std::clamp(double(p[1]), 0.0, 1.0),
+                        std::clamp(double(p[2]), 0.0, 1.0));
+    };
+    const double de = ciede2000(srgbToLab(clamp01(a)), srgbToLab(clamp01(b)));
+    de_sum += de;
+    e.ciede2000_max = std::max(e.ciede2000_max, de);
+  }
+  e.pixels = (long long)errs.size();
+  if (errs.empty()) return e;
+  std::sort(errs.begin(), errs.end());
+  const size_t k = size_t(std::ceil(0.999 * double(errs.size()))) - 1;  // nearest rank, as compare.cpp
+  e.max_16bit = errs.back() * 65535.0;
+  e.p999_16bit = errs[std::min(k, errs.size() - 1)] * 65535.0;
+  e.rmse_16bit = std::sqrt(sq / (3.0 * double(errs.size()))) * 65535.0;
+  e.ciede2000_mean = de_sum / double(errs.size());
+  return e;
+}
+
+bool validErrorMetric(const std::string& m) {
+  return m == "rmse" || m == "p999" || m == "max" || m == "ciede2000";
+}
+
+double errorMetric(const TradeoffError& e, const std::string& m) {
+  if (m == "rmse") return e.rmse_16bit;
+  if (m == "p999") return e.p999_16bit;
+  if (m == "max") return e.max_16bit;
+  if (m == "ciede2000") return e.ciede2000_mean;
+  throw std::runtime_error("error metric '" + m + "': expected rmse, p999, max or ciede2000");
+}
+
+std::vector<size_t> paretoFront(const std::vector<ParetoPoint>& pts) {
+  auto finite = [](const ParetoPoint& p) { return std::isfinite(p.seconds) && std::isfinite(p.error); };
+  std::vector<size_t> front;
+  for (size_t i = 0; i < pts.size(); ++i) {
+    if (!finite(pts[i])) continue;
+    bool dominated = false;
+    for (size_t j = 0; j < pts.size() && !dominated; ++j) {
+      if (j == i || !finite(pts[j])) continue;
+      const ParetoPoint &a = pts[j], &b = pts[i];
+      dominated = a.seconds <= b.seconds && a.error <= b.error && (a.seconds < b.seconds || a.error < b.error);
+    }
+    if (!dominated) front.push_back(i);
+  }
+  std::sort(front.begin(), front.end(), [&](size_t a, size_t b) {
+    if (pts[a].seconds != pts[b].seconds) return pts[a].seconds < pts[b].seconds;
+    if (pts[a].error != pts[b].error) return pts[a].error < pts[b].error;
+    return a < b;
+  });
+  return front;
+}
+
+}  // namespace xval
