@@ -10,6 +10,9 @@
 #                        (default: build/renderer/xval of this checkout)
 #   --max-parallel N     at most N render tasks at once (the array's %N;
 #                        default 16)
+#   --max-array-size N   at most N jobs per array (default and upper bound:
+#                        the cluster's MaxArraySize); more jobs are
+#                        submitted as several arrays, one after another
 #   --tolerances FILE    --timeout S    passed to `xval validate`
 #   --sbatch-arg ARG     an sbatch option for every job (repeatable), e.g.
 #                        --sbatch-arg=--partition=render
@@ -40,7 +43,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 repo=$(cd "$here/../.." && pwd)
 die() { echo "submit: $*" >&2; exit 2; }
 
-out="" xval="$repo/build/renderer/xval" max=16 fresh=0 wait=0
+out="" xval="$repo/build/renderer/xval" max=16 arraysize="" fresh=0 wait=0
 validate_args=() common=() render_extra=() compare_extra=() scenes=()
 need() { [ $# -ge 2 ] || die "$1 needs a value"; }
 while [ $# -gt 0 ]; do
@@ -51,6 +54,8 @@ while [ $# -gt 0 ]; do
     --xval=*) xval=${1#*=}; shift ;;
     --max-parallel) need "$@"; max=$2; shift 2 ;;
     --max-parallel=*) max=${1#*=}; shift ;;
+    --max-array-size) need "$@"; arraysize=$2; shift 2 ;;
+    --max-array-size=*) arraysize=${1#*=}; shift ;;
     --tolerances|--timeout) need "$@"; validate_args+=("$1" "$2"); shift 2 ;;
     --tolerances=*|--timeout=*) validate_args+=("${1%%=*}" "${1#*=}"); shift ;;
     --sbatch-arg) need "$@"; common+=("$2"); shift 2 ;;
@@ -69,9 +74,10 @@ while [ $# -gt 0 ]; do
 done
 [ -n "$out" ] || die "-o OUT is required (see --help)"
 case "$max" in ''|*[!0-9]*|0) die "--max-parallel $max: expected a positive whole number" ;; esac
+case "$arraysize" in *[!0-9]*|0) die "--max-array-size $arraysize: expected a positive whole number" ;; esac
 [ -x "$xval" ] || die "$xval: not an executable (build it with scripts/build.sh, or give --xval PATH)"
 xval=$(cd "$(dirname "$xval")" && pwd)/$(basename "$xval")
-for c in sbatch scontrol; do
+for c in sbatch scontrol squeue; do
   command -v "$c" >/dev/null 2>&1 || die "$c not found: is this a Slurm submit host? (scripts/slurm/install.sh)"
 done
 
@@ -89,12 +95,14 @@ log="$out/slurm/submitted.log"
 ntodo=$(printf '%s\n' "$todo" | grep -c '^[0-9]' || true)
 
 # 2. The render array(s). Array indices must be below MaxArraySize, so a
-# long plan is split into arrays of at most MaxArraySize jobs, each with an
-# offset; they run one after another (afterany), each at most N at once.
+# long plan is split into arrays of at most MaxArraySize (or
+# --max-array-size) jobs, each with an offset; they run one after another
+# (afterany), each at most N tasks at once.
 arrays=()
 if [ "$ntodo" -gt 0 ]; then
   maxsize=$(scontrol show config | awk '$1 == "MaxArraySize" {print $3}')
   case "$maxsize" in ''|*[!0-9]*) die "cannot read MaxArraySize from 'scontrol show config'" ;; esac
+  [ -n "$arraysize" ] && [ "$arraysize" -lt "$maxsize" ] && maxsize=$arraysize
   # "chunk<TAB>ranges" per chunk, ranges relative to the chunk's offset.
   specs=$(printf '%s\n' "$todo" | awk -v m="$maxsize" '
     /^[0-9]+$/ {
@@ -160,6 +168,12 @@ case "$state" in
   *)
     echo "submit: compare job $cid ended $state ($reason)." >&2
     if [ ${#arrays[@]} -gt 0 ]; then
+      # Let the other render tasks finish, so that a re-run does not submit
+      # jobs that are still running.
+      ids=$(IFS=,; echo "${arrays[*]}")
+      while [ -n "$(squeue -h -j "$ids" --states=PENDING,RUNNING,SUSPENDED,COMPLETING,CONFIGURING -o %i 2>/dev/null)" ]; do
+        sleep 2
+      done
       echo "  A render task failed or was cancelled, so the report was not made. Failed renders:" >&2
       grep -l '"error"' "$out"/*/*.job.json 2>/dev/null | sed 's/^/    /' >&2 || true
       echo "  Logs: $out/slurm/render-<array>_<task>.log. Fix the cause, then run the same" >&2

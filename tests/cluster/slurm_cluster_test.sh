@@ -14,9 +14,9 @@
 #     both; both must exit alike with 0 or 1 (2, an error, fails the test),
 #     and tests/cluster/compare_runs.py must find results.json and
 #     report.html equal except the timing figures;
-#  3. submits the same scenes with a stand-in `povray` that fails: the
-#     submission must end in an error (the compare job is cancelled, no
-#     results.json); then submits again with the real POV-Ray: only the
+#  3. submits the same scenes with a stand-in `povray` that fails, as
+#     three arrays (--max-array-size 4): the submission must end in an
+#     error (the compare job is cancelled, no results.json); then submits again with the real POV-Ray: only the
 #     three POV-Ray jobs may be submitted, the other records must be
 #     untouched, and the results must again equal the local run's.
 # Wall times go to WORK_DIR/timings.txt and the output.
@@ -73,10 +73,15 @@ mkdir -p "$work/fakebin"
 printf '#!/bin/sh\necho "stand-in povray: failing on purpose" >&2\nexit 3\n' > "$work/fakebin/povray"
 chmod +x "$work/fakebin/povray"
 set +e
-PATH="$work/fakebin:$PATH" "${submit[@]}" -o "$work/resume" -- "${scenes[@]}"
+# At most 4 jobs per array: 9 jobs go as three arrays (offsets 0, 4, 8).
+PATH="$work/fakebin:$PATH" "${submit[@]}" --max-array-size 4 -o "$work/resume" -- "${scenes[@]}"
 rc=$?
 set -e
 [ "$rc" -eq 2 ] || fail "a failing povray: submit --wait exit $rc, expected 2 (an error)"
+arrays=$(grep '^render array' "$work/resume/slurm/submitted.log" | sed 's/^render array [0-9]*: //')
+[ "$arrays" = $'plan jobs 0-3 (offset 0), at most 16 at once\nplan jobs 0-3 (offset 4), at most 16 at once\nplan jobs 0 (offset 8), at most 16 at once' ] ||
+  fail "with --max-array-size 4, expected arrays 0-3 (offset 0), 0-3 (offset 4), 0 (offset 8); submitted: $arrays"
+[ "$(find "$work/resume/slurm" -name 'render-*.log' | wc -l)" -eq 9 ] || fail "expected 9 render task logs from the three arrays"
 [ ! -e "$work/resume/results.json" ] || fail "a failing render task still produced results.json"
 for s in "${scenes[@]}"; do
   name=$(basename "$s" .json)
