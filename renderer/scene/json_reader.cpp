@@ -29,10 +29,233 @@ std::string Range::describe() const {
   return s.str();
 }
 
-std::string describeJson(const json& v) {
-  std::string s = v.dump();
-  if (s.size() > 80) s = s.substr(0, 77) + "...";
+namespace {
+
+// dump() that replaces invalid UTF-8 (a path from the command line or the
+// file system may hold any bytes) instead of throwing.
+template <class BasicJson>
+std::string dumpLenient(const BasicJson& v) {
+  return v.dump(-1, ' ', false, BasicJson::error_handler_t::replace);
+}
+
+// Appends v as compact JSON (as dump() writes it) until `out` is longer
+// than `budget`; containers are entered only while there is budget left,
+// so neither the depth nor the size of v matters.
+template <class BasicJson>
+void appendBrief(const BasicJson& v, std::string& out, size_t budget) {
+  if (out.size() > budget) return;
+  if (v.is_object()) {
+    out += '{';
+    bool first = true;
+    for (auto it = v.begin(); it != v.end() && out.size() <= budget; ++it) {
+      if (!first) out += ',';
+      first = false;
+      out += dumpLenient(BasicJson(it.key()));
+      out += ':';
+      appendBrief(it.value(), out, budget);
+    }
+    out += '}';
+  } else if (v.is_array()) {
+    out += '[';
+    bool first = true;
+    for (auto it = v.begin(); it != v.end() && out.size() <= budget; ++it) {
+      if (!first) out += ',';
+      first = false;
+      appendBrief(*it, out, budget);
+    }
+    out += ']';
+  } else if (v.is_string()) {
+    // A long string is cut before it is escaped (dump() is linear anyway,
+    // but a 60 MB string need not be copied for an 80-character message).
+    const auto& str = v.template get_ref<const std::string&>();
+    std::string head = str.substr(0, budget + 1);
+    // Do not cut a UTF-8 sequence in two (dump() would throw on it).
+    if (head.size() < str.size())
+      while (!head.empty() && (static_cast<unsigned char>(head.back()) & 0xC0) == 0x80) head.pop_back();
+    if (head.size() < str.size() && !head.empty() && (static_cast<unsigned char>(head.back()) & 0x80))
+      head.pop_back();
+    out += dumpLenient(BasicJson(head));
+  } else {
+    out += v.dump();
+  }
+}
+
+template <class BasicJson>
+std::string describeBrief(const BasicJson& v) {
+  std::string s;
+  appendBrief(v, s, 80);
+  if (s.size() > 80) {
+    s.resize(77);
+    // Keep the text valid UTF-8: drop a cut multi-byte sequence.
+    size_t cut = s.size();
+    while (cut > 0 && (static_cast<unsigned char>(s[cut - 1]) & 0xC0) == 0x80) --cut;
+    if (cut > 0 && (static_cast<unsigned char>(s[cut - 1]) & 0x80)) s.resize(cut - 1);
+    s += "...";
+  }
   return s;
+}
+
+}  // namespace
+
+std::string describeJson(const json& v) { return describeBrief(v); }
+std::string describeJson(const nlohmann::ordered_json& v) { return describeBrief(v); }
+
+namespace {
+
+// Builds the document like nlohmann's own DOM parser, and also knows where
+// it is (the field path), so that every error can name the field.
+template <class BasicJson>
+class CheckedSax {
+ public:
+  CheckedSax(const std::string& text, const std::string& file) : text_(text), file_(file) {}
+
+  BasicJson result;
+
+  bool null() { put(BasicJson(nullptr)); return true; }
+  bool boolean(bool b) { put(BasicJson(b)); return true; }
+  bool number_integer(typename BasicJson::number_integer_t i) { put(BasicJson(i)); return true; }
+  bool number_unsigned(typename BasicJson::number_unsigned_t u) { put(BasicJson(u)); return true; }
+  bool number_float(typename BasicJson::number_float_t d, const std::string&) {
+    put(BasicJson(d));
+    return true;
+  }
+  bool string(std::string& s) { put(BasicJson(std::move(s))); return true; }
+  bool binary(typename BasicJson::binary_t& b) { put(BasicJson::binary(b)); return true; }
+
+  bool start_object(std::size_t) {
+    BasicJson* o = put(BasicJson::object());
+    open(o, false);
+    return true;
+  }
+  bool key(std::string& k) {
+    Frame& f = stack_.back();
+    const bool duplicate = f.value->contains(k);
+    f.key = std::move(k);
+    if (duplicate)
+      fail(path(), "duplicate field " + BasicJson(f.key).dump() +
+                       " (a field may appear only once in an object)");
+    return true;
+  }
+  bool end_object() {
+    stack_.pop_back();
+    return true;
+  }
+  bool start_array(std::size_t) {
+    BasicJson* a = put(BasicJson::array());
+    open(a, true);
+    return true;
+  }
+  bool end_array() {
+    stack_.pop_back();
+    return true;
+  }
+
+  template <class Exception>
+  bool parse_error(std::size_t position, const std::string& last_token, const Exception& ex) {
+    std::string where = lineColumn(position);
+    if (ex.id == 406) {
+      // The only out_of_range error the parser raises: a number that does
+      // not fit a double.
+      fail(path(), "number " + last_token + " is too large for a double (" + where +
+                       "); expected a finite number");
+    }
+    std::string what = ex.what();
+    fail(path(), what + (what.find("line ") == std::string::npos ? " (" + where + ")" : "") +
+                     "; the text there: " + textAt(position));
+  }
+
+ private:
+  struct Frame {
+    BasicJson* value;
+    bool is_array;
+    std::string key;
+  };
+
+  void open(BasicJson* container, bool is_array) {
+    if (int(stack_.size()) >= kMaxJsonDepth)
+      fail(path(), "arrays and objects nested deeper than " + std::to_string(kMaxJsonDepth) +
+                       " levels");
+    stack_.push_back({container, is_array, {}});
+  }
+
+  BasicJson* put(BasicJson&& v) {
+    if (stack_.empty()) {
+      result = std::move(v);
+      return &result;
+    }
+    Frame& f = stack_.back();
+    if (f.is_array) {
+      f.value->push_back(std::move(v));
+      return &f.value->back();
+    }
+    BasicJson& slot = (*f.value)[f.key];
+    slot = std::move(v);
+    return &slot;
+  }
+
+  // The field being read: the current key of each open object, the index
+  // of the element being read in each open array.
+  std::string path() const {
+    std::string p;
+    for (size_t i = 0; i < stack_.size(); ++i) {
+      const Frame& f = stack_[i];
+      const bool inner = i + 1 < stack_.size();  // a child container is open
+      if (f.is_array) {
+        const size_t n = f.value->size();
+        p += "[" + std::to_string(inner ? n - 1 : n) + "]";
+      } else if (inner || !f.key.empty()) {
+        p += (p.empty() ? "" : ".") + f.key;
+      }
+    }
+    return p;
+  }
+
+  std::string lineColumn(std::size_t position) const {
+    position = std::min(position, text_.size());
+    size_t line = 1, col = 1;
+    for (size_t i = 0; i + 1 < position; ++i) {
+      if (text_[i] == '\n') ++line, col = 1;
+      else ++col;
+    }
+    return "line " + std::to_string(line) + ", column " + std::to_string(col);
+  }
+
+  // Up to 24 bytes of the text from the character the parser stopped at,
+  // on one line, as a JSON string (invalid UTF-8 replaced).
+  std::string textAt(std::size_t position) const {
+    size_t start = std::min(position > 0 ? position - 1 : 0, text_.size());
+    std::string s = text_.substr(start, 24);
+    s = s.substr(0, s.find('\n'));
+    return dumpLenient(BasicJson(s));
+  }
+
+  [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
+    throw SceneError(file_ + ": not valid JSON" + (field.empty() ? "" : " in field " + field) +
+                     ": " + problem);
+  }
+
+  const std::string& text_;
+  const std::string& file_;
+  std::vector<Frame> stack_;
+};
+
+template <class BasicJson>
+BasicJson parseChecked(const std::string& text, const std::string& file) {
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+    throw SceneError(file + ": (top level): the file is empty; expected a JSON object");
+  CheckedSax<BasicJson> sax(text, file);
+  BasicJson::sax_parse(text, &sax);
+  return std::move(sax.result);
+}
+
+}  // namespace
+
+json parseJsonText(const std::string& text, const std::string& file) {
+  return parseChecked<json>(text, file);
+}
+
+nlohmann::ordered_json parseOrderedJsonText(const std::string& text, const std::string& file) {
+  return parseChecked<nlohmann::ordered_json>(text, file);
 }
 
 JsonReader::JsonReader(const json& value, std::string path, std::string file)

@@ -83,7 +83,20 @@ class JsonReader {
   std::set<std::string, std::less<>> known_;
 };
 
-// A short, printable rendering of a JSON value for error messages.
+// A short, printable rendering of a JSON value for error messages (at most
+// 80 characters; never walks more of the value than it prints).
 std::string describeJson(const nlohmann::json& v);
+std::string describeJson(const nlohmann::ordered_json& v);
+
+// Deepest accepted nesting of arrays and objects (a scene file needs 5).
+inline constexpr int kMaxJsonDepth = 64;
+
+// Parses JSON text as a scene or spec file. Beyond the JSON grammar it
+// refuses, as a SceneError naming `file`, the field path where the problem
+// is, and the offending text: a duplicated key in one object, nesting
+// deeper than kMaxJsonDepth, and a number too large for a double (1e400).
+// Syntax errors carry the line and column.
+nlohmann::json parseJsonText(const std::string& text, const std::string& file);
+nlohmann::ordered_json parseOrderedJsonText(const std::string& text, const std::string& file);
 
 }  // namespace xval

@@ -1,5 +1,6 @@
 #include "scene/scene_generator.h"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -17,36 +18,95 @@ struct Axis {
   std::vector<std::pair<std::string, J>> values;  // value name -> {pointer: fragment}
 };
 
-std::string substitute(std::string tmpl, const std::vector<std::pair<std::string, std::string>>& vars,
+std::string substitute(const std::string& tmpl,
+                       const std::vector<std::pair<std::string, std::string>>& vars,
                        const std::string& file) {
-  for (const auto& [k, v] : vars) {
-    const std::string key = "{" + k + "}";
-    for (size_t at = tmpl.find(key); at != std::string::npos; at = tmpl.find(key, at + v.size()))
-      tmpl.replace(at, key.size(), v);
+  // One pass over the template: each {axis} is replaced by the value's
+  // name; the result is checked as it grows (it becomes a file name).
+  std::string out;
+  for (size_t at = 0; at < tmpl.size();) {
+    const size_t open = tmpl.find('{', at);
+    out.append(tmpl, at, open == std::string::npos ? std::string::npos : open - at);
+    if (open == std::string::npos) break;
+    const size_t close = tmpl.find('}', open);
+    const std::string axis =
+        close == std::string::npos ? std::string() : tmpl.substr(open + 1, close - open - 1);
+    auto v = std::find_if(vars.begin(), vars.end(), [&](const auto& kv) { return kv.first == axis; });
+    if (close == std::string::npos || v == vars.end())
+      throw SceneError(file + ": name: template " + describeJson(J(tmpl)) +
+                       " names an axis that does not exist");
+    out += v->second;
+    if (out.size() > kMaxSceneNameBytes)
+      throw SceneError(file + ": name: template " + describeJson(J(tmpl)) + " gives a name longer than " +
+                       std::to_string(kMaxSceneNameBytes) + " bytes");
+    at = close + 1;
   }
-  if (tmpl.find('{') != std::string::npos)
-    throw SceneError(file + ": name: template " + J(tmpl).dump() + " names an axis that does not exist");
-  for (char c : tmpl)
+  const std::string& tmpl_out = out;
+  for (char c : tmpl_out)
     if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.'))
-      throw SceneError(file + ": name: generated name " + J(tmpl).dump() +
+      throw SceneError(file + ": name: generated name " + describeJson(J(tmpl_out)) +
                        " must use only letters, digits, '_', '-' and '.' (it becomes a file name)");
-  return tmpl;
+  return out;
+}
+
+// Applies one patch. The pointer may reach at most kMaxJsonDepth deep and
+// may extend an array by one element at most ("/lights/1" on a one-light
+// array, or "/lights/-"): "/lights/99999999" would otherwise allocate a
+// hundred million nulls.
+void applyPatch(J& scene, const std::string& pointer, const J& value, const std::string& where) {
+  J::json_pointer ptr(pointer);  // throws on bad syntax
+  std::vector<std::string> tokens;
+  for (J::json_pointer p = ptr; !p.empty(); p.pop_back()) {
+    tokens.push_back(p.back());
+    if (tokens.size() > size_t(kMaxJsonDepth))
+      throw SceneError(where + ": JSON pointer deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+  }
+  std::reverse(tokens.begin(), tokens.end());
+  const J* cur = &scene;
+  for (const std::string& t : tokens) {
+    const bool numeric = !t.empty() && t.find_first_not_of("0123456789") == std::string::npos;
+    const size_t size = cur && cur->is_array() ? cur->size() : 0;
+    const bool creates_array = !cur || cur->is_null();
+    if ((cur && cur->is_array()) || (creates_array && numeric)) {
+      if (t != "-" && numeric && (t.size() > 9 || std::stoul(t) > size))
+        throw SceneError(where + ": " + describeJson(J(pointer)) + ": index " + t +
+                         " is past the end of the array (size " + std::to_string(size) +
+                         "; an index may add one element)");
+    }
+    if (!cur || !cur->is_structured()) {
+      cur = nullptr;  // created from here on (or an error the pointer reports)
+    } else if (cur->is_object()) {
+      auto it = cur->find(t);
+      cur = it == cur->end() ? nullptr : &*it;
+    } else {
+      cur = numeric && t.size() <= 9 && std::stoul(t) < cur->size() ? &(*cur)[std::stoul(t)] : nullptr;
+    }
+  }
+  scene[ptr] = value;
 }
 
 }  // namespace
 
 std::vector<GeneratedScene> generateScenes(const std::filesystem::path& spec_file) {
   const std::string file = spec_file.string();
-  std::ifstream in(spec_file);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(spec_file, ec))
+    throw SceneError(file + ": generator spec does not exist or is not a regular file");
+  const auto bytes = std::filesystem::file_size(spec_file, ec);
+  if (!ec && bytes > std::uintmax_t(kMaxSceneFileBytes))
+    throw SceneError(file + ": the generator spec is " + std::to_string(bytes) +
+                     " bytes; the limit is " + std::to_string(kMaxSceneFileBytes));
+  std::ifstream in(spec_file, std::ios::binary);
   if (!in) throw SceneError(file + ": cannot open the generator spec");
   std::stringstream ss;
   ss << in.rdbuf();
-  J spec;
-  try {
-    spec = J::parse(ss.str());
-  } catch (const J::exception& e) {
-    throw SceneError(file + ": not valid JSON: " + e.what());
-  }
+  return generateScenesFromText(ss.str(), spec_file);
+}
+
+std::vector<GeneratedScene> generateScenesFromText(const std::string& text,
+                                                   const std::filesystem::path& spec_file) {
+  const std::string file = spec_file.string();
+  J spec = parseOrderedJsonText(text, file);
   if (!spec.is_object()) throw SceneError(file + ": expected a JSON object");
   for (auto it = spec.begin(); it != spec.end(); ++it)
     if (it.key() != "format" && it.key() != "base" && it.key() != "axes" && it.key() != "name" &&
@@ -76,6 +136,13 @@ std::vector<GeneratedScene> generateScenes(const std::filesystem::path& spec_fil
     }
     axes.push_back(std::move(axis));
   }
+  size_t combinations = 1;
+  for (const auto& a : axes) {
+    combinations *= a.values.size();
+    if (combinations > kMaxGeneratedScenes)
+      throw SceneError(file + ": axes: more than " + std::to_string(kMaxGeneratedScenes) +
+                       " combinations (the product of the axes' value counts)");
+  }
 
   std::vector<GeneratedScene> out;
   std::vector<size_t> idx(axes.size(), 0);
@@ -89,7 +156,8 @@ std::vector<GeneratedScene> generateScenes(const std::filesystem::path& spec_fil
       combo += (combo.empty() ? "" : ", ") + axes[a].name + "=" + value_name;
       for (auto p = patches.begin(); p != patches.end(); ++p) {
         try {
-          scene[J::json_pointer(p.key())] = p.value();
+          applyPatch(scene, p.key(), p.value(),
+                     file + ": axes[" + std::to_string(a) + "].values." + value_name);
         } catch (const J::exception& e) {
           throw SceneError(file + ": axes[" + std::to_string(a) + "].values." + value_name + ": " +
                            J(p.key()).dump() + " is not a usable JSON pointer: " + e.what());

@@ -35,6 +35,14 @@ struct GeneratedScene {
   nlohmann::ordered_json json;  // the scene file's content
 };
 
+// At most this many combinations (scenes) per spec.
+inline constexpr size_t kMaxGeneratedScenes = 10000;
+
 std::vector<GeneratedScene> generateScenes(const std::filesystem::path& spec_file);
+
+// Same, from the spec's text already in memory; `spec_file` names it in
+// messages, and relative texture paths resolve against its folder.
+std::vector<GeneratedScene> generateScenesFromText(const std::string& text,
+                                                   const std::filesystem::path& spec_file);
 
 }  // namespace xval

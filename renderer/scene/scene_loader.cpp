@@ -1,5 +1,7 @@
 #include "scene/scene_loader.h"
 
+#include <OpenImageIO/imageio.h>
+
 #include <cmath>
 #include <fstream>
 #include <numeric>
@@ -177,6 +179,40 @@ LightingModel readModel(JsonReader r) {
   return out;
 }
 
+// A path for a message: as a JSON string (quotes and control characters
+// escaped, invalid UTF-8 replaced), at most 400 bytes of it.
+std::string quotedPath(const std::string& p) {
+  const size_t max = 400;
+  std::string q = json(p.substr(0, max)).dump(-1, ' ', false, json::error_handler_t::replace);
+  return p.size() > max ? q + "..." : q;
+}
+
+// Opens the image's header (no pixels are read) and checks that the
+// texture reader (texture/texture_io.cpp) will accept it.
+void checkTextureImage(JsonReader& r, const std::filesystem::path& file, const std::string& quoted) {
+  namespace OIIO = OIIO_NAMESPACE;
+  auto in = OIIO::ImageInput::open(file.string());
+  if (!in) {
+    std::string why = OIIO::geterror();
+    r.fail("path", "texture file " + quoted + " is not an image OpenImageIO can read" +
+                       (why.empty() ? std::string() : ": " + why));
+  }
+  const OIIO::ImageSpec& spec = in->spec();
+  const std::string size = std::to_string(spec.width) + "x" + std::to_string(spec.height);
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+    r.fail("path", "texture file " + quoted + " has no pixels (" + size + ", " +
+                       std::to_string(spec.nchannels) + " channels)");
+  if (spec.depth != 1)
+    r.fail("path", "texture file " + quoted + " is a volume (depth " + std::to_string(spec.depth) +
+                       "); expected a 2D image");
+  if (spec.width > kMaxTextureSide || spec.height > kMaxTextureSide ||
+      (long long)spec.width * spec.height > kMaxTexturePixels)
+    r.fail("path", "texture file " + quoted + " is " + size + "; the limit is " +
+                       std::to_string(kMaxTextureSide) + " on a side and " +
+                       std::to_string(kMaxTexturePixels) + " texels in all");
+  in->close();
+}
+
 TextureSpec readTexture(JsonReader r, const std::filesystem::path& scene_dir) {
   TextureSpec t;
   std::string source = r.requireChoice("source", {"brick", "image"});
@@ -186,14 +222,19 @@ TextureSpec readTexture(JsonReader r, const std::filesystem::path& scene_dir) {
     t.source = TextureSpec::Source::Image;
     std::string p = r.requireString("path");
     if (p.empty()) r.fail("path", "expected a file path, got \"\"");
+    // A NUL would end the path early in every system call.
+    if (p.find('\0') != std::string::npos)
+      r.fail("path", "a file path cannot contain a NUL character, got " + describeJson(json(p)));
     t.path = std::filesystem::path(p).is_absolute() ? std::filesystem::path(p)
                                                     : scene_dir / p;
+    const std::string quoted = quotedPath(t.path.string());
     std::error_code ec;
     if (!std::filesystem::is_regular_file(t.path, ec))
-      r.fail("path", "texture file " + json(t.path.string()).dump() +
-                         " does not exist or is not a regular file");
+      r.fail("path", "texture file " + quoted + " does not exist or is not a regular file");
     std::ifstream probe(t.path, std::ios::binary);
-    if (!probe) r.fail("path", "texture file " + json(t.path.string()).dump() + " is not readable");
+    if (!probe) r.fail("path", "texture file " + quoted + " is not readable");
+    probe.close();
+    checkTextureImage(r, t.path, quoted);
   } else {
     t.source = TextureSpec::Source::Brick;
   }
@@ -240,7 +281,7 @@ std::vector<DeclaredTolerance> readTolerances(JsonReader& r) {
     d.reason = t->requireString("reason");
     if (d.reason.size() < 20)
       t->fail("reason", "a declared tolerance needs a written reason (at least a sentence), got " +
-                            describeJson(d.reason));
+                            describeJson(json(d.reason)));
     t->finish();
     out.push_back(d);
   }
@@ -248,20 +289,33 @@ std::vector<DeclaredTolerance> readTolerances(JsonReader& r) {
   return out;
 }
 
+// The name becomes a folder under the output folder (`xval validate`
+// writes DIR/NAME/...): it must be one path component.
+void checkSceneName(JsonReader& r, const std::string& name) {
+  const std::string got = describeJson(json(name));
+  const char* from = r.has("name") ? "" : " (from the file name; set \"name\")";
+  if (name.empty() || name == "." || name == "..")
+    r.fail("name", std::string("expected a name usable as a folder name, got ") + got + from);
+  if (name.find('/') != std::string::npos || name.find('\0') != std::string::npos)
+    r.fail("name", std::string("expected a name without '/' or NUL (it becomes a folder name), got ") +
+                       got + from);
+  try {
+    (void)json(name).dump();  // throws on invalid UTF-8 (only a file name can hold it)
+  } catch (const json::type_error&) {
+    r.fail("name", std::string("expected UTF-8 text, got ") + got + from);
+  }
+  if (name.size() > kMaxSceneNameBytes)
+    r.fail("name", "expected at most " + std::to_string(kMaxSceneNameBytes) + " bytes, got " +
+                       std::to_string(name.size()) + " bytes: " + got + from);
+}
+
 }  // namespace
 
 Scene parseScene(const std::string& text, const std::filesystem::path& file) {
   const std::string fname = file.string();
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::parse_error& e) {
-    // e.what() carries the byte offset and what was expected.
-    throw SceneError(fname + ": not valid JSON: " + e.what());
-  } catch (const json::exception& e) {
-    // e.g. a number too large for a double ("number overflow parsing '1e999'").
-    throw SceneError(fname + ": not valid JSON: " + e.what());
-  }
+  // Syntax errors, duplicate keys, absurd nesting and numbers beyond a
+  // double are SceneErrors naming the field (json_reader.h).
+  json doc = parseJsonText(text, fname);
   JsonReader r(doc, "", fname);
   Scene s;
   s.source_file = file;
@@ -269,6 +323,7 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file) {
   if (format != "xval-scene/1")
     r.failValue("format", "\"xval-scene/1\" (the only version this build reads)");
   s.name = r.string("name", file.stem().string());
+  checkSceneName(r, s.name);
   s.camera = readCamera(r.requireObject("camera"));
   auto objects = r.objectArray("objects", true);
   if (objects.empty()) r.fail("objects", "expected at least one object, got []");
@@ -289,6 +344,10 @@ Scene loadScene(const std::filesystem::path& file) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec))
     throw SceneError(file.string() + ": scene file does not exist or is not a regular file");
+  const auto bytes = std::filesystem::file_size(file, ec);
+  if (!ec && bytes > std::uintmax_t(kMaxSceneFileBytes))
+    throw SceneError(file.string() + ": (top level): the scene file is " + std::to_string(bytes) +
+                     " bytes; the limit is " + std::to_string(kMaxSceneFileBytes));
   std::ifstream in(file, std::ios::binary);
   if (!in) throw SceneError(file.string() + ": cannot open scene file for reading");
   std::ostringstream ss;

@@ -24,5 +24,14 @@ inline constexpr int kMaxImageSide = 16384;
 inline constexpr long long kMaxImagePixels = 64ll * 1024 * 1024;
 inline constexpr int kMaxSpp = 256;
 inline constexpr long long kMaxMeshVertices = 16ll * 1024 * 1024;
+// A scene file larger than this is refused before it is read.
+inline constexpr long long kMaxSceneFileBytes = 64ll * 1024 * 1024;
+// Texture images: the header is checked against these when the scene is
+// loaded (and again when the image is read), before any pixel is allocated.
+inline constexpr int kMaxTextureSide = 16384;
+inline constexpr long long kMaxTexturePixels = 16ll * 1024 * 1024;
+// Scene names become folder names (`xval validate` writes DIR/NAME/): at
+// most this many bytes, no '/', no NUL, not "." or "..".
+inline constexpr size_t kMaxSceneNameBytes = 200;
 
 }  // namespace xval

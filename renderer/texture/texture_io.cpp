@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 
+#include "scene/scene_loader.h"
 #include "texture/brick.h"
 #include "texture/texture.h"
 
@@ -16,16 +17,25 @@ Texture loadTextureImage(const std::filesystem::path& file) {
     throw std::runtime_error(file.string() + ": cannot read texture image: " +
                              OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
+  // The header is checked before anything is allocated (the scene loader
+  // checked it too; the file may have changed since).
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
     throw std::runtime_error(file.string() + ": texture image has no pixels");
-  if (spec.width > 16384 || spec.height > 16384)
+  if (spec.depth != 1)
+    throw std::runtime_error(file.string() + ": texture image is a volume (depth " +
+                             std::to_string(spec.depth) + "); expected a 2D image");
+  if (spec.width > kMaxTextureSide || spec.height > kMaxTextureSide ||
+      (long long)spec.width * spec.height > kMaxTexturePixels)
     throw std::runtime_error(file.string() + ": texture image is " + std::to_string(spec.width) +
-                             "x" + std::to_string(spec.height) +
-                             ", larger than the 16384x16384 limit");
+                             "x" + std::to_string(spec.height) + "; the limit is " +
+                             std::to_string(kMaxTextureSide) + " on a side and " +
+                             std::to_string(kMaxTexturePixels) + " texels in all");
   Texture t;
   t.width = spec.width;
   t.height = spec.height;
-  const int nc = spec.nchannels;
+  // Only the channels used are read: R, G, B, or the one grey channel
+  // (alpha and any further channels are dropped).
+  const int nc = spec.nchannels >= 3 ? 3 : 1;
   const bool is8 = spec.format == OIIO::TypeDesc::UINT8;
   std::vector<float> px(size_t(t.width) * t.height * nc);
   // OIIO converts integer formats to float as code/(2^bits - 1), exactly
@@ -42,7 +52,7 @@ Texture loadTextureImage(const std::filesystem::path& file) {
   if (is8) t.rgb8.resize(t.rgb.size());
   for (size_t i = 0; i < size_t(t.width) * t.height; ++i) {
     for (int c = 0; c < 3; ++c) {
-      int sc = nc >= 3 ? c : 0;  // grey (and grey+alpha) replicate
+      int sc = nc == 3 ? c : 0;  // grey (and grey+alpha) replicate
       t.rgb[i * 3 + c] = px[i * nc + sc];
       if (is8) t.rgb8[i * 3 + c] = px8[i * nc + sc];
     }

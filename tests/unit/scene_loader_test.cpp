@@ -8,6 +8,8 @@
 #include "scene/scene_loader.h"
 #include "scene/scene_writer.h"
 #include "scene/scene_generator.h"
+#include "texture/brick.h"
+#include "texture/texture.h"
 
 #include <sstream>
 
@@ -176,7 +178,7 @@ TEST(SceneLoader, MissingFileAndRelativeTexturePath) {
   EXPECT_THROW(loadScene("/no/such/scene.json"), SceneError);
   auto dir = std::filesystem::temp_directory_path() / "xval_loader_test";
   std::filesystem::create_directories(dir);
-  { std::ofstream(dir / "tex.png") << "not really a png"; }
+  writeTexturePng(makeBrickTexture(), dir / "tex.png");  // the loader checks the header
   std::string text = kValid;
   text.replace(text.find("{\"type\": \"classic_phong\"}}"), 26,
                "{\"type\": \"classic_phong\"}, \"texture\": {\"source\": \"image\", \"path\": \"tex.png\"}}");
