@@ -7,6 +7,8 @@ set -euo pipefail
 packages=(
   # build
   build-essential cmake pkg-config
+  # the sanitizer build and the fuzz targets (docs/robustness.md)
+  clang libclang-rt-14-dev
   # libraries
   libopenimageio-dev openimageio-tools libglm-dev nlohmann-json3-dev libcli11-dev
   libtinygltf-dev libembree-dev libgtest-dev libgmock-dev libbenchmark-dev

@@ -3,9 +3,21 @@
 # build, and run the default test set: CTest labels `unit` and `cross`
 # (the cross-renderer tests need POV-Ray and Blender, which the install
 # step provides; a missing renderer fails them).
+#
+# Then the robustness checks (docs/robustness.md): the unit tests again,
+# built with clang under AddressSanitizer and UndefinedBehaviorSanitizer
+# in build-asan/, and a short fixed-seed run of each fuzz target (label
+# `fuzz`). Both parts always run; the exit status is non-zero if either
+# failed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/build.sh
-cd build
-ctest -L "unit|cross" --output-on-failure -j"$(nproc)"
+status=0
+(cd build && ctest -L "unit|cross" --output-on-failure -j"$(nproc)") || status=1
+
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
+  -DXVAL_SANITIZE=ON -DXVAL_FUZZ=ON
+cmake --build build-asan -j"$(nproc)" --target xval_unit_tests xval xval_fuzz_scene xval_fuzz_spec
+(cd build-asan && ctest -L "unit|fuzz" --output-on-failure -j"$(nproc)") || status=1
+exit $status
