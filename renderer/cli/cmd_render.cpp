@@ -17,7 +17,8 @@ struct RenderArgs {
   int spp = 0;
   std::string precision;
   int threads = 0;
-  bool quiet = false;
+  bool quiet = false, no_diagnostics = false;
+  std::string visibility = "auto";
   std::string renderer = "reference";
   std::string work_dir;
   double timeout = kDefaultToolTimeoutSeconds;
@@ -39,9 +40,17 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
                   "filter); default: the scene's render.spp")
       ->check(CLI::Range(1, 256));
   cmd->add_option("--precision", args->precision,
-                  "float (Embree single-precision intersection and float shading) or double "
-                  "(exact reference path); default: the scene's render.precision")
+                  "float (the fast path: float shading, visibility rasterised or traced as Embree "
+                  "float packets) or double (the exact reference path: double-precision "
+                  "watertight ray test and shading); default: the scene's render.precision")
       ->check(CLI::IsMember({"float", "double"}));
+  cmd->add_option("--visibility", args->visibility,
+                  "float path only: auto (rasterise when the whole scene is in front of the "
+                  "camera, else Embree packets; default) or rays (always Embree packets)")
+      ->check(CLI::IsMember({"auto", "rays"}));
+  cmd->add_flag("--no-diagnostics", args->no_diagnostics,
+                "Do not compute the EXR's diagnostic channels (raw, Z, backfacing, incidence, "
+                "albedo)");
   cmd->add_option("--threads", args->threads, "Worker threads (default: all hardware threads)")
       ->check(CLI::Range(1, 1024));
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr");
@@ -71,6 +80,11 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
         opt.precision = args->precision == "float" ? Precision::Float : Precision::Double;
       opt.threads = args->threads;
       opt.progress = !args->quiet;
+      opt.diagnostics = !args->no_diagnostics;
+      if (args->visibility != "auto" && opt.precision != Precision::Float)
+        throw std::runtime_error("--visibility " + args->visibility +
+                                 ": applies to the float path only (--precision float)");
+      opt.rasterise = args->visibility == "auto";
       if (args->renderer != "reference") {
         if (args->spp || !args->precision.empty())
           throw std::runtime_error("--spp and --precision apply to the reference renderer only");
@@ -93,9 +107,11 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
       Image img = renderScene(scene, opt, &stats);
       writeImage(img, args->output);
       if (!args->quiet)
-        std::fprintf(stderr, "xval render: wrote %s (%dx%d, %d spp, %s): setup %.3f s, trace %.3f s\n",
-                     args->output.c_str(), img.width, img.height, opt.spp,
-                     toString(opt.precision), stats.setup_seconds, stats.trace_seconds);
+        std::fprintf(stderr,
+                     "xval render: wrote %s (%dx%d, %d spp, %s, visibility: %s): setup %.3f s, "
+                     "frame %.3f s\n",
+                     args->output.c_str(), img.width, img.height, opt.spp, toString(opt.precision),
+                     stats.visibility, stats.setup_seconds, stats.trace_seconds);
       return 0;
     };
   });

@@ -8,11 +8,13 @@
 #include <optional>
 #include <stdexcept>
 #include <thread>
+#include <type_traits>
 #include <variant>
 
 #include "camera/camera.h"
 #include "geometry/mesh.h"
 #include "render/accel.h"
+#include "render/raster.h"
 #include "shading/shader.h"
 #include "shading/surface_colour.h"
 #include "texture/texture.h"
@@ -34,6 +36,7 @@ double secondsSince(Clock::time_point t0) {
 }
 
 constexpr int kTile = 8;  // tile side in pixels; a multiple of kPacketSide
+constexpr int kBand = 8;  // rows per band of the rasterised path
 static_assert(kTile % Accel::kPacketSide == 0);
 
 // A mesh's attributes converted once to the working precision T.
@@ -46,11 +49,11 @@ template <class T> struct ShadedMesh {
 
 template <class T>
 ShadedMesh<T> prepareMesh(const TriangleMesh& m, ShadingMode mode, const Shader<T>& shader,
-                          const SurfaceColour<T>& colour, glm::vec<3, T> eye) {
+                          const SurfaceColour<T>& colour, glm::dvec3 eye) {
   ShadedMesh<T> s;
   s.src = &m;
   s.p.reserve(m.positions.size());
-  for (auto& v : m.positions) s.p.emplace_back(v);
+  for (auto& v : m.positions) s.p.emplace_back(v - eye);  // camera-relative (Shading)
   for (auto& v : m.normals) s.n.emplace_back(v);
   for (auto& v : m.uvs) s.uv.emplace_back(v);
   if (mode == ShadingMode::Flat) {
@@ -68,6 +71,18 @@ ShadedMesh<T> prepareMesh(const TriangleMesh& m, ShadingMode mode, const Shader<
   return s;
 }
 
+// The hit's texture coordinate, wrapped: frac(uv0) + b1 (uv1 - uv0) +
+// b2 (uv2 - uv0). Mathematically b0 uv0 + b1 uv1 + b2 uv2 up to a whole
+// number of texture repeats, which the wrap ignores; numerically its
+// magnitude stays ~1 instead of reaching the repeat count (12 along the
+// paper's knot), so in float the lookup moves by ~1 ulp of 1 (3e-5 of a
+// 512-texel texture) instead of ~1 ulp of 12.
+template <class T>
+glm::vec<2, T> interpolateUv(const std::vector<glm::vec<2, T>>& uv, const glm::u32vec3& tri, T b1, T b2) {
+  const glm::vec<2, T> u0 = uv[tri[0]];
+  return (u0 - glm::floor(u0)) + b1 * (uv[tri[1]] - u0) + b2 * (uv[tri[2]] - u0);
+}
+
 // |cos| between a ray and the hit triangle's plane normal.
 double geometricIncidence(const TriangleMesh& m, const glm::u32vec3& t, glm::dvec3 dir) {
   glm::dvec3 g = glm::cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]);
@@ -80,14 +95,19 @@ template <class T> struct Shading {
   using V = glm::vec<3, T>;
   Shader<T> shader;
   SurfaceColour<T> colour;
-  V eye;
+  // Shading coordinates are camera-relative: every position minus the eye,
+  // subtracted in double before the rounding to T (shading/shader.h), so
+  // the eye is the origin and a float surface point keeps float's relative
+  // precision of its distance from the eye wherever the scene is
+  // (docs/extremes.md, offset_1e6).
+  V eye{0};
   std::vector<ShadedMesh<T>> meshes;
 
   Shading(const Scene& scene, const std::vector<TriangleMesh>& src, const Texture* texture)
-      : shader(scene.material, scene.lights),
-        colour(scene.material, texture),
-        eye(CameraRays(scene.camera).origin) {
-    for (const auto& m : src) meshes.push_back(prepareMesh<T>(m, scene.shading, shader, colour, eye));
+      : shader(scene.material, scene.lights, CameraRays(scene.camera).origin),
+        colour(scene.material, texture) {
+    const glm::dvec3 eye_world = CameraRays(scene.camera).origin;
+    for (const auto& m : src) meshes.push_back(prepareMesh<T>(m, scene.shading, shader, colour, eye_world));
   }
 };
 
@@ -170,38 +190,132 @@ void PreparedScene::Impl::renderT(const Shading<T>& sh, const RenderOptions& opt
   auto last_report = t_trace;
 
   // One sample: shade the hit and add it to the pixel's sums.
-  auto addSample = [&](const Hit& h, const glm::dvec3& dir, PixelSums<T>& px) {
-    if (px.hits == 0 || h.t < px.nearest) px.nearest = h.t;
+  // The unsaturated colour of one hit; backfacing is set when the shading
+  // normal faces away from the eye.
+  auto shadeHit = [&](const Hit& h, bool& backfacing) -> V {
     const ShadedMesh<T>& m = sh.meshes[h.mesh];
     const auto& tri = m.src->triangles[h.triangle];
     const T b1 = T(h.b1), b2 = T(h.b2), b0 = T(1) - b1 - b2;
-    if (diag) {
-      px.incidence = std::min(px.incidence, geometricIncidence(*m.src, tri, dir));
-      if (px.hits == 0)
-        px.albedo = sh.colour.at(b0 * m.uv[tri[0]] + b1 * m.uv[tri[1]] + b2 * m.uv[tri[2]]);
-    }
-    V c;
     if (mode == ShadingMode::Gouraud) {
-      c = b0 * m.vertex_colour[tri[0]] + b1 * m.vertex_colour[tri[1]] + b2 * m.vertex_colour[tri[2]];
-    } else {
-      V p = b0 * m.p[tri[0]] + b1 * m.p[tri[1]] + b2 * m.p[tri[2]];
-      V nrm;
-      if (mode == ShadingMode::Flat) {
-        nrm = m.face_n[h.triangle];
-      } else {
-        nrm = b0 * m.n[tri[0]] + b1 * m.n[tri[1]] + b2 * m.n[tri[2]];
-        T len = glm::length(nrm);
-        nrm = len > T(0) ? nrm / len : V(0);  // zero-length normals stay 0
-      }
-      glm::vec<2, T> uv = b0 * m.uv[tri[0]] + b1 * m.uv[tri[1]] + b2 * m.uv[tri[2]];
-      V v = glm::normalize(sh.eye - p);
-      px.backfacing += glm::dot(nrm, v) < T(0);
-      c = sh.shader.shade(p, nrm, v, sh.colour.at(uv));
+      backfacing = false;
+      return b0 * m.vertex_colour[tri[0]] + b1 * m.vertex_colour[tri[1]] + b2 * m.vertex_colour[tri[2]];
     }
+    V p = b0 * m.p[tri[0]] + b1 * m.p[tri[1]] + b2 * m.p[tri[2]];
+    V nrm;
+    if (mode == ShadingMode::Flat) {
+      nrm = m.face_n[h.triangle];
+    } else {
+      nrm = b0 * m.n[tri[0]] + b1 * m.n[tri[1]] + b2 * m.n[tri[2]];
+      T len = glm::length(nrm);
+      nrm = len > T(0) ? nrm / len : V(0);  // zero-length normals stay 0
+    }
+    const glm::vec<2, T> uv = interpolateUv(m.uv, tri, b1, b2);
+    V v = glm::normalize(sh.eye - p);
+    backfacing = glm::dot(nrm, v) < T(0);
+    return sh.shader.shade(p, nrm, v, sh.colour.at(uv));
+  };
+
+  // One sample: shade the hit and add it to the pixel's sums.
+  auto addSample = [&](const Hit& h, const glm::dvec3& dir, PixelSums<T>& px) {
+    if (px.hits == 0 || h.t < px.nearest) px.nearest = h.t;
+    if (diag) {
+      const ShadedMesh<T>& m = sh.meshes[h.mesh];
+      const auto& tri = m.src->triangles[h.triangle];
+      px.incidence = std::min(px.incidence, geometricIncidence(*m.src, tri, dir));
+      if (px.hits == 0) px.albedo = sh.colour.at(interpolateUv(m.uv, tri, T(h.b1), T(h.b2)));
+    }
+    bool back = false;
+    const V c = shadeHit(h, back);
+    px.backfacing += back;
     px.final_sum += models::saturate(c);
     if (diag) px.raw_sum += c;
     ++px.hits;
   };
+
+  // Writes one pixel's box-filtered sums.
+  const T inv = T(1) / T(n * n);
+  auto store = [&](const PixelSums<T>& s, int i, int j) {
+    float* px = img.pixel(i, j);
+    for (int q = 0; q < 3; ++q) px[q] = float(s.final_sum[q] * inv);
+    px[3] = float(T(s.hits) * inv);
+    if (diag) {
+      const size_t at = size_t(j) * W + i;
+      for (int q = 0; q < 3; ++q) img.raw[at * 3 + q] = float(s.raw_sum[q] * inv);
+      img.depth[at] = float(s.nearest);
+      img.backfacing[at] = s.hits ? float(s.backfacing) / float(s.hits) : 0.0f;
+      img.incidence[at] = s.hits ? float(s.incidence) : 0.0f;
+      for (int q = 0; q < 3; ++q) img.albedo[at * 3 + q] = float(s.albedo[q]);
+    }
+  };
+  auto reportProgress = [&](int done, int total) {
+    // At most once a second, from whichever thread gets there.
+    if (opt.progress && progress_lock.try_lock()) {
+      if (secondsSince(last_report) >= 1.0 && done < total) {
+        last_report = Clock::now();
+        double f = double(done) / total, el = secondsSince(t_trace);
+        std::fprintf(stderr, "  render: %5.1f%%  %.1f s elapsed, ~%.1f s left\n", 100.0 * f, el,
+                     el * (1.0 - f) / f);
+      }
+      progress_lock.unlock();
+    }
+  };
+  int threads = opt.threads > 0 ? opt.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+
+  if (std::is_same_v<T, float> && opt.rasterise && Rasteriser::applicable(meshes, cam)) {
+    stats.visibility = "rasterised";
+    const Rasteriser raster(meshes, cam, kBand);
+    std::atomic<int> next_band{0}, bands_done{0};
+    auto band_worker = [&]() {
+      std::vector<Hit> hits(size_t(kBand) * W);
+      std::vector<PixelSums<T>> sums(size_t(kBand) * W);
+      for (int b = next_band++; b < raster.bands(); b = next_band++) {
+        const int row0 = b * kBand, rows = std::min(kBand, H - row0);
+        if (n == 1 && !diag) {  // one sample, no diagnostics: straight to the pixels
+          raster.visibility(b, 0.5, 0.5, false, hits);
+          for (int r = 0; r < rows; ++r)
+            for (int i = 0; i < W; ++i) {
+              const Hit& h = hits[size_t(r) * W + i];
+              float* px = img.pixel(i, row0 + r);
+              if (!h.hit) {
+                px[0] = px[1] = px[2] = px[3] = 0.0f;
+                continue;
+              }
+              bool back;
+              const V c = models::saturate(shadeHit(h, back));
+              px[0] = float(c.x), px[1] = float(c.y), px[2] = float(c.z), px[3] = 1.0f;
+            }
+          reportProgress(++bands_done, raster.bands());
+          continue;
+        }
+        std::fill(sums.begin(), sums.begin() + size_t(rows) * W, PixelSums<T>{});
+        for (int sy = 0; sy < n; ++sy)
+          for (int sx = 0; sx < n; ++sx) {
+            const double ox = (sx + 0.5) / n, oy = (sy + 0.5) / n;
+            raster.visibility(b, ox, oy, diag, hits);
+            for (int r = 0; r < rows; ++r)
+              for (int i = 0; i < W; ++i) {
+                const Hit& h = hits[size_t(r) * W + i];
+                if (!h.hit) continue;
+                const glm::dvec3 dir = diag ? cam.direction(i + ox, row0 + r + oy) : glm::dvec3(0);
+                addSample(h, dir, sums[size_t(r) * W + i]);
+              }
+          }
+        for (int r = 0; r < rows; ++r)
+          for (int i = 0; i < W; ++i) store(sums[size_t(r) * W + i], i, row0 + r);
+        reportProgress(++bands_done, raster.bands());
+      }
+    };
+    threads = std::min(threads, raster.bands());
+    std::vector<std::thread> pool;
+    for (int k = 1; k < threads; ++k) pool.emplace_back(band_worker);
+    band_worker();
+    for (auto& t : pool) t.join();
+    stats.setup_seconds = setup_seconds;
+    stats.trace_seconds = secondsSince(t_trace);
+    return;
+  }
+  stats.visibility = std::is_same_v<T, float> ? "Embree 16-ray packets (float)"
+                                              : "rays, double-precision watertight test";
 
   auto worker = [&]() {
     constexpr int P = Accel::kPacketSide;
@@ -229,38 +343,12 @@ void PreparedScene::Impl::renderT(const Shading<T>& sh, const RenderOptions& opt
                 if (valid[r] && hits[r].hit)
                   addSample(hits[r], dirs[r], sums[(by + r / P) * kTile + bx + r % P]);
             }
-      const T inv = T(1) / T(n * n);
       for (int ty = 0; ty < kTile && y0 + ty < H; ++ty)
-        for (int tx = 0; tx < kTile && x0 + tx < W; ++tx) {
-          const PixelSums<T>& s = sums[ty * kTile + tx];
-          const int i = x0 + tx, j = y0 + ty;
-          float* px = img.pixel(i, j);
-          for (int q = 0; q < 3; ++q) px[q] = float(s.final_sum[q] * inv);
-          px[3] = float(T(s.hits) * inv);
-          if (diag) {
-            const size_t at = size_t(j) * W + i;
-            for (int q = 0; q < 3; ++q) img.raw[at * 3 + q] = float(s.raw_sum[q] * inv);
-            img.depth[at] = float(s.nearest);
-            img.backfacing[at] = s.hits ? float(s.backfacing) / float(s.hits) : 0.0f;
-            img.incidence[at] = s.hits ? float(s.incidence) : 0.0f;
-            for (int q = 0; q < 3; ++q) img.albedo[at * 3 + q] = float(s.albedo[q]);
-          }
-        }
-      int done = ++tiles_done;
-      // Progress, at most once a second, from whichever thread gets there.
-      if (opt.progress && progress_lock.try_lock()) {
-        if (secondsSince(last_report) >= 1.0 && done < tiles) {
-          last_report = Clock::now();
-          double f = double(done) / tiles, el = secondsSince(t_trace);
-          std::fprintf(stderr, "  render: %5.1f%%  %.1f s elapsed, ~%.1f s left\n", 100.0 * f, el,
-                       el * (1.0 - f) / f);
-        }
-        progress_lock.unlock();
-      }
+        for (int tx = 0; tx < kTile && x0 + tx < W; ++tx) store(sums[ty * kTile + tx], x0 + tx, y0 + ty);
+      reportProgress(++tiles_done, tiles);
     }
   };
 
-  int threads = opt.threads > 0 ? opt.threads : int(std::max(1u, std::thread::hardware_concurrency()));
   threads = std::min(threads, tiles);
   std::vector<std::thread> pool;
   for (int k = 1; k < threads; ++k) pool.emplace_back(worker);

@@ -17,10 +17,14 @@
 // Two paths, one set of formulas:
 //   double (the reference): double-precision watertight intersection
 //     (Embree user geometry) and double shading, one ray at a time;
-//   float (the fast path): Embree's own float triangles traced as coherent
-//     16-ray packets (4 x 4 pixels at the same sub-sample offset) and float
-//     shading.
-// Work is split into 8 x 8-pixel tiles handed out to the threads in order.
+//   float (the fast path): float shading; visibility rasterised
+//     (render/raster.h: the same first hits as the camera rays, found by a
+//     watertight z-buffer in bands of rows) when the whole scene is in front
+//     of the camera, else Embree's float triangles traced as coherent
+//     16-ray packets (4 x 4 pixels at the same sub-sample offset).
+//     RenderStats::visibility says which.
+// Work is split into 8 x 8-pixel tiles (ray paths) or 8-row bands (raster)
+// handed out to the threads in order.
 #pragma once
 
 #include <memory>
@@ -39,6 +43,9 @@ struct RenderOptions {
   // albedo) when the image has them allocated (Image(w, h, true)).
   // renderScene allocates them only when this is set.
   bool diagnostics = true;
+  // Float path only: rasterise visibility when applicable (false: always
+  // trace Embree packets; tests compare the two).
+  bool rasterise = true;
 };
 
 // Options from the scene's render settings.
@@ -46,7 +53,8 @@ RenderOptions defaultOptions(const Scene& scene);
 
 struct RenderStats {
   double setup_seconds = 0.0;   // tessellation, texture, BVH build, per-vertex data
-  double trace_seconds = 0.0;   // rays and shading
+  double trace_seconds = 0.0;   // visibility and shading
+  const char* visibility = "";  // how first hits were found
 };
 
 // A scene made ready to render many frames: tessellated, its texture

@@ -3,14 +3,17 @@
 // point / spot:  L = (p_light - p) / d, d = |p_light - p|;
 //                att = 1 / (c + l d + q d^2), not computed when (1, 0, 0).
 //                A point exactly at the light (d = 0) gets L = 0: no diffuse,
-//                no highlight, no NaN.
+//                no highlight, no NaN. d and L are formed without overflow
+//                or underflow of (p_light - p)^2 (towardsLight below).
 // spot:          lit iff dot(-L, axis) >= cos(cutoff) (a hard cone).
 // directional:   L = -direction, att = 1.
 #pragma once
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "scene/scene.h"
@@ -35,22 +38,51 @@ template <class T> struct LightSample {
   bool lit;  // false outside a spot cone
 };
 
+// The unit vector along D = p_light - p and its length d (docs/extremes.md,
+// case light_far_1e20). d = sqrt(D.D) fails where D.D leaves the normal
+// range of T: in float, D.D overflows for |D| > 1.8e19 (d = inf, L = 0: the
+// light vanishes) and is subnormal for |D| < 1.1e-19 (L is then not unit).
+// When D.D is a normal number it is used as is (the usual case, unchanged);
+// otherwise D is first divided by its largest |component| s:
+//   d = s |D / s|,  L = (D / s) / |D / s|,  with 1 <= |D / s| <= sqrt(3).
+// D = 0 gives d = 0 and L = 0.
+template <class T> void towardsLight(glm::vec<3, T> D, glm::vec<3, T>& L, T& d) {
+  const T dd = glm::dot(D, D);
+  if (dd >= std::numeric_limits<T>::min() && dd <= std::numeric_limits<T>::max()) {
+    d = std::sqrt(dd);
+    L = D / d;
+    return;
+  }
+  const T s = std::max(std::abs(D.x), std::max(std::abs(D.y), std::abs(D.z)));
+  if (!(s > T(0)) || !(s <= std::numeric_limits<T>::max())) {  // 0, or not finite
+    d = s;
+    L = glm::vec<3, T>(0);
+    return;
+  }
+  const glm::vec<3, T> u = D / s;
+  const T lu = std::sqrt(glm::dot(u, u));
+  d = s * lu;
+  L = u / lu;
+}
+
 template <class T>
 LightSample<T> sampleLight(const PreparedLight<T>& l, glm::vec<3, T> p) {
   using K = typename PreparedLight<T>::Kind;
   if (l.kind == K::Directional) return {-l.direction, T(1), true};
-  glm::vec<3, T> d = l.position - p;
-  T dist = glm::length(d);
-  LightSample<T> s{dist > T(0) ? d / dist : glm::vec<3, T>(0), T(1), true};
+  LightSample<T> s{glm::vec<3, T>(0), T(1), true};
+  T dist;
+  towardsLight(l.position - p, s.L, dist);
   if (l.has_attenuation) s.att = T(1) / (l.att_c + l.att_l * dist + l.att_q * dist * dist);
   if (l.kind == K::Spot) s.lit = glm::dot(-s.L, l.direction) >= l.cos_cutoff;
   return s;
 }
 
 // Splits the scene's lights into the summed ambient colour and the rest.
+// Light positions are stored relative to `origin` (subtracted in double,
+// then rounded to T), the origin of the shading coordinates (shader.h).
 template <class T>
 void prepareLights(const std::vector<Light>& lights, glm::vec<3, T>& ambient,
-                   std::vector<PreparedLight<T>>& out) {
+                   std::vector<PreparedLight<T>>& out, glm::dvec3 origin = glm::dvec3(0)) {
   using V = glm::vec<3, T>;
   using K = typename PreparedLight<T>::Kind;
   ambient = V(0);
@@ -68,7 +100,7 @@ void prepareLights(const std::vector<Light>& lights, glm::vec<3, T>& ambient,
     };
     if (auto* p = std::get_if<PointLight>(&light)) {
       pl.kind = K::Point;
-      pl.position = V(p->position);
+      pl.position = V(p->position - origin);
       pl.color = V(p->color);
       set_att(p->attenuation);
     } else if (auto* d = std::get_if<DirectionalLight>(&light)) {
@@ -77,7 +109,7 @@ void prepareLights(const std::vector<Light>& lights, glm::vec<3, T>& ambient,
       pl.color = V(d->color);
     } else if (auto* s = std::get_if<SpotLight>(&light)) {
       pl.kind = K::Spot;
-      pl.position = V(s->position);
+      pl.position = V(s->position - origin);
       pl.direction = V(glm::normalize(s->direction));
       pl.color = V(s->color);
       pl.cos_cutoff = T(std::cos(s->cutoff_deg * 3.14159265358979323846 / 180.0));

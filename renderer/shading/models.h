@@ -27,8 +27,29 @@ template <class T> vec3<T> reflect(vec3<T> n, vec3<T> l, T ndotl) {
 }
 // S = clamp(R.V)^n. n = 0 gives 1 everywhere (pow(0, 0) = 1 by the C
 // standard; HLSL leaves it undefined): a constant highlight, by choice.
+// The listing's form, from R.V; the shader uses the form below.
 template <class T> T phongSpecular(T rdotv, T shininess) {
   return std::pow(clamp0(rdotv), shininess);
+}
+// The same S = clamp(R.V)^n from the unit vectors R and V, without the
+// cancellation in 1 - R.V (docs/extremes.md, case specular_n1e6):
+//   h = 1 - R.V = |R - V|^2 / 2   (for |R| = |V| = 1),
+//   S = (1 - h)^n = exp(n log1p(-h)).
+// At high n the whole highlight lies where 1 - R.V is tiny (n = 1e6: below
+// ~1e-5), and R.V rounded to the nearest float (ulp 6e-8 near 1) moves S by
+// up to a factor exp(1e6 x 6e-8) = 1.06 from one ulp to the next. R - V is
+// formed from exact differences of nearly equal components, so h keeps
+// float's relative precision; the rounding of |R| and |V| to 1 enters h
+// only as a relative error of the same size. Special values as above:
+// R.V <= 0 or NaN gives 0^n = 0 (n > 0) or 1 (n = 0, pow(0, 0) = 1); R = 0
+// (a light at the shaded point, L = 0) has R.V = 0.
+template <class T> T phongSpecular(vec3<T> r, vec3<T> v, T shininess) {
+  const T rdotv = glm::dot(r, v);
+  if (!(rdotv > T(0)) || shininess == T(0)) return shininess == T(0) ? T(1) : T(0);
+  const vec3<T> e = r - v;
+  const T h = T(0.5) * glm::dot(e, e);
+  if (!(h < T(1))) return T(0);  // R.V within rounding of 0: clamp(R.V) = 0
+  return std::exp(shininess * std::log1p(-h));
 }
 
 // ---- Forsyth's family (seed 002), result per unit light colour ---------

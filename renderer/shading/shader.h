@@ -22,6 +22,14 @@
 // Only what the scene uses is computed: no specular term when ks = 0, no
 // attenuation when it is (1,0,0), no texture fetch without a texture (the
 // caller passes C).
+//
+// Shading coordinates: positions (p, and the lights') are relative to an
+// origin fixed at construction (default: the world origin); the renderer
+// uses the eye (camera-relative shading, docs/extremes.md case offset_1e6):
+// world positions and the origin are subtracted in double, so in float a
+// surface point keeps float's relative precision of its distance from the
+// eye however far both are from the world origin. clamp(R.V)^n is evaluated
+// from |R - V| (models::phongSpecular), without cancellation at high n.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -38,18 +46,22 @@ template <class T> class Shader {
  public:
   using V = glm::vec<3, T>;
 
-  explicit Shader(const Material& m, const std::vector<Light>& lights) {
-    prepareLights<T>(lights, ambient_, lights_);
+  // origin: the point shading positions are relative to (see above).
+  explicit Shader(const Material& m, const std::vector<Light>& lights,
+                  glm::dvec3 origin = glm::dvec3(0))
+      : origin_(origin) {
+    prepareLights<T>(lights, ambient_, lights_, origin);
     ambient_luma_ = models::lightLuma(ambient_);
     kind_ = Kind(m.model.index());
     std::visit([this](const auto& mm) { this->setParams(mm); }, m.model);
   }
 
   bool usesSpecular() const { return specular_; }
+  glm::dvec3 origin() const { return origin_; }
   const std::vector<PreparedLight<T>>& lights() const { return lights_; }
 
-  // p: surface point, n: unit normal, v: unit direction to the eye, c: the
-  // surface colour (texture or base colour).
+  // p: surface point (relative to origin()), n: unit normal, v: unit
+  // direction to the eye, c: the surface colour (texture or base colour).
   V shade(V p, V n, V v, V c) const {
     using namespace models;
     switch (kind_) {
@@ -63,7 +75,7 @@ template <class T> class Shader {
             if (s.lit) {
               T x = glm::dot(n, s.L);
               term += kd_ * clamp0(x);
-              if (specular_) term += ks_ * phongSpecular(glm::dot(reflect(n, s.L, x), v), n_);
+              if (specular_) term += ks_ * phongSpecular(reflect(n, s.L, x), v, n_);
             }
             acc += w * term;
           }
@@ -76,7 +88,7 @@ template <class T> class Shader {
           V w = s.att * l.color;
           T x = glm::dot(n, s.L);
           diff += w * clamp0(x);
-          if (specular_) spec += w * phongSpecular(glm::dot(reflect(n, s.L, x), v), n_);
+          if (specular_) spec += w * phongSpecular(reflect(n, s.L, x), v, n_);
         }
         return c * (ka_ * ambient_ + kd_ * diff) + ks_ * spec;
       }
@@ -88,8 +100,9 @@ template <class T> class Shader {
           T w = s.att * l.color_luma;
           T x = glm::dot(n, s.L);
           dsum += w * saturate(x);
-          if (specular_)
-            ssum += w * std::pow(saturate(glm::dot(reflect(n, s.L, x), v)), n_);
+          // saturate(R.V)^n: R.V <= 1 for unit vectors, so the upper clamp
+          // only removes rounding, which the |R - V| form has none of.
+          if (specular_) ssum += w * phongSpecular(reflect(n, s.L, x), v, n_);
         }
         T dl = saturate(ambient_luma_ + kd_ * dsum);
         return yiqLuma(c, dl, ks_ * ssum, offset_);
@@ -137,6 +150,7 @@ template <class T> class Shader {
   void setParams(const Trilight& m) { c0_ = V(m.c0), c1_ = V(m.c1), c2_ = V(m.c2); }
 
   Kind kind_ = Kind::ClassicPhong;
+  glm::dvec3 origin_{0};
   std::vector<PreparedLight<T>> lights_;
   V ambient_{0};
   T ambient_luma_ = 0;

@@ -30,17 +30,19 @@ template <class T> struct SurfaceColour {
 };
 
 // Gouraud shading's vertex colours: the model at each vertex (its position
-// and normal, the texture at its uv, V towards `eye`), unsaturated.
+// and normal, the texture at its uv, V towards `eye`), unsaturated. `eye`
+// and the mesh are in world coordinates; the vertex is passed to the shader
+// relative to shader.origin(), and V is formed in double, both before the
+// rounding to T (so a vertex far from the world origin loses nothing).
 template <class T>
 std::vector<glm::vec<3, T>> gouraudVertexColours(const Shader<T>& shader, const TriangleMesh& m,
-                                                 const SurfaceColour<T>& colour,
-                                                 glm::vec<3, T> eye) {
+                                                 const SurfaceColour<T>& colour, glm::dvec3 eye) {
   using V = glm::vec<3, T>;
   std::vector<V> out(m.positions.size());
   for (size_t i = 0; i < out.size(); ++i) {
-    V p(m.positions[i]);
-    out[i] = shader.shade(p, V(m.normals[i]), glm::normalize(eye - p),
-                          colour.at(glm::vec<2, T>(m.uvs[i])));
+    const V p(m.positions[i] - shader.origin());
+    const V v(glm::normalize(eye - m.positions[i]));
+    out[i] = shader.shade(p, V(m.normals[i]), v, colour.at(glm::vec<2, T>(m.uvs[i])));
   }
   return out;
 }

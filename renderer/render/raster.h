@@ -1,0 +1,70 @@
+// Visibility by rasterisation: the fast path's answer to "which triangle
+// does the ray through this sample point hit first?", for every sample of a
+// band of rows at once, without a ray query per sample.
+//
+// Only for cameras in front of all geometry: every vertex must have a view
+// depth z = (P - eye) . forward > 0 (applicable() tells; otherwise the
+// renderer traces Embree packets instead and says so in RenderStats).
+//
+// The math (camera/camera.h inverted): for a vertex P, d = P - eye,
+//   z = d . forward,  x_px = (d . right / (z tan(fov/2) aspect) + 1) W / 2,
+//   y_px = (1 - d . up / (z tan(fov/2))) H / 2,
+// so the sample at image point (x, y) lies inside the projected triangle
+// exactly when the camera ray through (x, y) crosses the triangle.
+// Inside test: edge functions E_uw(p) = cross(P_w - P_u, p - P_u) in
+// screen space, each edge evaluated from its lower vertex index so that
+// the two triangles sharing an edge compute bit-identical values of
+// opposite sign; a sample exactly on an edge belongs to the one triangle
+// whose winding runs the edge from its lower index (when both face the same
+// way on screen): no gaps, no double hits (watertight).
+// Depth: 1/z is affine in screen space, 1/z(p) = sum_k l_k / z_k with the
+// screen-space barycentrics l_k = E_k / sum E; the nearest hit has the
+// largest 1/z. The perspective-correct barycentrics of the hit, the b1, b2
+// the shading uses, are b_k = (l_k / z_k) / (1/z(p)).
+// All of it in double: on x86 scalar double arithmetic costs what float
+// does, and float pixel coordinates (ulp 6e-5 px at x = 720) would move the
+// barycentrics of a 3-pixel triangle by ~1e-5, a visible texture shift.
+// Ray length to the hit (diagnostics only): t = z(p) |forward + sx right +
+// sy up|.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+#include "camera/camera.h"
+#include "geometry/mesh.h"
+#include "render/accel.h"
+
+namespace xval {
+
+class Rasteriser {
+ public:
+  // True when every vertex of every mesh is in front of the camera.
+  static bool applicable(const std::vector<TriangleMesh>& meshes, const CameraRays& cam);
+
+  // Projects the vertices and bins the triangles into bands of band_rows
+  // rows (done once per frame; cheap next to shading).
+  Rasteriser(const std::vector<TriangleMesh>& meshes, const CameraRays& cam, int band_rows);
+
+  int bands() const { return int(bins_.size()); }
+  int bandRows() const { return band_rows_; }
+
+  // The first hit of every sample (i + ox, j + oy) of band b's rows (ox, oy
+  // in [0, 1): the sample's offset inside its pixel), row-major, W per row;
+  // out.size() >= band_rows * W. No hit: Hit::hit = false.
+  void visibility(int band, double ox, double oy, bool want_t, std::vector<Hit>& out) const;
+
+ private:
+  struct Vertex {
+    double x, y, inv_z;  // pixels, 1 / view depth
+  };
+  const std::vector<TriangleMesh>* meshes_;
+  const CameraRays* cam_;
+  int band_rows_;
+  std::vector<std::vector<Vertex>> projected_;          // per mesh, per vertex
+  std::vector<std::vector<std::uint64_t>> bins_;        // per band: (mesh << 32) | triangle
+};
+
+}  // namespace xval
