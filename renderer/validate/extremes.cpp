@@ -326,6 +326,22 @@ std::vector<Case> extremesMatrix(const MatrixOptions& options) {
                     J::array({plane({0, 0, 0}, {0, 1, 0}, 20.0, 10.0), sphere({0, 1, 0})}),
                     phong(55), J::array({point(kFront + glm::dvec3(0, 1, 0)), ambient()}));
     out.push_back(e);
+    // The eye exactly on the sphere's +y pole vertex, looking down through
+    // the sphere at its inside (lit from within, trilight shows the
+    // backs). Every triangle of the polar cap contains the eye: a test that
+    // accepts t = 0 hits them at the eye itself, where eye - p is exactly 0
+    // in camera-relative coordinates and V = normalize(0).
+    for (const char* shading : {"phong", "gouraud"}) {
+      Case v;
+      v.name = std::string("eye_at_vertex_") + shading;
+      v.group = "eye";
+      v.what = std::string("the eye on the sphere's pole vertex, ") + shading +
+               " shading: the cap's triangles contain the eye (eye - p = 0 at a hit at t = 0)";
+      v.scene = scene(v.name, camera({0, 1, 0}, {0, -1, 0}, 45, n, {0, 0, 1}), J::array({sphere()}),
+                      trilight({0.8, 0.7, 0.6}), J::array({point({0.3, 0.2, 0.4}), ambient()}),
+                      shading);
+      out.push_back(v);
+    }
   }
 
   // --- spot cone edge ------------------------------------------------------------
