@@ -117,9 +117,20 @@ std::string machine() {
   return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads";
 }
 
+// The commit of the working tree xval runs in, else of the one its
+// executable was built in (build folders live inside the source tree).
 std::string gitCommit(const std::filesystem::path& tmp) {
-  ProcessResult r = runProcess({"git", "rev-parse", "HEAD"}, std::filesystem::current_path(), tmp, 30);
-  std::string s = r.ok() ? firstLineOf(tmp) : "unknown (" + r.describe() + ")";
+  std::error_code ec;
+  const std::filesystem::path exe_dir = std::filesystem::read_symlink("/proc/self/exe", ec).parent_path();
+  std::string s = "unknown";
+  for (const auto& where : {std::filesystem::current_path(), exe_dir}) {
+    if (where.empty()) continue;
+    ProcessResult r = runProcess({"git", "-C", where.string(), "rev-parse", "HEAD"}, where, tmp, 30);
+    if (r.ok()) {
+      s = firstLineOf(tmp);
+      break;
+    }
+  }
   std::filesystem::remove(tmp);
   return s;
 }
