@@ -10,4 +10,5 @@ cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/build.sh
 bash scripts/render-reference.sh
+build/renderer/xval extremes -o results/validation/extremes  # before validate: its report includes the section
 build/renderer/xval validate reference/scenes -o results/validation
