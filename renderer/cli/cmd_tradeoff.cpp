@@ -11,7 +11,7 @@
 //                              warm-up frame (5); the figure is their median
 //                              wall time, with min..max
 //   --max-seconds S            stop timing a configuration once its timed
-//                              frames add up to S seconds (5); at least one
+//                              frames add up to S seconds (3); at least one
 //                              timed frame; the row says how many were timed
 //   --threads T                render threads (0 = every hardware thread)
 //   --quick                    leave out spp=64, tess=2 and corner:accurate,
@@ -30,9 +30,12 @@
 // Each configuration is prepared once (PreparedScene: tessellation,
 // texture, BVH; "setup", reported apart), rendered once to warm up, then
 // timed frame by frame without diagnostics; its error is that of its last
-// frame against the converged reference. The converged configuration is
-// itself a row: the reference frame is its warm-up and its error, that of
-// a later frame, is 0 when rendering is deterministic.
+// frame against the converged reference. A configuration whose warm-up
+// frame alone takes --max-seconds is not rendered again: that frame is its
+// one timed frame (n = 1, "warmup_frame_timed"). The converged
+// configuration is itself a row: the reference frame is its warm-up, and
+// it is always rendered at least once more; its error, that of the later
+// frame, is 0 when rendering is deterministic (a check).
 //
 // Writes DIR/tradeoff.json, DIR/tradeoff.tsv, DIR/tradeoff.md, DIR/pareto.png
 // (gnuplot; pareto.gp, pareto.dat and pareto.log beside it). Progress on
@@ -182,22 +185,29 @@ void writeText(const fs::path& file, const std::string& text) {
   fs::rename(tmp, file);
 }
 
-// The Pareto plot: every configuration (grey), the front (joined, labelled),
-// the reference's convergence residual as a dashed line; log axes.
-void writePlot(const J& out, const std::string& metric, const std::string& metric_label, const fs::path& dir) {
-  std::ostringstream all, front;
-  all << "# id frame_median_s error  (" << metric_label << ")\n";
-  front << "# id frame_median_s error, by time\n";
-  double floor_err = std::numeric_limits<double>::infinity();
+// The Pareto plot: every configuration (grey, labelled small), the front
+// (red, joined by time, labelled), the reference's convergence residual as
+// a dashed line; log axes with ranges fitted to the points.
+void writePlot(const J& out, const std::string& metric_label, const fs::path& dir) {
+  const double tolerance = out["pareto_error_tolerance"].get<double>();
+  const double inf = std::numeric_limits<double>::infinity();
+  double tmin = inf, tmax = 0, emin = inf, emax = 0;
   for (const auto& c : out["configs"]) {
     if (c["group"] == "converged") continue;
-    const double e = c["pareto_error"].get<double>();
-    if (e > 0) floor_err = std::min(floor_err, e);
+    const double e = c["pareto_error"].get<double>(), t = c["frame_median_s"].get<double>();
+    if (e > 0) emin = std::min(emin, e);
+    emax = std::max(emax, e);
+    tmin = std::min(tmin, t), tmax = std::max(tmax, t);
   }
-  if (!std::isfinite(floor_err)) floor_err = 1e-3;
-  auto shown = [&](double e) { return std::max(e, floor_err * 0.5); };  // 0 has no place on a log axis
+  if (!std::isfinite(emin)) emin = emax > 0 ? emax : 1.0;
+  if (tolerance > 0) emin = std::min(emin, tolerance);
+  emax = std::max(emax, emin);
+  auto shown = [&](double e) { return std::max(e, emin * 0.5); };  // 0 has no place on a log axis
+  std::ostringstream all, front;
+  all << "# id frame_median_s error(" << metric_label << "), configurations off the Pareto front\n";
+  front << "# id frame_median_s error, the Pareto front by time\n";
   for (const auto& c : out["configs"]) {
-    if (c["group"] == "converged") continue;
+    if (c["group"] == "converged" || c["pareto"].get<bool>()) continue;
     all << "\"" << c["id"].get<std::string>() << "\" " << c["frame_median_s"].get<double>() << " "
         << shown(c["pareto_error"].get<double>()) << "\n";
   }
@@ -207,26 +217,83 @@ void writePlot(const J& out, const std::string& metric, const std::string& metri
         front << "\"" << id.get<std::string>() << "\" " << c["frame_median_s"].get<double>() << " "
               << shown(c["pareto_error"].get<double>()) << "\n";
   writeText(dir / "pareto.dat", all.str() + "\n\n" + front.str());
-  double residual = 0;
-  for (const auto& r : out["reference"]["convergence"])
-    residual = std::max(residual, errorMetric(errorFromJson(r["residual"]), metric));
+  // Labels are placed here, not by gnuplot (which lets them overlap): the
+  // plot area is fixed in screen fractions, so a point's pixel position is
+  // known; each label takes the first free slot near its point (the
+  // front's first, to the left and below, the others to the right), and a
+  // label moved away from its point gets a thin line to it.
+  const double xlo = tmin / 1.6, xhi = tmax * 4.0, ylo = emin / 1.6, yhi = emax * 1.6;
+  constexpr double kW = 1000, kH = 700, kL = 0.09, kR = 0.97, kB = 0.09, kT = 0.93;
+  const double aw = kW * (kR - kL), ah = kH * (kT - kB);  // plot area, pixels
+  auto px = [&](double t) { return aw * std::log(t / xlo) / std::log(xhi / xlo); };
+  auto py = [&](double e) { return ah * std::log(e / ylo) / std::log(yhi / ylo); };
+  struct Box { double x0, x1, y0, y1; };
+  std::vector<Box> taken;
+  auto overlaps = [&](const Box& b) {
+    if (b.x0 < 0 || b.x1 > aw || b.y0 < 0 || b.y1 > ah) return true;
+    for (const Box& o : taken)
+      if (b.x0 < o.x1 && o.x0 < b.x1 && b.y0 < o.y1 && o.y0 < b.y1) return true;
+    return false;
+  };
+  struct Item { std::string id; double t, e; bool front; };
+  std::vector<Item> items;
+  for (const auto& id : out["pareto_front"])
+    for (const auto& c : out["configs"])
+      if (c["id"] == id) items.push_back({id, c["frame_median_s"], shown(c["pareto_error"]), true});
+  std::vector<Item> rest;
+  for (const auto& c : out["configs"])
+    if (c["group"] != "converged" && !c["pareto"].get<bool>())
+      rest.push_back({c["id"], c["frame_median_s"], shown(c["pareto_error"]), false});
+  std::sort(rest.begin(), rest.end(), [](const Item& a, const Item& b) { return a.e > b.e; });
+  items.insert(items.end(), rest.begin(), rest.end());
+  for (const Item& it : items) taken.push_back({px(it.t) - 5, px(it.t) + 5, py(it.e) - 5, py(it.e) + 5});
+  taken.push_back({aw - 175, aw, ah - 42, ah});  // the key
+  if (tolerance > 0) taken.push_back({0, 0.01 * aw + 500, py(tolerance) - 2, py(tolerance * 1.12) + 10});
+  std::ostringstream labels;
+  for (const Item& it : items) {
+    const double cw = it.front ? 7.5 : 6.0, lh = it.front ? 14 : 12;
+    const double w = cw * double(it.id.size()), x = px(it.t), y = py(it.e);
+    const double base = it.front ? -lh : 0;
+    bool placed = false, left = it.front;
+    double dy = base;
+    for (int k = 0; k <= 16 && !placed; ++k) {
+      const double cand = base + (k % 2 ? 1 : -1) * ((k + 1) / 2) * lh;
+      for (bool l : {it.front, !it.front}) {
+        const Box b = l ? Box{x - 9 - w, x - 9, y + cand - lh / 2, y + cand + lh / 2}
+                        : Box{x + 9, x + 9 + w, y + cand - lh / 2, y + cand + lh / 2};
+        if (!overlaps(b)) {
+          taken.push_back(b), placed = true, left = l, dy = cand;
+          break;
+        }
+      }
+    }
+    const double lx = left ? x - 9 : x + 9, ly = y + dy;
+    labels << "set label \"" << it.id << "\" at graph " << lx / aw << ", graph " << ly / ah
+           << (left ? " right" : " left") << " font '," << (it.front ? "9:Bold" : "8") << "' tc rgb '"
+           << (it.front ? "#c02020" : "#606060") << "' front\n";
+    if (std::abs(dy - base) > 0.6 * lh)
+      labels << "set arrow from graph " << lx / aw << ", graph " << ly / ah << " to first " << it.t
+             << ", first " << it.e << " nohead lw 0.5 lc rgb '#b0b0b0'\n";
+  }
   std::ostringstream g;
-  g << "set terminal pngcairo size 1000,640 font ',9' noenhanced\nset output 'pareto.png'\n"
+  g << "set terminal pngcairo size " << kW << "," << kH << " font ',9' noenhanced\nset output 'pareto.png'\n"
+       "set lmargin at screen " << kL << "\nset rmargin at screen " << kR << "\nset bmargin at screen " << kB
+    << "\nset tmargin at screen " << kT << "\n"
        "set logscale xy\nset grid xtics ytics mxtics mytics lc rgb '#dddddd'\n"
+       "set xrange [" << xlo << ":" << xhi << "]\nset yrange [" << ylo << ":" << yhi << "]\n"
        "set xlabel 'frame time, median (s)'\n"
        "set ylabel '" << metric_label << " against the converged reference'\n"
        "set title '" << fileSafe(out["scene"].get<std::string>()) << " " << out["width"].get<int>() << "x"
-    << out["height"].get<int>() << ": speed against accuracy (Pareto-optimal in red)'\n"
-       "set key bottom left box opaque\nset offsets graph 0.08, graph 0.25, graph 0.1, graph 0.1\n";
-  if (residual > 0)
-    g << "set arrow from graph 0, first " << residual << " to graph 1, first " << residual
+    << out["height"].get<int>() << ": error against frame time (Pareto-optimal in red)'\n"
+       "set key top right box opaque\n";
+  if (tolerance > 0)
+    g << "set arrow from graph 0, first " << tolerance << " to graph 1, first " << tolerance
       << " nohead dt 2 lc rgb '#3060c0'\n"
-         "set label 'converged reference residual' at graph 0.01, first "
-      << residual * 1.15 << " tc rgb '#3060c0'\n";
+         "set label \"converged reference's residual (errors closer than this are not resolved)\" at graph 0.01, first "
+      << tolerance * 1.12 << " tc rgb '#3060c0'\n";
+  g << labels.str();
   g << "plot 'pareto.dat' index 0 using 2:3 with points pt 7 ps 1.1 lc rgb '#909090' title 'configuration', \\\n"
-       "     '' index 0 using 2:3:1 with labels offset 0.8,-0.7 left font ',7' tc rgb '#707070' notitle, \\\n"
-       "     '' index 1 using 2:3 with linespoints pt 7 ps 1.4 lw 1.5 lc rgb '#c02020' title 'Pareto-optimal', \\\n"
-       "     '' index 1 using 2:3:1 with labels offset 0.8,0.7 left font ',9:Bold' tc rgb '#c02020' notitle\n";
+       "     '' index 1 using 2:3 with linespoints pt 7 ps 1.4 lw 1.5 lc rgb '#c02020' title 'Pareto-optimal'\n";
   writeText(dir / "pareto.gp", g.str());
   fs::remove(dir / "pareto.png");
   ProcessResult r = runProcess({"gnuplot", "pareto.gp"}, dir, dir / "pareto.log", 120.0);
@@ -282,7 +349,7 @@ void addTradeoffCommand(CLI::App& app, std::function<int()>& run) {
   struct Args {
     std::string scene, out, metric = "rmse";
     int frames = 5, threads = 0, reference_spp = 0, width = 0, height = 0;
-    double max_seconds = 5.0, reference_tessellation = 0.0;
+    double max_seconds = 3.0, reference_tessellation = 0.0;
     bool quick = false, images = false;
     std::vector<std::string> argv;
   };
@@ -303,7 +370,8 @@ void addTradeoffCommand(CLI::App& app, std::function<int()>& run) {
       ->check(CLI::Range(1, 1000));
   cmd->add_option("--max-seconds", args->max_seconds,
                   "Stop timing a configuration once its timed frames add up to this many seconds "
-                  "(default 5; at least one timed frame)")
+                  "(default 3; at least one timed frame; a warm-up frame this long is itself the "
+                  "one timed frame)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--threads", args->threads, "Render threads (default: all hardware threads)")
       ->check(CLI::Range(1, 1024));
@@ -409,6 +477,7 @@ void addTradeoffCommand(CLI::App& app, std::function<int()>& run) {
                          {"knobs", knobsJson(ref_cfg, applied.back(), p.triangleCount())},
                          {"setup_s", p.setupSeconds()}, {"frame_median_s", s.median},
                          {"frame_min_s", s.min}, {"frame_max_s", s.max}, {"frames", s.n},
+                         {"warmup_frame_timed", false},
                          {"error", errorJson(tradeoffError(img, reference))}};
         std::fprintf(stderr, "[converged] frame %.1f ms (n=%zu), error against the reference: RMSE %.3g\n",
                      s.median * 1e3, s.n, converged_row["error"]["rmse_16bit"].get<double>());
@@ -439,9 +508,13 @@ void addTradeoffCommand(CLI::App& app, std::function<int()>& run) {
         const TradeoffConfig& c = configs[i];
         PreparedScene p(applied[i], c.precision);
         Image img(W, H, false);
-        renderOnce(p, c.spp, img, false);  // warm-up
+        const double warm = renderOnce(p, c.spp, img, false);  // warm-up
         std::vector<double> t;
         double sum = 0;
+        // A frame that alone takes --max-seconds is not repeated: the
+        // warm-up frame is the one timed frame (n = 1).
+        const bool warm_counted = warm >= args->max_seconds;
+        if (warm_counted) t.push_back(warm), sum = warm;
         while (int(t.size()) < args->frames && (t.empty() || sum < args->max_seconds)) {
           t.push_back(renderOnce(p, c.spp, img, false));
           sum += t.back();
@@ -451,7 +524,8 @@ void addTradeoffCommand(CLI::App& app, std::function<int()>& run) {
         saveImage(c.id, img);
         rows.push_back({{"id", c.id}, {"group", c.group}, {"knobs", knobsJson(c, applied[i], p.triangleCount())},
                         {"setup_s", p.setupSeconds()}, {"frame_median_s", s.median}, {"frame_min_s", s.min},
-                        {"frame_max_s", s.max}, {"frames", s.n}, {"error", errorJson(e)}});
+                        {"frame_max_s", s.max}, {"frames", s.n}, {"warmup_frame_timed", warm_counted},
+                        {"error", errorJson(e)}});
         std::fprintf(stderr, "[%zu/%zu] %-20s frame %9.1f ms (%.1f..%.1f, n=%zu), setup %.2f s; "
                      "max %.1f p99.9 %.1f RMSE %.2f (1/65535), CIEDE2000 %.3f\n",
                      i + 1, configs.size() - 1, c.id.c_str(), s.median * 1e3, s.min * 1e3, s.max * 1e3, s.n,
@@ -466,7 +540,10 @@ void addTradeoffCommand(CLI::App& app, std::function<int()>& run) {
         const bool candidate = r["group"] != "converged";
         pts.push_back({candidate ? r["frame_median_s"].get<double>() : std::nan(""), errorMetric(e, args->metric)});
       }
-      const std::vector<size_t> front = paretoFront(pts);
+      // Errors closer than the reference's own residual are not resolved.
+      double tolerance = 0.0;
+      for (const auto& c : conv) tolerance = std::max(tolerance, errorMetric(errorFromJson(c["residual"]), args->metric));
+      const std::vector<size_t> front = paretoFront(pts, tolerance);
       J front_ids = J::array();
       for (size_t i = 0; i < rows.size(); ++i) {
         rows[i]["pareto_error"] = pts[i].error;
@@ -523,6 +600,7 @@ void addTradeoffCommand(CLI::App& app, std::function<int()>& run) {
           "(premultiplied by coverage, over black); a pixel's error is its largest RGB channel difference; "
           "max, p99.9 (nearest rank) and RMSE in 1/65535; CIEDE2000 of the colours taken as sRGB-coded";
       out["pareto_metric"] = args->metric;
+      out["pareto_error_tolerance"] = tolerance;
       out["reference"] = ref_json;
       out["configs"] = rows;
       out["pareto_front"] = front_ids;
@@ -531,7 +609,7 @@ void addTradeoffCommand(CLI::App& app, std::function<int()>& run) {
       writeText(dir / "tradeoff.json", out.dump(2) + "\n");
       writeText(dir / "tradeoff.tsv", tsvTable(out));
       writeText(dir / "tradeoff.md", markdownTable(out));
-      writePlot(out, args->metric, metric_label, dir);
+      writePlot(out, metric_label, dir);
       std::fprintf(stderr, "xval tradeoff: %.1f s; Pareto-optimal (%s):", since(t_all), args->metric.c_str());
       for (const auto& id : front_ids) std::fprintf(stderr, " %s", id.get<std::string>().c_str());
       std::fprintf(stderr, "\nxval tradeoff: wrote %s/{tradeoff.json,tradeoff.tsv,tradeoff.md,pareto.png}\n",

@@ -238,7 +238,9 @@ double errorMetric(const TradeoffError& e, const std::string& m) {
   throw std::runtime_error("error metric '" + m + "': expected rmse, p999, max or ciede2000");
 }
 
-std::vector<size_t> paretoFront(const std::vector<ParetoPoint>& pts) {
+std::vector<size_t> paretoFront(const std::vector<ParetoPoint>& pts, double tol) {
+  if (!(tol >= 0.0) || !std::isfinite(tol))
+    throw std::runtime_error("Pareto error tolerance " + std::to_string(tol) + ": expected a finite number >= 0");
   auto finite = [](const ParetoPoint& p) { return std::isfinite(p.seconds) && std::isfinite(p.error); };
   std::vector<size_t> front;
   for (size_t i = 0; i < pts.size(); ++i) {
@@ -247,7 +249,8 @@ std::vector<size_t> paretoFront(const std::vector<ParetoPoint>& pts) {
     for (size_t j = 0; j < pts.size() && !dominated; ++j) {
       if (j == i || !finite(pts[j])) continue;
       const ParetoPoint &a = pts[j], &b = pts[i];
-      dominated = a.seconds <= b.seconds && a.error <= b.error && (a.seconds < b.seconds || a.error < b.error);
+      dominated = a.seconds <= b.seconds && a.error <= b.error + tol &&
+                  (a.seconds < b.seconds || a.error < b.error - tol);
     }
     if (!dominated) front.push_back(i);
   }

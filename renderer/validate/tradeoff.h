@@ -120,10 +120,16 @@ struct ParetoPoint {
   double error = 0.0;
 };
 // Indices of the Pareto-optimal points, by increasing seconds (ties by
-// increasing error, then index): a point is optimal when no other point is
-// at most as slow and at most as wrong and strictly better in one of the
-// two. Equal points are all optimal. Points with a non-finite coordinate
-// are never optimal and dominate nothing.
-std::vector<size_t> paretoFront(const std::vector<ParetoPoint>& points);
+// increasing error, then index). Point j dominates point i when
+//   seconds_j <= seconds_i and error_j <= error_i + error_tolerance, and
+//   (seconds_j < seconds_i or error_j < error_i - error_tolerance);
+// a point is optimal when no other dominates it. With error_tolerance = 0
+// that is plain Pareto dominance (equal points are all optimal); a
+// tolerance > 0 says errors closer than it are not resolved (`xval
+// tradeoff` passes the converged reference's own residual), so a faster
+// point within it dominates a slower one. Dominance stays acyclic, so the
+// front of a non-empty set of finite points is never empty. Points with a
+// non-finite coordinate are never optimal and dominate nothing.
+std::vector<size_t> paretoFront(const std::vector<ParetoPoint>& points, double error_tolerance = 0.0);
 
 }  // namespace xval
