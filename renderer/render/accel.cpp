@@ -23,12 +23,13 @@ void embreeError(void* user, RTCError, const char* str) {
   *static_cast<std::string*>(user) = str ? str : "unknown error";
 }
 
-// The ray query's context: Embree passes it to the callbacks.
+// The ray query's context: Embree passes it to the callbacks. Up to 16
+// rays (a packet); the callback finds its ray's slot by the ray's id.
 struct DoubleContext {
   RTCIntersectContext embree;  // must be first
-  RayShear shear;
-  double best_t;
-  Hit hit;
+  RayShear shear[16];
+  double best_t[16];
+  Hit hit[16];
 };
 
 float roundUp(double v) {
@@ -56,19 +57,23 @@ void boundsFn(const RTCBoundsFunctionArguments* args) {
 }
 
 void intersectFn(const RTCIntersectFunctionNArguments* args) {
-  if (!args->valid[0]) return;
   auto* g = static_cast<const Accel::DoubleGeometry*>(args->geometryUserPtr);
   auto* ctx = reinterpret_cast<DoubleContext*>(args->context);
   const auto& tri = g->mesh->triangles[args->primID];
   const auto& P = g->mesh->positions;
-  TriangleHit th;
-  if (!intersectTriangle(ctx->shear, P[tri[0]], P[tri[1]], P[tri[2]], 0.0, ctx->best_t, th))
-    return;
-  ctx->best_t = th.t;
-  ctx->hit = {true, g->id, args->primID, th.t, th.b1, th.b2};
-  // Shrink Embree's float t_far conservatively (rounded up, padded).
-  float& tfar = RTCRayN_tfar(reinterpret_cast<RTCRayN*>(args->rayhit), args->N, 0);
-  tfar = std::min(tfar, roundUp(th.t * (1.0 + 1e-6)));
+  auto* ray = reinterpret_cast<RTCRayN*>(args->rayhit);
+  for (unsigned lane = 0; lane < args->N; ++lane) {
+    if (!args->valid[lane]) continue;
+    const unsigned r = RTCRayN_id(ray, args->N, lane);  // our slot
+    TriangleHit th;
+    if (!intersectTriangle(ctx->shear[r], P[tri[0]], P[tri[1]], P[tri[2]], 0.0, ctx->best_t[r], th))
+      continue;
+    ctx->best_t[r] = th.t;
+    ctx->hit[r] = {true, g->id, args->primID, th.t, th.b1, th.b2};
+    // Shrink Embree's float t_far conservatively (rounded up, padded).
+    float& tfar = RTCRayN_tfar(ray, args->N, lane);
+    tfar = std::min(tfar, roundUp(th.t * (1.0 + 1e-6)));
+  }
 }
 
 }  // namespace
@@ -156,11 +161,17 @@ Hit Accel::intersectFloat(glm::dvec3 o, glm::dvec3 d) const {
 void Accel::intersectPacket(glm::dvec3 o, const glm::dvec3* dirs, const bool* valid, Hit* out) const {
   constexpr int N = kPacketSide * kPacketSide;
   static_assert(N == 16, "the float path uses Embree's 16-ray packets");
-  if (precision_ == Precision::Double) {
-    for (int r = 0; r < N; ++r) out[r] = valid[r] ? intersectDouble(o, dirs[r]) : Hit{};
-    return;
+  // The double path traverses Embree's BVH as a packet too; every candidate
+  // is decided by the double watertight test in intersectFn, per ray.
+  const bool exact = precision_ == Precision::Double;
+  DoubleContext dctx;
+  if (exact) {
+    for (int r = 0; r < N; ++r) {
+      if (valid[r]) dctx.shear[r] = RayShear(o, dirs[r]);
+      dctx.best_t[r] = std::numeric_limits<double>::infinity();
+    }
   }
-  RTCIntersectContext ctx;
+  RTCIntersectContext& ctx = dctx.embree;
   rtcInitIntersectContext(&ctx);
   ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
   alignas(64) int mask[N];
@@ -179,6 +190,10 @@ void Accel::intersectPacket(glm::dvec3 o, const glm::dvec3* dirs, const bool* va
     rh.hit.geomID[r] = RTC_INVALID_GEOMETRY_ID;
   }
   rtcIntersect16(mask, scene_, &ctx, &rh);
+  if (exact) {
+    for (int r = 0; r < N; ++r) out[r] = valid[r] ? dctx.hit[r] : Hit{};
+    return;
+  }
   for (int r = 0; r < N; ++r) {
     if (!valid[r] || rh.hit.geomID[r] == RTC_INVALID_GEOMETRY_ID) {
       out[r] = Hit{};
@@ -189,11 +204,15 @@ void Accel::intersectPacket(glm::dvec3 o, const glm::dvec3* dirs, const bool* va
 }
 
 Hit Accel::intersectDouble(glm::dvec3 o, glm::dvec3 d) const {
-  DoubleContext ctx{{}, RayShear(o, d), std::numeric_limits<double>::infinity(), {}};
+  DoubleContext ctx;
+  ctx.shear[0] = RayShear(o, d);
+  ctx.best_t[0] = std::numeric_limits<double>::infinity();
+  ctx.hit[0] = Hit{};
   rtcInitIntersectContext(&ctx.embree);
   RTCRayHit rh = embreeRay(o, d);
+  rh.ray.id = 0;
   rtcIntersect1(scene_, &ctx.embree, &rh);
-  return ctx.hit;
+  return ctx.hit[0];
 }
 
 }  // namespace xval

@@ -20,6 +20,7 @@ struct RayShear {
   double sx, sy, sz;
   glm::dvec3 origin;
 
+  RayShear() : kx(0), ky(1), kz(2), sx(0.0), sy(0.0), sz(1.0), origin(0.0) {}
   RayShear(glm::dvec3 o, glm::dvec3 d) : origin(o) {
     glm::dvec3 a = glm::abs(d);
     kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);

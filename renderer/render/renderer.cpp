@@ -315,7 +315,7 @@ void PreparedScene::Impl::renderT(const Shading<T>& sh, const RenderOptions& opt
     return;
   }
   stats.visibility = std::is_same_v<T, float> ? "Embree 16-ray packets (float)"
-                                              : "rays, double-precision watertight test";
+                                              : "Embree 16-ray packets, double-precision watertight test";
 
   auto worker = [&]() {
     constexpr int P = Accel::kPacketSide;
