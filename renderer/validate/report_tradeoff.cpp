@@ -72,7 +72,9 @@ std::string tradeoffReportSection(const std::filesystem::path& report_dir) {
     if (std::filesystem::exists(report_dir / "tradeoff" / "pareto.png"))
       h << "<figure><img src=\"tradeoff/pareto.png\" alt=\"Pareto plot\" style=\"width:800px\">"
            "<figcaption>Error (" << text(t.at("pareto_metric"))
-        << ") against frame time, log axes; Pareto-optimal configurations in red (gnuplot)</figcaption></figure>\n";
+        << ") against frame time, log axes; Pareto-optimal configurations in red, errors closer than the "
+           "reference's residual (" << num(t.at("pareto_error_tolerance").get<double>(), 2)
+        << ") counted as equal (gnuplot)</figcaption></figure>\n";
     else
       h << "<p class=\"err\">tradeoff/pareto.png is missing.</p>\n";
     h << "<table><tr><th class=\"l\">configuration</th><th>spp</th><th>segments</th><th>triangles</th>"
