@@ -60,9 +60,27 @@ Texture loadTextureImage(const std::filesystem::path& file) {
   return t;
 }
 
+void Texture::pack() {
+  packed.clear();
+  const size_t n = size_t(width) * height;
+  if (rgb8.size() != n * 3 || rgb.size() != n * 3) return;
+  std::array<bool, 256> seen{};
+  for (size_t i = 0; i < n * 3; ++i) {
+    const unsigned c = rgb8[i];
+    if (!seen[c]) seen[c] = true, code_value[c] = rgb[i];
+    if (code_value[c] != rgb[i]) return;  // not a function of the code: keep floats
+  }
+  packed.resize(n);
+  for (size_t i = 0; i < n; ++i)
+    packed[i] = std::uint32_t(rgb8[i * 3]) | std::uint32_t(rgb8[i * 3 + 1]) << 8 |
+                std::uint32_t(rgb8[i * 3 + 2]) << 16;
+}
+
 Texture loadTexture(const TextureSpec& spec) {
-  return spec.source == TextureSpec::Source::Brick ? makeBrickTexture()
-                                                   : loadTextureImage(spec.path);
+  Texture t = spec.source == TextureSpec::Source::Brick ? makeBrickTexture()
+                                                        : loadTextureImage(spec.path);
+  t.pack();
+  return t;
 }
 
 void writeTexturePng(const Texture& t, const std::filesystem::path& file) {

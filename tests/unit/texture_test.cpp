@@ -1,6 +1,8 @@
 // Texture lookups: orientation, texel centres, wrap, nearest and bilinear.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "texture/brick.h"
 #include "texture/texture.h"
 
@@ -53,4 +55,24 @@ TEST(Texture, BrickIs512SquareWith8BitCodesAndTiles) {
   EXPECT_LT(t.texel(200, 30).g, 0.45f);  // inside a brick
   // Deterministic: two calls give the same bytes.
   EXPECT_EQ(makeBrickTexture().rgb8, t.rgb8);
+}
+
+// pack(): the compact copy returns bit-identical texels, and is refused when
+// the float values are not a function of the 8-bit codes.
+TEST(Texture, PackedTexelsAreBitIdenticalAndOnlyWhenExact) {
+  xval::Texture t = xval::makeBrickTexture();
+  xval::Texture p = t;
+  p.pack();
+  ASSERT_EQ(p.packed.size(), size_t(t.width) * t.height);
+  for (int y = 0; y < t.height; y += 7)
+    for (int x = 0; x < t.width; x += 5) {
+      const glm::vec3 a = t.texel(x, y), b = p.texel(x, y);
+      EXPECT_EQ(a.x, b.x);
+      EXPECT_EQ(a.y, b.y);
+      EXPECT_EQ(a.z, b.z);
+    }
+  xval::Texture q = t;
+  q.rgb.back() = std::nextafter(q.rgb.back(), 2.0f);  // same code, another value
+  q.pack();
+  EXPECT_TRUE(q.packed.empty());
 }
