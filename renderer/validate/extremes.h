@@ -92,6 +92,10 @@ nlohmann::ordered_json metricsJson(const CompareMetrics& m);
 void writeHeatMap(const Image& a, const Image& b, const std::filesystem::path& png);
 void writeHeatScale(const std::filesystem::path& png);
 
+// "0123456789ab" from `git describe --always --dirty --abbrev=40` output,
+// with " plus uncommitted changes" for a dirty tree.
+std::string shortCommit(const std::string& described);
+
 // The report's section (validate/report.cpp calls it): HTML for
 // report_dir/extremes/extremes.json, with its tables and maps; "" when
 // there is no such file. Throws std::runtime_error on a malformed file.

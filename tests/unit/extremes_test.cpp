@@ -206,7 +206,7 @@ TEST(Extremes, MatrixHasNoNanOrInfAndFloatFollowsDouble) {
       "eye_on_surface",         // rays start on a surface: hits at t = +-rounding
       "eye_at_vertex_phong",    // float accepts the hit at t = 0 on the cap around the eye
       "eye_at_vertex_gouraud",  // (the same)
-      "degenerate_sphere_far"};  // a few pixels where the interpolated normal is short
+      "degenerate_sphere_far"};  // coincident twin triangles: which one is hit is rounding
   const auto dir = std::filesystem::temp_directory_path() / "xval_extremes_test";
   std::filesystem::remove_all(dir);
   const auto cases = extremes::extremesMatrix({40});
