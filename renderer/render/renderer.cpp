@@ -36,7 +36,7 @@ double secondsSince(Clock::time_point t0) {
 }
 
 constexpr int kTile = 8;  // tile side in pixels; a multiple of kPacketSide
-constexpr int kBand = 8;  // rows per band of the rasterised path
+constexpr int kBand = 16;  // rows per band of the rasterised path
 static_assert(kTile % Accel::kPacketSide == 0);
 
 // A mesh's attributes converted once to the working precision T.

@@ -23,7 +23,7 @@
 //     of the camera, else Embree's float triangles traced as coherent
 //     16-ray packets (4 x 4 pixels at the same sub-sample offset).
 //     RenderStats::visibility says which.
-// Work is split into 8 x 8-pixel tiles (ray paths) or 8-row bands (raster)
+// Work is split into 8 x 8-pixel tiles (ray paths) or 16-row bands (raster)
 // handed out to the threads in order.
 #pragma once
 
