@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
-#include <set>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -190,7 +189,7 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
               const fs::path& dir, double timeout_seconds) {
   Plan plan;
   plan.dir = fs::absolute(dir).lexically_normal();
-  if (plan.dir.has_filename() == false) plan.dir = plan.dir.parent_path();
+  if (!plan.dir.has_filename()) plan.dir = plan.dir.parent_path();  // "out/" -> "out"
   plan.tolerances = tolerances;
   plan.tolerances_path = fs::absolute(tolerances).lexically_normal();
   loadTolerances(plan.tolerances_path);  // fail early on a bad tolerance file
