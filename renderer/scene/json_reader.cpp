@@ -162,6 +162,7 @@ class CheckedSax {
     std::string what = ex.what();
     fail(path(), what + (what.find("line ") == std::string::npos ? " (" + where + ")" : "") +
                      "; the text there: " + textAt(position));
+    return false;  // not reached (fail throws); g++ wants a return here
   }
 
  private:
