@@ -526,15 +526,22 @@ int compareAndReport(const Plan& plan) {
   results["cases"] = jcases;
   writeAtomically(dir / "results.json", results.dump(2) + "\n");
   writeReport(dir / "results.json", dir / "report.html");
-  // For every failing case: how to look closer, and how to accept it.
+  // For every failing case: how to look closer, and how to accept it. The
+  // paths are single-quoted for a POSIX shell (' becomes '\''), so a
+  // pasted command cannot run anything a scene or folder name contains.
+  auto shellQuote = [](const std::string& v) {
+    std::string q = "'";
+    for (char c : v) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+  };
   for (const auto& jc : jcases) {
     if (jc["pass"].get<bool>()) continue;
     std::fprintf(stderr, "FAIL %s (%s)\n", jc["scene"].get<std::string>().c_str(),
                  jc["attribution"].get<std::string>().c_str());
     for (const char* r : {"povray", "blender"})
-      std::fprintf(stderr, "  look closer: xval crosscheck %s --renderer %s -o %s/%s.%s\n",
-                   jc["file"].get<std::string>().c_str(), r, dir.c_str(),
-                   jc["scene"].get<std::string>().c_str(), r);
+      std::fprintf(stderr, "  look closer: xval crosscheck %s --renderer %s -o %s\n",
+                   shellQuote(jc["file"].get<std::string>()).c_str(), r,
+                   shellQuote((dir / (jc["scene"].get<std::string>() + "." + r)).string()).c_str());
     std::fprintf(stderr,
                  "  accept a documented difference: declare it, with its measured reason, in the\n"
                  "  `tolerances` field of %s (defaults: %s)\n"
