@@ -31,6 +31,7 @@
 #include <nlohmann/json.hpp>
 
 #include "blender/blender_render.h"
+#include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "common/export_common.h"
 #include "povray/pov_render.h"
@@ -50,20 +51,6 @@ double processCpuSeconds() {
   return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
-struct Spread {
-  double median = 0, min = 0, max = 0;
-  size_t n = 0;
-};
-
-Spread spread(std::vector<double> v) {
-  Spread s;
-  if (v.empty()) return s;
-  std::sort(v.begin(), v.end());
-  s.n = v.size();
-  s.min = v.front(), s.max = v.back();
-  s.median = v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-  return s;
-}
 
 std::string ms(const Spread& s) {
   char buf[128];
@@ -130,11 +117,7 @@ void addBenchCommand(CLI::App& app, std::function<int()>& run) {
       if (wants("reference")) {
         RenderOptions o = defaultOptions(scene);
         if (args->spp) {
-          int n = 1;
-          while (n * n < args->spp) ++n;
-          if (n * n != args->spp)
-            throw std::runtime_error("--spp " + std::to_string(args->spp) +
-                                     ": expected a perfect square (1, 4, 9, ..., 256)");
+          requirePerfectSquareSpp(args->spp, "--spp");
           o.spp = args->spp;
         }
         o.threads = args->threads;

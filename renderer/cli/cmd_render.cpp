@@ -3,6 +3,7 @@
 #include <map>
 #include <memory>
 
+#include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "blender/blender_render.h"
 #include "povray/pov_render.h"
@@ -69,11 +70,7 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
       Scene scene = loadScene(args->scene);
       RenderOptions opt = defaultOptions(scene);
       if (args->spp) {
-        int n = 1;
-        while (n * n < args->spp) ++n;
-        if (n * n != args->spp)
-          throw std::runtime_error("--spp " + std::to_string(args->spp) +
-                                   ": expected a perfect square (1, 4, 9, ..., 256)");
+        requirePerfectSquareSpp(args->spp, "--spp");
         opt.spp = args->spp;
       }
       if (!args->precision.empty())

@@ -55,6 +55,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "common/run_process.h"
 #include "render/renderer.h"
@@ -71,20 +72,6 @@ using J = nlohmann::ordered_json;
 
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-struct Spread {
-  double median = 0, min = 0, max = 0;
-  size_t n = 0;
-};
-
-Spread spread(std::vector<double> v) {
-  Spread s;
-  if (v.empty()) return s;
-  std::sort(v.begin(), v.end());
-  s.n = v.size();
-  s.min = v.front(), s.max = v.back();
-  s.median = v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-  return s;
-}
 
 std::string cpuModel() {
   std::ifstream f("/proc/cpuinfo");
@@ -404,9 +391,7 @@ void addTradeoffCommand(CLI::App& app, std::function<int()>& run) {
       settings.reference_spp = args->reference_spp ? args->reference_spp : (args->quick ? 16 : 64);
       settings.reference_tessellation =
           args->reference_tessellation > 0 ? args->reference_tessellation : (args->quick ? 2.0 : 4.0);
-      if (!validSpp(settings.reference_spp))
-        throw std::runtime_error("--reference-spp " + std::to_string(settings.reference_spp) +
-                                 ": expected a perfect square (1, 4, 9, ..., 256)");
+      requirePerfectSquareSpp(settings.reference_spp, "--reference-spp");
       const std::vector<TradeoffConfig> configs = sweepConfigs(scene, settings);
       const std::vector<TradeoffConfig> checks = convergenceChecks(scene, settings);
       const TradeoffConfig ref_cfg = configs.back();  // "converged"
