@@ -1,5 +1,7 @@
 #include "validate/report.h"
 
+#include "image/heat_map.h"
+
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
@@ -36,48 +38,8 @@ std::string htmlEscape(const std::string& s) {
 
 namespace {
 
-constexpr double kHeatMin16 = 1.0, kHeatMax16 = 4096.0;
-
-// Black -> blue -> cyan -> green -> yellow -> red -> white over t in [0,1].
-glm::vec3 ramp(double t) {
-  static const glm::vec3 stops[] = {{0, 0, 0}, {0, 0, 1}, {0, 1, 1}, {0, 1, 0},
-                                    {1, 1, 0}, {1, 0, 0}, {1, 1, 1}};
-  t = std::clamp(t, 0.0, 1.0) * 6.0;
-  int i = std::min(5, int(t));
-  float f = float(t - i);
-  return stops[i] * (1.0f - f) + stops[i + 1] * f;
-}
-
-double heatT(double err16) {
-  if (err16 <= kHeatMin16) return err16 / kHeatMin16 * (1.0 / 7.0);  // 0..1 LSB: the first seventh
-  return 1.0 / 7.0 + (6.0 / 7.0) * std::log(err16 / kHeatMin16) / std::log(kHeatMax16 / kHeatMin16);
-}
-
 void writeHeatMap(const std::filesystem::path& diff_exr, const std::filesystem::path& png) {
-  Image d = readImage(diff_exr);
-  Image h(d.width, d.height, false);
-  for (size_t i = 0; i < size_t(d.width) * d.height; ++i) {
-    glm::vec3 c(0.35f);  // not covered by either render
-    if (d.rgba[i * 4 + 3] > 0) {
-      double e = std::max({d.rgba[i * 4], d.rgba[i * 4 + 1], d.rgba[i * 4 + 2]}) * 65535.0;
-      c = ramp(heatT(e));
-    }
-    for (int k = 0; k < 3; ++k) h.rgba[i * 4 + k] = c[k];
-    h.rgba[i * 4 + 3] = 1.0f;
-  }
-  writePreviewPng(h, png, 360);
-}
-
-void writeScale(const std::filesystem::path& png) {
-  Image s(512, 16, false);
-  for (int x = 0; x < 512; ++x) {
-    glm::vec3 c = ramp(x / 511.0);
-    for (int y = 0; y < 16; ++y) {
-      float* p = s.pixel(x, y);
-      p[0] = c.r, p[1] = c.g, p[2] = c.b, p[3] = 1.0f;
-    }
-  }
-  writePreviewPng(s, png, 512);
+  writePreviewPng(heatMap(readImage(diff_exr)), png, 360);
 }
 
 std::string fmt(double v, int prec = 3) {
@@ -203,7 +165,7 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   std::stable_sort(cases.begin(), cases.end(), [](const J& a, const J& b) {
     return a["pass"].get<bool>() < b["pass"].get<bool>();
   });
-  writeScale(dir / "heat_scale.png");
+  writeHeatScalePng(dir / "heat_scale.png");
   writePlot(cases, dir);
 
   int pass = 0, fail = 0, err = 0;

@@ -1,0 +1,26 @@
+// Heat maps of a difference image, as the report and the extremes matrix
+// show them.
+//
+// Per pixel: the largest channel difference e (in 1/65535) mapped to
+// black -> blue -> cyan -> green -> yellow -> red -> white; e in [0, 1]
+// linearly over the first seventh of the scale, then logarithmically up to
+// kHeatMax16 = 4096 at white; NaN at the top. Pixels neither render covers
+// (alpha 0) are grey 0.35.
+#pragma once
+
+#include <filesystem>
+
+#include "image/image.h"
+
+namespace xval {
+
+inline constexpr double kHeatMin16 = 1.0, kHeatMax16 = 4096.0;
+
+// diff: a difference image (image/compare.h differenceImage): |a - b| per
+// channel, alpha = covered by either. Returns the RGB heat map, alpha 1.
+Image heatMap(const Image& diff);
+
+// The colour scale itself, 512 x 16, left = 0, right = kHeatMax16.
+void writeHeatScalePng(const std::filesystem::path& png);
+
+}  // namespace xval
