@@ -10,17 +10,4 @@ set -euo pipefail
 
 packages=(slurm-wlm slurmctld slurmd slurm-client munge)
 
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
-done
-
-SUDO=""
-[ "$(id -u)" -eq 0 ] || SUDO="sudo"
-if [ ${#missing[@]} -eq 0 ]; then
-  echo "slurm/install: all ${#packages[@]} packages present"
-else
-  echo "slurm/install: installing ${missing[*]}"
-  $SUDO apt-get update
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y --no-install-recommends "${missing[@]}"
-fi
+bash "$(dirname "$0")/../apt-install-missing.sh" slurm/install "${packages[@]}"
