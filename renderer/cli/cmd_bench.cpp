@@ -142,9 +142,11 @@ void addBenchCommand(CLI::App& app, std::function<int()>& run) {
           medians[key] = s.median;
           std::printf("  %-18s frame %s   CPU time %s\n", key.c_str(), ms(s).c_str(), ms(sc).c_str());
           std::printf("  %-18s setup %.1f ms once, %zu triangles, %d spp, visibility: %s\n", "",
-                      prepared.setupSeconds() * 1e3, prepared.triangleCount(), o.spp, stats.visibility);
+                      prepared.setupSeconds() * 1e3, prepared.triangleCount(), o.spp,
+                      describeVisibility(stats).c_str());
           out[key] = {{"frame_median_s", s.median}, {"frame_min_s", s.min}, {"frame_max_s", s.max},
                       {"cpu_median_s", sc.median}, {"visibility", stats.visibility},
+                      {"culled_triangles", stats.culled_triangles},
                       {"frames", s.n}, {"setup_s", prepared.setupSeconds()}, {"spp", o.spp}};
         }
       }

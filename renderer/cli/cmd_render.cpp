@@ -108,7 +108,7 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
                      "xval render: wrote %s (%dx%d, %d spp, %s, visibility: %s): setup %.3f s, "
                      "frame %.3f s\n",
                      args->output.c_str(), img.width, img.height, opt.spp, toString(opt.precision),
-                     stats.visibility, stats.setup_seconds, stats.trace_seconds);
+                     describeVisibility(stats).c_str(), stats.setup_seconds, stats.trace_seconds);
       return 0;
     };
   });

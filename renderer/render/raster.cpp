@@ -12,7 +12,8 @@ bool Rasteriser::applicable(const std::vector<TriangleMesh>& meshes, const Camer
   return true;
 }
 
-Rasteriser::Rasteriser(const std::vector<TriangleMesh>& meshes, const CameraRays& cam, int band_rows)
+Rasteriser::Rasteriser(const std::vector<TriangleMesh>& meshes, const CameraRays& cam, int band_rows,
+                       const std::vector<bool>& cull_back)
     : meshes_(&meshes), cam_(&cam), band_rows_(band_rows) {
   const double sx = cam.tan_half_fov * cam.aspect, sy = cam.tan_half_fov;
   const double hw = 0.5 * cam.width, hh = 0.5 * cam.height;
@@ -32,7 +33,15 @@ Rasteriser::Rasteriser(const std::vector<TriangleMesh>& meshes, const CameraRays
   for (size_t m = 0; m < meshes.size(); ++m) {
     const auto& P = projected_[m];
     const auto& tris = meshes[m].triangles;
+    const bool cull = m < cull_back.size() && cull_back[m];
     for (size_t t = 0; t < tris.size(); ++t) {
+      if (cull) {
+        const Vertex &a = P[tris[t][0]], &b = P[tris[t][1]], &c = P[tris[t][2]];
+        if ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) > 0.0) {  // a back face
+          ++culled_;
+          continue;
+        }
+      }
       const double y0 = std::min({P[tris[t][0]].y, P[tris[t][1]].y, P[tris[t][2]].y});
       const double y1 = std::max({P[tris[t][0]].y, P[tris[t][1]].y, P[tris[t][2]].y});
       // Samples sit at j + oy, oy in [0, 1): rows floor(y0) - 1 .. floor(y1).

@@ -26,6 +26,11 @@
 // barycentrics of a 3-pixel triangle by ~1e-5, a visible texture shift.
 // Ray length to the hit (diagnostics only): t = z(p) |forward + sx right +
 // sy up|.
+// Back faces: a mesh flagged in `cull_back` (geometry/front_faces.h: its
+// first hits are always front faces) has its back faces dropped when
+// binning. With y down the image, a triangle whose winding normal faces the
+// eye has signed area (x1 - x0)(y2 - y0) - (y1 - y0)(x2 - x0) < 0, so
+// those with area > 0 are dropped (area 0 covers no sample anyway).
 #pragma once
 
 #include <glm/glm.hpp>
@@ -46,10 +51,13 @@ class Rasteriser {
 
   // Projects the vertices and bins the triangles into bands of band_rows
   // rows (done once per frame; cheap next to shading).
-  Rasteriser(const std::vector<TriangleMesh>& meshes, const CameraRays& cam, int band_rows);
+  // cull_back: per mesh, empty for none.
+  Rasteriser(const std::vector<TriangleMesh>& meshes, const CameraRays& cam, int band_rows,
+             const std::vector<bool>& cull_back = {});
 
   int bands() const { return int(bins_.size()); }
   int bandRows() const { return band_rows_; }
+  size_t culledTriangles() const { return culled_; }
 
   // The first hit of every sample (i + ox, j + oy) of band b's rows (ox, oy
   // in [0, 1): the sample's offset inside its pixel), row-major, W per row;
@@ -63,6 +71,7 @@ class Rasteriser {
   const std::vector<TriangleMesh>* meshes_;
   const CameraRays* cam_;
   int band_rows_;
+  size_t culled_ = 0;
   std::vector<std::vector<Vertex>> projected_;          // per mesh, per vertex
   std::vector<std::vector<std::uint64_t>> bins_;        // per band: (mesh << 32) | triangle
 };

@@ -12,6 +12,7 @@
 #include <variant>
 
 #include "camera/camera.h"
+#include "geometry/front_faces.h"
 #include "geometry/mesh.h"
 #include "render/accel.h"
 #include "render/raster.h"
@@ -26,6 +27,12 @@ RenderOptions defaultOptions(const Scene& scene) {
   o.spp = scene.render.spp;
   o.precision = scene.render.precision;
   return o;
+}
+
+std::string describeVisibility(const RenderStats& stats) {
+  std::string s = stats.visibility;
+  if (stats.culled_triangles) s += ", " + std::to_string(stats.culled_triangles) + " back faces skipped";
+  return s;
 }
 
 namespace {
@@ -125,6 +132,7 @@ struct PreparedScene::Impl {
   std::vector<TriangleMesh> meshes;
   std::optional<Texture> texture;
   std::optional<Accel> accel;
+  std::vector<bool> back_faces_hidden;  // per mesh: geometry/front_faces.h, from the camera
   std::variant<std::monostate, Shading<float>, Shading<double>> shading;
   Precision precision;
   double setup_seconds = 0.0;
@@ -141,6 +149,9 @@ PreparedScene::PreparedScene(const Scene& scene, Precision precision) : impl_(ne
   d.precision = precision;
   for (const Shape& s : scene.objects) d.meshes.push_back(tessellate(s));
   for (const auto& m : d.meshes) d.triangles += m.triangles.size();
+  const glm::dvec3 eye = CameraRays(scene.camera).origin;
+  for (size_t k = 0; k < d.meshes.size(); ++k)
+    d.back_faces_hidden.push_back(backFacesNeverFirstHit(scene.objects[k], d.meshes[k], eye));
   if (scene.material.texture) d.texture = loadTexture(*scene.material.texture);
   d.accel.emplace(d.meshes, precision);
   const Texture* tex = d.texture ? &*d.texture : nullptr;
@@ -263,7 +274,9 @@ void PreparedScene::Impl::renderT(const Shading<T>& sh, const RenderOptions& opt
 
   if (std::is_same_v<T, float> && opt.rasterise && Rasteriser::applicable(meshes, cam)) {
     stats.visibility = "rasterised";
-    const Rasteriser raster(meshes, cam, kBand);
+    const Rasteriser raster(meshes, cam, kBand,
+                            opt.cull_back_faces ? back_faces_hidden : std::vector<bool>{});
+    stats.culled_triangles = raster.culledTriangles();
     std::atomic<int> next_band{0}, bands_done{0};
     auto band_worker = [&]() {
       std::vector<Hit> hits(size_t(kBand) * W);

@@ -22,12 +22,15 @@
 //     watertight z-buffer in bands of rows) when the whole scene is in front
 //     of the camera, else Embree's float triangles traced as coherent
 //     16-ray packets (4 x 4 pixels at the same sub-sample offset).
-//     RenderStats::visibility says which.
+//     RenderStats::visibility says which. The raster skips the back faces
+//     of closed meshes seen from outside (geometry/front_faces.h), which
+//     are never a first hit.
 // Work is split into 8 x 8-pixel tiles (ray paths) or 16-row bands (raster)
 // handed out to the threads in order.
 #pragma once
 
 #include <memory>
+#include <string>
 
 #include "image/image.h"
 #include "scene/scene.h"
@@ -46,6 +49,10 @@ struct RenderOptions {
   // Float path only: rasterise visibility when applicable (false: always
   // trace Embree packets; tests compare the two).
   bool rasterise = true;
+  // Rasterised path only: skip the back faces of meshes whose first hits
+  // are always front faces (geometry/front_faces.h; the image is the same,
+  // tests compare).
+  bool cull_back_faces = true;
 };
 
 // Options from the scene's render settings.
@@ -55,7 +62,11 @@ struct RenderStats {
   double setup_seconds = 0.0;   // tessellation, texture, BVH build, per-vertex data
   double trace_seconds = 0.0;   // visibility and shading
   const char* visibility = "";  // how first hits were found
+  size_t culled_triangles = 0;  // back faces the raster skipped (cull_back_faces)
 };
+
+// stats.visibility, plus the number of back faces skipped when any were.
+std::string describeVisibility(const RenderStats& stats);
 
 // A scene made ready to render many frames: tessellated, its texture
 // loaded, its BVH built for one precision. Rendering does not modify it.

@@ -1,0 +1,66 @@
+#include "geometry/front_faces.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <variant>
+
+#include "geometry/torus_knot.h"
+
+namespace xval {
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586476925;
+
+// Condition 2: the winding agrees with the vertex normals everywhere.
+bool windingAgreesWithNormals(const TriangleMesh& m) {
+  for (const auto& t : m.triangles) {
+    const glm::dvec3 g =
+        glm::cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]);
+    if (g == glm::dvec3(0.0)) continue;  // degenerate (a pole): never hit
+    if (!(glm::dot(g, m.normals[t[0]] + m.normals[t[1]] + m.normals[t[2]]) > 0.0)) return false;
+  }
+  return true;
+}
+
+// Radius of the circle through a, b, c (infinite when collinear).
+double circumradius(glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {
+  const double la = glm::length(b - c), lb = glm::length(a - c), lc = glm::length(a - b);
+  const double twice_area = glm::length(glm::cross(b - a, c - a));
+  return twice_area > 0.0 ? la * lb * lc / (2.0 * twice_area) : std::numeric_limits<double>::infinity();
+}
+
+bool eyeOutside(const UvSphere& s, glm::dvec3 eye) {
+  return glm::length(eye - s.center) > s.radius * (1.0 + 1e-6);
+}
+
+bool eyeOutside(const TorusKnot& k, glm::dvec3 eye) {
+  const TorusKnotCurve curve(k, 1 << 10);  // only point() is used: the frame grid is not
+  const int n = k.segments_along;
+  if (n < 3) return false;
+  auto c = [&](int i) { return curve.point(kTwoPi * double(((i % n) + n) % n) / n); };
+  double nearest = std::numeric_limits<double>::infinity(), chord = 0.0;
+  double min_circumradius = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < n; ++i) {
+    const glm::dvec3 a = c(i - 1), b = c(i), d = c(i + 1);
+    nearest = std::min(nearest, glm::length(eye - b));
+    chord = std::max(chord, glm::length(d - b));
+    min_circumradius = std::min(min_circumradius, circumradius(a, b, d));
+  }
+  // float32 vertices: each coordinate moves by <= 2^-24 of its magnitude.
+  const double extent = glm::length(k.center) + k.major_radius + k.minor_radius + k.tube_radius;
+  const double margin = 1e-6 * extent;
+  return k.tube_radius < 0.99 * min_circumradius && nearest > k.tube_radius + chord + margin;
+}
+
+bool eyeOutside(const Plane&, glm::dvec3) { return false; }  // open: its back is visible
+
+}  // namespace
+
+bool backFacesNeverFirstHit(const Shape& shape, const TriangleMesh& mesh, glm::dvec3 eye) {
+  const bool outside = std::visit([&](const auto& s) { return eyeOutside(s, eye); }, shape);
+  return outside && windingAgreesWithNormals(mesh);
+}
+
+}  // namespace xval

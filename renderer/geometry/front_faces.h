@@ -1,0 +1,42 @@
+// Whether back faces can be skipped: true only when, for every ray from
+// `eye`, the first triangle of `mesh` it hits is a front face (its winding
+// normal g = (P1 - P0) x (P2 - P0) points towards the eye). Then a renderer
+// looking for first hits may drop the back faces without changing any
+// pixel (the fast path's rasteriser does: about half of a closed mesh).
+//
+// Why it holds: if the mesh bounds a solid whose surface, near every
+// point, is the boundary of that solid with g pointing out of it, a ray
+// that starts outside the solid can first meet the surface only where it
+// enters the solid, i.e. against g. Pieces of the solid may overlap each
+// other (a knotted tube that crosses itself): the ray still enters some
+// piece first. Three conditions, all checked here:
+//   1. the shape is a closed solid: a torus knot tube or a sphere (a plane
+//      is open, and its back is visible: never);
+//   2. every non-degenerate triangle's winding normal agrees with its
+//      vertex normals (g . (n0 + n1 + n2) > 0; the tessellators promise
+//      outward normals, and this checks the winding against them);
+//   3. the eye is outside the solid, with margin:
+//      sphere: |eye - c| > r (1 + 1e-6): the mesh's vertices lie on the
+//        sphere, so its (convex) faces lie inside it;
+//      torus knot: with c_i the centre line at the tessellation's rings
+//        and L the longest chord c_i c_{i+1}, every point of the faceted
+//        tube between rings i and i+1 lies within rho + L of c_i (each
+//        vertex of ring i + 1 is within rho + |c_{i+1} - c_i| of c_i, and
+//        the ball is convex), so min_i |eye - c_i| > rho + L + margin puts
+//        the eye outside every piece; the margin covers the float32
+//        rounding of the vertices. And the tube must not fold over
+//        itself where the centre line bends: rho < 0.99 x the smallest
+//        circumradius of three consecutive c_i (the discrete radius of
+//        curvature; adjacent rings then do not cross).
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "geometry/mesh.h"
+#include "scene/scene.h"
+
+namespace xval {
+
+bool backFacesNeverFirstHit(const Shape& shape, const TriangleMesh& mesh, glm::dvec3 eye);
+
+}  // namespace xval

@@ -1,0 +1,111 @@
+// When back faces may be skipped (geometry/front_faces.h), and that
+// skipping them leaves every pixel of the fast path unchanged.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "geometry/front_faces.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+
+using namespace xval;
+
+TEST(FrontFaces, SphereOnlyFromOutside) {
+  UvSphere s;
+  s.center = {1, 0, 0}, s.radius = 2.0;
+  const TriangleMesh m = tessellate(s);
+  EXPECT_TRUE(backFacesNeverFirstHit(s, m, {1, 0, 5}));
+  EXPECT_TRUE(backFacesNeverFirstHit(s, m, {1, 0, 2.01}));
+  EXPECT_FALSE(backFacesNeverFirstHit(s, m, {1, 0, 2.0}));  // on the sphere
+  EXPECT_FALSE(backFacesNeverFirstHit(s, m, {1, 0, 0.5}));  // inside
+}
+
+TEST(FrontFaces, PlaneNever) {
+  Plane p;
+  EXPECT_FALSE(backFacesNeverFirstHit(p, tessellate(p), {0, 0, 5}));
+}
+
+TEST(FrontFaces, TorusKnotFromOutsideAndNotFromInsideTheTube) {
+  TorusKnot k;  // the paper's knot: tube 0.22, smallest radius of curvature ~0.74
+  const TriangleMesh m = tessellate(k);
+  EXPECT_TRUE(backFacesNeverFirstHit(k, m, {0, 0, 4.2}));
+  // The centre line at t = 0 is (R + r, 0, 0) = (1.45, 0, 0): a point
+  // inside the tube, one on the tube, and one just outside the margin.
+  EXPECT_FALSE(backFacesNeverFirstHit(k, m, {1.45, 0, 0}));
+  EXPECT_FALSE(backFacesNeverFirstHit(k, m, {1.45 + 0.22, 0, 0}));
+  EXPECT_TRUE(backFacesNeverFirstHit(k, m, {1.45 + 0.3, 0, 0}));
+  // The centre of the torus is outside the tube (and is seen from there).
+  EXPECT_TRUE(backFacesNeverFirstHit(k, m, {0, 0, 0}));
+}
+
+TEST(FrontFaces, TorusKnotThatFoldsOverItselfNever) {
+  TorusKnot k;
+  k.tube_radius = 0.8;  // more than the centre line's smallest radius of curvature
+  EXPECT_FALSE(backFacesNeverFirstHit(k, tessellate(k), {0, 0, 10}));
+}
+
+TEST(FrontFaces, WindingAgainstTheNormalsNever) {
+  UvSphere s;
+  TriangleMesh m = tessellate(s);
+  EXPECT_TRUE(backFacesNeverFirstHit(s, m, {0, 0, 5}));
+  std::swap(m.triangles[7][1], m.triangles[7][2]);  // one triangle turned inside out
+  EXPECT_FALSE(backFacesNeverFirstHit(s, m, {0, 0, 5}));
+}
+
+namespace {
+// Renders with and without skipping back faces; the images must be equal
+// bit for bit (final colour and alpha, and every diagnostic channel).
+void expectSameWithAndWithoutCulling(const Scene& s, int spp, size_t expect_culled_min,
+                                     size_t expect_culled_max) {
+  RenderOptions with, without;
+  with.precision = without.precision = Precision::Float;
+  with.spp = without.spp = spp;
+  without.cull_back_faces = false;
+  RenderStats sw, so;
+  const Image a = renderScene(s, with, &sw), b = renderScene(s, without, &so);
+  EXPECT_STREQ(sw.visibility, "rasterised");
+  EXPECT_EQ(so.culled_triangles, 0u);
+  EXPECT_GE(sw.culled_triangles, expect_culled_min);
+  EXPECT_LE(sw.culled_triangles, expect_culled_max);
+  ASSERT_EQ(a.rgba.size(), b.rgba.size());
+  EXPECT_EQ(0, std::memcmp(a.rgba.data(), b.rgba.data(), a.rgba.size() * sizeof(float)));
+  EXPECT_EQ(a.depth, b.depth);
+  EXPECT_EQ(a.backfacing, b.backfacing);
+  EXPECT_EQ(a.raw, b.raw);
+}
+}  // namespace
+
+TEST(FrontFaces, SkippingBackFacesLeavesTheTable2KnotUnchanged) {
+  const Scene s = loadScene(std::string(XVAL_REFERENCE_DIR) + "/scenes/table2_knot_yiq.json");
+  // About half of the 61,440 triangles face away from the eye.
+  expectSameWithAndWithoutCulling(s, 1, 20000, 40000);
+}
+
+TEST(FrontFaces, SkippingBackFacesLeavesASphereUnchangedAt4Spp) {
+  Scene s;
+  s.camera.width = s.camera.height = 96;
+  UvSphere sphere;
+  sphere.radius = 1.5;
+  s.objects = {sphere};
+  s.lights = {PointLight{{1, 2, 3}, glm::dvec3(1.0), {}}};
+  // 64 x 62 triangles; from 4.2 away the eye sees a cap of (1 - 1.5/4.2)/2
+  // = 32% of the sphere, so about two thirds face away.
+  expectSameWithAndWithoutCulling(s, 4, 2400, 3200);
+}
+
+// An open plane seen from behind: rasterised, nothing skipped, drawn.
+TEST(FrontFaces, APlaneSeenFromBehindIsDrawn) {
+  Scene s;
+  s.camera.width = s.camera.height = 64;
+  Plane p;
+  p.normal = {0, 0, -1};  // facing away from the eye at +z
+  s.objects = {p};
+  s.lights = {DirectionalLight{{0, 0, -1}, glm::dvec3(1.0)}};
+  RenderOptions o;
+  o.precision = Precision::Float;
+  RenderStats st;
+  const Image img = renderScene(s, o, &st);
+  EXPECT_STREQ(st.visibility, "rasterised");
+  EXPECT_EQ(st.culled_triangles, 0u);
+  EXPECT_EQ(img.pixel(32, 32)[3], 1.0f);
+}
