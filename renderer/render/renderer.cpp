@@ -203,7 +203,7 @@ void PreparedScene::Impl::renderT(const Shading<T>& sh, const RenderOptions& opt
   // One sample: shade the hit and add it to the pixel's sums.
   // The unsaturated colour of one hit; backfacing is set when the shading
   // normal faces away from the eye.
-  auto shadeHit = [&](const Hit& h, bool& backfacing) -> V {
+  auto shadeHit = [&](const Hit& h, bool& backfacing) __attribute__((flatten)) -> V {
     const ShadedMesh<T>& m = sh.meshes[h.mesh];
     const auto& tri = m.src->triangles[h.triangle];
     const T b1 = T(h.b1), b2 = T(h.b2), b0 = T(1) - b1 - b2;
