@@ -16,6 +16,7 @@
 #include "geometry/mesh.h"
 #include "render/accel.h"
 #include "render/raster.h"
+#include "shading/batch_shader.h"
 #include "shading/shader.h"
 #include "shading/surface_colour.h"
 #include "texture/texture.h"
@@ -32,7 +33,7 @@ RenderOptions defaultOptions(const Scene& scene) {
 std::string describeVisibility(const RenderStats& stats) {
   std::string s = stats.visibility;
   if (stats.culled_triangles) s += ", " + std::to_string(stats.culled_triangles) + " back faces skipped";
-  return s;
+  return s + "; shading: " + stats.shading;
 }
 
 namespace {
@@ -134,6 +135,8 @@ struct PreparedScene::Impl {
   std::optional<Accel> accel;
   std::vector<bool> back_faces_hidden;  // per mesh: geometry/front_faces.h, from the camera
   std::variant<std::monostate, Shading<float>, Shading<double>> shading;
+  // Float only: the SIMD kernel, when it covers the scene (shading/batch_shader.h).
+  std::optional<BatchShading> batch;
   Precision precision;
   double setup_seconds = 0.0;
   size_t triangles = 0;
@@ -155,9 +158,10 @@ PreparedScene::PreparedScene(const Scene& scene, Precision precision) : impl_(ne
   if (scene.material.texture) d.texture = loadTexture(*scene.material.texture);
   d.accel.emplace(d.meshes, precision);
   const Texture* tex = d.texture ? &*d.texture : nullptr;
-  if (precision == Precision::Float)
+  if (precision == Precision::Float) {
     d.shading.emplace<Shading<float>>(d.scene, d.meshes, tex);
-  else
+    d.batch = batchShading(d.scene, tex, eye);
+  } else
     d.shading.emplace<Shading<double>>(d.scene, d.meshes, tex);
   d.setup_seconds = secondsSince(t0);
 }
@@ -278,11 +282,58 @@ void PreparedScene::Impl::renderT(const Shading<T>& sh, const RenderOptions& opt
                             opt.cull_back_faces ? back_faces_hidden : std::vector<bool>{});
     stats.culled_triangles = raster.culledTriangles();
     std::atomic<int> next_band{0}, bands_done{0};
+    // The SIMD kernel's inputs: the band's hits on one mesh, compacted.
+    const BatchShading* batch_kernel =
+        std::is_same_v<T, float> && batch && opt.batch_shading && n == 1 && !diag ? &*batch : nullptr;
+    if (batch_kernel) stats.shading = std::string("SIMD, ") + batchShaderTarget();
+    std::vector<BatchMesh> batch_meshes;
+    if constexpr (std::is_same_v<T, float>)
+      for (const auto& m : sh.meshes)
+        batch_meshes.push_back({m.p.data(), m.n.data(), m.uv.data(), m.src->triangles.data()});
+    struct BatchBuffers {
+      std::vector<std::uint32_t> at, tri;
+      std::vector<float> b1, b2, r, g, b;
+      explicit BatchBuffers(size_t n)
+          : at(n), tri(n + kBatchPad), b1(n + kBatchPad), b2(n + kBatchPad), r(n + kBatchPad),
+            g(n + kBatchPad), b(n + kBatchPad) {}
+    };
+    // Shades hits[0, count) (band rows from row0) with the kernel, one mesh
+    // at a time, and writes the pixels that have a hit.
+    auto shadeBandBatched = [&](const std::vector<Hit>& hits, size_t count, int row0, BatchBuffers& bb) {
+      for (size_t mi = 0; mi < batch_meshes.size(); ++mi) {
+        size_t c = 0;
+        for (size_t k = 0; k < count; ++k) {
+          const Hit& h = hits[k];
+          if (!h.hit || h.mesh != mi) continue;
+          bb.at[c] = std::uint32_t(k), bb.tri[c] = h.triangle;
+          bb.b1[c] = float(h.b1), bb.b2[c] = float(h.b2);  // as the scalar path's T(h.b1)
+          ++c;
+        }
+        if (c == 0) continue;
+        for (size_t k = c; k < (c + kBatchPad - 1) / kBatchPad * kBatchPad; ++k)
+          bb.tri[k] = 0, bb.b1[k] = bb.b2[k] = 0.0f;  // padding: a valid triangle
+        shadeBatch(*batch_kernel, batch_meshes[mi], c, bb.tri.data(), bb.b1.data(), bb.b2.data(),
+                   bb.r.data(), bb.g.data(), bb.b.data());
+        float* band = img.pixel(0, row0);
+        for (size_t k = 0; k < c; ++k) {
+          float* px = band + size_t(bb.at[k]) * 4;
+          px[0] = bb.r[k], px[1] = bb.g[k], px[2] = bb.b[k], px[3] = 1.0f;
+        }
+      }
+    };
     auto band_worker = [&]() {
       std::vector<Hit> hits(size_t(kBand) * W);
       std::vector<PixelSums<T>> sums(size_t(kBand) * W);
+      BatchBuffers bb(batch_kernel ? size_t(kBand) * W : 0);
       for (int b = next_band++; b < raster.bands(); b = next_band++) {
         const int row0 = b * kBand, rows = std::min(kBand, H - row0);
+        if (batch_kernel) {  // one sample, no diagnostics, SIMD shading
+          raster.visibility(b, 0.5, 0.5, false, hits);
+          std::fill(img.pixel(0, row0), img.pixel(0, row0) + size_t(rows) * W * 4, 0.0f);
+          shadeBandBatched(hits, size_t(rows) * W, row0, bb);
+          reportProgress(++bands_done, raster.bands());
+          continue;
+        }
         if (n == 1 && !diag) {  // one sample, no diagnostics: straight to the pixels
           raster.visibility(b, 0.5, 0.5, false, hits);
           for (int r = 0; r < rows; ++r)

@@ -53,6 +53,10 @@ struct RenderOptions {
   // are always front faces (geometry/front_faces.h; the image is the same,
   // tests compare).
   bool cull_back_faces = true;
+  // Float path, one sample per pixel, no diagnostics: shade with the SIMD
+  // kernel when it covers the scene (shading/batch_shader.h; bit-identical
+  // to one hit at a time, which false forces: tests compare).
+  bool batch_shading = true;
 };
 
 // Options from the scene's render settings.
@@ -63,9 +67,11 @@ struct RenderStats {
   double trace_seconds = 0.0;   // visibility and shading
   const char* visibility = "";  // how first hits were found
   size_t culled_triangles = 0;  // back faces the raster skipped (cull_back_faces)
+  std::string shading = "one hit at a time";  // or "SIMD, <instruction set>" (batch_shading)
 };
 
-// stats.visibility, plus the number of back faces skipped when any were.
+// stats.visibility, the number of back faces skipped when any were, and
+// how the hits were shaded.
 std::string describeVisibility(const RenderStats& stats);
 
 // A scene made ready to render many frames: tessellated, its texture

@@ -1,0 +1,288 @@
+// Highway's dynamic dispatch: this file is compiled once per SIMD target
+// (foreach_target.h re-includes it), and shadeBatch picks the best one the
+// CPU has at run time.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "shading/batch_shader.cpp"
+#include <hwy/foreach_target.h>  // must come before highway.h
+#include <hwy/highway.h>
+
+#include <cmath>
+#include <limits>
+
+#include "shading/batch_shader.h"
+#include "shading/models.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace xval {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+using DF = hn::ScalableTag<float>;
+using DI = hn::RebindToSigned<DF>;
+using DU = hn::RebindToUnsigned<DF>;
+using VF = hn::Vec<DF>;
+using VI = hn::Vec<DI>;
+using MF = hn::Mask<DF>;
+
+struct V3 {
+  VF x, y, z;
+};
+// Every helper rounds exactly as the scalar glm expression it mirrors.
+HWY_INLINE V3 add(V3 a, V3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+HWY_INLINE V3 sub(V3 a, V3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+HWY_INLINE V3 mul(VF s, V3 a) { return {s * a.x, s * a.y, s * a.z}; }
+HWY_INLINE V3 mul(V3 a, V3 b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
+HWY_INLINE VF dot(V3 a, V3 b) { return (a.x * b.x + a.y * b.y) + a.z * b.z; }  // glm: (x + y) + z
+HWY_INLINE V3 splat(DF d, glm::vec3 v) { return {hn::Set(d, v.x), hn::Set(d, v.y), hn::Set(d, v.z)}; }
+// models::saturate: NaN -> 0.
+HWY_INLINE VF saturate(DF d, VF x) {
+  return hn::IfThenElseZero(x > hn::Zero(d), hn::IfThenElse(x < hn::Set(d, 1.0f), x, hn::Set(d, 1.0f)));
+}
+HWY_INLINE VF clamp0(DF d, VF x) { return hn::IfThenElseZero(x > hn::Zero(d), x); }
+
+// Gathers component c of a float3 array at vertex indices idx.
+HWY_INLINE VF gather3(DF d, const float* base, VI idx3, int c) {
+  return hn::GatherIndex(d, base + c, idx3);
+}
+HWY_INLINE V3 gatherV3(DF d, const glm::vec3* a, VI idx) {
+  const VI i3 = idx * hn::Set(DI(), 3);
+  const float* f = &a[0].x;
+  return {gather3(d, f, i3, 0), gather3(d, f, i3, 1), gather3(d, f, i3, 2)};
+}
+
+// Texture::texel for texel index `at` (y * width + x).
+HWY_INLINE V3 texel(DF d, const Texture& t, VI at) {
+  if (!t.packed.empty()) {
+    const DU du;
+    const DI di;
+    const auto c = hn::GatherIndex(du, t.packed.data(), at);
+    const auto m = hn::Set(du, 255u);
+    const float* cv = t.code_value.data();
+    return {hn::GatherIndex(d, cv, hn::BitCast(di, hn::And(c, m))),
+            hn::GatherIndex(d, cv, hn::BitCast(di, hn::And(hn::ShiftRight<8>(c), m))),
+            hn::GatherIndex(d, cv, hn::BitCast(di, hn::And(hn::ShiftRight<16>(c), m)))};
+  }
+  const VI a3 = at * hn::Set(DI(), 3);
+  return {gather3(d, t.rgb.data(), a3, 0), gather3(d, t.rgb.data(), a3, 1), gather3(d, t.rgb.data(), a3, 2)};
+}
+
+// Texture::lookup<float>.
+HWY_INLINE V3 lookup(DF d, const Texture& t, TextureFilter f, VF u, VF v) {
+  const DI di;
+  const VF fu = u - hn::Floor(u), fv = v - hn::Floor(v);
+  const VF w = hn::Set(d, float(t.width)), h = hn::Set(d, float(t.height));
+  if (f == TextureFilter::Nearest) {
+    const VI ix = hn::Min(hn::ConvertTo(di, fu * w), hn::Set(di, t.width - 1));
+    const VI iy = hn::Min(hn::ConvertTo(di, fv * h), hn::Set(di, t.height - 1));
+    return texel(d, t, iy * hn::Set(di, t.width) + ix);
+  }
+  const VF half = hn::Set(d, 0.5f), one = hn::Set(d, 1.0f);
+  const VF x = fu * w - half, y = fv * h - half;
+  const VF x0f = hn::Floor(x), y0f = hn::Floor(y);
+  const VF wx = x - x0f, wy = y - y0f;
+  VI x0 = hn::ConvertTo(di, x0f), y0 = hn::ConvertTo(di, y0f);
+  VI x1 = x0 + hn::Set(di, 1), y1 = y0 + hn::Set(di, 1);
+  const VI W = hn::Set(di, t.width), H = hn::Set(di, t.height), zero = hn::Zero(di);
+  x0 = hn::IfThenElse(x0 < zero, x0 + W, x0);
+  y0 = hn::IfThenElse(y0 < zero, y0 + H, y0);
+  x1 = hn::IfThenElse(x1 < W, x1, x1 - W);
+  y1 = hn::IfThenElse(y1 < H, y1, y1 - H);
+  const VI r0 = y0 * W, r1 = y1 * W;
+  const V3 t00 = texel(d, t, r0 + x0), t10 = texel(d, t, r0 + x1);
+  const V3 t01 = texel(d, t, r1 + x0), t11 = texel(d, t, r1 + x1);
+  const VF wx1 = one - wx, wy1 = one - wy;
+  const V3 top = add(mul(wx1, t00), mul(wx, t10));
+  const V3 bottom = add(mul(wx1, t01), mul(wx, t11));
+  return add(mul(wy1, top), mul(wy, bottom));
+}
+
+constexpr size_t kMaxLanes = HWY_MAX_BYTES / sizeof(float);
+
+// sampleLight<float> for every lane; lit lanes in `lit`.
+HWY_INLINE void sampleLight(DF d, const PreparedLight<float>& l, V3 p, V3& L, VF& att, MF& lit) {
+  using K = PreparedLight<float>::Kind;
+  att = hn::Set(d, 1.0f);
+  lit = hn::FirstN(d, hn::Lanes(d));  // all true
+  if (l.kind == K::Directional) {
+    L = splat(d, -l.direction);
+    return;
+  }
+  const V3 D = sub(splat(d, l.position), p);
+  const VF dd = dot(D, D);
+  VF dist = hn::Sqrt(dd);
+  L = {D.x / dist, D.y / dist, D.z / dist};
+  const MF normal = hn::And(dd >= hn::Set(d, std::numeric_limits<float>::min()),
+                            dd <= hn::Set(d, std::numeric_limits<float>::max()));
+  if (!hn::AllTrue(d, normal)) {  // towardsLight's rescaling, lane by lane
+    alignas(64) float dx[kMaxLanes], dy[kMaxLanes], dz[kMaxLanes], lx[kMaxLanes], ly[kMaxLanes],
+        lz[kMaxLanes], ds[kMaxLanes];
+    hn::Store(D.x, d, dx), hn::Store(D.y, d, dy), hn::Store(D.z, d, dz);
+    hn::Store(L.x, d, lx), hn::Store(L.y, d, ly), hn::Store(L.z, d, lz), hn::Store(dist, d, ds);
+    for (size_t k = 0; k < hn::Lanes(d); ++k) {
+      const float q = dx[k] * dx[k] + dy[k] * dy[k] + dz[k] * dz[k];
+      if (q >= std::numeric_limits<float>::min() && q <= std::numeric_limits<float>::max()) continue;
+      glm::vec3 Lk;
+      towardsLight(glm::vec3(dx[k], dy[k], dz[k]), Lk, ds[k]);
+      lx[k] = Lk.x, ly[k] = Lk.y, lz[k] = Lk.z;
+    }
+    L = {hn::Load(d, lx), hn::Load(d, ly), hn::Load(d, lz)};
+    dist = hn::Load(d, ds);
+  }
+  if (l.has_attenuation)
+    att = hn::Set(d, 1.0f) / ((hn::Set(d, l.att_c) + hn::Set(d, l.att_l) * dist) + hn::Set(d, l.att_q) * dist * dist);
+  if (l.kind == K::Spot) {
+    const V3 minus_l = {hn::Neg(L.x), hn::Neg(L.y), hn::Neg(L.z)};
+    lit = dot(minus_l, splat(d, l.direction)) >= hn::Set(d, l.cos_cutoff);
+  }
+}
+
+// models::phongSpecular(reflect(n, L, x), v, shininess).
+HWY_INLINE VF specular(DF d, float shininess, V3 n, V3 L, VF x, V3 v) {
+  const VF two_x = hn::Set(d, 2.0f) * x;
+  const V3 r = sub(mul(two_x, n), L);
+  if (shininess == 0.0f) return hn::Set(d, 1.0f);
+  const VF rdotv = dot(r, v);
+  const V3 e = sub(r, v);
+  const VF h = hn::Set(d, 0.5f) * dot(e, e);
+  const MF need = hn::And(hn::And(rdotv > hn::Zero(d), h < hn::Set(d, 1.0f)),
+                          hn::Not(hn::Set(d, shininess) * h > hn::Set(d, models::kSpecularCutoff<float>)));
+  if (hn::AllFalse(d, need)) return hn::Zero(d);
+  alignas(64) float hs[kMaxLanes], s[kMaxLanes];
+  hn::Store(h, d, hs);
+  hn::Store(hn::VecFromMask(d, need), d, s);
+  for (size_t k = 0; k < hn::Lanes(d); ++k)
+    s[k] = s[k] != 0.0f ? std::exp(shininess * std::log1p(-hs[k])) : 0.0f;
+  return hn::Load(d, s);
+}
+
+void ShadeBatchImpl(const BatchShading& s, const BatchMesh& m, size_t count, const std::uint32_t* tri,
+                    const float* b1p, const float* b2p, float* r_out, float* g_out, float* b_out) {
+  const DF d;
+  const DI di;
+  const size_t N = hn::Lanes(d);
+  const std::int32_t* tri_i = reinterpret_cast<const std::int32_t*>(&m.triangles[0].x);
+  const VF one = hn::Set(d, 1.0f), zero = hn::Zero(d);
+  for (size_t k = 0; k < count; k += N) {
+    // The hit: its triangle's vertices and the barycentrics.
+    const VI t3 = hn::BitCast(di, hn::LoadU(DU(), tri + k)) * hn::Set(di, 3);
+    const VI i0 = hn::GatherIndex(di, tri_i, t3);
+    const VI i1 = hn::GatherIndex(di, tri_i + 1, t3);
+    const VI i2 = hn::GatherIndex(di, tri_i + 2, t3);
+    const VF b1 = hn::LoadU(d, b1p + k), b2 = hn::LoadU(d, b2p + k);
+    const VF b0 = (one - b1) - b2;
+    // Phong mode: p, normal (renormalised; 0 stays 0), uv, V.
+    const V3 p = add(add(mul(b0, gatherV3(d, m.p, i0)), mul(b1, gatherV3(d, m.p, i1))),
+                     mul(b2, gatherV3(d, m.p, i2)));
+    V3 n = add(add(mul(b0, gatherV3(d, m.n, i0)), mul(b1, gatherV3(d, m.n, i1))), mul(b2, gatherV3(d, m.n, i2)));
+    const VF len = hn::Sqrt(dot(n, n));
+    const MF has_len = len > zero;
+    n = {hn::IfThenElseZero(has_len, n.x / len), hn::IfThenElseZero(has_len, n.y / len),
+         hn::IfThenElseZero(has_len, n.z / len)};
+    const V3 to_eye = {zero - p.x, zero - p.y, zero - p.z};
+    const VF inv = one / hn::Sqrt(dot(to_eye, to_eye));
+    const V3 v = mul(to_eye, V3{inv, inv, inv});
+    V3 c;
+    if (s.texture) {
+      const float* uv = &m.uv[0].x;
+      const VI j0 = i0 * hn::Set(di, 2), j1 = i1 * hn::Set(di, 2), j2 = i2 * hn::Set(di, 2);
+      const VF u0 = hn::GatherIndex(d, uv, j0), v0 = hn::GatherIndex(d, uv + 1, j0);
+      const VF u1 = hn::GatherIndex(d, uv, j1), v1 = hn::GatherIndex(d, uv + 1, j1);
+      const VF u2 = hn::GatherIndex(d, uv, j2), v2 = hn::GatherIndex(d, uv + 1, j2);
+      const VF u = ((u0 - hn::Floor(u0)) + b1 * (u1 - u0)) + b2 * (u2 - u0);
+      const VF vv = ((v0 - hn::Floor(v0)) + b1 * (v1 - v0)) + b2 * (v2 - v0);
+      c = lookup(d, *s.texture, s.filter, u, vv);
+    } else {
+      c = splat(d, s.base);
+    }
+    V3 out;
+    if (s.model == BatchShading::Model::YiqLuma) {
+      VF dsum = zero, ssum = zero;
+      for (const auto& l : s.lights) {
+        V3 L;
+        VF att;
+        MF lit;
+        sampleLight(d, l, p, L, att, lit);
+        const VF w = att * hn::Set(d, l.color_luma);
+        const VF x = dot(n, L);
+        dsum = hn::IfThenElse(lit, dsum + w * saturate(d, x), dsum);
+        if (s.specular) ssum = hn::IfThenElse(lit, ssum + w * specular(d, s.shininess, n, L, x, v), ssum);
+      }
+      const VF dl = saturate(d, hn::Set(d, s.ambient_luma) + hn::Set(d, s.kd) * dsum);
+      const VF luma = (hn::Set(d, float(models::kRgbToYiq[0][0])) * c.x +
+                       hn::Set(d, float(models::kRgbToYiq[0][1])) * c.y) +
+                      hn::Set(d, float(models::kRgbToYiq[0][2])) * c.z;
+      const VF dy = (luma * (dl - one) + hn::Set(d, s.ks) * ssum) - hn::Set(d, s.luma_offset);
+      out = {c.x + dy, c.y + dy, c.z + dy};
+    } else {  // classic Phong, variant paper
+      V3 diff{zero, zero, zero}, spec{zero, zero, zero};
+      for (const auto& l : s.lights) {
+        V3 L;
+        VF att;
+        MF lit;
+        sampleLight(d, l, p, L, att, lit);
+        const V3 w = mul(att, splat(d, l.color));
+        const VF x = dot(n, L);
+        const V3 nd = add(diff, mul(w, V3{clamp0(d, x), clamp0(d, x), clamp0(d, x)}));
+        diff = {hn::IfThenElse(lit, nd.x, diff.x), hn::IfThenElse(lit, nd.y, diff.y),
+                hn::IfThenElse(lit, nd.z, diff.z)};
+        if (s.specular) {
+          const VF S = specular(d, s.shininess, n, L, x, v);
+          const V3 ns = add(spec, mul(w, V3{S, S, S}));
+          spec = {hn::IfThenElse(lit, ns.x, spec.x), hn::IfThenElse(lit, ns.y, spec.y),
+                  hn::IfThenElse(lit, ns.z, spec.z)};
+        }
+      }
+      const V3 lighting = add(mul(hn::Set(d, s.ka), splat(d, s.ambient)), mul(hn::Set(d, s.kd), diff));
+      out = add(mul(c, lighting), mul(hn::Set(d, s.ks), spec));
+    }
+    hn::StoreU(saturate(d, out.x), d, r_out + k);
+    hn::StoreU(saturate(d, out.y), d, g_out + k);
+    hn::StoreU(saturate(d, out.z), d, b_out + k);
+  }
+}
+
+const char* TargetNameImpl() { return hwy::TargetName(HWY_TARGET); }
+
+}  // namespace HWY_NAMESPACE
+}  // namespace xval
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace xval {
+
+HWY_EXPORT(ShadeBatchImpl);
+HWY_EXPORT(TargetNameImpl);
+
+void shadeBatch(const BatchShading& s, const BatchMesh& m, size_t count, const std::uint32_t* tri,
+                const float* b1, const float* b2, float* r, float* g, float* b) {
+  HWY_DYNAMIC_DISPATCH(ShadeBatchImpl)(s, m, count, tri, b1, b2, r, g, b);
+}
+
+const char* batchShaderTarget() { return HWY_DYNAMIC_DISPATCH(TargetNameImpl)(); }
+
+std::optional<BatchShading> batchShading(const Scene& scene, const Texture* texture, glm::dvec3 eye) {
+  if (scene.shading != ShadingMode::Phong) return std::nullopt;
+  BatchShading s;
+  if (const auto* y = std::get_if<YiqLuma>(&scene.material.model)) {
+    s.model = BatchShading::Model::YiqLuma;
+    s.kd = float(y->kd), s.ks = float(y->ks), s.shininess = float(y->shininess);
+    s.luma_offset = float(y->luma_offset);
+    s.specular = y->ks != 0.0;
+  } else if (const auto* c = std::get_if<ClassicPhong>(&scene.material.model);
+             c && c->variant == ClassicPhong::Variant::Paper) {
+    s.model = BatchShading::Model::ClassicPhong;
+    s.ka = float(c->ka), s.kd = float(c->kd), s.ks = float(c->ks), s.shininess = float(c->shininess);
+    s.specular = c->ks != 0.0;
+  } else {
+    return std::nullopt;
+  }
+  prepareLights<float>(scene.lights, s.ambient, s.lights, eye);
+  s.ambient_luma = models::lightLuma(s.ambient);
+  s.texture = texture;
+  s.filter = scene.material.texture ? scene.material.texture->filter : TextureFilter::Nearest;
+  s.base = glm::vec3(scene.material.base_color);
+  return s;
+}
+
+}  // namespace xval
+#endif

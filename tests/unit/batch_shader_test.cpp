@@ -1,0 +1,130 @@
+// The SIMD shading kernel (shading/batch_shader.h) gives bit-identical
+// pixels to shading one hit at a time, on every pixel, for every case it
+// covers; and it declines the cases it does not cover.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include <hwy/targets.h>
+
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+#include "shading/batch_shader.h"
+
+using namespace xval;
+
+namespace {
+
+// Renders the scene on the fast path with and without the kernel; every
+// value of every pixel must be equal.
+void expectBitIdentical(const Scene& s) {
+  RenderOptions simd, scalar;
+  simd.precision = scalar.precision = Precision::Float;
+  simd.diagnostics = scalar.diagnostics = false;  // the kernel's case
+  scalar.batch_shading = false;
+  RenderStats ss, sc;
+  const Image a = renderScene(s, simd, &ss), b = renderScene(s, scalar, &sc);
+  EXPECT_EQ(ss.shading.rfind("SIMD", 0), 0u) << ss.shading;
+  EXPECT_EQ(sc.shading, "one hit at a time");
+  ASSERT_EQ(a.rgba.size(), b.rgba.size());
+  size_t differ = 0, covered = 0;
+  for (size_t i = 0; i < a.rgba.size(); ++i) differ += std::memcmp(&a.rgba[i], &b.rgba[i], sizeof(float)) != 0;
+  for (size_t i = 0; i < a.rgba.size() / 4; ++i) covered += a.rgba[i * 4 + 3] > 0;
+  EXPECT_EQ(differ, 0u);
+  EXPECT_GT(covered, a.rgba.size() / 4 / 20);  // the object is in view
+}
+
+Scene sphereScene() {
+  Scene s;
+  s.camera.width = s.camera.height = 96;
+  UvSphere sphere;
+  sphere.radius = 1.5;
+  s.objects = {sphere};
+  return s;
+}
+
+}  // namespace
+
+TEST(BatchShader, Table2KnotYiqIsBitIdentical) {
+  expectBitIdentical(loadScene(std::string(XVAL_REFERENCE_DIR) + "/scenes/table2_knot_yiq.json"));
+}
+
+TEST(BatchShader, Table2KnotClassicPhongIsBitIdentical) {
+  Scene s = loadScene(std::string(XVAL_REFERENCE_DIR) + "/scenes/table2_knot_yiq.json");
+  s.material.model = ClassicPhong{};
+  expectBitIdentical(s);
+}
+
+// Every light kind (attenuated point, directional, spot with its cone edge
+// in view), nearest texture, two lights on the classic model.
+TEST(BatchShader, EveryLightKindAndNearestTextureIsBitIdentical) {
+  Scene s = sphereScene();
+  TextureSpec t;
+  t.filter = TextureFilter::Nearest;
+  s.material.texture = t;
+  ClassicPhong m;
+  m.ks = 0.7, m.shininess = 20;
+  s.material.model = m;
+  SpotLight spot;
+  spot.position = {0, 0, 5}, spot.direction = {0, 0, -1}, spot.cutoff_deg = 12;
+  spot.attenuation = {1.0, 0.1, 0.02};
+  s.lights = {PointLight{{2, 2, 3}, {1.0, 0.8, 0.6}, {1.0, 0.2, 0.05}},
+              DirectionalLight{{-1, -0.5, -1}, {0.3, 0.4, 0.5}}, spot, AmbientLight{{0.1, 0.1, 0.1}}};
+  expectBitIdentical(s);
+  YiqLuma y;
+  y.shininess = 200;
+  s.material.model = y;
+  expectBitIdentical(s);
+}
+
+// Without a texture (base colour), shininess 0 (S = 1 everywhere), and a
+// light so far away that |D|^2 overflows float (towardsLight's rescaling).
+TEST(BatchShader, BaseColourShininessZeroAndFarLightAreBitIdentical) {
+  Scene s = sphereScene();
+  s.material.base_color = {0.8, 0.3, 0.2};
+  YiqLuma y;
+  y.shininess = 0;
+  s.material.model = y;
+  s.lights = {PointLight{{1e20, 1e20, 1e20}, glm::dvec3(1.0), {}}, PointLight{{1, 1, 4}, glm::dvec3(0.5), {}}};
+  expectBitIdentical(s);
+}
+
+TEST(BatchShader, DeclinesWhatItDoesNotCover) {
+  Scene s = sphereScene();
+  const glm::dvec3 eye(0, 0, 4.2);
+  EXPECT_TRUE(batchShading(s, nullptr, eye).has_value());  // the default: classic paper, phong
+  s.shading = ShadingMode::Flat;
+  EXPECT_FALSE(batchShading(s, nullptr, eye).has_value());
+  s.shading = ShadingMode::Gouraud;
+  EXPECT_FALSE(batchShading(s, nullptr, eye).has_value());
+  s.shading = ShadingMode::Phong;
+  ClassicPhong course;
+  course.variant = ClassicPhong::Variant::Course;
+  s.material.model = course;
+  EXPECT_FALSE(batchShading(s, nullptr, eye).has_value());
+  s.material.model = Trilight{};
+  EXPECT_FALSE(batchShading(s, nullptr, eye).has_value());
+  // Declined scenes render one hit at a time.
+  RenderOptions o;
+  o.precision = Precision::Float;
+  o.diagnostics = false;
+  RenderStats st;
+  renderScene(s, o, &st);
+  EXPECT_EQ(st.shading, "one hit at a time");
+}
+
+// Every instruction set the kernel was compiled for that this CPU runs
+// (e.g. SSE4 and AVX2 here; a CI machine may pick another one by default).
+TEST(BatchShader, EveryCompiledInstructionSetIsBitIdentical) {
+  Scene s = loadScene(std::string(XVAL_REFERENCE_DIR) + "/scenes/table2_knot_yiq.json");
+  s.camera.width = s.camera.height = 240;
+  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  EXPECT_GE(targets.size(), 2u);  // at least the baseline and one more
+  for (int64_t t : targets) {
+    hwy::SetSupportedTargetsForTest(t);
+    SCOPED_TRACE(hwy::TargetName(t));
+    EXPECT_STREQ(batchShaderTarget(), hwy::TargetName(t));
+    expectBitIdentical(s);
+  }
+  hwy::SetSupportedTargetsForTest(0);  // back to what the CPU has
+}
