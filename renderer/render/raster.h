@@ -24,6 +24,9 @@
 // All of it in double: on x86 scalar double arithmetic costs what float
 // does, and float pixel coordinates (ulp 6e-5 px at x = 720) would move the
 // barycentrics of a 3-pixel triangle by ~1e-5, a visible texture shift.
+// The per-band loop runs SIMD across the samples of a row (render/
+// raster_band.h: Google Highway, the widest instruction set the CPU has),
+// with every sample's arithmetic exactly as written above.
 // Ray length to the hit (diagnostics only): t = z(p) |forward + sx right +
 // sy up|.
 // Back faces: a mesh flagged in `cull_back` (geometry/front_faces.h: its
@@ -64,10 +67,11 @@ class Rasteriser {
   // out.size() >= band_rows * W. No hit: Hit::hit = false.
   void visibility(int band, double ox, double oy, bool want_t, std::vector<Hit>& out) const;
 
- private:
   struct Vertex {
     double x, y, inv_z;  // pixels, 1 / view depth
   };
+
+ private:
   const std::vector<TriangleMesh>* meshes_;
   const CameraRays* cam_;
   int band_rows_;

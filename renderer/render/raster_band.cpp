@@ -1,0 +1,119 @@
+// Compiled once per SIMD target (Highway's foreach_target.h re-includes
+// this file); rasterBand picks the best target the CPU has.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "render/raster_band.cpp"
+#include <hwy/foreach_target.h>  // must come before highway.h
+#include <hwy/highway.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/raster_band.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace xval {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+void RasterBandImpl(const RasterBand& job) {
+  const hn::ScalableTag<double> d;
+  using VD = hn::Vec<decltype(d)>;
+  const size_t N = hn::Lanes(d);
+  const CameraRays& cam = *job.cam;
+  const int W = cam.width, H = cam.height;
+  const int row0 = job.row0, row1 = job.row1;
+  const double ox = job.ox, oy = job.oy;
+  // The bounding box only has to contain every sample the exact edge test
+  // accepts; the 1e-7 px slack covers the rounding of minx - ox.
+  constexpr double kSlack = 1e-7;
+  const VD zero = hn::Zero(d);
+
+  for (std::uint64_t key : *job.bin) {
+    const std::uint32_t m = std::uint32_t(key >> 32), t = std::uint32_t(key);
+    const glm::u32vec3 tri = (*job.meshes)[m].triangles[t];
+    const Rasteriser::Vertex* P = (*job.projected)[m].data();
+    const Rasteriser::Vertex v[3] = {P[tri[0]], P[tri[1]], P[tri[2]]};
+    const double minx = std::min({v[0].x, v[1].x, v[2].x}), maxx = std::max({v[0].x, v[1].x, v[2].x});
+    const double miny = std::min({v[0].y, v[1].y, v[2].y}), maxy = std::max({v[0].y, v[1].y, v[2].y});
+    const int i0 = std::max(0, int(std::ceil(minx - ox - kSlack)));
+    const int i1 = std::min(W - 1, int(std::floor(maxx - ox + kSlack)));
+    const int j0 = std::max(row0, int(std::ceil(miny - oy - kSlack)));
+    const int j1 = std::min(row1 - 1, int(std::floor(maxy - oy + kSlack)));
+    if (i0 > i1 || j0 > j1) continue;  // no sample inside the box (or NaN)
+    const double area = (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
+    if (!(area != 0.0)) continue;  // edge-on (or NaN): no sample sees it
+    const double s = area > 0.0 ? 1.0 : -1.0;
+    // Edge k is opposite vertex k: from u = vertex k+1 to w = vertex k+2,
+    // evaluated from the lower vertex index (lo) towards the higher (hi):
+    //   C_k(p) = ex (p.y - lo.y) - ey (p.x - lo.x),  e_k = sign_k C_k.
+    // On the edge (e_k = 0) the sample belongs to the triangle with
+    // sign_k > 0: the one that runs the edge from its lower index.
+    double lx[3], ly[3], ex[3], ey[3], sign[3];
+    for (int k = 0; k < 3; ++k) {
+      const int u = (k + 1) % 3, w = (k + 2) % 3;
+      const bool forward = tri[u] < tri[w];
+      const Rasteriser::Vertex& lo = forward ? v[u] : v[w];
+      const Rasteriser::Vertex& hi = forward ? v[w] : v[u];
+      lx[k] = lo.x, ly[k] = lo.y, ex[k] = hi.x - lo.x, ey[k] = hi.y - lo.y;
+      sign[k] = forward ? s : -s;
+    }
+    const VD lx0 = hn::Set(d, lx[0]), lx1 = hn::Set(d, lx[1]), lx2 = hn::Set(d, lx[2]);
+    const VD ey0 = hn::Set(d, ey[0]), ey1 = hn::Set(d, ey[1]), ey2 = hn::Set(d, ey[2]);
+    const VD sg0 = hn::Set(d, sign[0]), sg1 = hn::Set(d, sign[1]), sg2 = hn::Set(d, sign[2]);
+    const VD iz0 = hn::Set(d, v[0].inv_z), iz1 = hn::Set(d, v[1].inv_z), iz2 = hn::Set(d, v[2].inv_z);
+    // inside_k: e_k > 0, or e_k >= 0 where sign_k > 0 (the tie rule).
+    auto inside = [&](VD e, double sg) { return sg > 0.0 ? e >= zero : e > zero; };
+    for (int j = j0; j <= j1; ++j) {
+      const double py = j + oy;
+      const VD r0 = hn::Set(d, ex[0] * (py - ly[0])), r1 = hn::Set(d, ex[1] * (py - ly[1])),
+               r2 = hn::Set(d, ex[2] * (py - ly[2]));
+      double* best_row = job.best + size_t(j - row0) * W;
+      Hit* out_row = job.out + size_t(j - row0) * W;
+      for (int i = i0; i <= i1; i += int(N)) {
+        const VD px = hn::Iota(d, double(i)) + hn::Set(d, ox);  // i + ox, exactly
+        const VD e0 = sg0 * (r0 - ey0 * (px - lx0));
+        const VD e1 = sg1 * (r1 - ey1 * (px - lx1));
+        const VD e2 = sg2 * (r2 - ey2 * (px - lx2));
+        auto in = hn::And(hn::FirstN(d, size_t(i1 - i + 1)),
+                          hn::And(inside(e0, sign[0]), hn::And(inside(e1, sign[1]), inside(e2, sign[2]))));
+        if (hn::AllFalse(d, in)) continue;
+        const VD sum = (e0 + e1) + e2;
+        const VD w0 = e0 * iz0, w1 = e1 * iz1, w2 = e2 * iz2;
+        const VD wsum = (w0 + w1) + w2;
+        const VD inv_z = wsum / sum;
+        in = hn::And(in, inv_z > hn::LoadU(d, best_row + i));
+        if (hn::AllFalse(d, in)) continue;
+        alignas(64) double iz[HWY_MAX_BYTES / sizeof(double)], a1[HWY_MAX_BYTES / sizeof(double)],
+            a2[HWY_MAX_BYTES / sizeof(double)], ws[HWY_MAX_BYTES / sizeof(double)];
+        hn::Store(inv_z, d, iz), hn::Store(w1, d, a1), hn::Store(w2, d, a2), hn::Store(wsum, d, ws);
+        alignas(64) std::uint8_t bits[8] = {};
+        hn::StoreMaskBits(d, in, bits);
+        for (size_t k = 0; k < N; ++k) {
+          if (!((bits[k / 8] >> (k % 8)) & 1)) continue;
+          const int x = i + int(k);
+          best_row[x] = iz[k];
+          Hit& h = out_row[x];
+          h.mesh = m, h.triangle = t;
+          const double norm = 1.0 / ws[k];
+          h.b1 = a1[k] * norm, h.b2 = a2[k] * norm;
+          if (job.want_t) {
+            const double sx = (2.0 * (x + ox) / W - 1.0) * cam.tan_half_fov * cam.aspect;
+            const double sy = (1.0 - 2.0 * py / H) * cam.tan_half_fov;
+            h.t = glm::length(cam.forward + sx * cam.right + sy * cam.up) / iz[k];
+          }
+        }
+      }
+    }
+  }
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace xval
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace xval {
+HWY_EXPORT(RasterBandImpl);
+void rasterBand(const RasterBand& job) { HWY_DYNAMIC_DISPATCH(RasterBandImpl)(job); }
+}  // namespace xval
+#endif
