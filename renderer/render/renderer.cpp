@@ -137,6 +137,7 @@ struct PreparedScene::Impl {
   std::variant<std::monostate, Shading<float>, Shading<double>> shading;
   // Float only: the SIMD kernel, when it covers the scene (shading/batch_shader.h).
   std::optional<BatchShading> batch;
+  std::vector<BatchMesh> batch_meshes;  // with batch: each mesh's vertices interleaved
   Precision precision;
   double setup_seconds = 0.0;
   size_t triangles = 0;
@@ -161,6 +162,9 @@ PreparedScene::PreparedScene(const Scene& scene, Precision precision) : impl_(ne
   if (precision == Precision::Float) {
     d.shading.emplace<Shading<float>>(d.scene, d.meshes, tex);
     d.batch = batchShading(d.scene, tex, eye);
+    if (d.batch)
+      for (const auto& m : std::get<Shading<float>>(d.shading).meshes)
+        d.batch_meshes.push_back(batchMesh(m.p, m.n, m.uv, m.src->triangles));
   } else
     d.shading.emplace<Shading<double>>(d.scene, d.meshes, tex);
   d.setup_seconds = secondsSince(t0);
@@ -286,10 +290,6 @@ void PreparedScene::Impl::renderT(const Shading<T>& sh, const RenderOptions& opt
     const BatchShading* batch_kernel =
         std::is_same_v<T, float> && batch && opt.batch_shading && n == 1 && !diag ? &*batch : nullptr;
     if (batch_kernel) stats.shading = std::string("SIMD, ") + batchShaderTarget();
-    std::vector<BatchMesh> batch_meshes;
-    if constexpr (std::is_same_v<T, float>)
-      for (const auto& m : sh.meshes)
-        batch_meshes.push_back({m.p.data(), m.n.data(), m.uv.data(), m.src->triangles.data()});
     struct BatchBuffers {
       std::vector<std::uint32_t> at, tri;
       std::vector<float> b1, b2, r, g, b;

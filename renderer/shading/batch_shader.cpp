@@ -44,10 +44,10 @@ HWY_INLINE VF clamp0(DF d, VF x) { return hn::IfThenElseZero(x > hn::Zero(d), x)
 HWY_INLINE VF gather3(DF d, const float* base, VI idx3, int c) {
   return hn::GatherIndex(d, base + c, idx3);
 }
-HWY_INLINE V3 gatherV3(DF d, const glm::vec3* a, VI idx) {
-  const VI i3 = idx * hn::Set(DI(), 3);
-  const float* f = &a[0].x;
-  return {gather3(d, f, i3, 0), gather3(d, f, i3, 1), gather3(d, f, i3, 2)};
+// The three floats at offset `at` of the vertices at `row` (= index x 8).
+HWY_INLINE V3 gatherV3(DF d, const float* vertices, VI row, int at) {
+  return {hn::GatherIndex(d, vertices + at, row), hn::GatherIndex(d, vertices + at + 1, row),
+          hn::GatherIndex(d, vertices + at + 2, row)};
 }
 
 // Texture::texel for texel index `at` (y * width + x).
@@ -57,10 +57,14 @@ HWY_INLINE V3 texel(DF d, const Texture& t, VI at) {
     const DI di;
     const auto c = hn::GatherIndex(du, t.packed.data(), at);
     const auto m = hn::Set(du, 255u);
+    const auto r = hn::BitCast(di, hn::And(c, m)), g = hn::BitCast(di, hn::And(hn::ShiftRight<8>(c), m)),
+               b = hn::BitCast(di, hn::ShiftRight<16>(c));
+    if (t.codes_are_c_over_255) {  // code_value[c] == c / 255: divide instead of a table gather
+      const VF k = hn::Set(d, 255.0f);
+      return {hn::ConvertTo(d, r) / k, hn::ConvertTo(d, g) / k, hn::ConvertTo(d, b) / k};
+    }
     const float* cv = t.code_value.data();
-    return {hn::GatherIndex(d, cv, hn::BitCast(di, hn::And(c, m))),
-            hn::GatherIndex(d, cv, hn::BitCast(di, hn::And(hn::ShiftRight<8>(c), m))),
-            hn::GatherIndex(d, cv, hn::BitCast(di, hn::And(hn::ShiftRight<16>(c), m)))};
+    return {hn::GatherIndex(d, cv, r), hn::GatherIndex(d, cv, g), hn::GatherIndex(d, cv, b)};
   }
   const VI a3 = at * hn::Set(DI(), 3);
   return {gather3(d, t.rgb.data(), a3, 0), gather3(d, t.rgb.data(), a3, 1), gather3(d, t.rgb.data(), a3, 2)};
@@ -171,9 +175,13 @@ void ShadeBatchImpl(const BatchShading& s, const BatchMesh& m, size_t count, con
     const VF b1 = hn::LoadU(d, b1p + k), b2 = hn::LoadU(d, b2p + k);
     const VF b0 = (one - b1) - b2;
     // Phong mode: p, normal (renormalised; 0 stays 0), uv, V.
-    const V3 p = add(add(mul(b0, gatherV3(d, m.p, i0)), mul(b1, gatherV3(d, m.p, i1))),
-                     mul(b2, gatherV3(d, m.p, i2)));
-    V3 n = add(add(mul(b0, gatherV3(d, m.n, i0)), mul(b1, gatherV3(d, m.n, i1))), mul(b2, gatherV3(d, m.n, i2)));
+    const float* vx = m.vertices.data();
+    const VI stride = hn::Set(di, kBatchVertexFloats);
+    const VI r0 = i0 * stride, r1 = i1 * stride, r2 = i2 * stride;
+    const V3 p = add(add(mul(b0, gatherV3(d, vx, r0, 0)), mul(b1, gatherV3(d, vx, r1, 0))),
+                     mul(b2, gatherV3(d, vx, r2, 0)));
+    V3 n = add(add(mul(b0, gatherV3(d, vx, r0, 3)), mul(b1, gatherV3(d, vx, r1, 3))),
+               mul(b2, gatherV3(d, vx, r2, 3)));
     const VF len = hn::Sqrt(dot(n, n));
     const MF has_len = len > zero;
     n = {hn::IfThenElseZero(has_len, n.x / len), hn::IfThenElseZero(has_len, n.y / len),
@@ -183,11 +191,10 @@ void ShadeBatchImpl(const BatchShading& s, const BatchMesh& m, size_t count, con
     const V3 v = mul(to_eye, V3{inv, inv, inv});
     V3 c;
     if (s.texture) {
-      const float* uv = &m.uv[0].x;
-      const VI j0 = i0 * hn::Set(di, 2), j1 = i1 * hn::Set(di, 2), j2 = i2 * hn::Set(di, 2);
-      const VF u0 = hn::GatherIndex(d, uv, j0), v0 = hn::GatherIndex(d, uv + 1, j0);
-      const VF u1 = hn::GatherIndex(d, uv, j1), v1 = hn::GatherIndex(d, uv + 1, j1);
-      const VF u2 = hn::GatherIndex(d, uv, j2), v2 = hn::GatherIndex(d, uv + 1, j2);
+      const float* uv = vx + 6;
+      const VF u0 = hn::GatherIndex(d, uv, r0), v0 = hn::GatherIndex(d, uv + 1, r0);
+      const VF u1 = hn::GatherIndex(d, uv, r1), v1 = hn::GatherIndex(d, uv + 1, r1);
+      const VF u2 = hn::GatherIndex(d, uv, r2), v2 = hn::GatherIndex(d, uv + 1, r2);
       const VF u = ((u0 - hn::Floor(u0)) + b1 * (u1 - u0)) + b2 * (u2 - u0);
       const VF vv = ((v0 - hn::Floor(v0)) + b1 * (v1 - v0)) + b2 * (v2 - v0);
       c = lookup(d, *s.texture, s.filter, u, vv);
@@ -256,6 +263,19 @@ HWY_EXPORT(TargetNameImpl);
 void shadeBatch(const BatchShading& s, const BatchMesh& m, size_t count, const std::uint32_t* tri,
                 const float* b1, const float* b2, float* r, float* g, float* b) {
   HWY_DYNAMIC_DISPATCH(ShadeBatchImpl)(s, m, count, tri, b1, b2, r, g, b);
+}
+
+BatchMesh batchMesh(const std::vector<glm::vec3>& p, const std::vector<glm::vec3>& n,
+                    const std::vector<glm::vec2>& uv, const std::vector<glm::u32vec3>& triangles) {
+  BatchMesh m;
+  m.vertices.resize(p.size() * kBatchVertexFloats);
+  for (size_t i = 0; i < p.size(); ++i) {
+    float* v = &m.vertices[i * kBatchVertexFloats];
+    v[0] = p[i].x, v[1] = p[i].y, v[2] = p[i].z, v[3] = n[i].x, v[4] = n[i].y, v[5] = n[i].z;
+    v[6] = uv[i].x, v[7] = uv[i].y;
+  }
+  m.triangles = triangles.data();
+  return m;
 }
 
 const char* batchShaderTarget() { return HWY_DYNAMIC_DISPATCH(TargetNameImpl)(); }

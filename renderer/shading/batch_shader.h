@@ -51,13 +51,16 @@ struct BatchShading {
 // not cover the scene (see above).
 std::optional<BatchShading> batchShading(const Scene& scene, const Texture* texture, glm::dvec3 eye);
 
-// One mesh in shading coordinates (positions relative to the eye), float.
+// One mesh in shading coordinates (positions relative to the eye), float,
+// each vertex's attributes side by side so one cache line serves a vertex:
+// vertices[8 i ..] = p.x p.y p.z n.x n.y n.z u v.
 struct BatchMesh {
-  const glm::vec3* p;
-  const glm::vec3* n;
-  const glm::vec2* uv;
-  const glm::u32vec3* triangles;
+  std::vector<float> vertices;
+  const glm::u32vec3* triangles = nullptr;
 };
+inline constexpr int kBatchVertexFloats = 8;
+BatchMesh batchMesh(const std::vector<glm::vec3>& p, const std::vector<glm::vec3>& n,
+                    const std::vector<glm::vec2>& uv, const std::vector<glm::u32vec3>& triangles);
 
 // Pad the hit arrays to a multiple of this; padding entries must name a
 // valid triangle (they are shaded and their results ignored).

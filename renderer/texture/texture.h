@@ -32,6 +32,11 @@ struct Texture {
   // returns bit-identical values either way.
   std::vector<std::uint32_t> packed;
   std::array<float, 256> code_value{};
+  // Set by pack() when every code that occurs has code_value[c] == c / 255
+  // (float division, correctly rounded): a SIMD lookup may then decode by
+  // dividing instead of through the table, with the same values
+  // (shading/batch_shader.cpp).
+  bool codes_are_c_over_255 = false;
 
   // Fills `packed` when every rgb value is the same function of its 8-bit
   // code (true for 8-bit sources); otherwise leaves it empty.

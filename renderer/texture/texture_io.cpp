@@ -62,6 +62,7 @@ Texture loadTextureImage(const std::filesystem::path& file) {
 
 void Texture::pack() {
   packed.clear();
+  codes_are_c_over_255 = false;
   const size_t n = size_t(width) * height;
   if (rgb8.size() != n * 3 || rgb.size() != n * 3) return;
   std::array<bool, 256> seen{};
@@ -70,6 +71,9 @@ void Texture::pack() {
     if (!seen[c]) seen[c] = true, code_value[c] = rgb[i];
     if (code_value[c] != rgb[i]) return;  // not a function of the code: keep floats
   }
+  codes_are_c_over_255 = true;
+  for (unsigned c = 0; c < 256; ++c)
+    if (seen[c] && code_value[c] != float(c) / 255.0f) codes_are_c_over_255 = false;
   packed.resize(n);
   for (size_t i = 0; i < n; ++i)
     packed[i] = std::uint32_t(rgb8[i * 3]) | std::uint32_t(rgb8[i * 3 + 1]) << 8 |

@@ -4,12 +4,15 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <random>
 
 #include <hwy/targets.h>
 
+#include "geometry/mesh.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "shading/batch_shader.h"
+#include "texture/texture.h"
 
 using namespace xval;
 
@@ -127,4 +130,61 @@ TEST(BatchShader, EveryCompiledInstructionSetIsBitIdentical) {
     expectBitIdentical(s);
   }
   hwy::SetSupportedTargetsForTest(0);  // back to what the CPU has
+}
+
+// The kernel's three ways to read a texel give the same values: packed
+// codes divided by 255, packed codes through the table, and the float rgb
+// array (the render tests above use the first; the brick has c / 255).
+TEST(BatchShader, TexelDecodesAgree) {
+  UvSphere sphere;
+  const TriangleMesh mesh = tessellate(sphere);
+  const glm::dvec3 eye(0, 0, 4.2);
+  std::vector<glm::vec3> p, n;
+  std::vector<glm::vec2> uv;
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    p.emplace_back(mesh.positions[i] - eye);
+    n.emplace_back(mesh.normals[i]);
+    uv.emplace_back(mesh.uvs[i] * glm::dvec2(3.0, 2.0));  // several repeats: wrapping
+  }
+  const BatchMesh bm = batchMesh(p, n, uv, mesh.triangles);
+  Scene s = sphereScene();
+  s.material.texture = TextureSpec{};
+  s.lights = {PointLight{{2, 2, 3}, glm::dvec3(1.0), {}}, AmbientLight{{0.2, 0.2, 0.2}}};
+  Texture divided = loadTexture(*s.material.texture);
+  ASSERT_TRUE(divided.codes_are_c_over_255);
+  Texture table = divided, floats = divided;
+  table.codes_are_c_over_255 = false;
+  floats.packed.clear();
+  floats.codes_are_c_over_255 = false;
+
+  const size_t count = 4000, padded = (count + kBatchPad - 1) / kBatchPad * kBatchPad;
+  std::vector<std::uint32_t> tri(padded);
+  std::vector<float> b1(padded), b2(padded);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u01(0.0f, 1.0f);
+  for (size_t k = 0; k < padded; ++k) {
+    tri[k] = std::uint32_t(rng() % mesh.triangles.size());
+    float a = u01(rng), b = u01(rng);
+    if (a + b > 1.0f) a = 1.0f - a, b = 1.0f - b;
+    b1[k] = a, b2[k] = b;
+  }
+  std::vector<std::vector<float>> out;
+  for (const Texture* t : {&divided, &table, &floats})
+    for (TextureFilter f : {TextureFilter::Bilinear, TextureFilter::Nearest}) {
+      auto shading = batchShading(s, t, eye);
+      ASSERT_TRUE(shading);
+      shading->filter = f;
+      std::vector<float> r(padded), g(padded), b(padded);
+      shadeBatch(*shading, bm, count, tri.data(), b1.data(), b2.data(), r.data(), g.data(), b.data());
+      r.insert(r.end(), g.begin(), g.end());
+      r.insert(r.end(), b.begin(), b.end());
+      out.push_back(std::move(r));
+    }
+  for (size_t k = 2; k < out.size(); ++k) {
+    EXPECT_EQ(0, std::memcmp(out[k].data(), out[k % 2].data(), out[k].size() * sizeof(float))) << k;
+  }
+  EXPECT_NE(0, std::memcmp(out[0].data(), out[1].data(), out[0].size() * sizeof(float)));  // filters differ
+  size_t lit = 0;
+  for (float v : out[0]) lit += v > 0.05f && v < 0.95f;
+  EXPECT_GT(lit, count);  // the texture shows
 }

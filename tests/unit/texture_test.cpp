@@ -71,8 +71,18 @@ TEST(Texture, PackedTexelsAreBitIdenticalAndOnlyWhenExact) {
       EXPECT_EQ(a.y, b.y);
       EXPECT_EQ(a.z, b.z);
     }
+  EXPECT_TRUE(p.codes_are_c_over_255);  // the brick's values are c / 255
   xval::Texture q = t;
   q.rgb.back() = std::nextafter(q.rgb.back(), 2.0f);  // same code, another value
   q.pack();
   EXPECT_TRUE(q.packed.empty());
+  EXPECT_FALSE(q.codes_are_c_over_255);
+  // Every value of one code moved alike: still a function of the code
+  // (packed), but no longer c / 255.
+  xval::Texture r = t;
+  for (size_t i = 0; i < r.rgb.size(); ++i)
+    if (r.rgb8[i] == r.rgb8[0]) r.rgb[i] = std::nextafter(r.rgb[i], 2.0f);
+  r.pack();
+  EXPECT_FALSE(r.packed.empty());
+  EXPECT_FALSE(r.codes_are_c_over_255);
 }
