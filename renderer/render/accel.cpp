@@ -13,6 +13,8 @@ struct Accel::DoubleGeometry {
   const TriangleMesh* mesh;
   uint32_t id;
   float pad;  // outward padding of every box, in scene units
+  const std::vector<uint32_t>* only;  // primitive -> triangle (nullptr: the same)
+  uint32_t triangle(uint32_t prim) const { return only ? (*only)[prim] : prim; }
 };
 
 namespace {
@@ -43,7 +45,7 @@ float roundDown(double v) {
 
 void boundsFn(const RTCBoundsFunctionArguments* args) {
   auto* g = static_cast<const Accel::DoubleGeometry*>(args->geometryUserPtr);
-  const auto& tri = g->mesh->triangles[args->primID];
+  const auto& tri = g->mesh->triangles[g->triangle(args->primID)];
   glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
   for (int k = 0; k < 3; ++k) {
     lo = glm::min(lo, g->mesh->positions[tri[k]]);
@@ -59,7 +61,8 @@ void boundsFn(const RTCBoundsFunctionArguments* args) {
 void intersectFn(const RTCIntersectFunctionNArguments* args) {
   auto* g = static_cast<const Accel::DoubleGeometry*>(args->geometryUserPtr);
   auto* ctx = reinterpret_cast<DoubleContext*>(args->context);
-  const auto& tri = g->mesh->triangles[args->primID];
+  const uint32_t triangle = g->triangle(args->primID);
+  const auto& tri = g->mesh->triangles[triangle];
   const auto& P = g->mesh->positions;
   auto* ray = reinterpret_cast<RTCRayN*>(args->rayhit);
   for (unsigned lane = 0; lane < args->N; ++lane) {
@@ -69,7 +72,7 @@ void intersectFn(const RTCIntersectFunctionNArguments* args) {
     if (!intersectTriangle(ctx->shear[r], P[tri[0]], P[tri[1]], P[tri[2]], 0.0, ctx->best_t[r], th))
       continue;
     ctx->best_t[r] = th.t;
-    ctx->hit[r] = {true, g->id, args->primID, th.t, th.b1, th.b2};
+    ctx->hit[r] = {true, g->id, triangle, th.t, th.b1, th.b2};
     // Shrink Embree's float t_far conservatively (rounded up, padded).
     float& tfar = RTCRayN_tfar(ray, args->N, lane);
     tfar = std::min(tfar, roundUp(th.t * (1.0 + 1e-6)));
@@ -78,8 +81,10 @@ void intersectFn(const RTCIntersectFunctionNArguments* args) {
 
 }  // namespace
 
-Accel::Accel(const std::vector<TriangleMesh>& meshes, Precision precision)
-    : precision_(precision) {
+Accel::Accel(const std::vector<TriangleMesh>& meshes, Precision precision,
+             const std::vector<std::optional<std::vector<uint32_t>>>& only)
+    : precision_(precision), only_(only) {
+  only_.resize(meshes.size());
   device_ = rtcNewDevice(nullptr);
   if (!device_) throw std::runtime_error("Embree: cannot create a device");
   rtcSetDeviceErrorFunction(device_, embreeError, &error_);
@@ -102,16 +107,16 @@ Accel::Accel(const std::vector<TriangleMesh>& meshes, Precision precision)
           m.positions.size()));
       for (size_t i = 0; i < m.positions.size(); ++i)
         for (int k = 0; k < 3; ++k) v[i * 3 + k] = float(m.positions[i][k]);
+      const size_t prims = only_[id] ? only_[id]->size() : m.triangles.size();
       auto* ix = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
-          geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t),
-          m.triangles.size()));
-      for (size_t i = 0; i < m.triangles.size(); ++i)
-        for (int k = 0; k < 3; ++k) ix[i * 3 + k] = m.triangles[i][k];
+          geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), prims));
+      for (size_t i = 0; i < prims; ++i)
+        for (int k = 0; k < 3; ++k) ix[i * 3 + k] = m.triangles[triangleOf(id, uint32_t(i))][k];
     } else {
       double_geoms_.push_back(std::make_unique<DoubleGeometry>(
-          DoubleGeometry{&m, id, float(std::max(extent, 1e-30) * 1e-5)}));
+          DoubleGeometry{&m, id, float(std::max(extent, 1e-30) * 1e-5), only_[id] ? &*only_[id] : nullptr}));
       geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
-      rtcSetGeometryUserPrimitiveCount(geom, unsigned(m.triangles.size()));
+      rtcSetGeometryUserPrimitiveCount(geom, unsigned(only_[id] ? only_[id]->size() : m.triangles.size()));
       rtcSetGeometryUserData(geom, double_geoms_.back().get());
       rtcSetGeometryBoundsFunction(geom, boundsFn, nullptr);
       rtcSetGeometryIntersectFunction(geom, intersectFn);
@@ -155,7 +160,7 @@ Hit Accel::intersectFloat(glm::dvec3 o, glm::dvec3 d) const {
   RTCRayHit rh = embreeRay(o, d);
   rtcIntersect1(scene_, &ctx, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return {};
-  return {true, rh.hit.geomID, rh.hit.primID, rh.ray.tfar, rh.hit.u, rh.hit.v};
+  return {true, rh.hit.geomID, triangleOf(rh.hit.geomID, rh.hit.primID), rh.ray.tfar, rh.hit.u, rh.hit.v};
 }
 
 void Accel::intersectPacket(glm::dvec3 o, const glm::dvec3* dirs, const bool* valid, Hit* out) const {
@@ -199,7 +204,8 @@ void Accel::intersectPacket(glm::dvec3 o, const glm::dvec3* dirs, const bool* va
       out[r] = Hit{};
       continue;
     }
-    out[r] = {true, rh.hit.geomID[r], rh.hit.primID[r], rh.ray.tfar[r], rh.hit.u[r], rh.hit.v[r]};
+    out[r] = {true, rh.hit.geomID[r], triangleOf(rh.hit.geomID[r], rh.hit.primID[r]), rh.ray.tfar[r],
+              rh.hit.u[r], rh.hit.v[r]};
   }
 }
 

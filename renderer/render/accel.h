@@ -17,6 +17,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,7 +34,11 @@ struct Hit {
 
 class Accel {
  public:
-  Accel(const std::vector<TriangleMesh>& meshes, Precision precision);
+  // only: per mesh, the triangles to put in the BVH (nullopt: all of them;
+  // the renderer leaves out back faces that cannot be a camera ray's first
+  // hit, render/renderer.cpp). Hits name triangles by their mesh index.
+  Accel(const std::vector<TriangleMesh>& meshes, Precision precision,
+        const std::vector<std::optional<std::vector<uint32_t>>>& only = {});
   ~Accel();
   Accel(const Accel&) = delete;
   Accel& operator=(const Accel&) = delete;
@@ -53,7 +58,13 @@ class Accel {
   Hit intersectFloat(glm::dvec3 origin, glm::dvec3 dir) const;
   Hit intersectDouble(glm::dvec3 origin, glm::dvec3 dir) const;
 
+  // The mesh triangle of an Embree primitive.
+  uint32_t triangleOf(uint32_t mesh, uint32_t prim) const {
+    return mesh < only_.size() && only_[mesh] ? (*only_[mesh])[prim] : prim;
+  }
+
   Precision precision_;
+  std::vector<std::optional<std::vector<uint32_t>>> only_;
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
   std::vector<std::unique_ptr<DoubleGeometry>> double_geoms_;

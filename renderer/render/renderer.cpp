@@ -134,6 +134,7 @@ struct PreparedScene::Impl {
   std::optional<Texture> texture;
   std::optional<Accel> accel;
   std::vector<bool> back_faces_hidden;  // per mesh: geometry/front_faces.h, from the camera
+  size_t bvh_culled = 0;                // back faces left out of the BVH
   std::variant<std::monostate, Shading<float>, Shading<double>> shading;
   // Float only: the SIMD kernel, when it covers the scene (shading/batch_shader.h).
   std::optional<BatchShading> batch;
@@ -146,7 +147,8 @@ struct PreparedScene::Impl {
   void renderT(const Shading<T>& sh, const RenderOptions& opt, Image& img, RenderStats& stats) const;
 };
 
-PreparedScene::PreparedScene(const Scene& scene, Precision precision) : impl_(new Impl) {
+PreparedScene::PreparedScene(const Scene& scene, Precision precision, bool cull_back_faces)
+    : impl_(new Impl) {
   auto t0 = Clock::now();
   Impl& d = *impl_;
   d.scene = scene;
@@ -157,7 +159,24 @@ PreparedScene::PreparedScene(const Scene& scene, Precision precision) : impl_(ne
   for (size_t k = 0; k < d.meshes.size(); ++k)
     d.back_faces_hidden.push_back(backFacesNeverFirstHit(scene.objects[k], d.meshes[k], eye));
   if (scene.material.texture) d.texture = loadTexture(*scene.material.texture);
-  d.accel.emplace(d.meshes, precision);
+  // The ray paths' BVH: without the back faces that cannot be a first hit
+  // from the eye. Every camera ray starts at the eye, so a triangle facing
+  // away from the eye (g . (eye - p0) < 0, g its winding normal) faces away
+  // from every camera ray; those within 1e-9 (relative) of edge-on are kept.
+  std::vector<std::optional<std::vector<uint32_t>>> only(d.meshes.size());
+  for (size_t k = 0; cull_back_faces && k < d.meshes.size(); ++k) {
+    if (!d.back_faces_hidden[k]) continue;
+    const TriangleMesh& m = d.meshes[k];
+    only[k].emplace();
+    for (uint32_t t = 0; t < m.triangles.size(); ++t) {
+      const glm::dvec3 p0 = m.positions[m.triangles[t][0]];
+      const glm::dvec3 g = glm::cross(m.positions[m.triangles[t][1]] - p0, m.positions[m.triangles[t][2]] - p0);
+      const glm::dvec3 e = eye - p0;
+      if (glm::dot(g, e) >= -1e-9 * glm::length(g) * glm::length(e)) only[k]->push_back(t);
+    }
+    d.bvh_culled += m.triangles.size() - only[k]->size();
+  }
+  d.accel.emplace(d.meshes, precision, only);
   const Texture* tex = d.texture ? &*d.texture : nullptr;
   if (precision == Precision::Float) {
     d.shading.emplace<Shading<float>>(d.scene, d.meshes, tex);
@@ -380,6 +399,7 @@ void PreparedScene::Impl::renderT(const Shading<T>& sh, const RenderOptions& opt
   }
   stats.visibility = std::is_same_v<T, float> ? "Embree 16-ray packets (float)"
                                               : "Embree 16-ray packets, double-precision watertight test";
+  stats.culled_triangles = bvh_culled;
 
   auto worker = [&]() {
     constexpr int P = Accel::kPacketSide;
@@ -423,7 +443,7 @@ void PreparedScene::Impl::renderT(const Shading<T>& sh, const RenderOptions& opt
 }
 
 Image renderScene(const Scene& scene, const RenderOptions& options, RenderStats* stats) {
-  PreparedScene prepared(scene, options.precision);
+  PreparedScene prepared(scene, options.precision, options.cull_back_faces);
   Image img(scene.camera.width, scene.camera.height, options.diagnostics);
   prepared.render(options, img, stats);
   return img;

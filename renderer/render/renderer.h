@@ -49,9 +49,9 @@ struct RenderOptions {
   // Float path only: rasterise visibility when applicable (false: always
   // trace Embree packets; tests compare the two).
   bool rasterise = true;
-  // Rasterised path only: skip the back faces of meshes whose first hits
-  // are always front faces (geometry/front_faces.h; the image is the same,
-  // tests compare).
+  // Skip the back faces of meshes whose first hits are always front faces
+  // (geometry/front_faces.h; the image is the same, tests compare): the
+  // raster per frame; the ray paths' BVH when renderScene prepares it.
   bool cull_back_faces = true;
   // Float path, one sample per pixel, no diagnostics: shade with the SIMD
   // kernel when it covers the scene (shading/batch_shader.h; bit-identical
@@ -66,7 +66,7 @@ struct RenderStats {
   double setup_seconds = 0.0;   // tessellation, texture, BVH build, per-vertex data
   double trace_seconds = 0.0;   // visibility and shading
   const char* visibility = "";  // how first hits were found
-  size_t culled_triangles = 0;  // back faces the raster skipped (cull_back_faces)
+  size_t culled_triangles = 0;  // back faces skipped: by the raster, or left out of the BVH
   std::string shading = "one hit at a time";  // or "SIMD, <instruction set>" (batch_shading)
 };
 
@@ -78,7 +78,10 @@ std::string describeVisibility(const RenderStats& stats);
 // loaded, its BVH built for one precision. Rendering does not modify it.
 class PreparedScene {
  public:
-  PreparedScene(const Scene& scene, Precision precision);
+  // cull_back_faces: leave out of the BVH the back faces that no camera ray
+  // can hit first (as RenderOptions::cull_back_faces does for the raster;
+  // decided here because the BVH is built here).
+  PreparedScene(const Scene& scene, Precision precision, bool cull_back_faces = true);
   ~PreparedScene();
   PreparedScene(const PreparedScene&) = delete;
   PreparedScene& operator=(const PreparedScene&) = delete;

@@ -56,14 +56,15 @@ namespace {
 // Renders with and without skipping back faces; the images must be equal
 // bit for bit (final colour and alpha, and every diagnostic channel).
 void expectSameWithAndWithoutCulling(const Scene& s, int spp, size_t expect_culled_min,
-                                     size_t expect_culled_max) {
+                                     size_t expect_culled_max, Precision precision = Precision::Float) {
   RenderOptions with, without;
-  with.precision = without.precision = Precision::Float;
+  with.precision = without.precision = precision;
   with.spp = without.spp = spp;
   without.cull_back_faces = false;
   RenderStats sw, so;
   const Image a = renderScene(s, with, &sw), b = renderScene(s, without, &so);
-  EXPECT_STREQ(sw.visibility, "rasterised");
+  EXPECT_STREQ(sw.visibility, precision == Precision::Float ? "rasterised"
+                                                            : "Embree 16-ray packets, double-precision watertight test");
   EXPECT_EQ(so.culled_triangles, 0u);
   EXPECT_GE(sw.culled_triangles, expect_culled_min);
   EXPECT_LE(sw.culled_triangles, expect_culled_max);
@@ -81,6 +82,12 @@ TEST(FrontFaces, SkippingBackFacesLeavesTheTable2KnotUnchanged) {
   expectSameWithAndWithoutCulling(s, 1, 20000, 40000);
 }
 
+// The reference path leaves the same back faces out of its BVH.
+TEST(FrontFaces, LeavingBackFacesOutOfTheBvhLeavesTheTable2KnotUnchanged) {
+  const Scene s = loadScene(std::string(XVAL_REFERENCE_DIR) + "/scenes/table2_knot_yiq.json");
+  expectSameWithAndWithoutCulling(s, 1, 20000, 40000, Precision::Double);
+}
+
 TEST(FrontFaces, SkippingBackFacesLeavesASphereUnchangedAt4Spp) {
   Scene s;
   s.camera.width = s.camera.height = 96;
@@ -91,6 +98,7 @@ TEST(FrontFaces, SkippingBackFacesLeavesASphereUnchangedAt4Spp) {
   // 64 x 62 triangles; from 4.2 away the eye sees a cap of (1 - 1.5/4.2)/2
   // = 32% of the sphere, so about two thirds face away.
   expectSameWithAndWithoutCulling(s, 4, 2400, 3200);
+  expectSameWithAndWithoutCulling(s, 4, 2400, 3200, Precision::Double);
 }
 
 // An open plane seen from behind: rasterised, nothing skipped, drawn.
