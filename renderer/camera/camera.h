@@ -35,9 +35,12 @@ struct CameraRays {
         height(c.height) {}
 
   // Unit direction through image coordinates (x, y) in pixels.
-  glm::dvec3 direction(double x, double y) const {
-    double sx = (2.0 * x / width - 1.0) * tan_half_fov * aspect;
-    double sy = (1.0 - 2.0 * y / height) * tan_half_fov;
+  glm::dvec3 direction(double x, double y) const { return directionFromScreen(screenX(x), screenY(y)); }
+  // The same in two steps, for callers that reuse sx (a column's) or sy
+  // (a row's) across many rays: bit-identical to direction(x, y).
+  double screenX(double x) const { return (2.0 * x / width - 1.0) * tan_half_fov * aspect; }
+  double screenY(double y) const { return (1.0 - 2.0 * y / height) * tan_half_fov; }
+  glm::dvec3 directionFromScreen(double sx, double sy) const {
     return glm::normalize(forward + sx * right + sy * up);
   }
 };

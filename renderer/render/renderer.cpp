@@ -401,6 +401,15 @@ void PreparedScene::Impl::renderT(const Shading<T>& sh, const RenderOptions& opt
                                               : "Embree 16-ray packets, double-precision watertight test";
   stats.culled_triangles = bvh_culled;
 
+  // The screen coordinates of every sample column and row, once per frame
+  // (CameraRays::screenX/screenY; the directions are bit-identical to
+  // cam.direction(i + ox, j + oy)).
+  std::vector<double> screen_x(size_t(W) * n), screen_y(size_t(H) * n);
+  for (int i = 0; i < W; ++i)
+    for (int sx = 0; sx < n; ++sx) screen_x[size_t(i) * n + sx] = cam.screenX(i + (sx + 0.5) / n);
+  for (int j = 0; j < H; ++j)
+    for (int sy = 0; sy < n; ++sy) screen_y[size_t(j) * n + sy] = cam.screenY(j + (sy + 0.5) / n);
+
   auto worker = [&]() {
     constexpr int P = Accel::kPacketSide;
     std::array<PixelSums<T>, kTile * kTile> sums;
@@ -419,7 +428,8 @@ void PreparedScene::Impl::renderT(const Shading<T>& sh, const RenderOptions& opt
                 const int i = x0 + bx + r % P, j = y0 + by + r / P;
                 valid[r] = i < W && j < H;
                 any |= valid[r];
-                if (valid[r]) dirs[r] = cam.direction(i + (sx + 0.5) / n, j + (sy + 0.5) / n);
+                if (valid[r])
+                  dirs[r] = cam.directionFromScreen(screen_x[size_t(i) * n + sx], screen_y[size_t(j) * n + sy]);
               }
               if (!any) continue;
               accel->intersectPacket(cam.origin, dirs.data(), valid.data(), hits.data());
