@@ -410,35 +410,52 @@ void PreparedScene::Impl::renderT(const Shading<T>& sh, const RenderOptions& opt
   for (int j = 0; j < H; ++j)
     for (int sy = 0; sy < n; ++sy) screen_y[size_t(j) * n + sy] = cam.screenY(j + (sy + 0.5) / n);
 
+  // Packets are 4 x 4 neighbouring samples of the tile's n x n-per-pixel
+  // sample grid (one pixel's 16 samples at 16 spp, 4 x 4 pixels at 1 spp):
+  // the closer the rays, the less of the BVH a packet visits. Hits are
+  // kept per sample and added to each pixel in the (sy, sx) order.
   auto worker = [&]() {
     constexpr int P = Accel::kPacketSide;
+    const int side = kTile * n;  // samples along a tile's side
     std::array<PixelSums<T>, kTile * kTile> sums;
     std::array<glm::dvec3, P * P> dirs;
     std::array<bool, P * P> valid;
     std::array<Hit, P * P> hits;
+    std::vector<Hit> sample_hit(size_t(side) * side);
+    std::vector<glm::dvec3> sample_dir(diag ? size_t(side) * side : 0);
     for (int k = next_tile++; k < tiles; k = next_tile++) {
       const int x0 = (k % tiles_x) * kTile, y0 = (k / tiles_x) * kTile;
       sums.fill(PixelSums<T>{});
-      for (int sy = 0; sy < n; ++sy)
-        for (int sx = 0; sx < n; ++sx)
-          for (int by = 0; by < kTile; by += P)
-            for (int bx = 0; bx < kTile; bx += P) {
-              bool any = false;
-              for (int r = 0; r < P * P; ++r) {
-                const int i = x0 + bx + r % P, j = y0 + by + r / P;
-                valid[r] = i < W && j < H;
-                any |= valid[r];
-                if (valid[r])
-                  dirs[r] = cam.directionFromScreen(screen_x[size_t(i) * n + sx], screen_y[size_t(j) * n + sy]);
-              }
-              if (!any) continue;
-              accel->intersectPacket(cam.origin, dirs.data(), valid.data(), hits.data());
-              for (int r = 0; r < P * P; ++r)
-                if (valid[r] && hits[r].hit)
-                  addSample(hits[r], dirs[r], sums[(by + r / P) * kTile + bx + r % P]);
-            }
+      for (int by = 0; by < side; by += P)
+        for (int bx = 0; bx < side; bx += P) {
+          bool any = false;
+          for (int r = 0; r < P * P; ++r) {
+            const int gx = bx + r % P, gy = by + r / P;  // sample in the tile's grid
+            const int i = x0 + gx / n, j = y0 + gy / n;
+            valid[r] = i < W && j < H;
+            any |= valid[r];
+            if (valid[r])
+              dirs[r] = cam.directionFromScreen(screen_x[size_t(i) * n + gx % n], screen_y[size_t(j) * n + gy % n]);
+          }
+          if (!any) continue;
+          accel->intersectPacket(cam.origin, dirs.data(), valid.data(), hits.data());
+          for (int r = 0; r < P * P; ++r) {
+            if (!valid[r]) continue;
+            const size_t at = size_t(by + r / P) * side + bx + r % P;
+            sample_hit[at] = hits[r];
+            if (diag) sample_dir[at] = dirs[r];
+          }
+        }
       for (int ty = 0; ty < kTile && y0 + ty < H; ++ty)
-        for (int tx = 0; tx < kTile && x0 + tx < W; ++tx) store(sums[ty * kTile + tx], x0 + tx, y0 + ty);
+        for (int tx = 0; tx < kTile && x0 + tx < W; ++tx) {
+          PixelSums<T>& px = sums[ty * kTile + tx];
+          for (int sy = 0; sy < n; ++sy)
+            for (int sx = 0; sx < n; ++sx) {
+              const size_t at = size_t(ty * n + sy) * side + tx * n + sx;
+              if (sample_hit[at].hit) addSample(sample_hit[at], diag ? sample_dir[at] : glm::dvec3(0), px);
+            }
+          store(px, x0 + tx, y0 + ty);
+        }
       reportProgress(++tiles_done, tiles);
     }
   };
