@@ -43,7 +43,8 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--precision", args->precision,
                   "float (the fast path: float shading, visibility rasterised or traced as Embree "
                   "float packets) or double (the exact reference path: double-precision "
-                  "watertight ray test and shading); default: the scene's render.precision")
+                  "watertight ray test and shading); default: the scene's render.precision. "
+                  "Both skip back faces of closed meshes seen from outside (never a first hit)")
       ->check(CLI::IsMember({"float", "double"}));
   cmd->add_option("--visibility", args->visibility,
                   "float path only: auto (rasterise when the whole scene is in front of the "
@@ -51,7 +52,8 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
       ->check(CLI::IsMember({"auto", "rays"}));
   cmd->add_flag("--no-diagnostics", args->no_diagnostics,
                 "Do not compute the EXR's diagnostic channels (raw, Z, backfacing, incidence, "
-                "albedo)");
+                "albedo); at 1 spp in float the hits are then shaded by the SIMD kernel where it "
+                "covers the scene (same pixels)");
   cmd->add_option("--threads", args->threads, "Worker threads (default: all hardware threads)")
       ->check(CLI::Range(1, 1024));
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr");
