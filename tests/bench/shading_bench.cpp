@@ -18,6 +18,7 @@
 #include "shading/shader.h"
 #include "texture/brick.h"
 #include "texture/texture.h"
+#include "support/random_hits.h"
 
 namespace {
 
@@ -132,18 +133,11 @@ void batchShade(benchmark::State& state, bool yiq) {
   const Texture tex = loadTexture(*scene.material.texture);
   const auto shading = batchShading(scene, &tex, eye);
   constexpr size_t kCount = 4096;
-  std::vector<std::uint32_t> tri(kCount);
-  std::vector<float> b1(kCount), b2(kCount), r(kCount), g(kCount), b(kCount);
-  std::mt19937 rng(12345);
-  std::uniform_real_distribution<float> u01(0.0f, 1.0f);
-  for (size_t k = 0; k < kCount; ++k) {
-    tri[k] = std::uint32_t(rng() % mesh.triangles.size());
-    float x = u01(rng), y = u01(rng);
-    if (x + y > 1.0f) x = 1.0f - x, y = 1.0f - y;
-    b1[k] = x, b2[k] = y;
-  }
+  const test::RandomHits hits = test::randomHits(mesh.triangles.size(), kCount, 12345);
+  std::vector<float> r(kCount), g(kCount), b(kCount);
   for (auto _ : state) {
-    shadeBatch(*shading, bm, kCount, tri.data(), b1.data(), b2.data(), r.data(), g.data(), b.data());
+    shadeBatch(*shading, bm, kCount, hits.tri.data(), hits.b1.data(), hits.b2.data(), r.data(), g.data(),
+               b.data());
     benchmark::DoNotOptimize(r.data());
     benchmark::ClobberMemory();
   }

@@ -13,6 +13,7 @@
 #include "scene/scene_loader.h"
 #include "shading/batch_shader.h"
 #include "texture/texture.h"
+#include "support/random_hits.h"
 
 using namespace xval;
 
@@ -158,16 +159,7 @@ TEST(BatchShader, TexelDecodesAgree) {
   floats.codes_are_c_over_255 = false;
 
   const size_t count = 4000, padded = (count + kBatchPad - 1) / kBatchPad * kBatchPad;
-  std::vector<std::uint32_t> tri(padded);
-  std::vector<float> b1(padded), b2(padded);
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<float> u01(0.0f, 1.0f);
-  for (size_t k = 0; k < padded; ++k) {
-    tri[k] = std::uint32_t(rng() % mesh.triangles.size());
-    float a = u01(rng), b = u01(rng);
-    if (a + b > 1.0f) a = 1.0f - a, b = 1.0f - b;
-    b1[k] = a, b2[k] = b;
-  }
+  const test::RandomHits hits = test::randomHits(mesh.triangles.size(), padded, 7);
   std::vector<std::vector<float>> out;
   for (const Texture* t : {&divided, &table, &floats})
     for (TextureFilter f : {TextureFilter::Bilinear, TextureFilter::Nearest}) {
@@ -175,7 +167,8 @@ TEST(BatchShader, TexelDecodesAgree) {
       ASSERT_TRUE(shading);
       shading->filter = f;
       std::vector<float> r(padded), g(padded), b(padded);
-      shadeBatch(*shading, bm, count, tri.data(), b1.data(), b2.data(), r.data(), g.data(), b.data());
+      shadeBatch(*shading, bm, count, hits.tri.data(), hits.b1.data(), hits.b2.data(), r.data(), g.data(),
+                 b.data());
       r.insert(r.end(), g.begin(), g.end());
       r.insert(r.end(), b.begin(), b.end());
       out.push_back(std::move(r));
