@@ -52,8 +52,8 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
       ->check(CLI::IsMember({"auto", "rays"}));
   cmd->add_flag("--no-diagnostics", args->no_diagnostics,
                 "Do not compute the EXR's diagnostic channels (raw, Z, backfacing, incidence, "
-                "albedo); at 1 spp in float the hits are then shaded by the SIMD kernel where it "
-                "covers the scene (same pixels)");
+                "albedo); in float the hits are then shaded by the SIMD kernel where it covers the "
+                "scene (same pixels)");
   cmd->add_option("--threads", args->threads, "Worker threads (default: all hardware threads)")
       ->check(CLI::Range(1, 1024));
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr");

@@ -307,7 +307,7 @@ void PreparedScene::Impl::renderT(const Shading<T>& sh, const RenderOptions& opt
     std::atomic<int> next_band{0}, bands_done{0};
     // The SIMD kernel's inputs: the band's hits on one mesh, compacted.
     const BatchShading* batch_kernel =
-        std::is_same_v<T, float> && batch && opt.batch_shading && n == 1 && !diag ? &*batch : nullptr;
+        std::is_same_v<T, float> && batch && opt.batch_shading && !diag ? &*batch : nullptr;
     if (batch_kernel) stats.shading = std::string("SIMD, ") + batchShaderTarget();
     struct BatchBuffers {
       std::vector<std::uint32_t> at, tri;
@@ -316,9 +316,9 @@ void PreparedScene::Impl::renderT(const Shading<T>& sh, const RenderOptions& opt
           : at(n), tri(n + kBatchPad), b1(n + kBatchPad), b2(n + kBatchPad), r(n + kBatchPad),
             g(n + kBatchPad), b(n + kBatchPad) {}
     };
-    // Shades hits[0, count) (band rows from row0) with the kernel, one mesh
-    // at a time, and writes the pixels that have a hit.
-    auto shadeBandBatched = [&](const std::vector<Hit>& hits, size_t count, int row0, BatchBuffers& bb) {
+    // Shades hits[0, count) with the kernel, one mesh at a time, and hands
+    // each hit's saturated colour to emit(sample index, r, g, b).
+    auto shadeBandBatched = [&](const std::vector<Hit>& hits, size_t count, BatchBuffers& bb, auto&& emit) {
       for (size_t mi = 0; mi < batch_meshes.size(); ++mi) {
         size_t c = 0;
         for (size_t k = 0; k < count; ++k) {
@@ -333,11 +333,7 @@ void PreparedScene::Impl::renderT(const Shading<T>& sh, const RenderOptions& opt
           bb.tri[k] = 0, bb.b1[k] = bb.b2[k] = 0.0f;  // padding: a valid triangle
         shadeBatch(*batch_kernel, batch_meshes[mi], c, bb.tri.data(), bb.b1.data(), bb.b2.data(),
                    bb.r.data(), bb.g.data(), bb.b.data());
-        float* band = img.pixel(0, row0);
-        for (size_t k = 0; k < c; ++k) {
-          float* px = band + size_t(bb.at[k]) * 4;
-          px[0] = bb.r[k], px[1] = bb.g[k], px[2] = bb.b[k], px[3] = 1.0f;
-        }
+        for (size_t k = 0; k < c; ++k) emit(bb.at[k], bb.r[k], bb.g[k], bb.b[k]);
       }
     };
     auto band_worker = [&]() {
@@ -346,10 +342,14 @@ void PreparedScene::Impl::renderT(const Shading<T>& sh, const RenderOptions& opt
       BatchBuffers bb(batch_kernel ? size_t(kBand) * W : 0);
       for (int b = next_band++; b < raster.bands(); b = next_band++) {
         const int row0 = b * kBand, rows = std::min(kBand, H - row0);
-        if (batch_kernel) {  // one sample, no diagnostics, SIMD shading
+        if (batch_kernel && n == 1) {  // one sample, no diagnostics, SIMD shading
           raster.visibility(b, 0.5, 0.5, false, hits);
-          std::fill(img.pixel(0, row0), img.pixel(0, row0) + size_t(rows) * W * 4, 0.0f);
-          shadeBandBatched(hits, size_t(rows) * W, row0, bb);
+          float* band = img.pixel(0, row0);
+          std::fill(band, band + size_t(rows) * W * 4, 0.0f);
+          shadeBandBatched(hits, size_t(rows) * W, bb, [&](std::uint32_t at, float r, float g, float bl) {
+            float* px = band + size_t(at) * 4;
+            px[0] = r, px[1] = g, px[2] = bl, px[3] = 1.0f;
+          });
           reportProgress(++bands_done, raster.bands());
           continue;
         }
@@ -375,6 +375,15 @@ void PreparedScene::Impl::renderT(const Shading<T>& sh, const RenderOptions& opt
           for (int sx = 0; sx < n; ++sx) {
             const double ox = (sx + 0.5) / n, oy = (sy + 0.5) / n;
             raster.visibility(b, ox, oy, diag, hits);
+            if (batch_kernel) {  // no diagnostics: the kernel, each pixel's sums in the same order
+              if constexpr (std::is_same_v<T, float>)
+                shadeBandBatched(hits, size_t(rows) * W, bb, [&](std::uint32_t at, float r, float g, float bl) {
+                  PixelSums<T>& px = sums[at];
+                  px.final_sum += glm::vec3(r, g, bl);  // addSample's final_sum += saturate(c)
+                  ++px.hits;
+                });
+              continue;
+            }
             for (int r = 0; r < rows; ++r)
               for (int i = 0; i < W; ++i) {
                 const Hit& h = hits[size_t(r) * W + i];

@@ -53,9 +53,9 @@ struct RenderOptions {
   // (geometry/front_faces.h; the image is the same, tests compare): the
   // raster per frame; the ray paths' BVH when renderScene prepares it.
   bool cull_back_faces = true;
-  // Float path, one sample per pixel, no diagnostics: shade with the SIMD
-  // kernel when it covers the scene (shading/batch_shader.h; bit-identical
-  // to one hit at a time, which false forces: tests compare).
+  // Rasterised float path without diagnostics: shade with the SIMD kernel
+  // when it covers the scene (shading/batch_shader.h; bit-identical to one
+  // hit at a time, which false forces: tests compare).
   bool batch_shading = true;
 };
 

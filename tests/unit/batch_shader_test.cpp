@@ -21,8 +21,9 @@ namespace {
 
 // Renders the scene on the fast path with and without the kernel; every
 // value of every pixel must be equal.
-void expectBitIdentical(const Scene& s) {
+void expectBitIdentical(const Scene& s, int spp = 1) {
   RenderOptions simd, scalar;
+  simd.spp = scalar.spp = spp;
   simd.precision = scalar.precision = Precision::Float;
   simd.diagnostics = scalar.diagnostics = false;  // the kernel's case
   scalar.batch_shading = false;
@@ -51,6 +52,14 @@ Scene sphereScene() {
 
 TEST(BatchShader, Table2KnotYiqIsBitIdentical) {
   expectBitIdentical(loadScene(std::string(XVAL_REFERENCE_DIR) + "/scenes/table2_knot_yiq.json"));
+}
+
+// Several samples per pixel: the kernel's colours are summed per pixel in
+// the same order as one hit at a time.
+TEST(BatchShader, Table2KnotYiqAt4SppIsBitIdentical) {
+  Scene s = loadScene(std::string(XVAL_REFERENCE_DIR) + "/scenes/table2_knot_yiq.json");
+  s.camera.width = s.camera.height = 360;
+  expectBitIdentical(s, 4);
 }
 
 TEST(BatchShader, Table2KnotClassicPhongIsBitIdentical) {
