@@ -9,21 +9,33 @@ xval=build/renderer/xval
 mkdir -p "$out"
 scenes=(reference/scenes/*.json)
 n=${#scenes[@]}
-tsv="$out/timings.tsv.partial"
-printf 'scene\twidth\theight\tspp\tprecision\tsetup_s\ttrace_s\n' > "$tsv"
+stats="$out/stats"
+rm -rf "$stats"
+mkdir -p "$stats"
 SECONDS=0
 i=0
 for scene in "${scenes[@]}"; do
   i=$((i + 1))
   name=$(basename "$scene" .json)
   printf '[%2d/%d] %-28s ' "$i" "$n" "$name"
-  log=$("$xval" render "$scene" -o "$out/$name.exr" 2>&1) || { echo "FAILED"; echo "$log" >&2; exit 1; }
+  log=$("$xval" render "$scene" -o "$out/$name.exr" --stats "$stats/$name.json" 2>&1) ||
+    { echo "FAILED"; echo "$log" >&2; exit 1; }
   "$xval" render "$scene" -o "$out/$name.png" -q
-  # "xval render: wrote F (WxH, N spp, P): setup S s, trace T s"
   summary=$(echo "$log" | tail -n 1)
   echo "${summary#xval render: wrote }"
-  echo "$summary" | sed -E 's/.*\(([0-9]+)x([0-9]+), ([0-9]+) spp, ([a-z]+)\): setup ([0-9.]+) s, trace ([0-9.]+) s/\1\t\2\t\3\t\4\t\5\t\6/' \
-    | sed "s/^/$name\t/" >> "$tsv"
 done
-mv "$tsv" "$out/timings.tsv"
-echo "rendered $n scenes into $out in ${SECONDS} s (EXR and PNG each)"
+# timings.tsv from the renders' --stats files (JSON), one row per scene.
+python3 - "$stats" "$out/timings.tsv" <<'PY'
+import json, pathlib, sys
+stats, out = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
+cols = ["scene", "width", "height", "spp", "precision", "visibility", "culled_triangles", "shading",
+        "setup_s", "frame_s"]
+rows = ["\t".join(cols)]
+for f in sorted(stats.glob("*.json")):
+    s = json.loads(f.read_text())
+    rows.append("\t".join(str(s[c]).replace("\t", " ").replace("\n", " ") for c in cols))
+tmp = out.with_suffix(".tsv.partial")
+tmp.write_text("\n".join(rows) + "\n")
+tmp.replace(out)
+PY
+echo "rendered $n scenes into $out in ${SECONDS} s (EXR and PNG each; timings.tsv)"

@@ -1,8 +1,12 @@
 // Small pieces several subcommands share: checking a samples-per-pixel
-// option, and the median/min/max summary of repeated timings.
+// option, the median/min/max summary of repeated timings, and writing a
+// JSON file of figures.
 #pragma once
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -33,6 +37,13 @@ inline Spread spread(std::vector<double> v) {
   s.min = v.front(), s.max = v.back();
   s.median = v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
   return s;
+}
+
+// Writes j (indented) to `file`; throws naming the file when it cannot.
+inline void writeJsonFile(const std::string& file, const nlohmann::json& j) {
+  std::ofstream f(file);
+  f << j.dump(2) << "\n";
+  if (!f) throw std::runtime_error(file + ": cannot write");
 }
 
 }  // namespace xval::cli

@@ -183,11 +183,7 @@ void addBenchCommand(CLI::App& app, std::function<int()>& run) {
           out["ratios_to_reference_float"][k] = v / base;
         }
       }
-      if (!args->json.empty()) {
-        std::ofstream f(args->json);
-        f << out.dump(2) << "\n";
-        if (!f) throw std::runtime_error(args->json + ": cannot write");
-      }
+      if (!args->json.empty()) writeJsonFile(args->json, out);
       return 0;
     };
   });

@@ -22,6 +22,7 @@ struct RenderArgs {
   std::string visibility = "auto";
   std::string renderer = "reference";
   std::string work_dir;
+  std::string stats;
   double timeout = kDefaultToolTimeoutSeconds;
 };
 }  // namespace
@@ -64,6 +65,10 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--work-dir", args->work_dir,
                   "Folder for an external renderer's export, log and raw output (default: "
                   "OUT's folder/OUT-stem.RENDERER)");
+  cmd->add_option("--stats", args->stats,
+                  "Also write what was rendered and how long it took to this JSON file (reference "
+                  "renderer: width, height, spp, precision, visibility, culled_triangles, shading, "
+                  "setup_s, frame_s; external: renderer, width, height, process_s)");
   cmd->add_option("--timeout", args->timeout,
                   "Seconds before an external renderer is killed and the render fails (default 600)")
       ->check(CLI::PositiveNumber);
@@ -96,6 +101,10 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
                         ? renderWithPovray(scene, work, args->timeout, &info)
                         : renderWithBlender(scene, work, args->timeout, &info);
         writeImage(img, out);
+        if (!args->stats.empty())
+          writeJsonFile(args->stats, {{"scene", scene.name}, {"renderer", args->renderer},
+                                      {"width", img.width}, {"height", img.height},
+                                      {"process_s", info.seconds}});
         if (!args->quiet)
           std::fprintf(stderr, "xval render: wrote %s (%s, %dx%d): %.3f s (whole process), work dir %s\n",
                        args->output.c_str(), args->renderer.c_str(), img.width, img.height,
@@ -105,6 +114,13 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
       RenderStats stats;
       Image img = renderScene(scene, opt, &stats);
       writeImage(img, args->output);
+      if (!args->stats.empty())
+        writeJsonFile(args->stats,
+                      {{"scene", scene.name}, {"renderer", "reference"}, {"width", img.width},
+                       {"height", img.height}, {"spp", opt.spp}, {"precision", toString(opt.precision)},
+                       {"visibility", stats.visibility}, {"culled_triangles", stats.culled_triangles},
+                       {"shading", stats.shading}, {"setup_s", stats.setup_seconds},
+                       {"frame_s", stats.trace_seconds}});
       if (!args->quiet)
         std::fprintf(stderr,
                      "xval render: wrote %s (%dx%d, %d spp, %s, visibility: %s): setup %.3f s, "
