@@ -130,8 +130,10 @@ void checkSceneName(const std::string& name, const std::string& where) {
                              "characters, not empty, '.' or '..')");
 }
 
-std::string commandVersion(const std::vector<std::string>& argv, const fs::path& tmp) {
-  ProcessResult r = runProcess(argv, fs::current_path(), tmp, 60.0);
+// The tool's version line for the provenance; waits at most
+// min(60 s, the validation's timeout) for it.
+std::string commandVersion(const std::vector<std::string>& argv, const fs::path& tmp, double timeout_seconds) {
+  ProcessResult r = runProcess(argv, fs::current_path(), tmp, std::min(60.0, timeout_seconds));
   if (!r.ok()) return "unavailable (" + r.describe() + ")";
   std::ifstream in(tmp);
   std::string line;
@@ -512,12 +514,12 @@ int compareAndReport(const Plan& plan) {
   J results;
   results["format"] = "xval-results/1";
   results["provenance"] = {
-      {"povray", commandVersion({"povray", "--version"}, tmp)},
-      {"blender", commandVersion({"blender", "--version"}, tmp)},
+      {"povray", commandVersion({"povray", "--version"}, tmp, plan.timeout_seconds)},
+      {"blender", commandVersion({"blender", "--version"}, tmp, plan.timeout_seconds)},
       {"openimageio", OIIO_VERSION_STRING},
       {"compiler", std::string("g++ ") + __VERSION__},
       {"tolerances", plan.tolerances}};
-  results["provenance"]["git_commit"] = commandVersion({"git", "rev-parse", "HEAD"}, tmp);
+  results["provenance"]["git_commit"] = commandVersion({"git", "rev-parse", "HEAD"}, tmp, plan.timeout_seconds);
   results["provenance"]["settings_hash"] = settingsHash(setting_files);
   fs::remove(tmp);
   // From the plan's making to now: on a cluster this includes the time the
