@@ -119,19 +119,22 @@ std::string machine() {
 
 // The commit of the working tree xval runs in, else of the one its
 // executable was built in (build folders live inside the source tree),
-// with "-dirty" when that tree has uncommitted changes.
+// with "-dirty" when that tree has uncommitted changes outside results/
+// (the main job rewrites the published report there before this runs).
 std::string gitCommit(const std::filesystem::path& tmp) {
   std::error_code ec;
   const std::filesystem::path exe_dir = std::filesystem::read_symlink("/proc/self/exe", ec).parent_path();
   std::string s = "unknown";
   for (const auto& where : {std::filesystem::current_path(), exe_dir}) {
     if (where.empty()) continue;
-    ProcessResult r = runProcess(
-        {"git", "-C", where.string(), "describe", "--always", "--dirty", "--abbrev=40"}, where, tmp, 30);
-    if (r.ok()) {
-      s = firstLineOf(tmp);
-      break;
-    }
+    ProcessResult r = runProcess({"git", "-C", where.string(), "rev-parse", "HEAD"}, where, tmp, 30);
+    if (!r.ok()) continue;
+    s = firstLineOf(tmp);
+    r = runProcess({"git", "-C", where.string(), "status", "--porcelain", "--untracked-files=no", "--",
+                    ":(top,exclude)results"},
+                   where, tmp, 30);
+    if (!r.ok() || !firstLineOf(tmp).empty()) s += "-dirty";
+    break;
   }
   std::filesystem::remove(tmp);
   return s;
