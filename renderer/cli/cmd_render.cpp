@@ -18,7 +18,7 @@ struct RenderArgs {
   int spp = 0;
   std::string precision;
   int threads = 0;
-  bool quiet = false, no_diagnostics = false;
+  bool quiet = false, no_diagnostics = false, keep_back_faces = false;
   std::string visibility = "auto";
   std::string renderer = "reference";
   std::string work_dir;
@@ -55,6 +55,9 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
                 "Do not compute the EXR's diagnostic channels (raw, Z, backfacing, incidence, "
                 "albedo); in float the hits are then shaded by the SIMD kernel where it covers the "
                 "scene (same pixels)");
+  cmd->add_flag("--keep-back-faces", args->keep_back_faces,
+                "Do not skip the back faces of closed meshes seen from outside (the image is the "
+                "same; for checking that)");
   cmd->add_option("--threads", args->threads, "Worker threads (default: all hardware threads)")
       ->check(CLI::Range(1, 1024));
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr");
@@ -85,6 +88,7 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
       opt.threads = args->threads;
       opt.progress = !args->quiet;
       opt.diagnostics = !args->no_diagnostics;
+      opt.cull_back_faces = !args->keep_back_faces;
       if (args->visibility != "auto" && opt.precision != Precision::Float)
         throw std::runtime_error("--visibility " + args->visibility +
                                  ": applies to the float path only (--precision float)");

@@ -13,15 +13,29 @@ namespace {
 
 constexpr double kTwoPi = 6.283185307179586476925;
 
-// Condition 2: the winding agrees with the vertex normals everywhere.
-bool windingAgreesWithNormals(const TriangleMesh& m) {
+// How far rounding to float32 may have moved a vertex (tessellate() rounds
+// every coordinate): 2^-24 of the largest coordinate, per coordinate; this
+// returns twice that, a bound on the distance moved.
+double roundingScale(const TriangleMesh& m) {
+  double largest = 0.0;
+  for (const auto& p : m.positions) largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  return largest * 0x1p-23;
+}
+
+// Condition 2: the winding agrees with the vertex normals everywhere, and
+// rounding has not distorted the mesh: every edge is longer than 1000 x
+// the rounding scale (a small object far from the origin collapses onto
+// the float grid, with zero-area triangles and coincident twins: not the
+// surface of a solid any more).
+bool windingAgreesWithNormals(const TriangleMesh& m, double rounding) {
   for (const auto& t : m.triangles) {
-    const glm::dvec3 g =
-        glm::cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]);
-    if (g == glm::dvec3(0.0)) continue;  // degenerate (a pole): never hit
+    const glm::dvec3 a = m.positions[t[0]], b = m.positions[t[1]], c = m.positions[t[2]];
+    if (!(std::min({glm::length(b - a), glm::length(c - b), glm::length(a - c)}) > 1e3 * rounding))
+      return false;
+    const glm::dvec3 g = glm::cross(b - a, c - a);
     if (!(glm::dot(g, m.normals[t[0]] + m.normals[t[1]] + m.normals[t[2]]) > 0.0)) return false;
   }
-  return true;
+  return !m.triangles.empty();
 }
 
 // Radius of the circle through a, b, c (infinite when collinear).
@@ -31,11 +45,11 @@ double circumradius(glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {
   return twice_area > 0.0 ? la * lb * lc / (2.0 * twice_area) : std::numeric_limits<double>::infinity();
 }
 
-bool eyeOutside(const UvSphere& s, glm::dvec3 eye) {
-  return glm::length(eye - s.center) > s.radius * (1.0 + 1e-6);
+bool eyeOutside(const UvSphere& s, glm::dvec3 eye, double rounding) {
+  return glm::length(eye - s.center) > s.radius * (1.0 + 1e-6) + rounding;
 }
 
-bool eyeOutside(const TorusKnot& k, glm::dvec3 eye) {
+bool eyeOutside(const TorusKnot& k, glm::dvec3 eye, double rounding) {
   const TorusKnotCurve curve(k, 1 << 10);  // only point() is used: the frame grid is not
   const int n = k.segments_along;
   if (n < 3) return false;
@@ -48,19 +62,20 @@ bool eyeOutside(const TorusKnot& k, glm::dvec3 eye) {
     chord = std::max(chord, glm::length(d - b));
     min_circumradius = std::min(min_circumradius, circumradius(a, b, d));
   }
-  // float32 vertices: each coordinate moves by <= 2^-24 of its magnitude.
+  // float32 vertices: moved by at most `rounding`; and some slack.
   const double extent = glm::length(k.center) + k.major_radius + k.minor_radius + k.tube_radius;
-  const double margin = 1e-6 * extent;
+  const double margin = 1e-6 * extent + rounding;
   return k.tube_radius < 0.99 * min_circumradius && nearest > k.tube_radius + chord + margin;
 }
 
-bool eyeOutside(const Plane&, glm::dvec3) { return false; }  // open: its back is visible
+bool eyeOutside(const Plane&, glm::dvec3, double) { return false; }  // open: its back is visible
 
 }  // namespace
 
 bool backFacesNeverFirstHit(const Shape& shape, const TriangleMesh& mesh, glm::dvec3 eye) {
-  const bool outside = std::visit([&](const auto& s) { return eyeOutside(s, eye); }, shape);
-  return outside && windingAgreesWithNormals(mesh);
+  const double rounding = roundingScale(mesh);
+  const bool outside = std::visit([&](const auto& s) { return eyeOutside(s, eye, rounding); }, shape);
+  return outside && windingAgreesWithNormals(mesh, rounding);
 }
 
 }  // namespace xval

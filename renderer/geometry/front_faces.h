@@ -12,19 +12,27 @@
 // piece first. Three conditions, all checked here:
 //   1. the shape is a closed solid: a torus knot tube or a sphere (a plane
 //      is open, and its back is visible: never);
-//   2. every non-degenerate triangle's winding normal agrees with its
-//      vertex normals (g . (n0 + n1 + n2) > 0; the tessellators promise
-//      outward normals, and this checks the winding against them);
+//   2. every triangle's winding normal agrees with its vertex normals
+//      (g . (n0 + n1 + n2) > 0; the tessellators promise outward normals,
+//      and this checks the winding against them), and rounding the
+//      vertices to float32 has not distorted the mesh: every edge is
+//      longer than 1000 x the rounding scale (2^-23 x the largest
+//      coordinate). A small object far from the origin fails this: its
+//      vertices collapse onto the float grid into zero-area triangles and
+//      coincident twins, no longer the surface of a solid (extremes case
+//      degenerate_sphere_far);
 //   3. the eye is outside the solid, with margin:
-//      sphere: |eye - c| > r (1 + 1e-6): the mesh's vertices lie on the
-//        sphere, so its (convex) faces lie inside it;
+//      sphere: |eye - c| > r (1 + 1e-6) + the rounding scale: the mesh's
+//        vertices lie on the sphere (up to rounding), so its (convex)
+//        faces lie inside it;
 //      torus knot: with c_i the centre line at the tessellation's rings
 //        and L the longest chord c_i c_{i+1}, every point of the faceted
 //        tube between rings i and i+1 lies within rho + L of c_i (each
 //        vertex of ring i + 1 is within rho + |c_{i+1} - c_i| of c_i, and
 //        the ball is convex), so min_i |eye - c_i| > rho + L + margin puts
-//        the eye outside every piece; the margin covers the float32
-//        rounding of the vertices. And the tube must not fold over
+//        the eye outside every piece; the margin (1e-6 of the knot's
+//        extent plus the rounding scale) covers the float32 rounding of
+//        the vertices. And the tube must not fold over
 //        itself where the centre line bends: rho < 0.99 x the smallest
 //        circumradius of three consecutive c_i (the discrete radius of
 //        curvature; adjacent rings then do not cross).

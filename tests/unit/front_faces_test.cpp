@@ -20,6 +20,18 @@ TEST(FrontFaces, SphereOnlyFromOutside) {
   EXPECT_FALSE(backFacesNeverFirstHit(s, m, {1, 0, 0.5}));  // inside
 }
 
+// A small sphere far from the origin: rounding to float collapses its
+// vertices (zero-area triangles, coincident twins): not a solid's surface.
+TEST(FrontFaces, SphereCollapsedByRoundingNever) {
+  UvSphere s;
+  s.center = glm::dvec3(1e6), s.radius = 0.05;
+  EXPECT_FALSE(backFacesNeverFirstHit(s, tessellate(s), s.center + glm::dvec3(0.125, 0.0625, 0.375)));
+  // The same place, large enough that its shortest edge (near the poles,
+  // ~0.0096 r) is over 1000 x the rounding (2^-23 x 1.1e6 = 0.13): fine.
+  s.radius = 1e5;
+  EXPECT_TRUE(backFacesNeverFirstHit(s, tessellate(s), s.center + glm::dvec3(0, 0, 3e5)));
+}
+
 TEST(FrontFaces, PlaneNever) {
   Plane p;
   EXPECT_FALSE(backFacesNeverFirstHit(p, tessellate(p), {0, 0, 5}));

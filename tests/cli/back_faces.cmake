@@ -1,0 +1,58 @@
+# Skipping back faces (geometry/front_faces.h) changes no final pixel: every
+# reference scene and every extremes case (written by `xval extremes
+# --no-external` at 64 x 64), in float and double, rendered with and
+# without `--keep-back-faces`, has bit-identical RGBA (idiff, no threshold).
+# Diagnostics are off: at an exact tie between two adjacent front faces the
+# double path may report the other triangle when the BVH changes, which the
+# incidence channel shows (docs/performance.md). Also checks that some
+# scenes did skip back faces, so the comparison is not vacuous.
+# Arguments: XVAL, SCENES (reference/scenes), WORK.
+foreach(_v XVAL SCENES WORK)
+  if(NOT DEFINED ${_v})
+    message(FATAL_ERROR "back_faces.cmake: -D${_v}=... is required")
+  endif()
+endforeach()
+find_program(IDIFF idiff REQUIRED)
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+execute_process(COMMAND ${XVAL} extremes -o ${WORK}/extremes --no-external --size 64
+                RESULT_VARIABLE _rc ERROR_VARIABLE _err)
+if(NOT _rc EQUAL 0)
+  message(FATAL_ERROR "xval extremes exited ${_rc}:\n${_err}")
+endif()
+file(GLOB _scenes ${SCENES}/*.json ${WORK}/extremes/scenes/*.json)
+list(LENGTH _scenes _n)
+if(_n LESS 40)
+  message(FATAL_ERROR "expected the 23 reference scenes and 27 extremes cases, found ${_n} scenes")
+endif()
+set(_skipping 0)
+foreach(_scene ${_scenes})
+  get_filename_component(_name ${_scene} NAME_WE)
+  foreach(_p float double)
+    set(_a ${WORK}/${_name}.${_p}.exr)
+    set(_b ${WORK}/${_name}.${_p}.kept.exr)
+    execute_process(COMMAND ${XVAL} render ${_scene} -o ${_a} --precision ${_p} --no-diagnostics -q
+                            --stats ${WORK}/${_name}.${_p}.json
+                    RESULT_VARIABLE _rc1 ERROR_VARIABLE _e1)
+    execute_process(COMMAND ${XVAL} render ${_scene} -o ${_b} --precision ${_p} --no-diagnostics -q
+                            --keep-back-faces
+                    RESULT_VARIABLE _rc2 ERROR_VARIABLE _e2)
+    if(NOT _rc1 EQUAL 0 OR NOT _rc2 EQUAL 0)
+      message(FATAL_ERROR "${_name} (${_p}): render failed:\n${_e1}\n${_e2}")
+    endif()
+    file(READ ${WORK}/${_name}.${_p}.json _stats)
+    string(JSON _culled GET "${_stats}" culled_triangles)
+    if(_culled GREATER 0)
+      math(EXPR _skipping "${_skipping} + 1")
+    endif()
+    execute_process(COMMAND ${IDIFF} -a -fail 0 -warn 0 ${_a} ${_b}
+                    RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _out)
+    if(NOT _rc EQUAL 0)
+      message(FATAL_ERROR "${_name} (${_p}): skipping ${_culled} back faces changed the image:\n${_out}")
+    endif()
+  endforeach()
+endforeach()
+if(_skipping LESS 40)
+  message(FATAL_ERROR "only ${_skipping} renders skipped any back face: the comparison is too weak")
+endif()
+message(STATUS "${_n} scenes x 2 precisions identical; ${_skipping} renders skipped back faces")
