@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
@@ -37,6 +38,15 @@ std::string describeVisibility(const RenderStats& stats) {
 }
 
 namespace {
+
+// Runs worker on `threads` threads (this one included) and waits for all;
+// the worker takes its work items from a shared counter.
+template <class F> void runOnThreads(int threads, F& worker) {
+  std::vector<std::thread> pool;
+  for (int k = 1; k < threads; ++k) pool.emplace_back(std::ref(worker));
+  worker();
+  for (auto& t : pool) t.join();
+}
 
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point t0) {
@@ -397,11 +407,7 @@ void PreparedScene::Impl::renderT(const Shading<T>& sh, const RenderOptions& opt
         reportProgress(++bands_done, raster.bands());
       }
     };
-    threads = std::min(threads, raster.bands());
-    std::vector<std::thread> pool;
-    for (int k = 1; k < threads; ++k) pool.emplace_back(band_worker);
-    band_worker();
-    for (auto& t : pool) t.join();
+    runOnThreads(std::min(threads, raster.bands()), band_worker);
     stats.setup_seconds = setup_seconds;
     stats.trace_seconds = secondsSince(t_trace);
     return;
@@ -469,11 +475,7 @@ void PreparedScene::Impl::renderT(const Shading<T>& sh, const RenderOptions& opt
     }
   };
 
-  threads = std::min(threads, tiles);
-  std::vector<std::thread> pool;
-  for (int k = 1; k < threads; ++k) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
+  runOnThreads(std::min(threads, tiles), worker);
   stats.setup_seconds = setup_seconds;
   stats.trace_seconds = secondsSince(t_trace);
 }
