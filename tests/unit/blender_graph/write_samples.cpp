@@ -80,7 +80,7 @@ json writeCase(const test::ShadingCase& c, const std::filesystem::path& dir, tes
   const dvec3 eye = CameraRays(s.camera).origin;
   const bool textured = s.material.texture.has_value();
   std::optional<Texture> tex;  // only for Gouraud's vertex colours
-  if (textured) tex = loadTexture(*s.material.texture);
+  if (textured && s.shading == ShadingMode::Gouraud) tex = loadTexture(*s.material.texture);
   const SurfaceColour<double> colour(s.material, tex ? &*tex : nullptr);
   const auto face = flatNormals(mesh);
   std::vector<dvec3> vertex_colours;
