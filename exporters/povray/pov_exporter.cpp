@@ -11,6 +11,7 @@
 #include "camera/camera.h"
 #include "geometry/mesh.h"
 #include "image/image.h"
+#include "povray/gouraud_image.h"
 #include "povray/pigment_tree.h"
 #include "povray/pov_shading.h"
 #include "povray/sdl.h"
@@ -30,93 +31,6 @@ std::string finish(double ks, double n) {
   std::string f = "finish { ambient 0 diffuse 0 emission 1";
   if (ks != 0.0) f += " phong " + num(ks) + " phong_size " + num(n);
   return f + " }";
-}
-
-// Gouraud in POV-Ray: an image holding, per triangle, a 2x2 texel block
-// (c0, c1 / c2, c1 + c2 - c0) and uv at the three texel centres of c0, c1,
-// c2. Bilinear interpolation (`interpolate 2`) over such a block is the
-// affine function c0 + s (c1 - c0) + t (c2 - c0), and POV-Ray's mesh uv is
-// barycentric, so the colour is the exact barycentric interpolation of the
-// vertex colours. Measured alternatives: a mesh2 texture_list is up to
-// 230/65535 off along triangle edges (POV-Ray weights three textures with
-// single-precision smooth-triangle distances); an OpenEXR image_map is read
-// as half floats (up to 16/65535 off). So the colours go into two 16-bit
-// PNGs, coarse and fine: c = lo + range (hi16 + lo16 / 65535) / 65535 per
-// channel, exact to ~1e-9.
-struct GouraudImage {
-  int width = 0, height = 0;
-  std::vector<float> rgb;
-  std::vector<glm::dvec2> uvs;  // 3 per triangle, POV-Ray's v (bottom-up)
-};
-
-GouraudImage gouraudImage(const TriangleMesh& m, const std::vector<dvec3>& colours) {
-  GouraudImage g;
-  const size_t n = m.triangles.size();
-  const int cols = std::max(1, int(std::ceil(std::sqrt(double(n)))));
-  const int rows = int((n + cols - 1) / cols);
-  g.width = 2 * cols, g.height = 2 * rows;
-  g.rgb.assign(size_t(g.width) * g.height * 3, 0.0f);
-  auto put = [&g](int x, int y, dvec3 c) {
-    for (int k = 0; k < 3; ++k) g.rgb[(size_t(y) * g.width + x) * 3 + k] = float(c[k]);
-  };
-  auto centre = [&g](int x, int y) {
-    return glm::dvec2((x + 0.5) / g.width, 1.0 - (y + 0.5) / g.height);
-  };
-  for (size_t t = 0; t < n; ++t) {
-    const int x = 2 * int(t % cols), y = 2 * int(t / cols);
-    const dvec3 c0 = colours[m.triangles[t][0]], c1 = colours[m.triangles[t][1]],
-                c2 = colours[m.triangles[t][2]];
-    put(x, y, c0), put(x + 1, y, c1), put(x, y + 1, c2), put(x + 1, y + 1, c1 + c2 - c0);
-    g.uvs.push_back(centre(x, y));
-    g.uvs.push_back(centre(x + 1, y));
-    g.uvs.push_back(centre(x, y + 1));
-  }
-  return g;
-}
-
-// Writes the two PNGs of a GouraudImage and returns SDL declaring the
-// pigment `name` that reads them back as the colours.
-std::string gouraudPigment(const GouraudImage& g, const std::filesystem::path& dir,
-                           const std::string& stem, const std::string& name) {
-  dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
-  for (size_t i = 0; i < g.rgb.size(); ++i) {
-    lo[i % 3] = std::min(lo[i % 3], double(g.rgb[i]));
-    hi[i % 3] = std::max(hi[i % 3], double(g.rgb[i]));
-  }
-  dvec3 range = hi - lo;
-  for (int c = 0; c < 3; ++c)
-    if (!(range[c] > 0)) range[c] = 1.0;
-  Image coarse(g.width, g.height, false), fine(g.width, g.height, false);
-  for (size_t i = 0; i < size_t(g.width) * g.height; ++i) {
-    for (int c = 0; c < 3; ++c) {
-      double q = std::clamp((double(g.rgb[i * 3 + c]) - lo[c]) / range[c], 0.0, 1.0) * 65535.0;
-      double a = std::min(std::floor(q), 65535.0);
-      double b = std::round((q - a) * 65535.0);
-      coarse.rgba[i * 4 + c] = float(a / 65535.0);
-      fine.rgba[i * 4 + c] = float(b / 65535.0);
-    }
-    coarse.rgba[i * 4 + 3] = fine.rgba[i * 4 + 3] = 1.0f;
-  }
-  writeImage(coarse, dir / (stem + "_coarse.png"));
-  writeImage(fine, dir / (stem + "_fine.png"));
-  std::ostringstream o;
-  o << "#declare " << name << "Coarse = function { pigment { image_map { png \"" << stem
-    << "_coarse.png\" gamma 1.0 interpolate 2 } } }\n"
-    << "#declare " << name << "Fine = function { pigment { image_map { png \"" << stem
-    << "_fine.png\" gamma 1.0 interpolate 2 } } }\n"
-    << "#declare " << name << " = pigment { average pigment_map {\n"
-    << "  [1 rgb " << vec(lo * 7.0) << "]\n";
-  static const char* ch[3] = {"red", "green", "blue"};
-  for (int c = 0; c < 3; ++c) {
-    dvec3 e(0.0);
-    e[c] = 7.0 * range[c];
-    o << "  [1 function { " << name << "Coarse(x, y, z)." << ch[c] << " } colour_map { [0 rgb 0] [1 rgb "
-      << vec(e) << "] }]\n";
-    o << "  [1 function { " << name << "Fine(x, y, z)." << ch[c] << " } colour_map { [0 rgb 0] [1 rgb "
-      << vec(e / 65535.0) << "] }]\n";
-  }
-  o << "} }\n";
-  return o.str();
 }
 
 void writeMesh(std::ostream& o, const TriangleMesh& m, const Scene& s, bool textured,
@@ -219,7 +133,7 @@ PovExport exportPov(const Scene& scene, const std::filesystem::path& dir) {
       SurfaceColour<double> sc(scene.material, texture ? &*texture : nullptr);
       GouraudImage g = gouraudImage(m, gouraudVertexColours(shader, m, sc, cam.origin));
       const std::string name = "XvalGouraud" + std::to_string(k);
-      o << gouraudPigment(g, dir, "gouraud_" + std::to_string(k), name);
+      o << gouraudPigment(gouraudCodes(g), dir, "gouraud_" + std::to_string(k), name);
       writeMesh(o, m, scene, textured, &g, name, false);
     } else {
       writeMesh(o, m, scene, textured, nullptr, "", sp.doubleIlluminate());
