@@ -3,8 +3,9 @@
 // emission pigment tree, the light sources, the finish) is evaluated with
 // POV-Ray 3.7's semantics for the constructs it uses, and compared with
 // Shader<double> at sampled points, normals and surface colours, for every
-// model and light type of test::shadingCases() (Phong and flat shading;
-// Gouraud's colours are the reference shader's own).
+// model and light type of test::shadingCases(): Phong and flat shading
+// (the emission tree and phong), and Gouraud (the per-triangle image of
+// vertex colours, gouraud_image.h, looked up as POV-Ray does).
 //
 // POV-Ray's semantics used (docs/povray-export.md):
 //   slope { point_at P }     0.5 + asin(N.L) / pi, L = normalize(P - x)
@@ -26,6 +27,10 @@
 //   parallel point_at <0,0,0>: L = normalize(location) everywhere
 //   texture_map over a pattern blending [0 no phong] [1 phong]: the phong
 //                            term times the pattern value
+//   mesh2 uv_vectors         the hit's uv is the barycentric blend of its
+//                            corners' uv
+//   image_map png gamma 1.0 interpolate 2: code / 65535, bilinear between
+//                            texel centres ((i + 0.5) / W, v bottom-up)
 // POV-Ray also turns a shading normal facing away from the eye around (a
 // known, classified difference): samples have N.V > 0. Points within 1e-9
 // of a spot cone are skipped (POV-Ray's cone function is another, equal
@@ -38,6 +43,10 @@
 #include <map>
 
 #include "camera/camera.h"
+#include "geometry/mesh.h"
+#include "povray/gouraud_image.h"
+#include "shading/surface_colour.h"
+#include "texture/texture.h"
 #include "common/export_common.h"
 #include "povray/pigment_tree.h"
 #include "povray/pov_shading.h"
@@ -215,6 +224,93 @@ TEST(PovShading, EvaluatesToTheReferenceShaderForEveryModelAndLight) {
   EXPECT_GT(spot_unlit, 100);
   std::cout << evaluated << " cases (" << refused << " refused by the exporter), " << samples
             << " samples, largest relative error " << worst << "\n";
+}
+
+// POV-Ray's `interpolate 2` lookup at uv (v bottom-up) of a W x H image
+// whose channel c of texel (x, y) (rows top-down) is texel(x, y, c).
+template <class F> dvec3 bilinearAt(int w, int h, glm::dvec2 uv, F texel) {
+  const double fx = uv.x * w - 0.5, fy = (1.0 - uv.y) * h - 0.5;
+  const int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
+  const double wx = fx - x0, wy = fy - y0;
+  auto at = [&](int x, int y, int c) { return texel(std::clamp(x, 0, w - 1), std::clamp(y, 0, h - 1), c); };
+  dvec3 out;
+  for (int c = 0; c < 3; ++c)
+    out[c] = (1 - wy) * ((1 - wx) * at(x0, y0, c) + wx * at(x0 + 1, y0, c)) +
+             wy * ((1 - wx) * at(x0, y0 + 1, c) + wx * at(x0 + 1, y0 + 1, c));
+  return out;
+}
+
+// The Gouraud pigment at uv as the SDL of gouraudPigment() reads it: the
+// average of 7 parts, [rgb 7 lo] and per channel the coarse and the fine
+// image (code / 65535) through colour_maps to 7 range and 7 range / 65535.
+dvec3 gouraudPigmentAt(const GouraudCodes& g, glm::dvec2 uv) {
+  auto image = [&g](const std::vector<std::uint16_t>& img) {
+    return [&g, &img](int x, int y, int c) { return img[(size_t(y) * g.width + x) * 3 + c] / 65535.0; };
+  };
+  const dvec3 coarse = bilinearAt(g.width, g.height, uv, image(g.coarse));
+  const dvec3 fine = bilinearAt(g.width, g.height, uv, image(g.fine));
+  dvec3 sum = sdl(g.lo * 7.0);
+  for (int c = 0; c < 3; ++c) {
+    sum[c] += wrapFunction(coarse[c]) * sdl(7.0 * g.range[c]);
+    sum[c] += wrapFunction(fine[c]) * sdl(7.0 * g.range[c] / 65535.0);
+  }
+  return sum / 7.0;
+}
+
+TEST(PovShading, GouraudImageEvaluatesToTheReferenceVertexColours) {
+  test::CaseRng r(77);
+  int cases = 0, samples = 0;
+  double worst = 0.0, worst_stored = 0.0;
+  for (const auto& c : test::shadingCases()) {
+    const Scene& s = c.scene;
+    if (s.shading != ShadingMode::Gouraud) continue;
+    const TriangleMesh mesh = tessellate(s.objects.at(0));
+    const Shader<double> shader(s.material, s.lights);
+    std::optional<Texture> tex;
+    if (s.material.texture) tex = loadTexture(*s.material.texture);
+    const SurfaceColour<double> colour(s.material, tex ? &*tex : nullptr);
+    const auto vc = gouraudVertexColours(shader, mesh, colour, CameraRays(s.camera).origin);
+    const GouraudImage img = gouraudImage(mesh, vc);
+    const GouraudCodes codes = gouraudCodes(img);
+    ++cases;
+    for (int k = 0; k < 100; ++k) {
+      const uint32_t t = r.index(uint32_t(mesh.triangles.size()));
+      double b1 = r.uniform(0, 1), b2 = r.uniform(0, 1);
+      if (b1 + b2 > 1) b1 = 1 - b1, b2 = 1 - b2;
+      const double b0 = 1 - b1 - b2;
+      const auto& tri = mesh.triangles[t];
+      const glm::dvec2 uv = b0 * glm::dvec2(sdl(img.uvs[3 * t].x), sdl(img.uvs[3 * t].y)) +
+                            b1 * glm::dvec2(sdl(img.uvs[3 * t + 1].x), sdl(img.uvs[3 * t + 1].y)) +
+                            b2 * glm::dvec2(sdl(img.uvs[3 * t + 2].x), sdl(img.uvs[3 * t + 2].y));
+      const dvec3 want = b0 * vc[tri[0]] + b1 * vc[tri[1]] + b2 * vc[tri[2]];
+      // The image's own (float32) texels, looked up the same way.
+      const dvec3 want_stored = bilinearAt(img.width, img.height, uv, [&img](int x, int y, int c) {
+        return double(img.rgb[(size_t(y) * img.width + x) * 3 + c]);
+      });
+      const dvec3 got = gouraudPigmentAt(codes, uv);
+      for (int ch = 0; ch < 3; ++ch) {
+        // Against the reference: the image stores the colours as float32
+        // (relative 6e-8; the block's fourth texel c1 + c2 - c0 too). Against
+        // those stored texels: the codes keep 32 bits of the range (1.2e-10
+        // of it).
+        const double scale = std::max(1.0, std::abs(want[ch]));
+        const double err = std::abs(got[ch] - want[ch]) / scale;
+        const double err_stored = std::abs(got[ch] - want_stored[ch]) / scale;
+        worst = std::max(worst, err);
+        worst_stored = std::max(worst_stored, err_stored);
+        ASSERT_LE(err, 2e-7) << c.name << ": triangle " << t << " at (" << b0 << ", " << b1 << ", "
+                             << b2 << "), channel " << ch << ": POV-Ray " << got[ch]
+                             << ", the reference " << want[ch];
+        ASSERT_LE(err_stored, 1e-9 * std::max(1.0, codes.range[ch]))
+            << c.name << ": triangle " << t << ", channel " << ch << ": POV-Ray " << got[ch]
+            << ", the image's colours " << want_stored[ch];
+      }
+      ++samples;
+    }
+  }
+  EXPECT_EQ(cases, 84);
+  std::cout << cases << " Gouraud cases, " << samples << " samples, largest relative error "
+            << worst << " (against the image's float32 colours " << worst_stored << ")\n";
 }
 
 }  // namespace
