@@ -43,7 +43,6 @@ from the scene is evaluated or formatted into code.
 import argparse
 import array
 import json
-import math
 import os
 import sys
 

@@ -2,20 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
-#include <limits>
 #include <fstream>
 #include <optional>
 #include <sstream>
 
 #include "camera/camera.h"
 #include "geometry/mesh.h"
-#include "image/image.h"
 #include "povray/gouraud_image.h"
 #include "povray/pigment_tree.h"
 #include "povray/pov_shading.h"
 #include "povray/sdl.h"
-#include "shading/models.h"
 #include "shading/shader.h"
 #include "shading/surface_colour.h"
 #include "texture/texture.h"
