@@ -106,6 +106,8 @@ class GltfData:
 def per_corner(values, width, idx):
     """values[idx[i]] for every corner i, flattened (Blender's corner order is
     the glTF index order)."""
+    if len(idx) and max(idx) >= len(values) // width:
+        fail("index %d out of range of an accessor of %d values" % (max(idx), len(values) // width))
     out = array.array("f", bytes(4 * width * len(idx)))
     for i, v in enumerate(idx):
         out[width * i:width * i + width] = values[width * v:width * v + width]
