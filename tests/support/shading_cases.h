@@ -85,7 +85,7 @@ inline std::vector<std::pair<std::string, std::vector<Light>>> lightSets(CaseRng
   return sets;
 }
 
-inline std::vector<std::pair<std::string, LightingModel>> models(CaseRng& r) {
+inline std::vector<std::pair<std::string, LightingModel>> lightingModels(CaseRng& r) {
   std::vector<std::pair<std::string, LightingModel>> m;
   ClassicPhong paper{ClassicPhong::Variant::Paper, r.uniform(0.05, 0.3), r.uniform(0.5, 1.0),
                      r.uniform(0.2, 1.0), r.uniform(5, 80)};
@@ -113,7 +113,7 @@ inline std::vector<std::pair<std::string, LightingModel>> models(CaseRng& r) {
 inline std::vector<ShadingCase> shadingCases(unsigned seed = 13) {
   CaseRng r(seed);
   std::vector<ShadingCase> out;
-  const auto ms = models(r);
+  const auto ms = lightingModels(r);
   int k = 0;
   for (const auto& [mname, model] : ms)
     for (const auto& [lname, lights] : lightSets(r))
