@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "camera/camera.h"
+#include "geometry/float_rounding.h"
 #include "geometry/mesh.h"
 #include "common/export_common.h"
 #include "gltf/shading_constants.h"
@@ -48,7 +49,7 @@ int addVec3(tinygltf::Model& m, const std::vector<glm::dvec3>& values, bool minm
   std::vector<double> lo(3, 1e300), hi(3, -1e300);
   for (const auto& v : values)
     for (int k = 0; k < 3; ++k) {
-      float x = float(v[k]);
+      float x = nearestFloat(v[k]);  // min/max must be the stored floats
       f.push_back(x);
       lo[k] = std::min(lo[k], double(x));
       hi[k] = std::max(hi[k], double(x));
@@ -65,7 +66,7 @@ int addVec3(tinygltf::Model& m, const std::vector<glm::dvec3>& values, bool minm
 
 int addVec2(tinygltf::Model& m, const std::vector<glm::dvec2>& values) {
   std::vector<float> f;
-  for (const auto& v : values) f.push_back(float(v.x)), f.push_back(float(v.y));
+  for (const auto& v : values) f.push_back(nearestFloat(v.x)), f.push_back(nearestFloat(v.y));
   tinygltf::Accessor a;
   a.bufferView = addView(m, f.data(), f.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
   a.componentType = kFloat;

@@ -195,6 +195,7 @@ PreparedScene::~PreparedScene() = default;
 Precision PreparedScene::precision() const { return impl_->precision; }
 double PreparedScene::setupSeconds() const { return impl_->setup_seconds; }
 size_t PreparedScene::triangleCount() const { return impl_->triangles; }
+const std::vector<TriangleMesh>& PreparedScene::meshes() const { return impl_->meshes; }
 
 void PreparedScene::render(const RenderOptions& opt, Image& img, RenderStats* stats_out) const {
   const Camera& c = impl_->scene.camera;
