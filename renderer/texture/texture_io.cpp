@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 
+#include "files/atomic_write.h"
 #include "scene/scene_loader.h"
 #include "texture/brick.h"
 #include "texture/texture.h"
@@ -90,12 +91,15 @@ Texture loadTexture(const TextureSpec& spec) {
 void writeTexturePng(const Texture& t, const std::filesystem::path& file) {
   if (t.rgb8.size() != size_t(t.width) * t.height * 3)
     throw std::runtime_error(file.string() + ": texture has no 8-bit codes to write");
-  auto out = OIIO::ImageOutput::create(file.string());
-  if (!out) throw std::runtime_error(file.string() + ": cannot create PNG: " + OIIO::geterror());
-  OIIO::ImageSpec spec(t.width, t.height, 3, OIIO::TypeDesc::UINT8);
-  if (!out->open(file.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, t.rgb8.data()) ||
-      !out->close())
-    throw std::runtime_error(file.string() + ": cannot write PNG: " + out->geterror());
+  writeFileAtomically(file, [&](const std::filesystem::path& tmp) {
+    auto out = OIIO::ImageOutput::create(tmp.string());
+    if (!out) throw std::runtime_error("cannot create PNG: " + OIIO::geterror());
+    OIIO::ImageSpec spec(t.width, t.height, 3, OIIO::TypeDesc::UINT8);
+    if (!out->open(tmp.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, t.rgb8.data()) ||
+        !out->close())
+      throw std::runtime_error("cannot write PNG: " + out->geterror());
+    return true;
+  });
 }
 
 }  // namespace xval
