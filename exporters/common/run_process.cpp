@@ -44,6 +44,18 @@ void forget(pid_t pid) {
   g_children.erase(pid);
 }
 
+// After an interrupt the tool just reaped was killed by it: this thread
+// must not go on to record that as the tool's failure (or do anything
+// else) while the interrupt thread ends the process.
+void waitIfInterrupted() {
+  bool interrupted;
+  {
+    std::lock_guard<std::mutex> g(g_children_lock);
+    interrupted = g_interrupted;
+  }
+  while (interrupted) pause();
+}
+
 }  // namespace
 
 void installInterruptHandler() {
@@ -66,14 +78,8 @@ void installInterruptHandler() {
         for (pid_t p : g_children)
           if (kill(-p, SIGKILL) == 0) killed.push_back(p);
       }
-      // Wait (at most 2 s) until the groups are gone: a killed group
-      // lingers while its leader is a zombie that runProcess reaps.
-      for (int i = 0; i < 200; ++i) {
-        bool any = false;
-        for (pid_t p : killed) any |= kill(-p, 0) == 0;
-        if (!any) break;
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-      }
+      // No wait: a process sent SIGKILL runs no more of its own code, so it
+      // writes nothing more; its zombie is reaped by init once xval is gone.
       std::fprintf(stderr, "xval: interrupted (%s): killed %zu external process group%s\n", strsignal(sig),
                    killed.size(), killed.size() == 1 ? "" : "s");
       // Die of the same signal, as an uncaught one would have.
@@ -187,6 +193,7 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const std::filesy
       kill(-pid, SIGKILL);
       waitpid(pid, &status, 0);
       forget(pid);
+      waitIfInterrupted();
       return r;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(r.seconds < 1.0 ? 5 : 50));
@@ -195,6 +202,7 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const std::filesy
   // children must not outlive it and write later).
   kill(-pid, SIGKILL);
   forget(pid);
+  waitIfInterrupted();
   if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
   if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
   return r;

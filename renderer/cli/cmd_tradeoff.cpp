@@ -60,6 +60,7 @@
 #include "common/run_process.h"
 #include "files/atomic_write.h"
 #include "files/output_folder.h"
+#include "image/image.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "validate/tradeoff.h"
@@ -290,6 +291,7 @@ void writePlot(const J& out, const std::string& metric_label, const fs::path& di
       throw std::runtime_error("gnuplot " + (dir / "pareto.gp").string() + ": " +
                                (r.started ? r.describe() : "not found (Debian package gnuplot-nox)") + "; see " +
                                (dir / "pareto.log").string());
+    requireDecodable(tmp_png, int(kW), int(kH));
     return true;
   });
 }

@@ -51,6 +51,19 @@ void syncWritten(const fs::path& tmp, const fs::path& target) {
   if (rc != 0) throw FileWriteError(target.string() + ": cannot write: " + reason(err));
 }
 
+// The target may be absent, a regular file, or a link (which is replaced,
+// never followed) to a regular file or to nothing. A device, a FIFO, a
+// folder or a link to one is refused: renaming over it would replace
+// /dev/full or /dev/stdout, and a folder cannot be replaced.
+void requireReplaceable(const fs::path& target) {
+  struct stat st;
+  if (lstat(target.c_str(), &st) != 0) return;  // absent
+  if (S_ISLNK(st.st_mode) && stat(target.c_str(), &st) != 0) return;  // a dangling link
+  if (!S_ISREG(st.st_mode))
+    throw FileWriteError(target.string() + ": cannot write: it exists and is not a regular file" +
+                         (S_ISDIR(st.st_mode) ? " (a folder)" : ""));
+}
+
 void moveIntoPlace(const fs::path& tmp, const fs::path& target) {
   if (std::rename(tmp.c_str(), target.c_str()) != 0)
     throw FileWriteError(target.string() + ": cannot write: cannot rename the finished file into place: " +
@@ -67,6 +80,7 @@ void syncFolder(const fs::path& dir) {
 }  // namespace
 
 void writeFileAtomically(const fs::path& file, std::string_view bytes) {
+  requireReplaceable(file);
   PrivateFolder tmp_dir(file.parent_path(), file.filename().string(), file);
   const fs::path tmp = tmp_dir.path() / file.filename();
   const int fd = open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
@@ -99,6 +113,7 @@ void writeFileAtomically(const fs::path& file, const std::function<bool(const fs
 void writeFilesAtomically(const fs::path& dir, const std::vector<std::string>& names,
                           const std::function<bool(const fs::path& tmp_dir)>& write) {
   if (names.empty()) return;
+  for (const auto& n : names) requireReplaceable(dir / n);
   const fs::path first = dir / names.front();
   PrivateFolder tmp_dir(dir, names.front(), first);
   bool ok = false;

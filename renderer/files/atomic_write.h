@@ -10,7 +10,9 @@
 // folder nobody else knows, so nothing is ever written through a planted
 // link. On any failure (a full disk, a read-only folder, a writer that
 // reports an error) the temporary is removed, the target is left as it
-// was, and FileWriteError names the target and the reason.
+// was, and FileWriteError names the target and the reason. A target that
+// exists and is not a regular file (a device such as /dev/full, a FIFO, a
+// folder, or a link to one of these) is refused before anything is written.
 #pragma once
 
 #include <filesystem>

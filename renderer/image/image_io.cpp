@@ -18,6 +18,18 @@ std::string lower(std::string s) {
 }
 }  // namespace
 
+void requireDecodable(const std::filesystem::path& file, int width, int height) {
+  auto in = OIIO::ImageInput::open(file.string());
+  if (!in) throw std::runtime_error("written but unreadable: " + OIIO::geterror());
+  const OIIO::ImageSpec spec = in->spec();
+  if (spec.width != width || spec.height != height)
+    throw std::runtime_error("written as " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                             ", expected " + std::to_string(width) + "x" + std::to_string(height));
+  std::vector<float> buf(size_t(spec.width) * spec.height * spec.nchannels);
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, buf.data()))
+    throw std::runtime_error("written incompletely: " + in->geterror());
+}
+
 void writeImage(const Image& img, const std::filesystem::path& file) {
   const std::string name = file.string();
   const std::string ext = lower(file.extension().string());
@@ -71,6 +83,7 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
   }
   ok = out->close() && ok;
   if (!ok) throw std::runtime_error("cannot write image: " + out->geterror());
+  requireDecodable(tmp_path, img.width, img.height);
   return true;
   });
 }
@@ -96,6 +109,7 @@ void writePreviewPng(const Image& img, const std::filesystem::path& file, int ma
     bool ok = out->open(tmp.string(), spec) && out->write_image(OIIO::TypeDesc::UINT8, px.data());
     ok = out->close() && ok;
     if (!ok) throw std::runtime_error("cannot write PNG: " + out->geterror());
+    requireDecodable(tmp, w, h);
     return true;
   });
 }

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "files/atomic_write.h"
+#include "image/image.h"
 #include "scene/scene_loader.h"
 #include "texture/brick.h"
 #include "texture/texture.h"
@@ -98,6 +99,7 @@ void writeTexturePng(const Texture& t, const std::filesystem::path& file) {
     if (!out->open(tmp.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, t.rgb8.data()) ||
         !out->close())
       throw std::runtime_error("cannot write PNG: " + out->geterror());
+    requireDecodable(tmp, t.width, t.height);
     return true;
   });
 }

@@ -12,6 +12,7 @@
 
 #include "files/atomic_write.h"
 #include "image/heat_map.h"
+#include "image/image.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -383,6 +384,7 @@ void writePaletteTexture(const std::filesystem::path& file) {
     OIIO::ImageSpec spec(1, 8, 3, OIIO::TypeDesc::UINT8);
     if (!out->open(tmp.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, px) || !out->close())
       throw std::runtime_error("cannot write: " + out->geterror());
+    requireDecodable(tmp, 1, 8);
     return true;
   });
 }

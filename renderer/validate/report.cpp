@@ -102,6 +102,7 @@ void writePlot(const J& cases, const std::filesystem::path& dir) {
     if (std::system(cmd.c_str()) != 0 || !std::filesystem::exists(tmp_png))
       throw std::runtime_error("gnuplot failed or is missing (Debian package gnuplot-nox); see " +
                                (dir / "p999.log").string());
+    requireDecodable(tmp_png, 1100, 460);
     return true;
   });
 }

@@ -212,6 +212,14 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
   for (const auto& f : collectScenes(inputs)) {
     Scene scene = loadScene(f);
     checkSceneName(scene.name, f.string());
+    // Its case folder, if it exists already, is a real folder (not a link
+    // planted or left there): refused before anything renders.
+    const fs::file_status st = fs::symlink_status(plan.dir / scene.name);
+    if (fs::is_symlink(st) || (fs::exists(st) && !fs::is_directory(st)))
+      throw std::runtime_error((plan.dir / scene.name).string() + ": " + f.string() + "'s case folder " +
+                               (fs::is_symlink(st) ? "is a symbolic link; xval does not write through links "
+                                                     "inside its output folder (remove it)"
+                                                   : "exists and is not a folder"));
     auto [it, fresh] = seen.emplace(scene.name, f.string());
     if (!fresh)
       throw std::runtime_error(f.string() + ": name: \"" + scene.name + "\": also the name of " +
@@ -367,11 +375,17 @@ JobRecord runJob(const Plan& plan, const RenderJob& job) {
   JobRecord rec;
   rec.input_hash = job.input_hash;
   const auto t0 = Clock::now();
+  // The case folder must be a real folder (never a link to elsewhere):
+  // otherwise nothing, not even the record, is written into it.
   try {
-    // The case folder is a real folder (never a link to elsewhere), and the
-    // record is written last: remove the old one first, so that an
-    // interrupted job never leaves an "ok" beside images it did not write.
     makeRealFolder(plan.dir, cdir);
+  } catch (const std::exception& e) {
+    rec.error = e.what();
+    return rec;
+  }
+  try {
+    // The record is written last: remove the old one first, so that an
+    // interrupted job never leaves an "ok" beside images it did not write.
     std::error_code ec;
     if (!fs::remove(record, ec) && ec)
       throw std::runtime_error(record.string() + ": cannot remove the previous record: " + ec.message());
@@ -440,6 +454,7 @@ int compareAndReport(const Plan& plan) {
       throw std::runtime_error(j0.path.string() + ": name: \"" + scene.name + "\": the plan (" +
                                planFile(dir).string() + ") says \"" + j0.scene + "\": plan again");
     setting_files.push_back(j0.path);
+    makeRealFolder(dir, dir / j0.scene);  // the diff images go there: never through a link
     J jc;
     jc["scene"] = j0.scene;
     jc["file"] = j0.file;
