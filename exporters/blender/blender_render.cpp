@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <fstream>
 
-#include "common/run_process.h"
+#include "process/run_process.h"
 #include "gltf/gltf_exporter.h"
 #include "shading/models.h"
 

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "common/run_process.h"
+#include "process/run_process.h"
 #include "image/image.h"
 #include "scene/scene.h"
 #include "texture/texture.h"

@@ -4,7 +4,7 @@
 #include <fstream>
 #include <string>
 
-#include "common/run_process.h"
+#include "process/run_process.h"
 #include "povray/pov_exporter.h"
 
 namespace xval {

@@ -42,7 +42,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "common/export_common.h"
-#include "common/run_process.h"
+#include "process/run_process.h"
 #include "files/atomic_write.h"
 #include "files/output_folder.h"
 #include "povray/pov_render.h"

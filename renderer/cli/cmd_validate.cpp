@@ -19,8 +19,11 @@
 // (bad scene, renderer missing or broken, a job not run). --plan-only
 // exits 0 when it wrote the plan; --run-job exits 0 when the render
 // succeeded and 2 when it failed (the failure is in the job's record).
-// Files are written under temporary names and renamed, so an interrupted
-// run leaves no file that looks complete.
+// Files are written whole or not at all (files/atomic_write.h), so an
+// interrupted run leaves no file that looks complete; the output folder is
+// locked (files/output_folder.h: a plain run, --plan-only and
+// --compare-only alone, --run-job shared), and a new run removes the old
+// results.json and report.html before it plans.
 #include <atomic>
 #include <chrono>
 #include <cstdio>

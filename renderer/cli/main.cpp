@@ -11,7 +11,7 @@
 #include <exception>
 
 #include "cli/commands.h"
-#include "common/run_process.h"
+#include "process/run_process.h"
 
 int main(int argc, char** argv) {
   // Before any thread starts: an interrupt stops every tool xval started.

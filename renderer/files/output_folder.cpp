@@ -48,7 +48,6 @@ void checkToolPath(const fs::path& path) {
   for (unsigned char c : s) {
     const char* why = c == '\\' ? "Blender reads '\\' as a folder separator and would write outside it"
                       : c == '?' ? "OpenImageIO reads what follows '?' in a file name as options"
-                      : c == '\'' ? "the report's plot runs gnuplot in the folder, single-quoted"
                       : c < 0x20 || c == 0x7f ? "a control character breaks logs and messages"
                                               : nullptr;
     if (why)

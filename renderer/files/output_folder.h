@@ -45,9 +45,8 @@ class FolderLock {
 
 // Throws OutputFolderError unless the path can be handed to the tools as
 // part of their paths: no '\\' (Blender reads it as a folder separator and
-// would write elsewhere), no '?' (OpenImageIO reads options after it), no
-// '\'' (the report's plot runs gnuplot in a single-quoted folder) and no
-// control characters. Checked before anything is rendered.
+// would write elsewhere), no '?' (OpenImageIO reads options after it) and
+// no control characters. Checked before anything is rendered.
 void checkToolPath(const std::filesystem::path& path);
 
 // The lock file's name (a reserved name in an output folder).

@@ -9,12 +9,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 #include "image/image.h"
+#include "process/run_process.h"
 #include "validate/extremes.h"
 #include "validate/report_tradeoff.h"
 
@@ -85,22 +85,21 @@ void writePlot(const J& cases, const std::filesystem::path& dir) {
   const std::string plot = "plot 'p999.dat' using 2 title 'reference-povray', '' using 3 title "
                            "'reference-blender', '' using 4 title 'povray-blender'\n";
   writeFileAtomically(gp, g.str() + plot);  // the script as a user would rerun it
-  if (dir.string().find('\'') != std::string::npos)
-    throw std::runtime_error(dir.string() + ": report folder names with quotes are not supported");
-  // gnuplot runs a copy that writes the plot into the private folder of
-  // writeFileAtomically (a name relative to the output folder, its working
-  // folder); the plot is renamed into place once whole.
+  // gnuplot (no shell: process/run_process.h) runs a copy that writes the
+  // plot into the private folder of writeFileAtomically (a name relative to
+  // the output folder, its working folder); the plot is renamed into place
+  // once whole.
   writeFileAtomically(dir / "p999.png", [&](const std::filesystem::path& tmp_png) {
     const std::filesystem::path rel = tmp_png.lexically_relative(dir);
     std::string script = g.str();
     script.replace(script.find("set output 'p999.png'"), std::string("set output 'p999.png'").size(),
                    "set output '" + rel.string() + "'");
     writeFileAtomically(tmp_png.parent_path() / "p999.gp", script + plot);
-    std::filesystem::remove(dir / "p999.log");  // the shell's redirection would follow a link
-    const std::string cmd = "cd '" + dir.string() + "' && gnuplot '" + (rel.parent_path() / "p999.gp").string() +
-                            "' 2> p999.log";
-    if (std::system(cmd.c_str()) != 0 || !std::filesystem::exists(tmp_png))
-      throw std::runtime_error("gnuplot failed or is missing (Debian package gnuplot-nox); see " +
+    const ProcessResult r =
+        runProcess({"gnuplot", (rel.parent_path() / "p999.gp").string()}, dir, dir / "p999.log", 120.0);
+    if (!r.ok() || !std::filesystem::exists(tmp_png))
+      throw std::runtime_error("gnuplot " + gp.string() + ": " +
+                               (r.started ? r.describe() : "not found (Debian package gnuplot-nox)") + "; see " +
                                (dir / "p999.log").string());
     requireDecodable(tmp_png, 1100, 460);
     return true;

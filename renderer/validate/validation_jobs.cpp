@@ -14,7 +14,7 @@
 #include <OpenImageIO/oiioversion.h>
 
 #include "blender/blender_render.h"
-#include "common/run_process.h"
+#include "process/run_process.h"
 #include "files/atomic_write.h"
 #include "files/output_folder.h"
 #include "image/compare.h"

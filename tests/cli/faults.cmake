@@ -100,6 +100,10 @@ function(require_unshare)
 endfunction()
 
 set(V "'${XVAL}' validate '${SCENE}' --tolerances '${TOL}'")
+# Shell: wait (at most 60 s) until file $1 has at least $2 lines, so that a
+# signal or a second run comes once the stand-ins run, however loaded the
+# machine.
+set(WAIT_FOR "wait_for() { i=0; while [ $i -lt 600 ] && [ \"$(cat \"$1\" 2>/dev/null | wc -l)\" -lt $2 ]; do sleep 0.1; i=$((i+1)); done; }")
 set(ENVPATH "PATH='${WORK}/bin':/usr/bin:/bin")
 
 if(CASE STREQUAL "record_on_full_disk")
@@ -172,11 +176,13 @@ elseif(CASE STREQUAL "reserved_scene_names")
 
 elseif(CASE STREQUAL "interrupt")
   # Every tool records its pid, sleeps, then writes a file (its own and
-  # one in the output folder); SIGINT reaches xval 1.5 s in.
+  # one in the output folder); SIGINT reaches xval once both run.
   foreach(_t povray blender)
     stand_in(${_t} "echo $$ >> '${WORK}/pids'\nsleep 4\ntouch '${WORK}/late-${_t}-'$$ late-${_t}\nexit 0")
   endforeach()
-  run_sh("${ENVPATH} timeout --preserve-status -s INT 1.5 ${V} -o '${WORK}/out' --jobs 3 --timeout 60")
+  run_sh("${WAIT_FOR}; ${ENVPATH} ${V} -o '${WORK}/out' --jobs 3 --timeout 60 & p=$!; wait_for '${WORK}/pids' 2; kill -INT $p; wait $p; echo rc=$?")
+  string(REGEX MATCH "rc=([0-9]+)" _m "${out}")
+  set(rc "${CMAKE_MATCH_1}")
   execute_process(COMMAND sleep 5)  # past the stand-ins' sleep
   if(NOT rc EQUAL 130)
     message(FATAL_ERROR "exit status ${rc}, expected 130 (died of SIGINT)")
@@ -209,12 +215,12 @@ elseif(CASE STREQUAL "resume_ignores_orphan")
     message(FATAL_ERROR "oiiotool could not make the image")
   endif()
   # First run: povray sleeps 3 s, then writes its image and exits 0; xval
-  # is killed (SIGKILL: nothing can stop the stand-in) 1 s in. Second run
+  # is killed (SIGKILL: nothing can stop the stand-in) once it runs. Second run
   # (--resume): povray writes nothing, sleeps past the orphan's write, and
   # exits 0.
-  stand_in(povray "out=$(sed -n 's/^Output_File_Name=//p' scene.ini)\nif [ ! -e '${WORK}/first' ]; then touch '${WORK}/first'; sleep 3; cp '${WORK}/image.png' \"$out\" && touch '${WORK}/orphan-wrote'; exit 0; fi\nsleep 5\nexit 0")
+  stand_in(povray "out=$(sed -n 's/^Output_File_Name=//p' scene.ini)\nif [ ! -e '${WORK}/first' ]; then echo started > '${WORK}/first'; sleep 3; cp '${WORK}/image.png' \"$out\" && touch '${WORK}/orphan-wrote'; exit 0; fi\nsleep 5\nexit 0")
   stand_in(blender "echo 'stand-in blender: not under test'\nexit 9")
-  run_sh("${ENVPATH} ${V} -o '${WORK}/out' --jobs 3 --timeout 60 & p=$!; sleep 1; kill -KILL $p; wait $p; ${ENVPATH} ${V} -o '${WORK}/out' --jobs 3 --timeout 60 --resume")
+  run_sh("${WAIT_FOR}; ${ENVPATH} ${V} -o '${WORK}/out' --jobs 3 --timeout 60 & p=$!; wait_for '${WORK}/first' 1; kill -KILL $p; wait $p; ${ENVPATH} ${V} -o '${WORK}/out' --jobs 3 --timeout 60 --resume")
   require_exit(2)
   if(NOT EXISTS ${WORK}/first)
     message(FATAL_ERROR "the first povray did not start")
@@ -227,16 +233,16 @@ elseif(CASE STREQUAL "resume_ignores_orphan")
   require_in("${_e}" "results.json's povray error" "exited 0 but wrote no image")
 
 elseif(CASE STREQUAL "lock")
-  stand_in(povray "sleep 3\nexit 9")
+  stand_in(povray "echo $$ >> '${WORK}/started'\nsleep 3\nexit 9")
   stand_in(blender "exit 9")
-  run_sh("${ENVPATH} ${V} -o '${WORK}/out' --jobs 3 --timeout 60 2> '${WORK}/first.err' & p=$!; sleep 1; ${ENVPATH} ${V} -o '${WORK}/out' --jobs 3 --timeout 60; echo second=$? pid=$p; wait $p; echo first=$?")
+  run_sh("${WAIT_FOR}; ${ENVPATH} ${V} -o '${WORK}/out' --jobs 3 --timeout 60 2> '${WORK}/first.err' & p=$!; wait_for '${WORK}/started' 1; ${ENVPATH} ${V} -o '${WORK}/out' --jobs 3 --timeout 60; echo second=$? pid=$p; wait $p; echo first=$?")
   require_in("${out}" "stdout" "second=2" "first=2")
   string(REGEX MATCH "pid=([0-9]+)" _m "${out}")
   require_in("${err}" "the second run's stderr" "${WORK}/out: another xval validate is writing into this folder (pid ${CMAKE_MATCH_1}")
   file(READ ${WORK}/first.err _first)
   require_in("${_first}" "the first run's stderr" "xval validate: 1 scenes, ERRORS")
   # --plan-only and --compare-only are refused the same way.
-  run_sh("${ENVPATH} ${V} -o '${WORK}/out' --jobs 3 --timeout 60 > /dev/null 2>&1 & p=$!; sleep 1; ${ENVPATH} '${XVAL}' validate --plan '${WORK}/out/jobs.json' --compare-only; echo second=$?; wait $p")
+  run_sh("${WAIT_FOR}; ${ENVPATH} ${V} -o '${WORK}/out' --jobs 3 --timeout 60 > /dev/null 2>&1 & p=$!; wait_for '${WORK}/started' 2; ${ENVPATH} '${XVAL}' validate --plan '${WORK}/out/jobs.json' --compare-only; echo second=$?; wait $p")
   require_in("${out}" "stdout" "second=2")
   require_in("${err}" "stderr" "another xval validate is writing into this folder")
 
@@ -250,7 +256,7 @@ elseif(CASE STREQUAL "stale_report")
   endif()
   # The rerun is killed while povray runs.
   file(WRITE ${WORK}/slow "")
-  run_sh("${ENVPATH} ${V} -o '${WORK}/out' --jobs 3 --timeout 60 & p=$!; sleep 1.5; kill -KILL $p; wait $p; sleep 0.2")
+  run_sh("${WAIT_FOR}; ${ENVPATH} ${V} -o '${WORK}/out' --jobs 3 --timeout 60 & p=$!; wait_for '${WORK}/slow_pid' 1; kill -KILL $p; wait $p; sleep 0.2")
   require_absent(${WORK}/out/report.html ${WORK}/out/results.json)
   # The stand-in SIGKILL left running (exec'd into sleep, same pid).
   if(EXISTS ${WORK}/slow_pid)
@@ -292,7 +298,7 @@ elseif(CASE STREQUAL "planted_symlinks")
 elseif(CASE STREQUAL "hostile_output_folder")
   stand_in(povray "touch '${WORK}/ran-povray'\nexit 9")
   stand_in(blender "touch '${WORK}/ran-blender'\nexit 9")
-  foreach(_dir "it's" "a\\\\b" "x?y")
+  foreach(_dir "a\\\\b" "x?y")
     run_sh("${ENVPATH} ${V} -o \"${WORK}/${_dir}/out\" --jobs 3 --timeout 60")
     require_absent(${WORK}/ran-povray ${WORK}/ran-blender)
     require_exit(2)
@@ -302,6 +308,20 @@ elseif(CASE STREQUAL "hostile_output_folder")
       message(FATAL_ERROR "validate planned into ${_made}")
     endif()
   endforeach()
+  # A quote is no longer special (gnuplot runs without a shell): the run
+  # completes, plot included.
+  run_sh("${ENVPATH} ${V} -o \"${WORK}/it's/out\" --jobs 3 --timeout 60")
+  require_exit(2)
+  file(REMOVE ${WORK}/ran-povray ${WORK}/ran-blender)
+  if(NOT EXISTS "${WORK}/it's/out/p999.png" OR NOT EXISTS "${WORK}/it's/out/report.html")
+    message(FATAL_ERROR "no plot or report in a folder named with a quote")
+  endif()
+  # The Blender harness refuses a '\\' in its paths wherever it is called from.
+  stand_in(blender "touch '${WORK}/ran-blender'\nexit 9")
+  run_sh("${ENVPATH} '${XVAL}' render '${SCENE}' --renderer blender -o \"${WORK}/b\\\\c/x.exr\" --timeout 60")
+  require_absent(${WORK}/ran-blender)
+  require_exit(1)
+  require_in("${err}" "stderr" "which Blender reads as a folder separator")
 
 elseif(CASE STREQUAL "generate_on_full_disk")
   require_unshare()

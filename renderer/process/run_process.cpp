@@ -1,4 +1,4 @@
-#include "common/run_process.h"
+#include "process/run_process.h"
 
 #include <fcntl.h>
 #include <signal.h>
