@@ -18,6 +18,6 @@ status=0
 
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
   -DXVAL_SANITIZE=ON -DXVAL_FUZZ=ON
-cmake --build build-asan -j"$(nproc)" --target xval_unit_tests xval xval_fuzz_scene xval_fuzz_spec
+cmake --build build-asan -j"$(nproc)" --target xval_unit_tests xval xval_blender_graph_samples xval_fuzz_scene xval_fuzz_spec
 (cd build-asan && ctest -L "unit|fuzz" --output-on-failure -j"$(nproc)") || status=1
 exit $status

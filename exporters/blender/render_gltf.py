@@ -5,18 +5,25 @@ lighting model evaluated as shader-node math.
         --gltf DIR/scene.gltf --out OUT.exr [--mode model|native-lambert]
 
 mode model (default): every mesh gets an Emission shader (strength 1) whose
-colour is the model of docs/models.md built from Math / Vector Math nodes:
-  P = Geometry > Position, V = Geometry > Incoming,
+colour is the model of docs/models.md built from Math / Vector Math nodes
+(build_model_material). Every constant it needs (light directions, cos of
+the spot cutoff, per-light luma, attenuation flags, the ambient sum and its
+luma, the luma row, ...) is read from the export's `xval_shading` scene
+extras (exporters/gltf/shading_constants.h); this script derives none:
+  P = Geometry > Position, taken to the scene's world frame with the
+      exported `blender_to_world` rows (the shading is in world frame),
   N = the glTF NORMAL accessor copied into a float corner attribute
       (`xval_normal`) in index order, normalised (the importer's custom
       split normals are compressed, up to 0.034 degrees off); flat shading
-      reads a face attribute (`xval_face_normal`) with the triangle's normal
-      oriented to agree with its vertex normals, as the reference renderer;
+      reads a face attribute (`xval_face_normal`) holding the exported
+      per-triangle normals, the reference renderer's own;
   C = the texture through an Image Texture node (Non-Color: stored values,
       Closest or Linear as the glTF sampler, Repeat), or the base colour;
   Gouraud reads the `_XVAL_GOURAUD` vertex colours of the export.
-V is normalize(eye - P) from the scene's camera position (Geometry >
+V is normalize(eye - P) from the exported camera position (Geometry >
 Incoming is up to 4.3e-6 off, which pow(R.V, 55) turns into ~15/65535).
+The node graph is checked numerically against the reference shader by
+tests/unit/blender_graph (plain python3 with a numeric stand-in for bpy).
 The render settings make Cycles evaluate that exactly once per pixel
 centre: 1 sample, no adaptive sampling, no denoising, 0 bounces, Box filter
 of width 0.01, transparent film (alpha = hit mask), no clamping, Standard
@@ -28,23 +35,18 @@ the imported point light (radius 0), direct light only; writes the
 diffuse-direct pass (DiffDir) as R, G, B, A.
 
 The scene description is read as data only: json.loads of the glTF scene
-extras ("xval") and of the .gltf file, numpy of the .bin buffer. Nothing
+extras ("xval", "xval_shading") and of the .gltf file, array.frombytes of
+the .bin buffer. Nothing
 from the scene is evaluated or formatted into code.
 """
 
 import argparse
+import array
 import json
-import math
 import os
 import sys
 
-import numpy
-
-# Blender 3.4's glTF importer uses numpy.bool, removed in numpy 1.24.
-if not hasattr(numpy, "bool"):
-    numpy.bool = bool
-
-import bpy  # noqa: E402
+import bpy  # noqa: E402  (in the unit test: a numeric stand-in, tests/unit/blender_graph)
 
 
 def fail(msg):
@@ -61,14 +63,10 @@ def parse_args():
     return p.parse_args(argv)
 
 
-def to_blender(v):
-    """glTF / xval world (x, y, z), +y up -> Blender (x, -z, y), +z up."""
-    return (float(v[0]), -float(v[2]), float(v[1]))
-
-
 # ---------------------------------------------------------------- glTF data
 class GltfData:
-    """Reads accessors of the exported .gltf/.bin with numpy."""
+    """Reads accessors of the exported .gltf/.bin (little-endian float32 and
+    uint32, as the exporter writes them) into flat arrays."""
 
     def __init__(self, path):
         with open(path, "r", encoding="utf-8") as f:
@@ -83,20 +81,56 @@ class GltfData:
                 self.buffers.append(f.read())
 
     def accessor(self, index):
+        """The accessor's values as a flat array ('f' or 'I') and its width."""
         a = self.doc["accessors"][index]
         v = self.doc["bufferViews"][a["bufferView"]]
-        dtype = {5126: numpy.float32, 5125: numpy.uint32}[a["componentType"]]
+        code = {5126: "f", 5125: "I"}[a["componentType"]]
         width = {"SCALAR": 1, "VEC2": 2, "VEC3": 3}[a["type"]]
         start = v.get("byteOffset", 0) + a.get("byteOffset", 0)
-        arr = numpy.frombuffer(self.buffers[v["buffer"]], dtype=dtype,
-                               count=a["count"] * width, offset=start)
-        return arr.reshape(a["count"], width) if width > 1 else arr
+        out = array.array(code)
+        if out.itemsize != 4 or sys.byteorder != "little":
+            fail("this platform's array types are not little-endian 32-bit")
+        n = a["count"] * width
+        out.frombytes(self.buffers[v["buffer"]][start:start + 4 * n])
+        if len(out) != n:
+            fail("accessor %d: %d values in the buffer, %d expected" % (index, len(out), n))
+        return out, width
 
     def primitive(self, mesh_name):
         for m in self.doc["meshes"]:
             if m.get("name") == mesh_name:
                 return m["primitives"][0]
         fail("mesh %r not in the glTF" % mesh_name)
+
+
+def per_corner(values, width, idx):
+    """values[idx[i]] for every corner i, flattened (Blender's corner order is
+    the glTF index order)."""
+    if len(idx) and max(idx) >= len(values) // width:
+        fail("index %d out of range of an accessor of %d values" % (max(idx), len(values) // width))
+    out = array.array("f", bytes(4 * width * len(idx)))
+    for i, v in enumerate(idx):
+        out[width * i:width * i + width] = values[width * v:width * v + width]
+    return out
+
+
+def mesh_attributes(data, prim, shading):
+    """The float attributes the model's nodes read, as
+    {name: (domain, flat float32 array)}: the glTF NORMAL per corner; for
+    flat shading the exported per-triangle normals (flat_normals.h, named by
+    the primitive's extras); for Gouraud the exported vertex colours."""
+    idx, _ = data.accessor(prim["indices"])
+    normals, w = data.accessor(prim["attributes"]["NORMAL"])
+    out = {"xval_normal": ("CORNER", per_corner(normals, w, idx))}
+    if shading == "flat":
+        faces, _ = data.accessor(prim["extras"]["xval_face_normals"])
+        if len(faces) != len(idx):
+            fail("%d face normals for %d triangles" % (len(faces) // 3, len(idx) // 3))
+        out["xval_face_normal"] = ("FACE", faces)
+    if shading == "gouraud":
+        cols, w = data.accessor(prim["attributes"]["_XVAL_GOURAUD"])
+        out["xval_gouraud"] = ("CORNER", per_corner(cols, w, idx))
+    return out, len(idx)
 
 
 # ------------------------------------------------------------ node builder
@@ -153,6 +187,11 @@ class Nodes:
     def saturate(self, x):
         return self.math("ADD", x, 0.0, clamp=True)
 
+    def at_least(self, a, b):
+        """1 where a >= b, else 0: Blender's LESS_THAN is a < b (and
+        GREATER_THAN a > b, 0 at equality), so 1 - LESS_THAN is exactly >=."""
+        return self.math("SUBTRACT", 1.0, self.math("LESS_THAN", a, b))
+
     def scale(self, v, s):
         return self.vmath("SCALE", v, scale=s)
 
@@ -164,51 +203,30 @@ class Nodes:
 
 
 # ------------------------------------------------------------- the models
-YIQ_Y = (0.29889531, 0.58662247, 0.11448223)  # the listing's luma row
-
-
-def light_luma(c):
-    s = sum(YIQ_Y)
-    return sum(w / s * float(x) for w, x in zip(YIQ_Y, c))
-
-
-def ambient_sum(scene):
-    a = [0.0, 0.0, 0.0]
-    for l in scene["lights"]:
-        if l["type"] == "ambient":
-            a = [a[i] + l["color"][i] for i in range(3)]
-    return a
-
-
+# Every constant comes from the export's `xval_shading` extras
+# (exporters/gltf/shading_constants.h); nothing is derived here.
 class LightTerm:
     """Per light: L, x = N.L, att and lit (None when 1), w = att lit, and
     R.V (built on first use)."""
 
     def __init__(self, g, light, P, N, V, NV):
         self.g, self.light, self.V, self.NV = g, light, V, NV
-        t = light["type"]
         self.att = self.lit = None
-        if t == "directional":
-            d = light["direction"]
-            n = math.sqrt(sum(c * c for c in d))
-            self.L = g.const(to_blender([-c / n for c in d]))
+        if light["kind"] == "directional":
+            self.L = g.const(light["to_light"])
         else:
-            Lvec = g.vmath("SUBTRACT", g.const(to_blender(light["position"])), P)
-            dist = g.vmath("LENGTH", Lvec)
+            Lvec = g.vmath("SUBTRACT", g.const(light["position"]), P)
             self.L = g.vmath("NORMALIZE", Lvec)
-            a = light["attenuation"]
-            if (a["constant"], a["linear"], a["quadratic"]) != (1.0, 0.0, 0.0):
+            if light["attenuated"]:
                 # 1 / (c + l d + q d^2)
-                den = g.add(a["constant"], g.add(g.mul(a["linear"], dist),
-                                                 g.mul(a["quadratic"], g.mul(dist, dist))))
+                c, l, q = light["attenuation"]
+                dist = g.vmath("LENGTH", Lvec)
+                den = g.add(c, g.add(g.mul(l, dist), g.mul(q, g.mul(dist, dist))))
                 self.att = g.math("DIVIDE", 1.0, den)
-            if t == "spot":
-                # lit where dot(-L, axis) >= cos(cutoff); dot(L, -axis) = dot(-L, axis)
-                d = light["direction"]
-                n = math.sqrt(sum(c * c for c in d))
-                minus_axis = to_blender([-c / n for c in d])
-                self.lit = g.math("GREATER_THAN", g.vmath("DOT_PRODUCT", self.L, minus_axis),
-                                  math.cos(math.radians(light["cutoff_deg"])))
+            if light["kind"] == "spot":
+                # lit where dot(L, -axis) >= cos(cutoff)
+                self.lit = g.at_least(g.vmath("DOT_PRODUCT", self.L, light["minus_axis"]),
+                                      light["cos_cutoff"])
         if self.att is not None and self.lit is not None:
             self.w = g.mul(self.att, self.lit)
         else:
@@ -228,72 +246,106 @@ class LightTerm:
         return value if self.w is None else self.g.mul(self.w, value)
 
 
-def forsyth(g, m, x):
-    t = m["type"]
+def forsyth(g, k, x):
+    t = k["model"]
     if t == "lambert":
-        return g.scale(m["c0"], g.clamp0(x))
+        return g.scale(k["c0"], g.clamp0(x))
     if t == "wrap_around":
-        f = m["factor"]
-        return g.scale(m["c0"], g.math("DIVIDE", g.clamp0(g.add(x, f)), 1.0 + f))
+        return g.scale(k["c0"], g.math("DIVIDE", g.clamp0(g.add(x, k["factor"])), k["wrap_divisor"]))
     if t == "hemispherical":
-        c0, c2 = m["c0"], m["c2"]
-        diff = tuple(c0[i] - c2[i] for i in range(3))
-        return g.vadd(tuple(c2), g.scale(diff, g.mul(g.add(x, 1.0), 0.5)))
+        return g.vadd(k["c2"], g.scale(k["c0_minus_c2"], g.mul(g.add(x, 1.0), 0.5)))
     neg = g.clamp0(g.mul(x, -1.0))
-    out = g.vadd(g.scale(m["c0"], g.clamp0(x)), g.scale(m["c2"], neg))
+    out = g.vadd(g.scale(k["c0"], g.clamp0(x)), g.scale(k["c2"], neg))
     if t == "trilight":
-        out = g.vadd(out, g.scale(m["c1"], g.math("SUBTRACT", 1.0, g.math("ABSOLUTE", x))))
+        out = g.vadd(out, g.scale(k["c1"], g.math("SUBTRACT", 1.0, g.math("ABSOLUTE", x))))
     return out
 
 
-def model_colour(g, scene, P, N, V, C):
-    m = scene["material"]["model"]
-    A = ambient_sum(scene)
+def model_colour(g, k, P, N, V, C):
+    """The colour of docs/models.md as nodes, from the constants k."""
     NV = g.vmath("DOT_PRODUCT", N, V)
-    lights = [LightTerm(g, l, P, N, V, NV) for l in scene["lights"] if l["type"] != "ambient"]
-    t = m["type"]
+    lights = [LightTerm(g, l, P, N, V, NV) for l in k["lights"]]
+    t = k["model"]
     if t == "classic_phong":
-        ka, kd, ks, n = m["ka"], m["kd"], m["ks"], m["shininess"]
-        if m["variant"] == "course":
-            acc = tuple(ka * a for a in A)
+        ka, kd, ks, n = k["ka"], k["kd"], k["ks"], k["shininess"]
+        if k["course"]:
+            acc = tuple(k["ka_ambient"])
             for lt in lights:
                 # att (ka + [lit] (kd clamp(N.L) + ks clamp(R.V)^n)): outside a
                 # spot's cone the per-light ambient term remains.
                 term = g.mul(kd, g.clamp0(lt.x))
-                if ks != 0.0:
+                if k["specular"]:
                     term = g.add(term, g.mul(ks, g.math("POWER", g.clamp0(lt.rv()), n)))
                 scalar = g.add(ka, term if lt.lit is None else g.mul(lt.lit, term))
                 if lt.att is not None:
                     scalar = g.mul(lt.att, scalar)
-                acc = g.vadd(acc, g.scale(lt.light["color"], scalar))
+                acc = g.vadd(acc, g.scale(lt.light["colour"], scalar))
             return g.vmul(C, acc)
         diff = (0.0, 0.0, 0.0)
         spec = (0.0, 0.0, 0.0)
         for lt in lights:
-            diff = g.vadd(diff, g.scale(lt.light["color"], lt.weighted(g.clamp0(lt.x))))
-            if ks != 0.0:
+            diff = g.vadd(diff, g.scale(lt.light["colour"], lt.weighted(g.clamp0(lt.x))))
+            if k["specular"]:
                 s = lt.weighted(g.math("POWER", g.clamp0(lt.rv()), n))
-                spec = g.vadd(spec, g.scale(lt.light["color"], s))
-        base = g.vadd(tuple(ka * a for a in A), g.scale(diff, kd))
+                spec = g.vadd(spec, g.scale(lt.light["colour"], s))
+        base = g.vadd(tuple(k["ka_ambient"]), g.scale(diff, kd))
         out = g.vmul(C, base)
-        return g.vadd(out, g.scale(spec, ks)) if ks != 0.0 else out
+        return g.vadd(out, g.scale(spec, ks)) if k["specular"] else out
     if t == "yiq_luma":
-        kd, ks, n, off = m["kd"], m["ks"], m["shininess"], m["luma_offset"]
+        kd, ks, n, off = k["kd"], k["ks"], k["shininess"], k["luma_offset"]
         dsum, ssum = 0.0, 0.0
         for lt in lights:
-            y = light_luma(lt.light["color"])
+            y = lt.light["luma"]
             dsum = g.add(dsum, lt.weighted(g.mul(y, g.saturate(lt.x))))
-            if ks != 0.0:
+            if k["specular"]:
                 ssum = g.add(ssum, lt.weighted(g.mul(y, g.math("POWER", g.saturate(lt.rv()), n))))
-        dl = g.add(light_luma(A), g.mul(kd, dsum), clamp=True)
-        Y = g.vmath("DOT_PRODUCT", C, YIQ_Y)
+        dl = g.add(k["ambient_luma"], g.mul(kd, dsum), clamp=True)
+        Y = g.vmath("DOT_PRODUCT", C, tuple(k["luma_row"]))
         dy = g.add(g.mul(Y, g.math("SUBTRACT", dl, 1.0)), g.math("SUBTRACT", g.mul(ks, ssum), off))
         return g.vadd(C, g.vec(dy, dy, dy))
-    acc = tuple(A)
+    acc = tuple(k["ambient"])
     for lt in lights:
-        term = g.vmul(lt.light["color"], forsyth(g, m, lt.x))
+        term = g.vmul(lt.light["colour"], forsyth(g, k, lt.x))
         acc = g.vadd(acc, term if lt.w is None else g.scale(term, lt.w))
     return g.vmul(C, acc)
+
+
+def build_model_material(nt, k, image):
+    """Fills the node tree nt with the model's Emission shader (strength 1)
+    from the constants k; image: the texture (or None: the base colour)."""
+    nt.nodes.clear()
+    g = Nodes(nt)
+    if k["shading"] == "gouraud":
+        a = nt.nodes.new("ShaderNodeAttribute")
+        a.attribute_type = "GEOMETRY"
+        a.attribute_name = "xval_gouraud"
+        colour = a.outputs["Vector"]
+    else:
+        geo = nt.nodes.new("ShaderNodeNewGeometry")
+        Pb = geo.outputs["Position"]
+        P = g.vec(*(g.vmath("DOT_PRODUCT", Pb, tuple(row)) for row in k["blender_to_world"]))
+        V = g.vmath("NORMALIZE", g.vmath("SUBTRACT", g.const(k["eye"]), P))
+        a = nt.nodes.new("ShaderNodeAttribute")
+        a.attribute_type = "GEOMETRY"
+        a.attribute_name = "xval_face_normal" if k["shading"] == "flat" else "xval_normal"
+        N = g.vmath("NORMALIZE", a.outputs["Vector"])
+        if image is not None:
+            uv = nt.nodes.new("ShaderNodeTexCoord")
+            it = nt.nodes.new("ShaderNodeTexImage")
+            it.image = image
+            it.interpolation = "Closest" if k["texture_filter"] == "nearest" else "Linear"
+            it.extension = "REPEAT"
+            nt.links.new(uv.outputs["UV"], it.inputs["Vector"])
+            C = it.outputs["Color"]
+        else:
+            C = g.const(k["base_colour"])
+        colour = model_colour(g, k, P, N, V, C)
+    em = nt.nodes.new("ShaderNodeEmission")
+    em.inputs["Strength"].default_value = 1.0
+    g._set(em.inputs["Color"], colour)
+    out = nt.nodes.new("ShaderNodeOutputMaterial")
+    nt.links.new(em.outputs[0], out.inputs["Surface"])
+    return out
 
 
 # ------------------------------------------------------------ scene setup
@@ -351,6 +403,9 @@ def setup_render(scene, width, height, out, multilayer):
 
 def main():
     args = parse_args()
+    import numpy  # Blender 3.4's glTF importer uses numpy.bool, removed in numpy 1.24.
+    if not hasattr(numpy, "bool"):
+        numpy.bool = bool
     bpy.ops.wm.read_factory_settings(use_empty=True)
     if "FINISHED" not in bpy.ops.import_scene.gltf(filepath=args.gltf, convert_lighting_mode="RAW"):
         fail("the glTF importer failed on " + args.gltf)
@@ -394,10 +449,11 @@ def main():
     for o in list(scene.objects):
         if o.type == "LIGHT":
             bpy.data.objects.remove(o, do_unlink=True)
-    shading = desc["shading"]
-    tex = desc["material"].get("texture")
+    if "xval_shading" not in scene.keys():
+        fail("no xval_shading constants in the glTF scene extras")
+    k = json.loads(scene["xval_shading"])
     image = None
-    if tex is not None:
+    if k["texture_filter"] is not None:
         folder = os.path.dirname(os.path.abspath(args.gltf))
         image = bpy.data.images.load(os.path.join(folder, "texture.png"), check_existing=True)
         image.colorspace_settings.name = "Non-Color"
@@ -405,67 +461,17 @@ def main():
 
     for o in meshes:
         me = o.data
-        prim = data.primitive(me.name)
-        idx = data.accessor(prim["indices"])
-        if len(me.loops) != len(idx):
-            fail("mesh %s: %d corners in Blender, %d indices in the glTF" % (me.name, len(me.loops), len(idx)))
-        normals = data.accessor(prim["attributes"]["NORMAL"]).astype(numpy.float64)
-        corner = normals[idx]
-        conv = numpy.stack([corner[:, 0], -corner[:, 2], corner[:, 1]], axis=1).astype(numpy.float32)
-        attr = me.attributes.new("xval_normal", "FLOAT_VECTOR", "CORNER")
-        attr.data.foreach_set("vector", conv.ravel())
-        if shading == "flat":
-            pos = data.accessor(prim["attributes"]["POSITION"]).astype(numpy.float64)
-            tri = idx.reshape(-1, 3)
-            g = numpy.cross(pos[tri[:, 1]] - pos[tri[:, 0]], pos[tri[:, 2]] - pos[tri[:, 0]])
-            ln = numpy.linalg.norm(g, axis=1)
-            g = numpy.where(ln[:, None] > 0, g / numpy.where(ln > 0, ln, 1.0)[:, None], 0.0)
-            nsum = normals[tri[:, 0]] + normals[tri[:, 1]] + normals[tri[:, 2]]
-            g = numpy.where((numpy.sum(g * nsum, axis=1) < 0)[:, None], -g, g)
-            if len(me.polygons) != len(tri):
-                fail("mesh %s: %d faces in Blender, %d triangles in the glTF" % (me.name, len(me.polygons), len(tri)))
-            fconv = numpy.stack([g[:, 0], -g[:, 2], g[:, 1]], axis=1).astype(numpy.float32)
-            fa = me.attributes.new("xval_face_normal", "FLOAT_VECTOR", "FACE")
-            fa.data.foreach_set("vector", fconv.ravel())
-        if shading == "gouraud":
-            cols = data.accessor(prim["attributes"]["_XVAL_GOURAUD"]).astype(numpy.float32)[idx]
-            ga = me.attributes.new("xval_gouraud", "FLOAT_VECTOR", "CORNER")
-            ga.data.foreach_set("vector", cols.ravel())
+        attrs, corners = mesh_attributes(data, data.primitive(me.name), k["shading"])
+        if len(me.loops) != corners:
+            fail("mesh %s: %d corners in Blender, %d indices in the glTF" % (me.name, len(me.loops), corners))
+        if len(me.polygons) * 3 != corners:
+            fail("mesh %s: %d faces in Blender, %d triangles in the glTF" % (me.name, len(me.polygons), corners // 3))
+        for name, (domain, values) in attrs.items():
+            me.attributes.new(name, "FLOAT_VECTOR", domain).data.foreach_set("vector", values)
 
     mat = bpy.data.materials.new("xval_model")
     mat.use_nodes = True
-    nt = mat.node_tree
-    nt.nodes.clear()
-    g = Nodes(nt)
-    if shading == "gouraud":
-        a = nt.nodes.new("ShaderNodeAttribute")
-        a.attribute_type = "GEOMETRY"
-        a.attribute_name = "xval_gouraud"
-        colour = a.outputs["Vector"]
-    else:
-        geo = nt.nodes.new("ShaderNodeNewGeometry")
-        P = geo.outputs["Position"]
-        V = g.vmath("NORMALIZE", g.vmath("SUBTRACT", to_blender(desc["camera"]["position"]), P))
-        a = nt.nodes.new("ShaderNodeAttribute")
-        a.attribute_type = "GEOMETRY"
-        a.attribute_name = "xval_face_normal" if shading == "flat" else "xval_normal"
-        N = g.vmath("NORMALIZE", a.outputs["Vector"])
-        if image is not None:
-            uv = nt.nodes.new("ShaderNodeTexCoord")
-            it = nt.nodes.new("ShaderNodeTexImage")
-            it.image = image
-            it.interpolation = "Closest" if tex["filter"] == "nearest" else "Linear"
-            it.extension = "REPEAT"
-            nt.links.new(uv.outputs["UV"], it.inputs["Vector"])
-            C = it.outputs["Color"]
-        else:
-            C = g.const(desc["material"]["base_color"])
-        colour = model_colour(g, desc, P, N, V, C)
-    em = nt.nodes.new("ShaderNodeEmission")
-    em.inputs["Strength"].default_value = 1.0
-    g._set(em.inputs["Color"], colour)
-    out = nt.nodes.new("ShaderNodeOutputMaterial")
-    nt.links.new(em.outputs[0], out.inputs["Surface"])
+    build_model_material(mat.node_tree, k, image)
     for o in meshes:
         o.data.materials.clear()
         o.data.materials.append(mat)

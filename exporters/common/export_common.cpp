@@ -8,9 +8,10 @@ namespace xval {
 std::optional<Texture> exportTexture(const Scene& scene, const std::filesystem::path& dir) {
   if (!scene.material.texture) return std::nullopt;
   Texture t = loadTexture(*scene.material.texture);
-  if (t.rgb8.empty())
+  if (t.rgb8.empty() && t.rgb16.empty())
     throw ExportError("texture " + scene.material.texture->path.string() +
-                      " is not 8-bit; the exporters copy textures as 8-bit PNG");
+                      " is neither 8-bit nor 16-bit integer; the exporters copy textures losslessly "
+                      "as 8-bit or 16-bit PNG");
   writeTexturePng(t, dir / "texture.png");
   return t;
 }

@@ -34,9 +34,10 @@ struct ExternalRenderInfo {
 
 inline constexpr double kDefaultToolTimeoutSeconds = 600.0;
 
-// Loads the material's texture and writes it as DIR/texture.png (8-bit
-// codes; the exporters never pass the user's path on). None without a
-// texture. Throws ExportError for a texture without 8-bit codes.
+// Loads the material's texture and writes it as DIR/texture.png (its 8-bit
+// or 16-bit codes, RGB as stored; the exporters never pass the user's path
+// on). None without a texture. Throws ExportError for a texture with
+// neither (a float image).
 std::optional<Texture> exportTexture(const Scene& scene, const std::filesystem::path& dir);
 
 // Throws ExternalToolError, with the tail of the log, unless `r` succeeded

@@ -11,10 +11,13 @@
 #include <optional>
 
 #include "camera/camera.h"
+#include "geometry/float_rounding.h"
 #include "geometry/mesh.h"
 #include "common/export_common.h"
 #include "files/atomic_write.h"
+#include "gltf/shading_constants.h"
 #include "scene/scene_writer.h"
+#include "shading/flat_normals.h"
 #include "shading/shader.h"
 #include "shading/surface_colour.h"
 #include "texture/texture.h"
@@ -41,19 +44,21 @@ int addView(tinygltf::Model& m, const void* data, size_t bytes, int target) {
   return int(m.bufferViews.size() - 1);
 }
 
-int addVec3(tinygltf::Model& m, const std::vector<glm::dvec3>& values, bool minmax) {
+// A float32 VEC3 accessor; `target` 0 for one that is no vertex attribute.
+int addVec3(tinygltf::Model& m, const std::vector<glm::dvec3>& values, bool minmax,
+            int target = TINYGLTF_TARGET_ARRAY_BUFFER) {
   std::vector<float> f;
   f.reserve(values.size() * 3);
   std::vector<double> lo(3, 1e300), hi(3, -1e300);
   for (const auto& v : values)
     for (int k = 0; k < 3; ++k) {
-      float x = float(v[k]);
+      float x = nearestFloat(v[k]);  // min/max must be the stored floats
       f.push_back(x);
       lo[k] = std::min(lo[k], double(x));
       hi[k] = std::max(hi[k], double(x));
     }
   tinygltf::Accessor a;
-  a.bufferView = addView(m, f.data(), f.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
+  a.bufferView = addView(m, f.data(), f.size() * sizeof(float), target);
   a.componentType = kFloat;
   a.count = values.size();
   a.type = TINYGLTF_TYPE_VEC3;
@@ -64,7 +69,7 @@ int addVec3(tinygltf::Model& m, const std::vector<glm::dvec3>& values, bool minm
 
 int addVec2(tinygltf::Model& m, const std::vector<glm::dvec2>& values) {
   std::vector<float> f;
-  for (const auto& v : values) f.push_back(float(v.x)), f.push_back(float(v.y));
+  for (const auto& v : values) f.push_back(nearestFloat(v.x)), f.push_back(nearestFloat(v.y));
   tinygltf::Accessor a;
   a.bufferView = addView(m, f.data(), f.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
   a.componentType = kFloat;
@@ -170,6 +175,13 @@ GltfExport exportGltf(const Scene& scene, const std::filesystem::path& dir) {
           addVec3(m, gouraudVertexColours(*shader, mesh, sc, cam.origin), false);
     }
     prim.indices = addIndices(m, mesh.triangles);
+    if (scene.shading == ShadingMode::Flat) {
+      // One normal per triangle (flat_normals.h), for the harness's face
+      // attribute: the primitive's extras name the accessor.
+      tinygltf::Value::Object pe;
+      pe["xval_face_normals"] = tinygltf::Value(addVec3(m, flatNormals(mesh), false, 0));
+      prim.extras = tinygltf::Value(pe);
+    }
     tinygltf::Mesh gm;
     gm.name = "xval_mesh_" + std::to_string(k);
     gm.primitives.push_back(prim);
@@ -238,6 +250,7 @@ GltfExport exportGltf(const Scene& scene, const std::filesystem::path& dir) {
   const std::string exported_texture = "texture.png";
   tinygltf::Value::Object extras;
   extras["xval"] = tinygltf::Value(sceneToJson(scene, textured ? &exported_texture : nullptr).dump());
+  extras["xval_shading"] = tinygltf::Value(shadingConstants(scene).dump());
   gs.extras = tinygltf::Value(extras);
   gs.name = "xval_scene";
   m.scenes.push_back(gs);

@@ -15,7 +15,11 @@
 //  - the lighting model and every parameter in the SCENE's extras
 //    (Blender's importer keeps scene extras as Scene custom properties;
 //    root-level extras are dropped): {"xval": "<scene JSON text>"}, the
-//    scene-file JSON (scene_writer.h) with its texture path replaced.
+//    scene-file JSON (scene_writer.h) with its texture path replaced;
+//  - every shading constant of the Blender harness in the scene's extras
+//    too, {"xval_shading": "<JSON text>"} (shading_constants.h), and for
+//    flat shading the per-triangle normals (flat_normals.h) as a float
+//    VEC3 accessor named by the primitive's extras ("xval_face_normals").
 // Strings from the scene appear only as JSON string values (escaped by
 // the JSON writer) and are read back as data, never as code.
 #pragma once

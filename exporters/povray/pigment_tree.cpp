@@ -6,6 +6,56 @@
 
 namespace xval::pov {
 
+Pattern slopeTowards(glm::dvec3 point) {
+  Pattern p;
+  p.kind = Pattern::Kind::Slope, p.point_at = true, p.point = point;
+  return p;
+}
+Pattern slopeAlong(glm::dvec3 direction) {
+  Pattern p;
+  p.kind = Pattern::Kind::Slope, p.point_at = false, p.direction = direction;
+  return p;
+}
+Pattern attenuation(glm::dvec3 point, double c, double l, double q) {
+  Pattern p;
+  p.kind = Pattern::Kind::Attenuation, p.point = point, p.c = c, p.l = l, p.q = q;
+  return p;
+}
+Pattern cone(glm::dvec3 point, glm::dvec3 axis, double cos_cutoff) {
+  Pattern p;
+  p.kind = Pattern::Kind::Cone, p.point = point, p.direction = axis, p.cos_cutoff = cos_cutoff;
+  return p;
+}
+
+namespace {
+
+std::string distanceExpr(glm::dvec3 p) {
+  return "sqrt((x - " + num(p.x) + ")*(x - " + num(p.x) + ") + (y - " + num(p.y) + ")*(y - " +
+         num(p.y) + ") + (z - " + num(p.z) + ")*(z - " + num(p.z) + "))";
+}
+
+}  // namespace
+
+std::string patternSdl(const Pattern& p) {
+  switch (p.kind) {
+    case Pattern::Kind::Slope:
+      return (p.point_at ? "slope { point_at " + vec(p.point) + " }" : "slope { " + vec(p.direction) + " }") +
+             " sine_wave frequency " + num(kSlopeFrequency) + " phase " + num(kSlopePhase);
+    case Pattern::Kind::Attenuation: {
+      const std::string d = distanceExpr(p.point);
+      return "function { " + num(p.c) + " / (" + num(p.c) + " + " + num(p.l) + " * " + d + " + " +
+             num(p.q) + " * " + d + " * " + d + ") }";
+    }
+    case Pattern::Kind::Cone: {
+      const glm::dvec3 x = p.point, a = p.direction;
+      return "function { select((x - " + num(x.x) + ") * " + num(a.x) + " + (y - " + num(x.y) +
+             ") * " + num(a.y) + " + (z - " + num(x.z) + ") * " + num(a.z) + " - " +
+             num(p.cos_cutoff) + " * " + distanceExpr(x) + ", 0, 1, 1) }";
+    }
+  }
+  return "";
+}
+
 Pigment constant(glm::dvec3 c) { return affine(glm::dmat3(0.0), c); }
 
 Pigment affine(glm::dmat3 m, glm::dvec3 b) {
@@ -16,7 +66,7 @@ Pigment affine(glm::dmat3 m, glm::dvec3 b) {
   return n;
 }
 
-Pigment map(std::string pattern, std::vector<std::pair<double, Pigment>> entries) {
+Pigment map(Pattern pattern, std::vector<std::pair<double, Pigment>> entries) {
   auto n = std::make_shared<PigmentNode>();
   n->kind = PigmentNode::Kind::Map;
   n->pattern = std::move(pattern);
@@ -24,7 +74,7 @@ Pigment map(std::string pattern, std::vector<std::pair<double, Pigment>> entries
   return n;
 }
 
-Pigment times(std::string pattern, Pigment p) {
+Pigment times(Pattern pattern, Pigment p) {
   return map(std::move(pattern), {{0.0, constant(glm::dvec3(0.0))}, {1.0, std::move(p)}});
 }
 
@@ -103,7 +153,7 @@ std::string bodySdl(const Pigment& p, int ind) {
   switch (p->kind) {
     case PigmentNode::Kind::Leaf: return leafSdl(*p, ind);
     case PigmentNode::Kind::Map: {
-      std::string s = pad(ind) + p->pattern + "\n" + pad(ind) + "pigment_map {\n";
+      std::string s = pad(ind) + patternSdl(p->pattern) + "\n" + pad(ind) + "pigment_map {\n";
       for (const auto& [v, c] : p->entries)
         s += pad(ind + 1) + "[" + num(v) + "\n" + bodySdl(c, ind + 2) + "]\n";
       return s + pad(ind) + "}";

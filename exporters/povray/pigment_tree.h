@@ -22,6 +22,30 @@
 
 namespace xval::pov {
 
+// The patterns the maps blend over, as values (patternSdl writes them):
+//   Slope        (1 + N.L) / 2: `slope { point_at P }` (L = normalize(P - x))
+//                or `slope { D }` (L = D), each with `sine_wave frequency
+//                -0.5 phase 0.75` (docs/povray-export.md)
+//   Attenuation  function c / (c + l d + q d^2), d = |x - P|, in (0, 1]
+//   Cone         function select(dot(x - P, axis) - cos_cutoff d, 0, 1, 1):
+//                1 where dot(x - P, axis) >= cos_cutoff d, else 0
+struct Pattern {
+  enum class Kind { Slope, Attenuation, Cone };
+  Kind kind = Kind::Slope;
+  bool point_at = true;  // Slope: towards `point` (else along `direction`)
+  glm::dvec3 point{0.0}, direction{0.0};  // the light's position; axis or D
+  double c = 1, l = 0, q = 0;  // Attenuation
+  double cos_cutoff = -1;      // Cone
+};
+// The wave modifier that makes POV-Ray's slope value 0.5 + asin(N.L)/pi
+// exactly (1 + N.L)/2: `sine_wave frequency kSlopeFrequency phase kSlopePhase`.
+inline constexpr double kSlopeFrequency = -0.5, kSlopePhase = 0.75;
+Pattern slopeTowards(glm::dvec3 point);
+Pattern slopeAlong(glm::dvec3 direction);
+Pattern attenuation(glm::dvec3 point, double c, double l, double q);
+Pattern cone(glm::dvec3 point, glm::dvec3 axis, double cos_cutoff);
+std::string patternSdl(const Pattern& p);
+
 struct PigmentNode;
 using Pigment = std::shared_ptr<const PigmentNode>;
 
@@ -30,7 +54,7 @@ struct PigmentNode {
   Kind kind = Kind::Leaf;
   glm::dmat3 m{0.0};  // Leaf: out = m * C + b (glm is column-major: m[ch] is C.ch's column)
   glm::dvec3 b{0.0};
-  std::string pattern;  // Map
+  Pattern pattern;  // Map
   std::vector<std::pair<double, Pigment>> entries;  // Map
   std::vector<Pigment> children;  // Sum
 };
@@ -38,9 +62,9 @@ struct PigmentNode {
 Pigment constant(glm::dvec3 c);
 Pigment affine(glm::dmat3 m, glm::dvec3 b);  // m C + b
 // Entries must be sorted by value in [0,1].
-Pigment map(std::string pattern, std::vector<std::pair<double, Pigment>> entries);
+Pigment map(Pattern pattern, std::vector<std::pair<double, Pigment>> entries);
 // v * p for a pattern value v in [0,1].
-Pigment times(std::string pattern, Pigment p);
+Pigment times(Pattern pattern, Pigment p);
 Pigment sum(std::vector<Pigment> parts);
 Pigment scaled(const Pigment& p, double k);
 // The same tree with every leaf replaced by fn(leaf); the maps and sums

@@ -26,8 +26,10 @@
 //    or a texture_map over the attenuation function for attenuation, and a
 //    hard-edged spotlight for the cone.
 //  - Gouraud: per-vertex colours (the model evaluated at the vertices by
-//    the reference shader) in a mesh2 texture_list, interpolated by
-//    POV-Ray.
+//    the reference shader) in a per-triangle image that POV-Ray's bilinear
+//    lookup interpolates exactly (gouraud_image.h).
+// The shading is first built as values (pov_shading.h: the emission tree,
+// the light sources, the finish), which this writes as SDL.
 // What cannot be exact in one render is refused with an ExportError that
 // says why (never an approximation in silence).
 #pragma once

@@ -1,12 +1,13 @@
 #include "povray/sdl.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
 namespace xval::pov {
 
 std::string num(double v) {
-  if (v == 0.0) return "0";
+  if (v == 0.0) return std::signbit(v) ? "-0" : "0";  // the sign of a zero normal component too
   char buf[40];
   // The shortest %.*g that round-trips.
   for (int prec = 6; prec <= 17; ++prec) {
@@ -16,8 +17,14 @@ std::string num(double v) {
   return buf;
 }
 
-std::string vec(glm::dvec3 v) { return "<" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ">"; }
-std::string vec(glm::dvec2 v) { return "<" + num(v.x) + ", " + num(v.y) + ">"; }
+std::string vec(glm::dvec3 v) {
+  std::string s = "<";
+  return s.append(num(v.x)).append(", ").append(num(v.y)).append(", ").append(num(v.z)).append(">");
+}
+std::string vec(glm::dvec2 v) {
+  std::string s = "<";
+  return s.append(num(v.x)).append(", ").append(num(v.y)).append(">");
+}
 
 std::string commentSafe(const std::string& s) {
   std::string out;

@@ -1,6 +1,7 @@
 // Sphere and plane tessellation, and the shape dispatch.
 #include <cmath>
 
+#include "geometry/float_rounding.h"
 #include "geometry/mesh.h"
 
 namespace xval {
@@ -59,11 +60,12 @@ TriangleMesh tessellatePlane(const Plane& p) {
 namespace {
 // Rounds every attribute to the nearest float32. glTF buffers and POV-Ray's
 // mesh2 store float32; rounding here makes the reference renderer trace
-// exactly the triangles the other renderers receive.
+// exactly the triangles the other renderers receive (float_rounding.h: a
+// plain double(float(x)) is dropped by the optimiser).
 void roundToFloat(TriangleMesh& m) {
-  for (auto& p : m.positions) p = glm::dvec3(glm::vec3(p));
-  for (auto& n : m.normals) n = glm::dvec3(glm::vec3(n));
-  for (auto& uv : m.uvs) uv = glm::dvec2(glm::vec2(uv));
+  for (auto& p : m.positions) p = roundedToFloat(p);
+  for (auto& n : m.normals) n = roundedToFloat(n);
+  for (auto& uv : m.uvs) uv = roundedToFloat(uv);
 }
 }  // namespace
 

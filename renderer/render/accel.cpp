@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "geometry/float_rounding.h"
 #include "render/ray_triangle.h"
 
 namespace xval {
@@ -34,12 +35,14 @@ struct DoubleContext {
   Hit hit[16];
 };
 
+// The float32 nearest to v, then one step outwards if that was on the
+// wrong side of v (nearestFloat: the comparison needs the rounded value).
 float roundUp(double v) {
-  float f = float(v);
+  float f = nearestFloat(v);
   return double(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
 float roundDown(double v) {
-  float f = float(v);
+  float f = nearestFloat(v);
   return double(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
 }
 

@@ -18,6 +18,7 @@
 #include "render/accel.h"
 #include "render/raster.h"
 #include "shading/batch_shader.h"
+#include "shading/flat_normals.h"
 #include "shading/shader.h"
 #include "shading/surface_colour.h"
 #include "texture/texture.h"
@@ -74,17 +75,8 @@ ShadedMesh<T> prepareMesh(const TriangleMesh& m, ShadingMode mode, const Shader<
   for (auto& v : m.positions) s.p.emplace_back(v - eye);  // camera-relative (Shading)
   for (auto& v : m.normals) s.n.emplace_back(v);
   for (auto& v : m.uvs) s.uv.emplace_back(v);
-  if (mode == ShadingMode::Flat) {
-    s.face_n.reserve(m.triangles.size());
-    for (const auto& t : m.triangles) {
-      glm::dvec3 g = glm::cross(m.positions[t[1]] - m.positions[t[0]],
-                                m.positions[t[2]] - m.positions[t[0]]);
-      double len = glm::length(g);
-      g = len > 0.0 ? g / len : glm::dvec3(0.0);
-      if (glm::dot(g, m.normals[t[0]] + m.normals[t[1]] + m.normals[t[2]]) < 0.0) g = -g;
-      s.face_n.emplace_back(g);
-    }
-  }
+  if (mode == ShadingMode::Flat)
+    for (const glm::dvec3& g : flatNormals(m)) s.face_n.emplace_back(g);
   if (mode == ShadingMode::Gouraud) s.vertex_colour = gouraudVertexColours(shader, m, colour, eye);
   return s;
 }
@@ -203,6 +195,7 @@ PreparedScene::~PreparedScene() = default;
 Precision PreparedScene::precision() const { return impl_->precision; }
 double PreparedScene::setupSeconds() const { return impl_->setup_seconds; }
 size_t PreparedScene::triangleCount() const { return impl_->triangles; }
+const std::vector<TriangleMesh>& PreparedScene::meshes() const { return impl_->meshes; }
 
 void PreparedScene::render(const RenderOptions& opt, Image& img, RenderStats* stats_out) const {
   const Camera& c = impl_->scene.camera;

@@ -31,7 +31,9 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "geometry/mesh.h"
 #include "image/image.h"
 #include "scene/scene.h"
 
@@ -89,6 +91,8 @@ class PreparedScene {
   Precision precision() const;
   double setupSeconds() const;
   size_t triangleCount() const;
+  // The meshes the renderer traces, one per scene object (tessellate()).
+  const std::vector<TriangleMesh>& meshes() const;
 
   // Renders one frame into img, which must be camera-sized; diagnostic
   // channels are written when allocated and options.diagnostics is set.

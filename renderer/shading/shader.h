@@ -59,6 +59,9 @@ template <class T> class Shader {
   bool usesSpecular() const { return specular_; }
   glm::dvec3 origin() const { return origin_; }
   const std::vector<PreparedLight<T>>& lights() const { return lights_; }
+  // A: the summed colour of the ambient lights; A_Y = Y(A) (lightLuma).
+  V ambient() const { return ambient_; }
+  T ambientLuma() const { return ambient_luma_; }
 
   // p: surface point (relative to origin()), n: unit normal, v: unit
   // direction to the eye, c: the surface colour (texture or base colour).

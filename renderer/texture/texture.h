@@ -26,6 +26,7 @@ struct Texture {
   int width = 0, height = 0;
   std::vector<float> rgb;  // row 0 = top of the image, 3 floats per texel
   std::vector<unsigned char> rgb8;  // the 8-bit codes when the source had them
+  std::vector<std::uint16_t> rgb16;  // the 16-bit codes when the source had them
   // A compact copy for lookups, filled by pack(): one 32-bit word of codes
   // per texel, decoded through code_value. A 512 x 512 texture takes 1 MiB
   // instead of 3 MiB of floats, so it stays in a core's L2 cache; texel()
@@ -76,16 +77,19 @@ struct Texture {
   }
 };
 
-// Loads an image file through OpenImageIO (any format it reads; 8-bit and
-// 16-bit integer images keep their code values; alpha is dropped; grey is
-// replicated). Throws std::runtime_error naming the file on failure.
+// Loads an image file through OpenImageIO (any format it reads). 8-bit and
+// 16-bit integer images keep their code values c, and rgb = c / 255 or
+// c / 65535 (float division); R, G, B are the stored values, never
+// multiplied by alpha; alpha is dropped; grey is replicated. Throws
+// std::runtime_error naming the file on failure.
 Texture loadTextureImage(const std::filesystem::path& file);
 
 // The texture a material uses (brick generated in code, or its image).
 Texture loadTexture(const TextureSpec& spec);
 
-// Writes an 8-bit RGB PNG holding exactly the texture's code values
-// (only for textures that have 8-bit codes).
+// Writes an RGB PNG holding exactly the texture's code values: 8-bit for
+// textures with 8-bit codes, 16-bit for those with 16-bit codes (others
+// are refused).
 void writeTexturePng(const Texture& t, const std::filesystem::path& file);
 
 }  // namespace xval

@@ -14,7 +14,11 @@ namespace xval {
 namespace OIIO = OIIO_NAMESPACE;
 
 Texture loadTextureImage(const std::filesystem::path& file) {
-  auto in = OIIO::ImageInput::open(file.string());
+  // Stored values: OpenImageIO multiplies colour by alpha on reading unless
+  // told that the caller wants the file's unassociated values.
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open(file.string(), &config);
   if (!in)
     throw std::runtime_error(file.string() + ": cannot read texture image: " +
                              OIIO::geterror());
@@ -38,26 +42,33 @@ Texture loadTextureImage(const std::filesystem::path& file) {
   // Only the channels used are read: R, G, B, or the one grey channel
   // (alpha and any further channels are dropped).
   const int nc = spec.nchannels >= 3 ? 3 : 1;
-  const bool is8 = spec.format == OIIO::TypeDesc::UINT8;
-  std::vector<float> px(size_t(t.width) * t.height * nc);
-  // OIIO converts integer formats to float as code/(2^bits - 1), exactly
-  // the stored-value convention the models use.
-  if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, px.data()))
-    throw std::runtime_error(file.string() + ": cannot decode texture image: " + in->geterror());
-  std::vector<unsigned char> px8;
-  if (is8) {
-    px8.resize(px.size());
-    if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::UINT8, px8.data()))
+  const size_t texels = size_t(t.width) * t.height;
+  auto read = [&](OIIO::TypeDesc type, void* data) {
+    if (!in->read_image(0, 0, 0, nc, type, data))
       throw std::runtime_error(file.string() + ": cannot decode texture image: " + in->geterror());
-  }
-  t.rgb.resize(size_t(t.width) * t.height * 3);
-  if (is8) t.rgb8.resize(t.rgb.size());
-  for (size_t i = 0; i < size_t(t.width) * t.height; ++i) {
-    for (int c = 0; c < 3; ++c) {
-      int sc = nc == 3 ? c : 0;  // grey (and grey+alpha) replicate
-      t.rgb[i * 3 + c] = px[i * nc + sc];
-      if (is8) t.rgb8[i * 3 + c] = px8[i * nc + sc];
-    }
+  };
+  // Replicates grey (and grey + alpha) to R, G, B.
+  auto rgb = [nc](const auto& px, auto& out) {
+    out.resize(px.size() / nc * 3);
+    for (size_t i = 0; i < out.size() / 3; ++i)
+      for (int c = 0; c < 3; ++c) out[i * 3 + c] = px[i * nc + (nc == 3 ? c : 0)];
+  };
+  t.rgb.resize(texels * 3);
+  if (spec.format == OIIO::TypeDesc::UINT8) {
+    std::vector<unsigned char> px(texels * nc);
+    read(OIIO::TypeDesc::UINT8, px.data());
+    rgb(px, t.rgb8);
+    for (size_t i = 0; i < t.rgb.size(); ++i) t.rgb[i] = float(t.rgb8[i]) / 255.0f;
+  } else if (spec.format == OIIO::TypeDesc::UINT16) {
+    std::vector<std::uint16_t> px(texels * nc);
+    read(OIIO::TypeDesc::UINT16, px.data());
+    rgb(px, t.rgb16);
+    for (size_t i = 0; i < t.rgb.size(); ++i) t.rgb[i] = float(t.rgb16[i]) / 65535.0f;
+  } else {
+    // Other formats (float, half, 32-bit) as OpenImageIO converts them.
+    std::vector<float> px(texels * nc);
+    read(OIIO::TypeDesc::FLOAT, px.data());
+    rgb(px, t.rgb);
   }
   return t;
 }
@@ -90,14 +101,17 @@ Texture loadTexture(const TextureSpec& spec) {
 }
 
 void writeTexturePng(const Texture& t, const std::filesystem::path& file) {
-  if (t.rgb8.size() != size_t(t.width) * t.height * 3)
-    throw std::runtime_error(file.string() + ": texture has no 8-bit codes to write");
+  const size_t n = size_t(t.width) * t.height * 3;
+  const bool is8 = t.rgb8.size() == n, is16 = !is8 && t.rgb16.size() == n;
+  if (!is8 && !is16)
+    throw std::runtime_error(file.string() + ": texture has no 8-bit or 16-bit codes to write");
+  const OIIO::TypeDesc type = is8 ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::UINT16;
+  const void* data = is8 ? static_cast<const void*>(t.rgb8.data()) : t.rgb16.data();
   writeFileAtomically(file, [&](const std::filesystem::path& tmp) {
     auto out = OIIO::ImageOutput::create(tmp.string());
     if (!out) throw std::runtime_error("cannot create PNG: " + OIIO::geterror());
-    OIIO::ImageSpec spec(t.width, t.height, 3, OIIO::TypeDesc::UINT8);
-    if (!out->open(tmp.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, t.rgb8.data()) ||
-        !out->close())
+    OIIO::ImageSpec spec(t.width, t.height, 3, type);
+    if (!out->open(tmp.string(), spec) || !out->write_image(type, data) || !out->close())
       throw std::runtime_error("cannot write PNG: " + out->geterror());
     requireDecodable(tmp, t.width, t.height);
     return true;

@@ -1,0 +1,100 @@
+#include "gltf/shading_constants.h"
+
+#include <glm/glm.hpp>
+
+#include "camera/camera.h"
+#include "shading/models.h"
+#include "shading/shader.h"
+
+namespace xval {
+
+namespace {
+
+using nlohmann::ordered_json;
+
+ordered_json vec(glm::dvec3 v) { return ordered_json::array({v.x, v.y, v.z}); }
+
+ordered_json lightConstants(const PreparedLight<double>& l) {
+  using K = PreparedLight<double>::Kind;
+  ordered_json j;
+  j["kind"] = l.kind == K::Point ? "point" : l.kind == K::Spot ? "spot" : "directional";
+  j["colour"] = vec(l.color);
+  j["luma"] = l.color_luma;
+  if (l.kind == K::Directional) {
+    j["to_light"] = vec(-l.direction);
+  } else {
+    j["position"] = vec(l.position);
+    j["attenuated"] = l.has_attenuation;
+    j["attenuation"] = ordered_json::array({l.att_c, l.att_l, l.att_q});
+  }
+  if (l.kind == K::Spot) {
+    j["minus_axis"] = vec(-l.direction);
+    j["cos_cutoff"] = l.cos_cutoff;
+  }
+  return j;
+}
+
+struct ModelConstants {
+  const Shader<double>& shader;
+  ordered_json& j;
+  void operator()(const ClassicPhong& m) const {
+    j["course"] = m.variant == ClassicPhong::Variant::Course;
+    j["ka"] = m.ka, j["kd"] = m.kd, j["ks"] = m.ks, j["shininess"] = m.shininess;
+    j["specular"] = shader.usesSpecular();
+    j["ka_ambient"] = vec(m.ka * shader.ambient());
+  }
+  void operator()(const YiqLuma& m) const {
+    j["kd"] = m.kd, j["ks"] = m.ks, j["shininess"] = m.shininess;
+    j["luma_offset"] = m.luma_offset;
+    j["specular"] = shader.usesSpecular();
+    j["ambient_luma"] = shader.ambientLuma();
+    j["luma_row"] = ordered_json::array(
+        {models::kRgbToYiq[0][0], models::kRgbToYiq[0][1], models::kRgbToYiq[0][2]});
+  }
+  void ambient() const { j["ambient"] = vec(shader.ambient()); }
+  void operator()(const Lambert& m) const {
+    ambient();
+    j["c0"] = vec(m.c0);
+  }
+  void operator()(const WrapAround& m) const {
+    ambient();
+    j["c0"] = vec(m.c0), j["factor"] = m.factor, j["wrap_divisor"] = 1.0 + m.factor;
+  }
+  void operator()(const Hemispherical& m) const {
+    ambient();
+    j["c0"] = vec(m.c0), j["c2"] = vec(m.c2), j["c0_minus_c2"] = vec(m.c0 - m.c2);
+  }
+  void operator()(const BiDirectional& m) const {
+    ambient();
+    j["c0"] = vec(m.c0), j["c2"] = vec(m.c2);
+  }
+  void operator()(const Trilight& m) const {
+    ambient();
+    j["c0"] = vec(m.c0), j["c1"] = vec(m.c1), j["c2"] = vec(m.c2);
+  }
+};
+
+}  // namespace
+
+ordered_json shadingConstants(const Scene& scene) {
+  const Shader<double> shader(scene.material, scene.lights);
+  ordered_json j;
+  j["shading"] = toString(scene.shading);
+  j["blender_to_world"] = ordered_json::array({ordered_json::array({1.0, 0.0, 0.0}),
+                                               ordered_json::array({0.0, 0.0, 1.0}),
+                                               ordered_json::array({0.0, -1.0, 0.0})});
+  j["eye"] = vec(CameraRays(scene.camera).origin);
+  j["base_colour"] = vec(scene.material.base_color);
+  if (scene.material.texture)
+    j["texture_filter"] = toString(scene.material.texture->filter);
+  else
+    j["texture_filter"] = nullptr;
+  j["model"] = modelName(scene.material.model);
+  std::visit(ModelConstants{shader, j}, scene.material.model);
+  ordered_json lights = ordered_json::array();
+  for (const auto& l : shader.lights()) lights.push_back(lightConstants(l));
+  j["lights"] = lights;
+  return j;
+}
+
+}  // namespace xval

@@ -1,0 +1,257 @@
+#include "povray/pov_shading.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include "common/export_common.h"
+#include "povray/sdl.h"
+#include "shading/models.h"
+
+namespace xval::pov {
+
+using glm::dvec3;
+
+std::string lightSourceSdl(const LightSource& l) {
+  std::string s = "light_source { " + vec(l.location) + " rgb " + vec(l.colour);
+  if (l.parallel) s += " parallel point_at <0, 0, 0>";
+  if (l.fade_distance > 0) s += " fade_distance " + num(l.fade_distance) + " fade_power 2";
+  if (l.spotlight)
+    s += " spotlight point_at " + vec(l.point_at) + " radius " + num(l.cone_deg) + " falloff " +
+         num(l.cone_deg) + " tightness 0";
+  return s + " }";
+}
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// (1 + N.L) / 2 for a light, exactly (docs/povray-export.md).
+Pattern slopePattern(const Light& l) {
+  if (auto* d = std::get_if<DirectionalLight>(&l)) return slopeAlong(-glm::normalize(d->direction));
+  if (auto* p = std::get_if<PointLight>(&l)) return slopeTowards(p->position);
+  return slopeTowards(std::get<SpotLight>(l).position);
+}
+
+struct LightInfo {
+  const Light* light;
+  dvec3 position{0.0}, colour{0.0};
+  Attenuation att;
+  bool has_att = false, spot = false, directional = false;
+  dvec3 axis{0.0};
+  double cutoff_deg = 0.0;
+};
+
+LightInfo info(const Light& l) {
+  LightInfo i;
+  i.light = &l;
+  if (auto* p = std::get_if<PointLight>(&l)) {
+    i.position = p->position, i.colour = p->color, i.att = p->attenuation;
+  } else if (auto* s = std::get_if<SpotLight>(&l)) {
+    i.position = s->position, i.colour = s->color, i.att = s->attenuation;
+    i.spot = true, i.axis = glm::normalize(s->direction), i.cutoff_deg = s->cutoff_deg;
+  } else if (auto* d = std::get_if<DirectionalLight>(&l)) {
+    i.directional = true, i.colour = d->color, i.axis = glm::normalize(d->direction);
+  }
+  i.has_att = !i.directional && !i.att.isNone();
+  return i;
+}
+
+// c / (c + l d + q d^2) in (0, 1]: the attenuation times c.
+Pattern attPattern(const LightInfo& l) {
+  return attenuation(l.position, l.att.constant, l.att.linear, l.att.quadratic);
+}
+
+// 1 inside the spot's cone (dot(p - p_light, axis) >= cos(cutoff) d), else 0.
+Pattern conePattern(const LightInfo& l) {
+  return cone(l.position, l.axis, std::cos(l.cutoff_deg * kPi / 180.0));
+}
+
+// att (and the cone, when `with_cone`) times node.
+Pigment perLight(const LightInfo& l, Pigment node, bool with_cone) {
+  if (l.has_att) node = times(attPattern(l), scaled(node, 1.0 / l.att.constant));
+  if (with_cone && l.spot) node = times(conePattern(l), node);
+  return node;
+}
+
+// A pigment_map over (1 + N.L)/2 with the given (N.L, colour) breakpoints.
+Pigment slopeMap(const Light& l, const std::vector<std::pair<double, dvec3>>& points) {
+  std::vector<std::pair<double, Pigment>> e;
+  for (const auto& [x, c] : points) e.emplace_back((1.0 + x) / 2.0, constant(c));
+  return map(slopePattern(l), std::move(e));
+}
+
+// The Forsyth models and the diffuse part of classic Phong, per unit light
+// colour, as (N.L, value) breakpoints: piecewise linear in between.
+std::vector<std::pair<double, dvec3>> diffuseBreakpoints(const LightingModel& model) {
+  using P = std::vector<std::pair<double, dvec3>>;
+  if (auto* m = std::get_if<ClassicPhong>(&model)) return P{{-1, dvec3(0)}, {0, dvec3(0)}, {1, dvec3(m->kd)}};
+  if (auto* m = std::get_if<Lambert>(&model)) return P{{-1, dvec3(0)}, {0, dvec3(0)}, {1, m->c0}};
+  if (auto* m = std::get_if<WrapAround>(&model))
+    return P{{-1, dvec3(0)}, {-m->factor, dvec3(0)}, {1, m->c0}};
+  if (auto* m = std::get_if<Hemispherical>(&model)) return P{{-1, m->c2}, {1, m->c0}};
+  if (auto* m = std::get_if<BiDirectional>(&model)) return P{{-1, m->c2}, {0, dvec3(0)}, {1, m->c0}};
+  if (auto* m = std::get_if<Trilight>(&model)) return P{{-1, m->c2}, {0, m->c1}, {1, m->c0}};
+  return {};
+}
+
+dvec3 ambientSum(const Scene& s) {
+  dvec3 a(0.0);
+  for (const auto& l : s.lights)
+    if (auto* am = std::get_if<AmbientLight>(&l)) a += am->color;
+  return a;
+}
+
+// Emission for classic Phong's ambient + diffuse and the Forsyth family:
+// C (x) K with K = A' + sum_l [lit] att Lc (x) g(N.L) (+ course's per-light ka).
+Pigment emissionLinear(const Scene& s, const std::vector<LightInfo>& lights) {
+  const LightingModel& model = s.material.model;
+  dvec3 ambient = ambientSum(s);
+  const auto* phong = std::get_if<ClassicPhong>(&model);
+  std::vector<Pigment> terms;
+  terms.push_back(constant(phong ? phong->ka * ambient : ambient));
+  auto points = diffuseBreakpoints(model);
+  for (const auto& l : lights) {
+    auto scaled_points = points;
+    for (auto& p : scaled_points) p.second *= l.colour;
+    terms.push_back(perLight(l, slopeMap(*l.light, scaled_points), true));
+    if (phong && phong->variant == ClassicPhong::Variant::Course && phong->ka != 0.0)
+      terms.push_back(perLight(l, constant(phong->ka * l.colour), false));
+  }
+  Pigment k = sum(std::move(terms));
+  // Multiply by the surface colour C at the leaves.
+  const bool textured = s.material.texture.has_value();
+  const dvec3 base = s.material.base_color;
+  return mapLeaves(k, [&](const PigmentNode& leaf) {
+    return textured ? affine(glm::dmat3(leaf.b.x, 0, 0, 0, leaf.b.y, 0, 0, 0, leaf.b.z), dvec3(0.0))
+                    : constant(base * leaf.b);
+  });
+}
+
+// Emission for the YIQ model without its specular term:
+//   C - off + Y (Dl - 1) (1,1,1).
+Pigment emissionYiq(const Scene& s, const std::vector<LightInfo>& lights) {
+  const auto& m = std::get<YiqLuma>(s.material.model);
+  const double a = models::lightLuma(ambientSum(s));
+  const dvec3 w(models::kRgbToYiq[0][0], models::kRgbToYiq[0][1], models::kRgbToYiq[0][2]);
+  const bool textured = s.material.texture.has_value();
+  const dvec3 base = s.material.base_color;
+  // Leaf for a given value of (Dl - 1): C - off + Y k (1,1,1) = (I + k 1 w^T) C - off.
+  auto leaf = [&](double k) {
+    glm::dmat3 mm(1.0);
+    for (int ch = 0; ch < 3; ++ch) mm[ch] += dvec3(k * w[ch]);
+    dvec3 off(-m.luma_offset);
+    return textured ? affine(mm, off) : constant(mm * base + off);
+  };
+  double wsum = 0.0;
+  for (const auto& l : lights) wsum += m.kd * models::lightLuma(l.colour) / (l.has_att ? l.att.constant : 1.0);
+  if (a + wsum <= 1.0) {
+    // Dl never clips: Dl - 1 = (A - 1) + sum_l [lit] att w_l sat(N.L), linear in each light.
+    std::vector<Pigment> terms{leaf(a - 1.0)};
+    for (const auto& l : lights) {
+      double wl = m.kd * models::lightLuma(l.colour);
+      auto per = map(slopePattern(*l.light),
+                     {{0.0, constant(dvec3(0))}, {0.5, constant(dvec3(0))}, {1.0, constant(dvec3(wl))}});
+      // Turn the scalar k (stored in b.x) into the leaf's C-dependent part.
+      Pigment lp = mapLeaves(per, [&](const PigmentNode& n) {
+        glm::dmat3 mm(0.0);
+        for (int ch = 0; ch < 3; ++ch) mm[ch] = dvec3(n.b.x * w[ch]);
+        return textured ? affine(mm, dvec3(0.0)) : constant(mm * base);
+      });
+      terms.push_back(perLight(l, lp, true));
+    }
+    return sum(std::move(terms));
+  }
+  if (lights.size() != 1 || lights[0].has_att)
+    throw ExportError(
+        "yiq_luma: Dl = saturate(A + kd sum_l att Y(Lc) saturate(N.L)) can reach 1 here (A + kd sum "
+        "Y(Lc)/c = " + num(a + wsum) + " > 1) and then is not a sum of per-light terms; POV-Ray can "
+        "compute it exactly in one render only for a single light without attenuation (or when "
+        "the sum cannot reach 1)");
+  const LightInfo& l = lights[0];
+  const double wl = m.kd * models::lightLuma(l.colour);
+  auto dl = [&](double x) { return std::min(1.0, a + wl * std::clamp(x, 0.0, 1.0)); };
+  std::vector<std::pair<double, Pigment>> e;
+  e.emplace_back(0.0, leaf(dl(-1) - 1));
+  e.emplace_back(0.5, leaf(dl(0) - 1));
+  double xk = wl > 0 ? (1.0 - a) / wl : 2.0;  // where Dl reaches 1
+  if (xk > 0.0 && xk < 1.0) e.emplace_back((1.0 + xk) / 2.0, leaf(0.0));
+  e.emplace_back(1.0, leaf(dl(1) - 1));
+  Pigment lit = map(slopePattern(*l.light), std::move(e));
+  if (!l.spot) return lit;
+  return map(conePattern(l), {{0.0, leaf(std::min(1.0, a) - 1.0)}, {1.0, lit}});
+}
+
+Specular specular(const Scene& s, const std::vector<LightInfo>& lights) {
+  Specular sp;
+  const LightingModel& model = s.material.model;
+  std::function<dvec3(const LightInfo&)> colour;
+  if (auto* m = std::get_if<ClassicPhong>(&model)) {
+    sp.ks = m->ks, sp.shininess = m->shininess;
+    if (m->variant == ClassicPhong::Variant::Course) {
+      if (s.material.texture && m->ks != 0.0)
+        throw ExportError(
+            "classic_phong variant course with a texture and ks > 0: its highlight is the texture "
+            "colour times POV-Ray's phong term, a per-channel product POV-Ray cannot form in one "
+            "render (its `metallic` tint adds a Fresnel factor)");
+      colour = [&s](const LightInfo& l) { return l.colour * s.material.base_color; };
+    } else {
+      colour = [](const LightInfo& l) { return l.colour; };
+    }
+  } else if (auto* m = std::get_if<YiqLuma>(&model)) {
+    sp.ks = m->ks, sp.shininess = m->shininess;
+    colour = [](const LightInfo& l) { return dvec3(models::lightLuma(l.colour)); };
+  }
+  if (sp.ks == 0.0) return sp;
+  int general = 0;
+  for (const auto& l : lights) general += l.has_att && l.att.linear != 0.0;
+  if (general > 0 && lights.size() > 1)
+    throw ExportError(
+        "attenuation with a linear term on a light with a specular highlight, among several "
+        "lights: POV-Ray's fade can only express 1/(c + q d^2), and the texture_map that applies "
+        "a general attenuation to the highlight would scale every light's highlight");
+  for (const auto& l : lights) {
+    LightSource src;
+    src.colour = colour(l);
+    if (l.directional) {
+      src.location = -l.axis;
+      src.parallel = true;
+    } else {
+      src.location = l.position;
+      if (l.has_att) {
+        src.colour /= l.att.constant;
+        if (l.att.linear != 0.0) {
+          sp.att_texture_map = attPattern(l);
+        } else if (l.att.quadratic != 0.0) {
+          // 2/(1 + (d/fd)^2) with fd = sqrt(c/q) is 2c/(c + q d^2).
+          src.colour /= 2.0;
+          src.fade_distance = std::sqrt(l.att.constant / l.att.quadratic);
+        }
+      }
+      if (l.spot) {
+        src.spotlight = true;
+        src.point_at = l.position + l.axis;
+        src.cone_deg = l.cutoff_deg;
+      }
+    }
+    sp.light_sources.push_back(src);
+  }
+  return sp;
+}
+
+
+
+}  // namespace
+
+PovShading povShading(const Scene& scene) {
+  std::vector<LightInfo> lights;
+  for (const auto& l : scene.lights)
+    if (!std::holds_alternative<AmbientLight>(l)) lights.push_back(info(l));
+  PovShading p;
+  p.emission = std::holds_alternative<YiqLuma>(scene.material.model) ? emissionYiq(scene, lights)
+                                                                     : emissionLinear(scene, lights);
+  p.specular = specular(scene, lights);
+  return p;
+}
+
+}  // namespace xval::pov

@@ -1,0 +1,53 @@
+// The POV-Ray shading of a scene as values, before any SDL is written:
+// the emission pigment tree (everything but the specular term) and the
+// light sources and finish that give the specular term with POV-Ray's own
+// `phong` (docs/povray-export.md). pov_exporter.cpp writes exactly this;
+// tests/unit/pov_shading_test.cpp evaluates it with POV-Ray's documented
+// semantics against the reference shader.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "povray/pigment_tree.h"
+#include "scene/scene.h"
+
+namespace xval::pov {
+
+// light_source { location rgb colour [parallel point_at <0,0,0>]
+//   [fade_distance fd fade_power 2]
+//   [spotlight point_at p radius r falloff r tightness 0] }
+struct LightSource {
+  glm::dvec3 location{0.0}, colour{0.0};
+  bool parallel = false;     // L = normalize(location - <0,0,0>) everywhere
+  double fade_distance = 0;  // > 0: att = 2 / (1 + (d / fade_distance)^2)
+  bool spotlight = false;    // a hard cone: radius = falloff, tightness 0
+  glm::dvec3 point_at{0.0};
+  double cone_deg = 0;       // radius = falloff
+};
+std::string lightSourceSdl(const LightSource& l);
+
+struct Specular {
+  double ks = 0.0, shininess = 0.0;  // finish { phong ks phong_size shininess }
+  std::vector<LightSource> light_sources;
+  // A texture_map over this pattern blends the material without (0) and
+  // with (1) the phong term: the one general attenuation of the highlight.
+  std::optional<Pattern> att_texture_map;
+  // `double_illuminate` on the objects removes POV-Ray's N.L > 0 gate on
+  // the highlight, which the paper's shader does not have.
+  bool doubleIlluminate() const { return ks != 0.0; }
+};
+
+struct PovShading {
+  Pigment emission;  // finish { ambient 0 diffuse 0 emission 1 }
+  Specular specular;
+};
+
+// Throws ExportError for what POV-Ray cannot compute exactly in one render.
+// Not for Gouraud shading (its colours are the reference shader's).
+PovShading povShading(const Scene& scene);
+
+}  // namespace xval::pov

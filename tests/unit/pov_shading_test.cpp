@@ -1,0 +1,317 @@
+// The POV-Ray export's shading evaluated numerically, without POV-Ray:
+// the structure povShading() builds and pov_exporter.cpp writes as SDL (the
+// emission pigment tree, the light sources, the finish) is evaluated with
+// POV-Ray 3.7's semantics for the constructs it uses, and compared with
+// Shader<double> at sampled points, normals and surface colours, for every
+// model and light type of test::shadingCases(): Phong and flat shading
+// (the emission tree and phong), and Gouraud (the per-triangle image of
+// vertex colours, gouraud_image.h, looked up as POV-Ray does).
+//
+// POV-Ray's semantics used (docs/povray-export.md):
+//   slope { point_at P }     0.5 + asin(N.L) / pi, L = normalize(P - x)
+//   slope { D }              0.5 + asin(N.D) / pi, D normalised
+//   frequency f phase ph     v = f v + ph, wrapped into [0, 1)
+//   sine_wave                (1 + sin(2 pi v)) / 2
+//   function { ... }         its value, wrapped into [0, 1] (exactly 1 stays 1);
+//                            select(a, b, c, d) = a < 0 ? b : a == 0 ? c : d
+//   pigment_map / colour_map entries (v_i, P_i): P_0 below v_0, the last
+//                            above the last, linear between neighbours
+//   average pigment_map      sum(w_i P_i) / sum(w_i), here all w_i = 1
+//   finish emission 1, ambient 0, diffuse 0: the pigment colour
+//   phong ks phong_size n    per light: ks max(R.L, 0)^n Lc att [spot],
+//                            R = the eye ray reflected about N; 0 where
+//                            N.L <= 0 unless double_illuminate
+//   fade_distance fd, fade_power 2:  att = 2 / (1 + (d / fd)^2)
+//   spotlight radius = falloff = r, tightness 0: 1 where the angle from
+//                            the axis (point_at - location) is < r, else 0
+//   parallel point_at <0,0,0>: L = normalize(location) everywhere
+//   texture_map over a pattern blending [0 no phong] [1 phong]: the phong
+//                            term times the pattern value
+//   mesh2 uv_vectors         the hit's uv is the barycentric blend of its
+//                            corners' uv
+//   image_map png gamma 1.0 interpolate 2: code / 65535, bilinear between
+//                            texel centres ((i + 0.5) / W, v bottom-up)
+// POV-Ray also turns a shading normal facing away from the eye around (a
+// known, classified difference): samples have N.V > 0. Points within 1e-9
+// of a spot cone are skipped (POV-Ray's cone function is another, equal
+// expression, whose rounding decides there).
+#include <gtest/gtest.h>
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <map>
+
+#include "camera/camera.h"
+#include "geometry/mesh.h"
+#include "povray/gouraud_image.h"
+#include "shading/surface_colour.h"
+#include "texture/texture.h"
+#include "common/export_common.h"
+#include "povray/pigment_tree.h"
+#include "povray/pov_shading.h"
+#include "povray/sdl.h"
+#include "shading/shader.h"
+#include "support/shading_cases.h"
+
+namespace xval {
+namespace {
+
+using namespace pov;
+using glm::dvec3;
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Every number as POV-Ray reads it: the SDL text of num() parsed back.
+double sdl(double v) { return std::strtod(num(v).c_str(), nullptr); }
+dvec3 sdl(dvec3 v) { return {sdl(v.x), sdl(v.y), sdl(v.z)}; }
+
+struct Point {
+  dvec3 x, n, eye, c;  // hit point, unit normal, camera, texture colour
+};
+
+double wrapFunction(double v) { return v == 1.0 ? 1.0 : v - std::floor(v); }
+
+double patternValue(const Pattern& pt, const Point& q) {
+  switch (pt.kind) {
+    case Pattern::Kind::Slope: {
+      const dvec3 l = pt.point_at ? glm::normalize(sdl(pt.point) - q.x) : glm::normalize(sdl(pt.direction));
+      const double raw = 0.5 + std::asin(std::clamp(glm::dot(q.n, l), -1.0, 1.0)) / kPi;
+      double v = raw * sdl(kSlopeFrequency) + sdl(kSlopePhase);
+      v -= std::floor(v);
+      return 0.5 * (1.0 + std::sin(2.0 * kPi * v));
+    }
+    case Pattern::Kind::Attenuation: {
+      const double d = glm::length(q.x - sdl(pt.point));
+      return wrapFunction(sdl(pt.c) / (sdl(pt.c) + sdl(pt.l) * d + sdl(pt.q) * d * d));
+    }
+    case Pattern::Kind::Cone: {
+      const dvec3 p = sdl(pt.point);
+      const double a = glm::dot(q.x - p, sdl(pt.direction)) - sdl(pt.cos_cutoff) * glm::length(q.x - p);
+      return wrapFunction(a < 0.0 ? 0.0 : 1.0);
+    }
+  }
+  return 0.0;
+}
+
+dvec3 evaluate(const Pigment& p, const Point& q);
+
+// A leaf as leafSdl writes it: n parts averaged, each carrying n times its
+// term (a texture channel through colour_map [0 rgb 0] [1 rgb n m_ch], or
+// rgb n b).
+dvec3 evaluateLeaf(const PigmentNode& l, const Point& q) {
+  int n = l.b != dvec3(0.0) ? 1 : 0;
+  for (int ch = 0; ch < 3; ++ch) n += l.m[ch] != dvec3(0.0) ? 1 : 0;
+  if (n == 0) return sdl(l.b);
+  dvec3 sum(0.0);
+  for (int ch = 0; ch < 3; ++ch)
+    if (l.m[ch] != dvec3(0.0)) sum += wrapFunction(q.c[ch]) * sdl(l.m[ch] * double(n));
+  if (l.b != dvec3(0.0)) sum += sdl(l.b * double(n));
+  return sum / double(n);
+}
+
+dvec3 evaluate(const Pigment& p, const Point& q) {
+  switch (p->kind) {
+    case PigmentNode::Kind::Leaf: return evaluateLeaf(*p, q);
+    case PigmentNode::Kind::Map: {
+      const double v = patternValue(p->pattern, q);
+      const auto& e = p->entries;
+      if (v <= sdl(e.front().first)) return evaluate(e.front().second, q);
+      for (size_t i = 1; i < e.size(); ++i)
+        if (v < sdl(e[i].first)) {
+          const double v0 = sdl(e[i - 1].first), v1 = sdl(e[i].first);
+          const double t = (v - v0) / (v1 - v0);
+          return (1.0 - t) * evaluate(e[i - 1].second, q) + t * evaluate(e[i].second, q);
+        }
+      return evaluate(e.back().second, q);
+    }
+    case PigmentNode::Kind::Sum: {
+      const double n = double(p->children.size());
+      dvec3 s(0.0);
+      for (const auto& c : p->children) s += evaluate(scaled(c, n), q);
+      return s / n;
+    }
+  }
+  return dvec3(0.0);
+}
+
+dvec3 phong(const Specular& sp, const Point& q) {
+  if (sp.ks == 0.0) return dvec3(0.0);
+  const dvec3 d = glm::normalize(q.x - q.eye);  // the eye ray
+  const dvec3 r = d - 2.0 * glm::dot(d, q.n) * q.n;
+  dvec3 out(0.0);
+  for (const LightSource& s : sp.light_sources) {
+    const dvec3 loc = sdl(s.location);
+    const dvec3 l = s.parallel ? glm::normalize(loc) : glm::normalize(loc - q.x);
+    if (!sp.doubleIlluminate() && !(glm::dot(q.n, l) > 0.0)) continue;
+    double att = 1.0;
+    if (s.fade_distance > 0.0) {
+      const double k = glm::length(loc - q.x) / sdl(s.fade_distance);
+      att = 2.0 / (1.0 + k * k);
+    }
+    if (s.spotlight) {
+      const double cos_theta = glm::dot(glm::normalize(q.x - loc), glm::normalize(sdl(s.point_at) - loc));
+      if (!(cos_theta > std::cos(sdl(s.cone_deg) * kPi / 180.0))) continue;
+    }
+    const double c = glm::dot(r, l);
+    if (c > 0.0) out += sdl(sp.ks) * std::pow(c, sdl(sp.shininess)) * sdl(s.colour) * att;
+  }
+  if (sp.att_texture_map) out *= patternValue(*sp.att_texture_map, q);
+  return out;
+}
+
+// Whether q lies within 1e-9 (in cos) of a spot light's cone.
+bool nearCone(const std::vector<PreparedLight<double>>& lights, dvec3 x) {
+  for (const auto& l : lights)
+    if (l.kind == PreparedLight<double>::Kind::Spot) {
+      dvec3 L;
+      double d;
+      towardsLight(l.position - x, L, d);
+      if (std::abs(glm::dot(-L, l.direction) - l.cos_cutoff) < 1e-9) return true;
+    }
+  return false;
+}
+
+TEST(PovShading, EvaluatesToTheReferenceShaderForEveryModelAndLight) {
+  test::CaseRng r(4242);
+  int evaluated = 0, refused = 0, samples = 0, spot_unlit = 0, spot_lit = 0;
+  std::map<std::string, int> per_model;
+  double worst = 0.0;
+  for (const auto& c : test::shadingCases()) {
+    const Scene& s = c.scene;
+    if (s.shading == ShadingMode::Gouraud) continue;
+    PovShading pov;
+    try {
+      pov = povShading(s);
+    } catch (const ExportError&) {
+      ++refused;  // documented refusals (docs/povray-export.md)
+      continue;
+    }
+    ++evaluated;
+    ++per_model[modelName(s.material.model)];
+    const Shader<double> shader(s.material, s.lights);
+    const dvec3 eye = CameraRays(s.camera).origin;
+    const bool textured = s.material.texture.has_value();
+    for (int k = 0; k < 100; ++k) {
+      Point q;
+      q.x = r.inBox(1.0);
+      q.eye = eye;
+      const dvec3 v = glm::normalize(eye - q.x);
+      do q.n = r.unit();
+      while (!(glm::dot(q.n, v) > 0.05));
+      if (nearCone(shader.lights(), q.x)) continue;
+      q.c = textured ? r.colour() : s.material.base_color;
+      const dvec3 want = shader.shade(q.x, q.n, v, q.c);
+      const dvec3 got = evaluate(pov.emission, q) + phong(pov.specular, q);
+      for (const auto& l : shader.lights())
+        if (l.kind == PreparedLight<double>::Kind::Spot) ++(sampleLight(l, q.x).lit ? spot_lit : spot_unlit);
+      for (int ch = 0; ch < 3; ++ch) {
+        const double err = std::abs(got[ch] - want[ch]) / std::max(1.0, std::abs(want[ch]));
+        worst = std::max(worst, err);
+        ASSERT_LE(err, 1e-9) << c.name << ": POV-Ray evaluates channel " << ch << " at x = ("
+                             << q.x.x << ", " << q.x.y << ", " << q.x.z << "), N = (" << q.n.x
+                             << ", " << q.n.y << ", " << q.n.z << ") to " << got[ch]
+                             << ", the reference shader to " << want[ch];
+      }
+      ++samples;
+    }
+  }
+  // Not vacuous: every model evaluated, most cases exportable, both sides
+  // of the spot cones sampled.
+  EXPECT_EQ(per_model.size(), 7u);
+  EXPECT_GT(evaluated, 3 * refused);
+  EXPECT_GT(spot_lit, 100);
+  EXPECT_GT(spot_unlit, 100);
+  std::cout << evaluated << " cases (" << refused << " refused by the exporter), " << samples
+            << " samples, largest relative error " << worst << "\n";
+}
+
+// POV-Ray's `interpolate 2` lookup at uv (v bottom-up) of a W x H image
+// whose channel c of texel (x, y) (rows top-down) is texel(x, y, c).
+template <class F> dvec3 bilinearAt(int w, int h, glm::dvec2 uv, F texel) {
+  const double fx = uv.x * w - 0.5, fy = (1.0 - uv.y) * h - 0.5;
+  const int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
+  const double wx = fx - x0, wy = fy - y0;
+  auto at = [&](int x, int y, int c) { return texel(std::clamp(x, 0, w - 1), std::clamp(y, 0, h - 1), c); };
+  dvec3 out;
+  for (int c = 0; c < 3; ++c)
+    out[c] = (1 - wy) * ((1 - wx) * at(x0, y0, c) + wx * at(x0 + 1, y0, c)) +
+             wy * ((1 - wx) * at(x0, y0 + 1, c) + wx * at(x0 + 1, y0 + 1, c));
+  return out;
+}
+
+// The Gouraud pigment at uv as the SDL of gouraudPigment() reads it: the
+// average of 7 parts, [rgb 7 lo] and per channel the coarse and the fine
+// image (code / 65535) through colour_maps to 7 range and 7 range / 65535.
+dvec3 gouraudPigmentAt(const GouraudCodes& g, glm::dvec2 uv) {
+  auto image = [&g](const std::vector<std::uint16_t>& img) {
+    return [&g, &img](int x, int y, int c) { return img[(size_t(y) * g.width + x) * 3 + c] / 65535.0; };
+  };
+  const dvec3 coarse = bilinearAt(g.width, g.height, uv, image(g.coarse));
+  const dvec3 fine = bilinearAt(g.width, g.height, uv, image(g.fine));
+  dvec3 sum = sdl(g.lo * 7.0);
+  for (int c = 0; c < 3; ++c) {
+    sum[c] += wrapFunction(coarse[c]) * sdl(7.0 * g.range[c]);
+    sum[c] += wrapFunction(fine[c]) * sdl(7.0 * g.range[c] / 65535.0);
+  }
+  return sum / 7.0;
+}
+
+TEST(PovShading, GouraudImageEvaluatesToTheReferenceVertexColours) {
+  test::CaseRng r(77);
+  int cases = 0, samples = 0;
+  double worst = 0.0, worst_stored = 0.0;
+  for (const auto& c : test::shadingCases()) {
+    const Scene& s = c.scene;
+    if (s.shading != ShadingMode::Gouraud) continue;
+    const TriangleMesh mesh = tessellate(s.objects.at(0));
+    const Shader<double> shader(s.material, s.lights);
+    std::optional<Texture> tex;
+    if (s.material.texture) tex = loadTexture(*s.material.texture);
+    const SurfaceColour<double> colour(s.material, tex ? &*tex : nullptr);
+    const auto vc = gouraudVertexColours(shader, mesh, colour, CameraRays(s.camera).origin);
+    const GouraudImage img = gouraudImage(mesh, vc);
+    const GouraudCodes codes = gouraudCodes(img);
+    ++cases;
+    for (int k = 0; k < 100; ++k) {
+      const uint32_t t = r.index(uint32_t(mesh.triangles.size()));
+      double b1 = r.uniform(0, 1), b2 = r.uniform(0, 1);
+      if (b1 + b2 > 1) b1 = 1 - b1, b2 = 1 - b2;
+      const double b0 = 1 - b1 - b2;
+      const auto& tri = mesh.triangles[t];
+      const glm::dvec2 uv = b0 * glm::dvec2(sdl(img.uvs[3 * t].x), sdl(img.uvs[3 * t].y)) +
+                            b1 * glm::dvec2(sdl(img.uvs[3 * t + 1].x), sdl(img.uvs[3 * t + 1].y)) +
+                            b2 * glm::dvec2(sdl(img.uvs[3 * t + 2].x), sdl(img.uvs[3 * t + 2].y));
+      const dvec3 want = b0 * vc[tri[0]] + b1 * vc[tri[1]] + b2 * vc[tri[2]];
+      // The image's own (float32) texels, looked up the same way.
+      const dvec3 want_stored = bilinearAt(img.width, img.height, uv, [&img](int x, int y, int c) {
+        return double(img.rgb[(size_t(y) * img.width + x) * 3 + c]);
+      });
+      const dvec3 got = gouraudPigmentAt(codes, uv);
+      for (int ch = 0; ch < 3; ++ch) {
+        // Against the reference: the image stores the colours as float32
+        // (relative 6e-8; the block's fourth texel c1 + c2 - c0 too). Against
+        // those stored texels: the codes keep 32 bits of the range (1.2e-10
+        // of it).
+        const double scale = std::max(1.0, std::abs(want[ch]));
+        const double err = std::abs(got[ch] - want[ch]) / scale;
+        const double err_stored = std::abs(got[ch] - want_stored[ch]) / scale;
+        worst = std::max(worst, err);
+        worst_stored = std::max(worst_stored, err_stored);
+        ASSERT_LE(err, 2e-7) << c.name << ": triangle " << t << " at (" << b0 << ", " << b1 << ", "
+                             << b2 << "), channel " << ch << ": POV-Ray " << got[ch]
+                             << ", the reference " << want[ch];
+        ASSERT_LE(err_stored, 1e-9 * std::max(1.0, codes.range[ch]))
+            << c.name << ": triangle " << t << ", channel " << ch << ": POV-Ray " << got[ch]
+            << ", the image's colours " << want_stored[ch];
+      }
+      ++samples;
+    }
+  }
+  EXPECT_EQ(cases, 84);
+  std::cout << cases << " Gouraud cases, " << samples << " samples, largest relative error "
+            << worst << " (against the image's float32 colours " << worst_stored << ")\n";
+}
+
+}  // namespace
+}  // namespace xval
