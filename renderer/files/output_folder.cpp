@@ -31,9 +31,12 @@ void makeRealFolder(const fs::path& root, const fs::path& dir) {
     at /= part;
     struct stat st;
     if (lstat(at.c_str(), &st) != 0) {
-      if (errno != ENOENT || mkdir(at.c_str(), 0755) != 0)
+      // Absent: create it. EEXIST: another job (a thread or a process of
+      // the same run) just did; it is checked below like any existing one.
+      if (errno != ENOENT || (mkdir(at.c_str(), 0755) != 0 && errno != EEXIST))
         throw OutputFolderError(at.string() + ": cannot create the folder: " + reason(errno));
-      continue;
+      if (lstat(at.c_str(), &st) != 0)
+        throw OutputFolderError(at.string() + ": cannot create the folder: " + reason(errno));
     }
     if (S_ISLNK(st.st_mode))
       throw OutputFolderError(at.string() + ": is a symbolic link; xval does not write through links "
