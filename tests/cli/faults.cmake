@@ -26,7 +26,8 @@ cmake_minimum_required(VERSION 3.20)
 #   generate_on_full_disk   `xval generate` and `xval export pov` on a full
 #                           tmpfs: exit 1 naming the file, no partial file
 #                           under a final name
-#   not_a_regular_file      --stats /dev/full (or a link to it): refused
+#   not_a_regular_file      --stats to a device node like /dev/full (or a
+#                           link to it): refused, the node kept
 # Arguments: XVAL, SCENE (tests/cli/scenes/tiny.json), SPEC (a generator
 # spec), WORK (scratch folder), CASE.
 # The mount cases need root (mount in a private namespace, `unshare -m`);
@@ -374,18 +375,24 @@ cp -a '${WORK}/mnt' '${WORK}/copy'
 elseif(CASE STREQUAL "not_a_regular_file")
   # A target that is a device (or a link to one) is refused: a file is
   # written whole by renaming a temporary over it, which must never replace
-  # /dev/full, and writing into it would report success for nothing kept.
-  file(CREATE_LINK /dev/full ${WORK}/link_to_full SYMBOLIC)
-  foreach(_target /dev/full ${WORK}/link_to_full)
+  # a device, and writing into /dev/full would report success for nothing
+  # kept. The device is the test's own node with /dev/full's numbers
+  # (char 1 7): were the check broken, only that node would be replaced.
+  execute_process(COMMAND mknod ${WORK}/full c 1 7 RESULT_VARIABLE _r)
+  if(NOT _r EQUAL 0)
+    message(FATAL_ERROR "this test needs mknod (root) to make a device node like /dev/full")
+  endif()
+  file(CREATE_LINK ${WORK}/full ${WORK}/link_to_full SYMBOLIC)
+  foreach(_target ${WORK}/full ${WORK}/link_to_full)
     run_sh("'${XVAL}' render '${SCENE}' -o '${WORK}/x.exr' -q --stats '${_target}'")
+    execute_process(COMMAND stat -c %F ${WORK}/full OUTPUT_VARIABLE _kind)
+    require_in("${_kind}" "the device node's type" "character special file")
     require_exit(1)
     require_in("${err}" "stderr" "${_target}: cannot write: it exists and is not a regular file")
   endforeach()
   if(NOT IS_SYMLINK ${WORK}/link_to_full)
     message(FATAL_ERROR "the link was replaced")
   endif()
-  execute_process(COMMAND stat -c %F /dev/full OUTPUT_VARIABLE _kind)
-  require_in("${_kind}" "/dev/full's type" "character special file")
 
 else()
   message(FATAL_ERROR "faults.cmake: unknown CASE=${CASE}")

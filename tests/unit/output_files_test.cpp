@@ -1,11 +1,14 @@
 // Writing files whole (files/atomic_write.h) and folders that are never
 // links (files/output_folder.h).
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
+#include <vector>
 
 #include "files/atomic_write.h"
 #include "files/output_folder.h"
@@ -84,11 +87,14 @@ TEST(AtomicWrite, AFailingWriterLeavesTheOldFileAndNoTemporary) {
   EXPECT_EQ(entries(d), 1u);
 }
 
-TEST(AtomicWrite, RefusesADeviceAFolderAndALinkToADevice) {
+TEST(AtomicWrite, RefusesAFifoAFolderAndALinkToAFifo) {
+  // A FIFO of the test's own stands for a device: were the check broken,
+  // the test would replace only its own file, never one in /dev.
   const fs::path d = freshDir("device");
   fs::create_directories(d / "folder");
-  fs::create_symlink("/dev/null", d / "to_null");
-  for (const fs::path& target : {fs::path("/dev/null"), d / "folder", d / "to_null"}) {
+  ASSERT_EQ(mkfifo((d / "fifo").c_str(), 0600), 0);
+  fs::create_symlink(d / "fifo", d / "to_fifo");
+  for (const fs::path& target : {d / "fifo", d / "folder", d / "to_fifo"}) {
     try {
       writeFileAtomically(target, "x");
       FAIL() << target << ": no error";
@@ -96,8 +102,8 @@ TEST(AtomicWrite, RefusesADeviceAFolderAndALinkToADevice) {
       EXPECT_NE(std::string(e.what()).find("it exists and is not a regular file"), std::string::npos) << e.what();
     }
   }
-  EXPECT_TRUE(fs::is_symlink(d / "to_null"));
-  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+  EXPECT_TRUE(fs::is_symlink(d / "to_fifo"));
+  EXPECT_TRUE(fs::is_fifo(d / "fifo"));
 }
 
 TEST(AtomicWrite, WritesSeveralFilesLastOneLast) {
@@ -131,6 +137,26 @@ TEST(OutputFolder, RealFolderRefusesALinkOnTheWay) {
   makeRealFolder(d, d / "a" / "b");
   EXPECT_TRUE(fs::is_directory(d / "a" / "b"));
   EXPECT_THROW(makeRealFolder(d / "a", d), OutputFolderError);  // not inside
+}
+
+TEST(OutputFolder, RealFolderMadeByManyJobsAtOnceIsNoError) {
+  // The three jobs of a scene create its case folder at the same moment.
+  const fs::path d = freshDir("race");
+  for (int round = 0; round < 50; ++round) {
+    const fs::path target = d / ("case" + std::to_string(round)) / "sub";
+    std::vector<std::thread> pool;
+    std::vector<std::string> errors(8);
+    for (int t = 0; t < 8; ++t)
+      pool.emplace_back([&, t] {
+        try {
+          makeRealFolder(d, target);
+        } catch (const std::exception& e) {
+          errors[t] = e.what();
+        }
+      });
+    for (auto& th : pool) th.join();
+    for (const auto& e : errors) EXPECT_EQ(e, "") << "round " << round;
+  }
 }
 
 TEST(OutputFolder, FreshFolderRemovesALinkNotItsTarget) {
