@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <fstream>
 
-#include "common/run_process.h"
+#include "process/run_process.h"
 #include "gltf/gltf_exporter.h"
 #include "shading/models.h"
 
@@ -73,9 +73,17 @@ Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_di
   if (!std::filesystem::is_regular_file(script))
     throw ExternalToolError("Blender script " + script.string() +
                             " not found (set XVAL_BLENDER_SCRIPT)");
+  // Blender reads '\\' in a path as a folder separator: such a path would
+  // make it read or write elsewhere.
+  const std::filesystem::path abs_work = std::filesystem::absolute(work_dir);
+  for (const auto& p : {abs_work, std::filesystem::absolute(script)})
+    if (p.string().find('\\') != std::string::npos)
+      throw ExternalToolError(p.string() + ": contains '\\', which Blender reads as a folder separator; "
+                              "choose a folder without it");
   GltfExport ex = exportGltf(scene, work_dir);
-  const std::filesystem::path out = std::filesystem::absolute(work_dir / "blender.exr");
-  std::filesystem::remove(out);
+  // The image's name is this attempt's own: a Blender left from an earlier
+  // attempt cannot supply it.
+  const std::filesystem::path out = abs_work / ("blender-" + attemptToken() + ".exr");
   const std::filesystem::path log = work_dir / "blender.log";
   ProcessResult r = runProcess(
       {"blender", "-b", "--factory-startup", "-noaudio", "-P", std::filesystem::absolute(script).string(),
@@ -93,6 +101,7 @@ Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_di
     throw ExternalToolError(std::string("blender wrote an unreadable image: ") + e.what());
   }
   requireImageSize("blender", img, scene);
+  requireFinite("blender", img);
   if (mode == BlenderMode::Model) {
     // One sample per pixel: saturating the pixel is the reference
     // renderer's per-sample saturate. Keep the unsaturated value as raw.

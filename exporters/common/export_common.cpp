@@ -1,5 +1,8 @@
 #include "common/export_common.h"
 
+#include <cmath>
+#include <cstdio>
+
 namespace xval {
 
 std::optional<Texture> exportTexture(const Scene& scene, const std::filesystem::path& dir) {
@@ -20,6 +23,28 @@ void requireToolOutput(const std::string& tool, const std::filesystem::path& inp
   if (!std::filesystem::exists(output))
     throw ExternalToolError(tool + " (" + input.string() + ") exited 0 but wrote no image " +
                             output.string() + tail);
+}
+
+void requireFinite(const std::string& tool, const Image& img) {
+  const size_t n = size_t(img.width) * size_t(img.height);
+  const bool raw = img.raw.size() == n * 3;
+  size_t bad = 0, first = 0;
+  for (size_t i = 0; i < n; ++i) {
+    bool finite = true;
+    for (int c = 0; c < 4; ++c) finite &= std::isfinite(img.rgba[i * 4 + c]);
+    if (raw)
+      for (int c = 0; c < 3; ++c) finite &= std::isfinite(img.raw[i * 3 + c]);
+    if (!finite && bad++ == 0) first = i;
+  }
+  if (!bad) return;
+  char px[160];
+  const float* p = &img.rgba[first * 4];
+  std::snprintf(px, sizeof px, "R=%g G=%g B=%g A=%g", p[0], p[1], p[2], p[3]);
+  throw ExternalToolError(tool + " wrote an image with non-finite values (NaN or infinity) in " +
+                          std::to_string(bad) + " of " + std::to_string(n) + " pixels, the first at x=" +
+                          std::to_string(first % size_t(img.width)) + ", y=" +
+                          std::to_string(first / size_t(img.width)) + " (" + px +
+                          "); a renderer's image must be finite");
 }
 
 void requireImageSize(const std::string& tool, const Image& img, const Scene& scene) {

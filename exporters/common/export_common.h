@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "common/run_process.h"
+#include "process/run_process.h"
 #include "image/image.h"
 #include "scene/scene.h"
 #include "texture/texture.h"
@@ -44,6 +44,12 @@ std::optional<Texture> exportTexture(const Scene& scene, const std::filesystem::
 // and wrote `output`.
 void requireToolOutput(const std::string& tool, const std::filesystem::path& input,
                        const ProcessResult& r, const std::filesystem::path& output);
+
+// Throws ExternalToolError when any channel of any pixel of `img` (colour,
+// alpha, and the unsaturated raw colour when present) is NaN or infinite:
+// saying which tool, how many pixels, and the first one. Checked before
+// anything saturates, which would turn NaN into 0 and +Inf into 1.
+void requireFinite(const std::string& tool, const Image& img);
 
 // Throws ExternalToolError unless `img` has the scene camera's size.
 void requireImageSize(const std::string& tool, const Image& img, const Scene& scene);

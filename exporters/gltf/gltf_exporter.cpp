@@ -2,16 +2,19 @@
 
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <optional>
 
 #include "camera/camera.h"
 #include "geometry/float_rounding.h"
 #include "geometry/mesh.h"
 #include "common/export_common.h"
+#include "files/atomic_write.h"
 #include "gltf/shading_constants.h"
 #include "scene/scene_writer.h"
 #include "shading/flat_normals.h"
@@ -254,11 +257,25 @@ GltfExport exportGltf(const Scene& scene, const std::filesystem::path& dir) {
   m.defaultScene = 0;
   if (!m.lights.empty()) m.extensionsUsed.push_back("KHR_lights_punctual");
 
-  tinygltf::TinyGLTF writer;
-  if (!writer.WriteGltfSceneToFile(&m, ex.gltf.string(), /*embedImages=*/false,
-                                   /*embedBuffers=*/false, /*prettyPrint=*/true,
-                                   /*writeBinary=*/false))
-    throw ExportError(ex.gltf.string() + ": tinygltf could not write the glTF");
+  // TinyGLTF writes scene.gltf and, beside it, scene.bin: both whole or
+  // neither, scene.gltf last.
+  writeFilesAtomically(dir, {"scene.bin", "scene.gltf"}, [&](const std::filesystem::path& tmp) {
+    tinygltf::TinyGLTF writer;
+    if (!writer.WriteGltfSceneToFile(&m, (tmp / "scene.gltf").string(), /*embedImages=*/false,
+                                     /*embedBuffers=*/false, /*prettyPrint=*/true,
+                                     /*writeBinary=*/false))
+      throw ExportError("tinygltf could not write the glTF");
+    // TinyGLTF does not check its writes: check what it left (a full disk
+    // gives a short scene.bin or a truncated scene.gltf).
+    std::error_code ec;
+    const auto bin = std::filesystem::file_size(tmp / "scene.bin", ec);
+    if (ec || bin != m.buffers[0].data.size())
+      throw ExportError("scene.bin: " + std::to_string(ec ? 0 : bin) + " bytes written, expected " +
+                        std::to_string(m.buffers[0].data.size()));
+    std::ifstream in(tmp / "scene.gltf");
+    if (!nlohmann::json::accept(in)) throw ExportError("scene.gltf: written incompletely (not valid JSON)");
+    return true;
+  });
   return ex;
 }
 

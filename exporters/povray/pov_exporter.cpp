@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "camera/camera.h"
+#include "files/atomic_write.h"
 #include "geometry/mesh.h"
 #include "povray/gouraud_image.h"
 #include "povray/pigment_tree.h"
@@ -70,7 +71,7 @@ void writeMesh(std::ostream& o, const TriangleMesh& m, const Scene& s, bool text
 
 }  // namespace
 
-PovExport exportPov(const Scene& scene, const std::filesystem::path& dir) {
+PovExport exportPov(const Scene& scene, const std::filesystem::path& dir, const std::string& output_name) {
   if (scene.render.spp != 1)
     throw ExportError("render.spp = " + std::to_string(scene.render.spp) +
                       ": POV-Ray's antialiasing averages unsaturated samples and the reference "
@@ -80,6 +81,7 @@ PovExport exportPov(const Scene& scene, const std::filesystem::path& dir) {
   ex.dir = dir;
   ex.pov = dir / "scene.pov";
   ex.ini = dir / "scene.ini";
+  ex.output_name = output_name;
 
   std::vector<TriangleMesh> meshes;
   for (const auto& o : scene.objects) meshes.push_back(tessellate(o));
@@ -135,13 +137,9 @@ PovExport exportPov(const Scene& scene, const std::filesystem::path& dir) {
       writeMesh(o, m, scene, textured, nullptr, "", sp.doubleIlluminate());
     }
   }
+  writeFileAtomically(ex.pov, o.str());
   {
-    std::ofstream f(ex.pov);
-    f << o.str();
-    if (!f) throw ExportError(ex.pov.string() + ": cannot write");
-  }
-  {
-    std::ofstream f(ex.ini);
+    std::ostringstream f;
     f << "; POV-Ray 3.7 options for scene.pov. Run from this folder: povray scene.ini\n"
       << "Input_File_Name=scene.pov\nOutput_File_Name=" << ex.output_name << "\n"
       << "Width=" << scene.camera.width << "\nHeight=" << scene.camera.height << "\n"
@@ -149,16 +147,17 @@ PovExport exportPov(const Scene& scene, const std::filesystem::path& dir) {
       << "; 16-bit PNG, linear (no transfer function), alpha = hit mask\n"
       << "Output_File_Type=N\nBits_Per_Color=16\nFile_Gamma=1.0\nOutput_Alpha=On\n"
       << "Display=Off\nPause_When_Done=Off\nVerbose=Off\n";
-    if (!f) throw ExportError(ex.ini.string() + ": cannot write");
+    writeFileAtomically(ex.ini, f.str());
   }
   {
-    std::ofstream f(dir / "README.txt");
+    std::ostringstream f;
     f << "Exported by xval from scene: " << commentSafe(scene.name) << "\n\n"
       << "Render with POV-Ray 3.7 from this folder:\n\n    povray scene.ini\n\n"
       << "or, equivalently:\n\n    povray +Iscene.pov +O" << ex.output_name << " +W"
       << scene.camera.width << " +H" << scene.camera.height
       << " -A +FN16 +UA File_Gamma=1.0 -D\n\n"
       << "The output holds the model's values linearly (round(v * 65535)), alpha = hit mask.\n";
+    writeFileAtomically(dir / "README.txt", f.str());
   }
   return ex;
 }

@@ -48,6 +48,9 @@ struct PovExport {
   std::string output_name = "scene.png";  // written by POV-Ray into dir
 };
 
-PovExport exportPov(const Scene& scene, const std::filesystem::path& dir);
+// `output_name`: the image POV-Ray is told to write (the render harness
+// names it per attempt, povray/pov_render.h).
+PovExport exportPov(const Scene& scene, const std::filesystem::path& dir,
+                    const std::string& output_name = "scene.png");
 
 }  // namespace xval

@@ -4,7 +4,7 @@
 #include <fstream>
 #include <string>
 
-#include "common/run_process.h"
+#include "process/run_process.h"
 #include "povray/pov_exporter.h"
 
 namespace xval {
@@ -31,9 +31,10 @@ double traceTimeFromLog(const std::filesystem::path& log) {
 
 Image renderWithPovray(const Scene& scene, const std::filesystem::path& work_dir,
                        double timeout_seconds, ExternalRenderInfo* info) {
-  PovExport ex = exportPov(scene, work_dir);
+  // The image's name is this attempt's own: a POV-Ray left from an earlier
+  // attempt cannot supply it.
+  PovExport ex = exportPov(scene, work_dir, "povray-" + attemptToken() + ".png");
   const std::filesystem::path out = work_dir / ex.output_name;
-  std::filesystem::remove(out);
   const std::filesystem::path log = work_dir / "povray.log";
   ProcessResult r = runProcess({"povray", "scene.ini"}, work_dir, log, timeout_seconds);
   if (info) *info = {r.seconds, log, traceTimeFromLog(log)};
@@ -45,6 +46,7 @@ Image renderWithPovray(const Scene& scene, const std::filesystem::path& work_dir
     throw ExternalToolError(std::string("povray wrote an unreadable image: ") + e.what());
   }
   requireImageSize("povray", img, scene);
+  requireFinite("povray", img);
   // Background: alpha 0, colour 0 (as the reference renderer's).
   for (size_t i = 0; i < img.rgba.size(); i += 4)
     if (img.rgba[i + 3] == 0.0f) img.rgba[i] = img.rgba[i + 1] = img.rgba[i + 2] = 0.0f;

@@ -3,9 +3,13 @@
 // JSON file of figures.
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "files/atomic_write.h"
+
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -22,6 +26,29 @@ inline void requirePerfectSquareSpp(int spp, const std::string& option) {
     throw std::runtime_error(option + " " + std::to_string(spp) +
                              ": expected a perfect square (1, 4, 9, ..., 256)");
 }
+
+// A time limit in seconds: a finite number in (0, kMaxSeconds]. NaN, inf,
+// 0 and negatives are refused (a NaN or infinite time-out would never
+// expire; CLI::PositiveNumber lets NaN through).
+inline constexpr double kMaxSeconds = 7 * 24 * 3600.0;  // a week
+inline const CLI::Validator Seconds(
+    [](std::string& text) -> std::string {
+      double v = 0;
+      if (!CLI::detail::lexical_cast(text, v) || !std::isfinite(v) || v <= 0 || v > kMaxSeconds)
+        return "expected seconds, a number greater than 0 and at most " + std::to_string(int(kMaxSeconds)) +
+               " (a week), got " + text;
+      return "";
+    },
+    "SECONDS", "Seconds");
+// A positive finite factor (NaN and inf refused).
+inline const CLI::Validator FinitePositive(
+    [](std::string& text) -> std::string {
+      double v = 0;
+      if (!CLI::detail::lexical_cast(text, v) || !std::isfinite(v) || v <= 0)
+        return "expected a finite number greater than 0, got " + text;
+      return "";
+    },
+    "POSITIVE", "FinitePositive");
 
 // Median, min and max of repeated measurements (n = 0: all zero).
 struct Spread {
@@ -41,9 +68,7 @@ inline Spread spread(std::vector<double> v) {
 
 // Writes j (indented) to `file`; throws naming the file when it cannot.
 inline void writeJsonFile(const std::string& file, const nlohmann::json& j) {
-  std::ofstream f(file);
-  f << j.dump(2) << "\n";
-  if (!f) throw std::runtime_error(file + ": cannot write");
+  writeFileAtomically(file, j.dump(2) + "\n");
 }
 
 }  // namespace xval::cli

@@ -86,7 +86,7 @@ void addBenchCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--threads", args->threads, "Reference renderer threads (default: all hardware threads)")
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--timeout", args->timeout, "Seconds before an external renderer is killed (default 600)")
-      ->check(CLI::PositiveNumber);
+      ->check(Seconds);
   cmd->add_option("--precision", args->precision,
                   "Reference paths to time: float (the fast path), double (the reference path) or "
                   "both (default)")

@@ -10,7 +10,10 @@
 #include <fstream>
 #include <memory>
 
+#include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "files/atomic_write.h"
+#include "files/output_folder.h"
 #include "image/compare.h"
 #include "image/perceptual.h"
 #include "blender/blender_render.h"
@@ -44,13 +47,14 @@ void addCrosscheckCommand(CLI::App& app, std::function<int()>& run) {
                   "Tolerance file (default: reference/tolerances.json beside the scene's folder, "
                   "else the built-in default 2/65535 on 99.9%)");
   cmd->add_option("--timeout", args->timeout, "Seconds before the external renderer is killed")
-      ->check(CLI::PositiveNumber);
+      ->check(Seconds);
   cmd->callback([args, &run]() {
     run = [args]() -> int {
       try {
         Scene scene = loadScene(args->scene);
         std::filesystem::path dir(args->dir);
         std::filesystem::create_directories(dir);
+        const FolderLock folder_lock(dir, FolderLock::Mode::Exclusive, "xval crosscheck");
         std::filesystem::remove(dir / "metrics.json");
         std::filesystem::path tol_file = args->tolerances;
         if (tol_file.empty()) {
@@ -70,6 +74,7 @@ void addCrosscheckCommand(CLI::App& app, std::function<int()>& run) {
         writeImage(ref, dir / "reference.exr");
         ExternalRenderInfo info;
         const std::filesystem::path work = dir / (args->renderer + ".work");
+        makeFreshFolder(work);  // nothing from an earlier attempt, no planted link
         Image ext;
         if (args->renderer == "povray") {
           ext = renderWithPovray(scene, work, args->timeout, &info);
@@ -89,11 +94,7 @@ void addCrosscheckCommand(CLI::App& app, std::function<int()>& run) {
         j["tolerance_reason"] = reason;
         j["seconds"] = {{"reference", ref_s}, {args->renderer, info.seconds}};
         if (info.render_seconds >= 0) j["seconds"][args->renderer + "_render"] = info.render_seconds;
-        {
-          std::ofstream f(dir / "metrics.json.partial");
-          f << j.dump(2) << "\n";
-        }
-        std::filesystem::rename(dir / "metrics.json.partial", dir / "metrics.json");
+        writeFileAtomically(dir / "metrics.json", j.dump(2) + "\n");
         const bool pass = tol.passes(m);
         std::printf(
             "%s vs %s: %s  max %.2f  p99.9 %.2f  RMSE %.3f (x/65535)  within %.0f: %.4f%% (need "

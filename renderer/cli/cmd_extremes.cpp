@@ -39,9 +39,12 @@
 #include <thread>
 
 #include "blender/blender_render.h"
+#include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "common/export_common.h"
-#include "common/run_process.h"
+#include "process/run_process.h"
+#include "files/atomic_write.h"
+#include "files/output_folder.h"
 #include "povray/pov_render.h"
 #include "scene/scene_loader.h"
 #include "validate/extremes.h"
@@ -217,7 +220,7 @@ void addExtremesCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--jobs", args->jobs, "External renders in parallel (default: the core count)")
       ->check(CLI::Range(1, 256));
   cmd->add_option("--timeout", args->timeout, "Seconds before an external renderer is killed (600)")
-      ->check(CLI::PositiveNumber);
+      ->check(Seconds);
   cmd->add_option("--threads", args->threads,
                   "Threads of each reference render (default: every hardware thread)")
       ->check(CLI::Range(1, 1024));
@@ -253,7 +256,10 @@ void addExtremesCommand(CLI::App& app, std::function<int()>& run) {
           }
         }
         std::filesystem::create_directories(dir);
+        const FolderLock folder_lock(dir, FolderLock::Mode::Exclusive, "xval extremes");
         std::filesystem::remove(dir / "extremes.json");  // a new run: no stale results
+        std::filesystem::remove(dir / "extremes.md");
+        makeRealFolder(dir, dir / "scenes");
         const auto files = ex::writeCaseScenes(cases, dir / "scenes");
         std::vector<CaseRun> runs(cases.size());
         for (size_t k = 0; k < cases.size(); ++k) {
@@ -269,7 +275,7 @@ void addExtremesCommand(CLI::App& app, std::function<int()>& run) {
         for (size_t k = 0; k < runs.size(); ++k) {
           CaseRun& r = runs[k];
           const std::filesystem::path cdir = dir / r.c.name;
-          std::filesystem::create_directories(cdir);
+          makeRealFolder(dir, cdir);
           r.dbl = ex::renderReference(r.scene, Precision::Double, args->threads);
           r.flt = ex::renderReference(r.scene, Precision::Float, args->threads);
           writeImage(r.dbl.image, cdir / "double.exr");
@@ -299,7 +305,15 @@ void addExtremesCommand(CLI::App& app, std::function<int()>& run) {
           for (size_t j = next++; j < jobs.size(); j = next++) {
             CaseRun& r = runs[jobs[j].k];
             const std::string& rr = jobs[j].renderer;
-            External e = renderExternal(r.scene, rr, dir / r.c.name / (rr + ".work"), args->timeout);
+            External e;
+            try {
+              const std::filesystem::path work = dir / r.c.name / (rr + ".work");
+              makeFreshFolder(work);  // nothing from an earlier attempt, no planted link
+              e = renderExternal(r.scene, rr, work, args->timeout);
+            } catch (const std::exception& err) {  // never out of the thread
+              e.status = "error";
+              e.reason = err.what();
+            }
             std::lock_guard<std::mutex> g(lock);
             const size_t n = ++done;
             const double el = since(t_ext);
@@ -385,17 +399,8 @@ void addExtremesCommand(CLI::App& app, std::function<int()>& run) {
                              {"reference_nonfinite_pixels", reference_nonfinite},
                              {"external_errors", external_errors}};
         results["cases"] = jcases;
-        auto writeFile = [](const std::filesystem::path& f, const std::string& text) {
-          const std::filesystem::path tmp = f.string() + ".partial";
-          {
-            std::ofstream o(tmp);
-            o << text;
-            if (!o) throw std::runtime_error(f.string() + ": cannot write");
-          }
-          std::filesystem::rename(tmp, f);
-        };
-        writeFile(dir / "extremes.md", markdown(results));
-        writeFile(dir / "extremes.json", results.dump(2) + "\n");
+        writeFileAtomically(dir / "extremes.md", markdown(results));
+        writeFileAtomically(dir / "extremes.json", results.dump(2) + "\n");
         std::fprintf(stderr,
                      "xval extremes: wrote %s (%zu cases, %.0f s): reference renderer NaN/Inf pixels: "
                      "%lld; external renderer errors: %d\n",

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "files/atomic_write.h"
 #include "render/renderer.h"
 #include "scene/scene_generator.h"
 #include "scene/scene_loader.h"
@@ -32,12 +33,7 @@ void addGenerateCommand(CLI::App& app, std::function<int()>& run) {
       for (size_t i = 0; i < scenes.size(); ++i) {
         const auto& g = scenes[i];
         const std::filesystem::path file = dir / (g.name + ".json");
-        {
-          std::ofstream f(file.string() + ".partial");
-          f << g.json.dump(2) << "\n";
-          if (!f) throw std::runtime_error(file.string() + ": cannot write");
-        }
-        std::filesystem::rename(file.string() + ".partial", file);
+        writeFileAtomically(file, g.json.dump(2) + "\n");
         std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, scenes.size(), file.c_str());
         if (args->render) {
           Scene s = loadScene(file);

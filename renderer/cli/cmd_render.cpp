@@ -74,7 +74,7 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
                   "setup_s, frame_s; external: renderer, width, height, process_s)");
   cmd->add_option("--timeout", args->timeout,
                   "Seconds before an external renderer is killed and the render fails (default 600)")
-      ->check(CLI::PositiveNumber);
+      ->check(Seconds);
   cmd->callback([args, &run]() {
     run = [args]() {
       Scene scene = loadScene(args->scene);

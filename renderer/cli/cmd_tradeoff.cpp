@@ -57,7 +57,10 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "common/run_process.h"
+#include "process/run_process.h"
+#include "files/atomic_write.h"
+#include "files/output_folder.h"
+#include "image/image.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "validate/tradeoff.h"
@@ -162,15 +165,7 @@ std::string fileSafe(const std::string& id) {
   return s;
 }
 
-void writeText(const fs::path& file, const std::string& text) {
-  const fs::path tmp = file.string() + ".partial";
-  {
-    std::ofstream f(tmp);
-    f << text;
-    if (!f) throw std::runtime_error(file.string() + ": cannot write");
-  }
-  fs::rename(tmp, file);
-}
+void writeText(const fs::path& file, const std::string& text) { writeFileAtomically(file, text); }
 
 // The Pareto plot: every configuration (grey, labelled small), the front
 // (red, joined by time, labelled), the reference's convergence residual as
@@ -281,13 +276,24 @@ void writePlot(const J& out, const std::string& metric_label, const fs::path& di
   g << labels.str();
   g << "plot 'pareto.dat' index 0 using 2:3 with points pt 7 ps 1.1 lc rgb '#909090' title 'configuration', \\\n"
        "     '' index 1 using 2:3 with linespoints pt 7 ps 1.4 lw 1.5 lc rgb '#c02020' title 'Pareto-optimal'\n";
-  writeText(dir / "pareto.gp", g.str());
-  fs::remove(dir / "pareto.png");
-  ProcessResult r = runProcess({"gnuplot", "pareto.gp"}, dir, dir / "pareto.log", 120.0);
-  if (!r.ok() || !fs::exists(dir / "pareto.png"))
-    throw std::runtime_error("gnuplot " + (dir / "pareto.gp").string() + ": " +
-                             (r.started ? r.describe() : "not found (Debian package gnuplot-nox)") + "; see " +
-                             (dir / "pareto.log").string());
+  writeText(dir / "pareto.gp", g.str());  // the script as a user would rerun it
+  // gnuplot runs a copy that writes the plot into writeFileAtomically's
+  // private folder; the plot is renamed into place once whole.
+  writeFileAtomically(dir / "pareto.png", [&](const fs::path& tmp_png) {
+    const fs::path rel = tmp_png.lexically_relative(dir);
+    std::string script = g.str();
+    const std::string line = "set output 'pareto.png'";
+    script.replace(script.find(line), line.size(), "set output '" + rel.string() + "'");
+    writeText(tmp_png.parent_path() / "pareto.gp", script);
+    ProcessResult r = runProcess({"gnuplot", (rel.parent_path() / "pareto.gp").string()}, dir,
+                                 dir / "pareto.log", 120.0);
+    if (!r.ok() || !fs::exists(tmp_png))
+      throw std::runtime_error("gnuplot " + (dir / "pareto.gp").string() + ": " +
+                               (r.started ? r.describe() : "not found (Debian package gnuplot-nox)") + "; see " +
+                               (dir / "pareto.log").string());
+    requireDecodable(tmp_png, int(kW), int(kH));
+    return true;
+  });
 }
 
 std::string markdownTable(const J& out) {
@@ -359,7 +365,7 @@ void addTradeoffCommand(CLI::App& app, std::function<int()>& run) {
                   "Stop timing a configuration once its timed frames add up to this many seconds "
                   "(default 3; at least one timed frame; a warm-up frame this long is itself the "
                   "one timed frame)")
-      ->check(CLI::PositiveNumber);
+      ->check(Seconds);
   cmd->add_option("--threads", args->threads, "Render threads (default: all hardware threads)")
       ->check(CLI::Range(1, 1024));
   cmd->add_flag("--quick", args->quick,
@@ -372,7 +378,7 @@ void addTradeoffCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--reference-tessellation", args->reference_tessellation,
                   "Tessellation factor of the converged reference, times the scene's segments each "
                   "way (default 4; 2 with --quick)")
-      ->check(CLI::PositiveNumber);
+      ->check(FinitePositive);
   cmd->add_option("--width", args->width, "Override the camera's width in pixels (field of view kept)")
       ->check(CLI::Range(1, kMaxImageSide));
   cmd->add_option("--height", args->height, "Override the camera's height in pixels")
@@ -407,7 +413,8 @@ void addTradeoffCommand(CLI::App& app, std::function<int()>& run) {
       if (ec || !fs::is_directory(dir))
         throw std::runtime_error(dir.string() + ": cannot create the output folder" +
                                  (ec ? ": " + ec.message() : std::string()));
-      if (args->images) fs::create_directories(dir / "images");
+      const FolderLock folder_lock(dir, FolderLock::Mode::Exclusive, "xval tradeoff");
+      if (args->images) makeRealFolder(dir, dir / "images");
 
       RenderOptions opt;
       opt.threads = args->threads;

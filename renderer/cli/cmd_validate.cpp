@@ -19,8 +19,11 @@
 // (bad scene, renderer missing or broken, a job not run). --plan-only
 // exits 0 when it wrote the plan; --run-job exits 0 when the render
 // succeeded and 2 when it failed (the failure is in the job's record).
-// Files are written under temporary names and renamed, so an interrupted
-// run leaves no file that looks complete.
+// Files are written whole or not at all (files/atomic_write.h), so an
+// interrupted run leaves no file that looks complete; the output folder is
+// locked (files/output_folder.h: a plain run, --plan-only and
+// --compare-only alone, --run-job shared), and a new run removes the old
+// results.json and report.html before it plans.
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -29,6 +32,7 @@
 #include <mutex>
 #include <thread>
 
+#include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "common/export_common.h"
 #include "validate/validation_jobs.h"
@@ -56,7 +60,16 @@ void runJobs(const v::Plan& plan, const std::vector<size_t>& todo, int workers) 
   auto worker = [&]() {
     for (size_t k = next++; k < todo.size(); k = next++) {
       const v::RenderJob& job = plan.jobs[todo[k]];
-      v::JobRecord rec = v::runJob(plan, job);
+      // An exception must not leave this thread (std::terminate): it is
+      // this job's error, and the compare step finds the job not done.
+      v::JobRecord rec;
+      try {
+        rec = v::runJob(plan, job);
+      } catch (const std::exception& e) {
+        rec.error = e.what();
+      } catch (...) {
+        rec.error = "unknown exception";
+      }
       std::lock_guard<std::mutex> g(lock);
       const size_t n = ++done;
       const double el = std::chrono::duration<double>(Clock::now() - t_start).count();
@@ -105,7 +118,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--jobs", args->jobs, "Renders in parallel (default: the core count)")
       ->check(CLI::Range(1, 256));
   cmd->add_option("--timeout", args->timeout, "Seconds before an external renderer is killed")
-      ->check(CLI::PositiveNumber);
+      ->check(Seconds);
   auto* resume = cmd->add_flag(
       "--resume", args->resume,
       "Keep the renders of an earlier run into the same folder whose record says ok, whose "
@@ -143,6 +156,12 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
                                      ": scenes, -o, --tolerances and --timeout come from the plan "
                                      "(and --jobs is for a plain run); give none of them");
           const v::Plan plan = v::readPlan(args->plan);
+          // Jobs of one plan run side by side (a cluster array): they share
+          // the folder; a plain run, --plan-only or --compare-only excludes
+          // every other writer.
+          const FolderLock folder_lock(plan.dir,
+                                       args->compare_only ? FolderLock::Mode::Exclusive : FolderLock::Mode::Shared,
+                                       "xval validate");
           if (args->compare_only) return v::compareAndReport(plan);
           if (size_t(args->run_job) >= plan.jobs.size())
             throw std::runtime_error("--run-job " + std::to_string(args->run_job) + ": " + args->plan +
@@ -160,9 +179,12 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
         if (inputs.empty()) inputs.push_back("reference/scenes");
         const std::string tol = args->tolerances.empty() ? "reference/tolerances.json" : args->tolerances;
         const v::Plan plan = v::makePlan(inputs, tol, args->dir, args->timeout);
+        std::filesystem::create_directories(plan.dir);
+        const FolderLock folder_lock(plan.dir, FolderLock::Mode::Exclusive, "xval validate");
+        // A new run: the old verdict must not pass for this run's, even if
+        // this run is killed before it writes its own.
+        v::removeVerdict(plan);
         v::writePlan(plan);
-        // A new run: the old results must not pass for this run's.
-        std::filesystem::remove(plan.dir / "results.json");
         const std::vector<size_t> todo = jobsToRun(plan, args->resume);
         if (args->plan_only) {
           for (size_t k : todo) std::printf("%zu\n", k);

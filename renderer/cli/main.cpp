@@ -11,8 +11,11 @@
 #include <exception>
 
 #include "cli/commands.h"
+#include "process/run_process.h"
 
 int main(int argc, char** argv) {
+  // Before any thread starts: an interrupt stops every tool xval started.
+  xval::installInterruptHandler();
   CLI::App app{
       "xval: cross-validates lighting models between a reference renderer, POV-Ray and "
       "Blender.\nScene files are JSON (docs/scene-format.md)."};

@@ -50,6 +50,11 @@ void writeImage(const Image& img, const std::filesystem::path& file);
 // box-filtered down by the smallest integer factor that brings the larger
 // side to at most max_side pixels.
 void writePreviewPng(const Image& img, const std::filesystem::path& file, int max_side);
+// Throws std::runtime_error unless `file` decodes whole as a width x height
+// image. OpenImageIO's PNG writer can report success for a file a full disk
+// left empty, so every image xval writes is read back before it is renamed
+// into place (files/atomic_write.h).
+void requireDecodable(const std::filesystem::path& file, int width, int height);
 // Reads R,G,B,A (and raw.* when present) from any file OpenImageIO reads.
 Image readImage(const std::filesystem::path& file);
 

@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "files/atomic_write.h"
 #include "image/image.h"
 
 namespace xval {
@@ -17,6 +18,18 @@ std::string lower(std::string s) {
 }
 }  // namespace
 
+void requireDecodable(const std::filesystem::path& file, int width, int height) {
+  auto in = OIIO::ImageInput::open(file.string());
+  if (!in) throw std::runtime_error("written but unreadable: " + OIIO::geterror());
+  const OIIO::ImageSpec spec = in->spec();
+  if (spec.width != width || spec.height != height)
+    throw std::runtime_error("written as " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                             ", expected " + std::to_string(width) + "x" + std::to_string(height));
+  std::vector<float> buf(size_t(spec.width) * spec.height * spec.nchannels);
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, buf.data()))
+    throw std::runtime_error("written incompletely: " + in->geterror());
+}
+
 void writeImage(const Image& img, const std::filesystem::path& file) {
   const std::string name = file.string();
   const std::string ext = lower(file.extension().string());
@@ -24,11 +37,11 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
     throw std::runtime_error(name + ": unsupported output extension \"" + ext +
                              "\" (expected .exr or .png)");
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
-  // Write to a temporary name and rename: an interrupted write never leaves
-  // a file that looks complete.
-  const std::string tmp = name + ".partial" + ext;
+  // Written whole or not at all (files/atomic_write.h).
+  writeFileAtomically(file, [&](const std::filesystem::path& tmp_path) {
+  const std::string tmp = tmp_path.string();
   auto out = OIIO::ImageOutput::create(tmp);
-  if (!out) throw std::runtime_error(name + ": cannot create image writer: " + OIIO::geterror());
+  if (!out) throw std::runtime_error("cannot create image writer: " + OIIO::geterror());
   const size_t n = size_t(img.width) * img.height;
   bool ok;
   if (ext == ".exr") {
@@ -69,11 +82,10 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
     ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::UINT16, buf.data());
   }
   ok = out->close() && ok;
-  if (!ok) {
-    std::filesystem::remove(tmp);
-    throw std::runtime_error(name + ": cannot write image: " + out->geterror());
-  }
-  std::filesystem::rename(tmp, file);
+  if (!ok) throw std::runtime_error("cannot write image: " + out->geterror());
+  requireDecodable(tmp_path, img.width, img.height);
+  return true;
+  });
 }
 
 void writePreviewPng(const Image& img, const std::filesystem::path& file, int max_side) {
@@ -90,14 +102,16 @@ void writePreviewPng(const Image& img, const std::filesystem::path& file, int ma
         px[(size_t(y) * w + x) * 3 + c] = (unsigned char)std::lround(sum / (k * k) * 255.0);
       }
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
-  const std::string tmp = file.string() + ".partial.png";
-  auto out = OIIO::ImageOutput::create(tmp);
-  if (!out) throw std::runtime_error(file.string() + ": cannot create PNG: " + OIIO::geterror());
-  OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::UINT8);
-  bool ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::UINT8, px.data());
-  ok = out->close() && ok;
-  if (!ok) throw std::runtime_error(file.string() + ": cannot write PNG: " + out->geterror());
-  std::filesystem::rename(tmp, file);
+  writeFileAtomically(file, [&](const std::filesystem::path& tmp) {
+    auto out = OIIO::ImageOutput::create(tmp.string());
+    if (!out) throw std::runtime_error("cannot create PNG: " + OIIO::geterror());
+    OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::UINT8);
+    bool ok = out->open(tmp.string(), spec) && out->write_image(OIIO::TypeDesc::UINT8, px.data());
+    ok = out->close() && ok;
+    if (!ok) throw std::runtime_error("cannot write PNG: " + out->geterror());
+    requireDecodable(tmp, w, h);
+    return true;
+  });
 }
 
 Image readImage(const std::filesystem::path& file) {

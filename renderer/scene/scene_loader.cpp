@@ -289,27 +289,35 @@ std::vector<DeclaredTolerance> readTolerances(JsonReader& r) {
   return out;
 }
 
-// The name becomes a folder under the output folder (`xval validate`
-// writes DIR/NAME/...): it must be one path component.
 void checkSceneName(JsonReader& r, const std::string& name) {
-  const std::string got = describeJson(json(name));
-  const char* from = r.has("name") ? "" : " (from the file name; set \"name\")";
-  if (name.empty() || name == "." || name == "..")
-    r.fail("name", std::string("expected a name usable as a folder name, got ") + got + from);
-  if (name.find('/') != std::string::npos || name.find('\0') != std::string::npos)
-    r.fail("name", std::string("expected a name without '/' or NUL (it becomes a folder name), got ") +
-                       got + from);
-  try {
-    (void)json(name).dump();  // throws on invalid UTF-8 (only a file name can hold it)
-  } catch (const json::type_error&) {
-    r.fail("name", std::string("expected UTF-8 text, got ") + got + from);
-  }
-  if (name.size() > kMaxSceneNameBytes)
-    r.fail("name", "expected at most " + std::to_string(kMaxSceneNameBytes) + " bytes, got " +
-                       std::to_string(name.size()) + " bytes: " + got + from);
+  const std::string problem = sceneNameProblem(name);
+  if (!problem.empty())
+    r.fail("name", problem + ", got " + describeJson(json(name)) +
+                       (r.has("name") ? "" : " (from the file name; set \"name\")"));
 }
 
 }  // namespace
+
+// The name becomes a folder under the output folder (`xval validate`
+// writes DIR/NAME/...) and part of paths handed to OpenImageIO and the
+// external renderers: one path component that none of them misreads.
+std::string sceneNameProblem(const std::string& name) {
+  if (name.empty() || name == "." || name == "..") return "expected a name usable as a folder name";
+  if (name.find('/') != std::string::npos || name.find('\0') != std::string::npos)
+    return "expected a name without '/' or NUL (it becomes a folder name)";
+  try {
+    (void)json(name).dump();  // throws on invalid UTF-8 (only a file name can hold it)
+  } catch (const json::type_error&) {
+    return "expected UTF-8 text";
+  }
+  if (name.size() > kMaxSceneNameBytes)
+    return "expected at most " + std::to_string(kMaxSceneNameBytes) + " bytes, got " +
+           std::to_string(name.size()) + " bytes in all";
+  if (name.find_first_of("\\?") != std::string::npos)
+    return "expected a name without '\\' or '?' (Blender reads '\\' as a folder separator and "
+           "OpenImageIO reads '?' in a file name as the start of options)";
+  return "";
+}
 
 Scene parseScene(const std::string& text, const std::filesystem::path& file) {
   const std::string fname = file.string();

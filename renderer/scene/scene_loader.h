@@ -34,4 +34,10 @@ inline constexpr long long kMaxTexturePixels = 16ll * 1024 * 1024;
 // most this many bytes, no '/', no NUL, not "." or "..".
 inline constexpr size_t kMaxSceneNameBytes = 200;
 
+// What is wrong with a scene name ("expected ..."), empty when it is
+// usable: one path component (not empty, ".", ".."; no '/', NUL), UTF-8,
+// at most kMaxSceneNameBytes, and no character a tool misreads in a path
+// ('\\', '?'). The loader refuses such names.
+std::string sceneNameProblem(const std::string& name);
+
 }  // namespace xval

@@ -3,6 +3,8 @@
 
 #include <stdexcept>
 
+#include "files/atomic_write.h"
+#include "image/image.h"
 #include "scene/scene_loader.h"
 #include "texture/brick.h"
 #include "texture/texture.h"
@@ -105,11 +107,15 @@ void writeTexturePng(const Texture& t, const std::filesystem::path& file) {
     throw std::runtime_error(file.string() + ": texture has no 8-bit or 16-bit codes to write");
   const OIIO::TypeDesc type = is8 ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::UINT16;
   const void* data = is8 ? static_cast<const void*>(t.rgb8.data()) : t.rgb16.data();
-  auto out = OIIO::ImageOutput::create(file.string());
-  if (!out) throw std::runtime_error(file.string() + ": cannot create PNG: " + OIIO::geterror());
-  OIIO::ImageSpec spec(t.width, t.height, 3, type);
-  if (!out->open(file.string(), spec) || !out->write_image(type, data) || !out->close())
-    throw std::runtime_error(file.string() + ": cannot write PNG: " + out->geterror());
+  writeFileAtomically(file, [&](const std::filesystem::path& tmp) {
+    auto out = OIIO::ImageOutput::create(tmp.string());
+    if (!out) throw std::runtime_error("cannot create PNG: " + OIIO::geterror());
+    OIIO::ImageSpec spec(t.width, t.height, 3, type);
+    if (!out->open(tmp.string(), spec) || !out->write_image(type, data) || !out->close())
+      throw std::runtime_error("cannot write PNG: " + out->geterror());
+    requireDecodable(tmp, t.width, t.height);
+    return true;
+  });
 }
 
 }  // namespace xval

@@ -10,7 +10,9 @@
 //   - sphere: radius 1, 64 x 32 segments; plane: 2 triangles.
 #include "validate/extremes.h"
 
+#include "files/atomic_write.h"
 #include "image/heat_map.h"
+#include "image/image.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -376,12 +378,15 @@ void writePaletteTexture(const std::filesystem::path& file) {
   // White, black, red, green, blue, cyan, magenta, yellow, top to bottom.
   const unsigned char px[8][3] = {{255, 255, 255}, {0, 0, 0},     {255, 0, 0},   {0, 255, 0},
                                   {0, 0, 255},     {0, 255, 255}, {255, 0, 255}, {255, 255, 0}};
-  auto out = OIIO::ImageOutput::create(file.string());
-  if (!out) throw std::runtime_error(file.string() + ": cannot create: " + OIIO::geterror());
-  OIIO::ImageSpec spec(1, 8, 3, OIIO::TypeDesc::UINT8);
-  if (!out->open(file.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, px) ||
-      !out->close())
-    throw std::runtime_error(file.string() + ": cannot write: " + out->geterror());
+  writeFileAtomically(file, [&](const std::filesystem::path& tmp) {
+    auto out = OIIO::ImageOutput::create(tmp.string());
+    if (!out) throw std::runtime_error("cannot create: " + OIIO::geterror());
+    OIIO::ImageSpec spec(1, 8, 3, OIIO::TypeDesc::UINT8);
+    if (!out->open(tmp.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, px) || !out->close())
+      throw std::runtime_error("cannot write: " + out->geterror());
+    requireDecodable(tmp, 1, 8);
+    return true;
+  });
 }
 
 std::vector<std::filesystem::path> writeCaseScenes(const std::vector<Case>& cases,
@@ -391,9 +396,7 @@ std::vector<std::filesystem::path> writeCaseScenes(const std::vector<Case>& case
   std::vector<std::filesystem::path> files;
   for (const Case& c : cases) {
     const std::filesystem::path f = scenes_dir / (c.name + ".json");
-    std::ofstream o(f);
-    o << c.scene.dump(2) << "\n";
-    if (!o) throw std::runtime_error(f.string() + ": cannot write");
+    writeFileAtomically(f, c.scene.dump(2) + "\n");
     files.push_back(f);
   }
   return files;

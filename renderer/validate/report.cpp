@@ -1,5 +1,6 @@
 #include "validate/report.h"
 
+#include "files/atomic_write.h"
 #include "image/heat_map.h"
 
 #include <glm/glm.hpp>
@@ -8,12 +9,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 #include "image/image.h"
+#include "process/run_process.h"
 #include "validate/extremes.h"
 #include "validate/report_tradeoff.h"
 
@@ -53,7 +54,7 @@ std::string fmt(double v, int prec = 3) {
 void writePlot(const J& cases, const std::filesystem::path& dir) {
   const std::filesystem::path dat = dir / "p999.dat", gp = dir / "p999.gp";
   {
-    std::ofstream d(dat);
+    std::ostringstream d;
     d << "# case ref-povray ref-blender povray-blender (p99.9 error, 1/65535)\n";
     int i = 0;
     for (const auto& c : cases) {
@@ -62,35 +63,47 @@ void writePlot(const J& cases, const std::filesystem::path& dir) {
         d << " " << (p.contains("metrics") ? std::max(0.01, p["metrics"]["p999_abs_16bit"].get<double>()) : 0.01);
       d << "\n";
     }
+    writeFileAtomically(dat, d.str());
   }
-  {
-    std::ofstream g(gp);
-    g << "set terminal pngcairo size 1100,460 font ',9' noenhanced\nset output 'p999.png'\n"
-         "set logscale y\nset yrange [0.01:*]\nset ylabel 'p99.9 error (1/65535)'\n"
-         "set style data histogram\nset style histogram cluster gap 1\n"
-         "set style fill solid 0.8 border -1\nset boxwidth 0.9\nset key outside top center horizontal\n"
-         "set xtics rotate by -45 scale 0\nset grid ytics\n";
-    g << "set xtics (";
-    int i = 0;
-    for (const auto& c : cases) {
-      // gnuplot string: scene names are [A-Za-z0-9_.-] (validated by the
-      // loader's file naming) but quote-escape anyway.
-      std::string n = c["scene"].get<std::string>();
-      std::string safe;
-      for (char ch : n) safe += (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-' || ch == '.') ? ch : '_';
-      g << (i ? ", " : "") << "'" << safe << "' " << i;
-      ++i;
-    }
-    g << ")\n";
-    g << "plot 'p999.dat' using 2 title 'reference-povray', '' using 3 title 'reference-blender', "
-         "'' using 4 title 'povray-blender'\n";
+  std::ostringstream g;
+  g << "set terminal pngcairo size 1100,460 font ',9' noenhanced\nset output 'p999.png'\n"
+       "set logscale y\nset yrange [0.01:*]\nset ylabel 'p99.9 error (1/65535)'\n"
+       "set style data histogram\nset style histogram cluster gap 1\n"
+       "set style fill solid 0.8 border -1\nset boxwidth 0.9\nset key outside top center horizontal\n"
+       "set xtics rotate by -45 scale 0\nset grid ytics\n";
+  g << "set xtics (";
+  int i = 0;
+  for (const auto& c : cases) {
+    // gnuplot string: only [A-Za-z0-9_.-] of the scene name, the rest '_'.
+    std::string n = c["scene"].get<std::string>();
+    std::string safe;
+    for (char ch : n) safe += (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-' || ch == '.') ? ch : '_';
+    g << (i ? ", " : "") << "'" << safe << "' " << i;
+    ++i;
   }
-  std::string cmd = "cd '" + dir.string() + "' && gnuplot p999.gp 2> p999.log";
-  if (dir.string().find('\'') != std::string::npos)
-    throw std::runtime_error(dir.string() + ": report folder names with quotes are not supported");
-  if (std::system(cmd.c_str()) != 0 || !std::filesystem::exists(dir / "p999.png"))
-    throw std::runtime_error("gnuplot failed or is missing (Debian package gnuplot-nox); see " +
-                             (dir / "p999.log").string());
+  g << ")\n";
+  const std::string plot = "plot 'p999.dat' using 2 title 'reference-povray', '' using 3 title "
+                           "'reference-blender', '' using 4 title 'povray-blender'\n";
+  writeFileAtomically(gp, g.str() + plot);  // the script as a user would rerun it
+  // gnuplot (no shell: process/run_process.h) runs a copy that writes the
+  // plot into the private folder of writeFileAtomically (a name relative to
+  // the output folder, its working folder); the plot is renamed into place
+  // once whole.
+  writeFileAtomically(dir / "p999.png", [&](const std::filesystem::path& tmp_png) {
+    const std::filesystem::path rel = tmp_png.lexically_relative(dir);
+    std::string script = g.str();
+    script.replace(script.find("set output 'p999.png'"), std::string("set output 'p999.png'").size(),
+                   "set output '" + rel.string() + "'");
+    writeFileAtomically(tmp_png.parent_path() / "p999.gp", script + plot);
+    const ProcessResult r =
+        runProcess({"gnuplot", (rel.parent_path() / "p999.gp").string()}, dir, dir / "p999.log", 120.0);
+    if (!r.ok() || !std::filesystem::exists(tmp_png))
+      throw std::runtime_error("gnuplot " + gp.string() + ": " +
+                               (r.started ? r.describe() : "not found (Debian package gnuplot-nox)") + "; see " +
+                               (dir / "p999.log").string());
+    requireDecodable(tmp_png, 1100, 460);
+    return true;
+  });
 }
 
 const J* findCase(const J& cases, const std::string& name) {
@@ -292,13 +305,7 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
        "  document.title = bad.length ? 'xval report: BROKEN ' + bad.join(' ')\n"
        "                              : 'xval report: ' + imgs.length + ' images OK';\n"
        "});\n</script>\n</body></html>\n";
-  const std::filesystem::path tmp = html.string() + ".partial";
-  {
-    std::ofstream f(tmp);
-    f << h.str();
-    if (!f) throw std::runtime_error(html.string() + ": cannot write");
-  }
-  std::filesystem::rename(tmp, html);
+  writeFileAtomically(html, h.str());
 }
 
 }  // namespace xval

@@ -14,7 +14,9 @@
 #include <OpenImageIO/oiioversion.h>
 
 #include "blender/blender_render.h"
-#include "common/run_process.h"
+#include "process/run_process.h"
+#include "files/atomic_write.h"
+#include "files/output_folder.h"
 #include "image/compare.h"
 #include "image/image.h"
 #include "image/perceptual.h"
@@ -89,16 +91,7 @@ std::string settingsHash(const std::vector<fs::path>& files) {
   return buf;
 }
 
-void writeAtomically(const fs::path& file, const std::string& text) {
-  const fs::path tmp = file.string() + ".partial";
-  {
-    std::ofstream f(tmp);
-    f << text;
-    f.flush();
-    if (!f) throw std::runtime_error(file.string() + ": cannot write");
-  }
-  fs::rename(tmp, file);
-}
+void writeAtomically(const fs::path& file, const std::string& text) { writeFileAtomically(file, text); }
 
 std::vector<fs::path> collectScenes(const std::vector<std::string>& inputs) {
   std::vector<fs::path> out;
@@ -120,14 +113,24 @@ std::vector<fs::path> collectScenes(const std::vector<std::string>& inputs) {
   return out;
 }
 
-// The scene's name names its output folder.
+// The scene's name names its case folder OUT/<name>/: the loader's rule
+// (sceneNameProblem), no control characters (the name is in every progress
+// line), and none of the names validate writes or reads at the top of OUT.
 void checkSceneName(const std::string& name, const std::string& where) {
-  bool bad = name.empty() || name == "." || name == ".." || name.find('/') != std::string::npos;
-  for (unsigned char c : name) bad |= c < 0x20 || c == 0x7f;
-  if (bad)
-    throw std::runtime_error(where + ": name: \"" + name +
-                             "\": cannot name an output folder (expected no '/', no control "
-                             "characters, not empty, '.' or '..')");
+  std::string problem = sceneNameProblem(name);
+  if (problem.empty())
+    for (unsigned char c : name)
+      if (c < 0x20 || c == 0x7f) problem = "expected no control characters";
+  if (problem.empty())
+    for (const char* own : kOwnFiles) {
+      const std::string o = own;
+      if (name == o || name.rfind(o + ".partial-", 0) == 0)
+        problem = "expected none of the names xval validate uses in its output folder (" + o + ")";
+    }
+  if (!problem.empty())
+    throw std::runtime_error(where + ": name: " + nlohmann::json(name).dump(-1, ' ', false,
+                                                                          nlohmann::json::error_handler_t::replace) +
+                             ": cannot name a case folder: " + problem);
 }
 
 // The tool's version line for the provenance; waits at most
@@ -187,11 +190,20 @@ struct Reader {
 
 fs::path planFile(const fs::path& dir) { return dir / "jobs.json"; }
 
+void removeVerdict(const Plan& plan) {
+  for (const char* f : {"results.json", "report.html"}) {
+    std::error_code ec;
+    if (!fs::remove(plan.dir / f, ec) && ec)
+      throw std::runtime_error((plan.dir / f).string() + ": cannot remove the previous run's: " + ec.message());
+  }
+}
+
 Plan makePlan(const std::vector<std::string>& inputs, const std::string& tolerances,
               const fs::path& dir, double timeout_seconds) {
   Plan plan;
   plan.dir = fs::absolute(dir).lexically_normal();
   if (!plan.dir.has_filename()) plan.dir = plan.dir.parent_path();  // "out/" -> "out"
+  checkToolPath(plan.dir);
   plan.tolerances = tolerances;
   plan.tolerances_path = fs::absolute(tolerances).lexically_normal();
   loadTolerances(plan.tolerances_path);  // fail early on a bad tolerance file
@@ -200,6 +212,14 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
   for (const auto& f : collectScenes(inputs)) {
     Scene scene = loadScene(f);
     checkSceneName(scene.name, f.string());
+    // Its case folder, if it exists already, is a real folder (not a link
+    // planted or left there): refused before anything renders.
+    const fs::file_status st = fs::symlink_status(plan.dir / scene.name);
+    if (fs::is_symlink(st) || (fs::exists(st) && !fs::is_directory(st)))
+      throw std::runtime_error((plan.dir / scene.name).string() + ": " + f.string() + "'s case folder " +
+                               (fs::is_symlink(st) ? "is a symbolic link; xval does not write through links "
+                                                     "inside its output folder (remove it)"
+                                                   : "exists and is not a folder"));
     auto [it, fresh] = seen.emplace(scene.name, f.string());
     if (!fresh)
       throw std::runtime_error(f.string() + ": name: \"" + scene.name + "\": also the name of " +
@@ -258,13 +278,14 @@ Plan readPlan(const fs::path& file) {
     throw std::runtime_error(name + ": format: \"" + format + "\": expected \"" + kPlanFormat + "\"");
   Plan plan;
   plan.dir = fs::absolute(file).lexically_normal().parent_path();
+  checkToolPath(plan.dir);
   plan.created_unix = rd.num(j, "created_unix");
   plan.tolerances = rd.str(j, "tolerances");
   plan.tolerances_path = rd.str(j, "tolerances_path");
   plan.timeout_seconds = rd.num(j, "timeout_seconds");
-  if (!(plan.timeout_seconds > 0))
+  if (!(plan.timeout_seconds > 0) || !std::isfinite(plan.timeout_seconds))
     throw std::runtime_error(name + ": timeout_seconds: " + j["timeout_seconds"].dump() +
-                             ": expected a positive number");
+                             ": expected a positive, finite number");
   const J& jobs = rd.at(j, "jobs", "");
   if (!jobs.is_array() || jobs.empty() || jobs.size() % 3 != 0)
     throw std::runtime_error(name + ": jobs: expected a non-empty array of 3 jobs per scene, got " +
@@ -351,14 +372,23 @@ bool isDone(const Plan& plan, const RenderJob& job, std::string* why) {
 JobRecord runJob(const Plan& plan, const RenderJob& job) {
   const fs::path cdir = plan.dir / job.scene;
   const fs::path record = plan.dir / job.record();
-  fs::create_directories(cdir);
-  // The record is written last: remove the old one first, so that an
-  // interrupted job never leaves an "ok" beside images it did not write.
-  fs::remove(record);
   JobRecord rec;
   rec.input_hash = job.input_hash;
   const auto t0 = Clock::now();
+  // The case folder must be a real folder (never a link to elsewhere):
+  // otherwise nothing, not even the record, is written into it.
   try {
+    makeRealFolder(plan.dir, cdir);
+  } catch (const std::exception& e) {
+    rec.error = e.what();
+    return rec;
+  }
+  try {
+    // The record is written last: remove the old one first, so that an
+    // interrupted job never leaves an "ok" beside images it did not write.
+    std::error_code ec;
+    if (!fs::remove(record, ec) && ec)
+      throw std::runtime_error(record.string() + ": cannot remove the previous record: " + ec.message());
     Scene scene = loadScene(job.path);
     const std::string now_hash = inputHash(scene, job.path, job.renderer);
     if (now_hash != job.input_hash)
@@ -372,9 +402,12 @@ JobRecord runJob(const Plan& plan, const RenderJob& job) {
       image = renderScene(scene, o);
     } else {
       ExternalRenderInfo info;
-      image = job.renderer == "povray"
-                  ? renderWithPovray(scene, cdir / "povray.work", plan.timeout_seconds, &info)
-                  : renderWithBlender(scene, cdir / "blender.work", plan.timeout_seconds, &info);
+      // A fresh work folder per attempt: nothing planted or left there by
+      // an earlier attempt is read or written through.
+      const fs::path work = cdir / (job.renderer + ".work");
+      makeFreshFolder(work);
+      image = job.renderer == "povray" ? renderWithPovray(scene, work, plan.timeout_seconds, &info)
+                                       : renderWithBlender(scene, work, plan.timeout_seconds, &info);
       rec.render_seconds = info.render_seconds;
     }
     writeImage(image, plan.dir / job.exr());
@@ -394,13 +427,22 @@ JobRecord runJob(const Plan& plan, const RenderJob& job) {
   if (!rec.error.empty()) j["error"] = rec.error;
   j["host"] = hostName();
   j["finished_unix"] = nowUnix();
-  writeAtomically(record, j.dump(2) + "\n");
-  rec.present = true;
+  try {
+    writeAtomically(record, j.dump(2) + "\n");
+    rec.present = true;
+  } catch (const std::exception& e) {
+    // No record: the compare step reports the job as not run.
+    rec.error = (rec.error.empty() ? std::string() : rec.error + "; ") +
+                "the job's record cannot be written: " + e.what();
+  }
   return rec;
 }
 
 int compareAndReport(const Plan& plan) {
   const fs::path& dir = plan.dir;
+  // The old verdict must not outlive this run: whatever stops it from here
+  // on (an error, a kill) leaves no results.json or report.html at all.
+  removeVerdict(plan);
   ToleranceTable table = loadTolerances(plan.tolerances_path);
   bool any_error = false, any_fail = false;
   J jcases = J::array();
@@ -412,6 +454,7 @@ int compareAndReport(const Plan& plan) {
       throw std::runtime_error(j0.path.string() + ": name: \"" + scene.name + "\": the plan (" +
                                planFile(dir).string() + ") says \"" + j0.scene + "\": plan again");
     setting_files.push_back(j0.path);
+    makeRealFolder(dir, dir / j0.scene);  // the diff images go there: never through a link
     J jc;
     jc["scene"] = j0.scene;
     jc["file"] = j0.file;

@@ -28,6 +28,8 @@
 #include <string>
 #include <vector>
 
+#include "files/output_folder.h"
+
 namespace xval::validation {
 
 // The renderers every scene goes through, in job order.
@@ -58,6 +60,17 @@ struct Plan {
 // The plan's file in an output folder.
 std::filesystem::path planFile(const std::filesystem::path& dir);
 
+// What xval validate writes or reads at the top of its output folder; a
+// scene may not be named like one of them (nor like their temporary
+// "<name>.partial-..." folders), since its case folder sits beside them.
+inline constexpr const char* kOwnFiles[] = {
+    "jobs.json",  "results.json", "report.html", "p999.dat",  "p999.gp", "p999.png",
+    "p999.log",   "heat_scale.png", "version.log", kLockFileName, "extremes", "tradeoff"};
+
+// Removes the output folder's results.json and report.html (a new run, or a
+// new compare step, starts with no verdict; the new ones are written last).
+void removeVerdict(const Plan& plan);
+
 // Scene files from files and folders (a folder: its *.json, sorted), loaded
 // and checked (scene names unique and usable as folder names), three jobs
 // each. Throws std::runtime_error / SceneError naming the file and field.
@@ -79,9 +92,10 @@ JobRecord readRecord(const Plan& plan, const RenderJob& job);
 // True when the job need not run again; otherwise `why` says what is missing.
 bool isDone(const Plan& plan, const RenderJob& job, std::string* why = nullptr);
 
-// Renders the job and writes its EXR, PNG and record. A failed render is
-// not thrown: its error is in the returned (and written) record. Throws
-// only when the record itself cannot be written.
+// Renders the job and writes its EXR, PNG and record. Never throws: a
+// failed render is in the returned (and written) record's error; when the
+// record itself cannot be written, the returned record is not `present`
+// and its error says why.
 JobRecord runJob(const Plan& plan, const RenderJob& job);
 
 // Compares every pair of every scene from the EXRs and records, writes

@@ -1,7 +1,7 @@
 # A misbehaving POV-Ray or Blender (a stand-in executable on PATH) makes
 # the case an error quoting the tool's log, never a pass.
 # Arguments: XVAL, SCENE, WORK, TOOL (povray or blender), FAULT (missing,
-# crash, error, no_image or hang), CMD (render: `xval render --renderer
+# crash, error, no_image, hang, nan, inf or huge_line), CMD (render: `xval render --renderer
 # TOOL`, must exit 1 and write no image; validate: `xval validate`, must
 # exit 2 with the error recorded for TOOL in results.json).
 foreach(_v XVAL SCENE WORK TOOL FAULT CMD)
@@ -27,6 +27,26 @@ elseif(FAULT STREQUAL "no_image")
 elseif(FAULT STREQUAL "hang")
   set(_body "echo '${_marker}'\nexec /bin/sleep 120")
   set(_expect "timed out after 2 s and was killed")
+elseif(FAULT STREQUAL "nan" OR FAULT STREQUAL "inf")
+  # An image of the right size whose every colour is NaN (or +Inf), at the
+  # path the real tool would write: POV-Ray's from scene.ini (an EXR under
+  # the .png name: OpenImageIO reads it by its content), Blender's from
+  # --out. Saturating would turn it into a black (or white) image.
+  find_program(_oiiotool oiiotool REQUIRED)
+  set(_make "'${_oiiotool}' --pattern constant:color=${FAULT},${FAULT},${FAULT},1 16x16 4 -d float -o \"$out.exr\" && /bin/mv \"$out.exr\" \"$out\"")
+  if(TOOL STREQUAL "povray")
+    set(_find "out=$(/bin/sed -n 's/^Output_File_Name=//p' scene.ini)")
+  else()
+    set(_find "while [ $# -gt 0 ]; do if [ \"$1\" = --out ]; then out=$2; fi; shift; done")
+  endif()
+  set(_body "echo '${_marker}'\n${_find}\n${_make}\nexit 0")
+  set(_expect "${TOOL} wrote an image with non-finite values (NaN or infinity) in 256 of 256 pixels, the first at x=0, y=0")
+  set(_marker "")  # it exited 0: no log is quoted
+elseif(FAULT STREQUAL "huge_line")
+  # One 16 MiB line (no newline) before failing: the quoted tail is capped.
+  set(_body "echo '${_marker}'\n/usr/bin/head -c 16777216 /dev/zero | /usr/bin/tr '\\000' x\nexit 3")
+  set(_expect "cut: only the last 4096 bytes of the log are quoted")
+  set(_marker "")
 elseif(FAULT STREQUAL "missing")
   set(_expect "'${TOOL}' not found on PATH")
   set(_marker "")
@@ -98,6 +118,18 @@ function(require_in text what)
     endif()
   endforeach()
 endfunction()
+
+# Nothing quotes a tool's log without bound (huge_line: 16 MiB of it).
+string(LENGTH "${err}" _err_bytes)
+if(_err_bytes GREATER 65536)
+  message(FATAL_ERROR "stderr holds ${_err_bytes} bytes: the log tail is not capped")
+endif()
+if(EXISTS ${WORK}/out/results.json)
+  file(SIZE ${WORK}/out/results.json _results_bytes)
+  if(_results_bytes GREATER 65536)
+    message(FATAL_ERROR "results.json holds ${_results_bytes} bytes: the log tail is not capped")
+  endif()
+endif()
 
 if(CMD STREQUAL "render")
   require_in("${err}" "stderr" "${TOOL}" "${_expect}" "${_marker}")

@@ -118,6 +118,10 @@ TEST(Robustness, SceneNamesThatAreNotOneFolderAreRefused) {
     EXPECT_HAS(m, "d/s.json: name: expected a name");
   }
   EXPECT_HAS(errorOf(with("\"name\": \"t\"", "\"name\": \"a\\u0000b\"")), "without '/' or NUL");
+  // Characters a tool misreads in a path: Blender's separator, OpenImageIO's options.
+  for (const char* bad : {"a\\\\..\\\\..\\\\up", "what?", "x?config=1"})
+    EXPECT_HAS(errorOf(with("\"name\": \"t\"", "\"name\": \"" + std::string(bad) + "\"")),
+               "name: expected a name without '\\' or '?'") << bad;
   // A file name that is not UTF-8 (the name defaults to the file's stem).
   EXPECT_HAS(errorOf(with("\"name\": \"t\",", ""), "d/\xff\xfe.json"), "name: expected UTF-8 text");
   EXPECT_HAS(errorOf(with("\"name\": \"t\"", "\"name\": \"" + std::string(201, 'n') + "\"")),

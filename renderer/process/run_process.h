@@ -1,0 +1,60 @@
+// Running an external tool (POV-Ray, Blender) with a time-out.
+//
+// The tool runs with its own working directory, no shell (argv is passed
+// as is, so nothing in it is interpreted), stdin from /dev/null, stdout and
+// stderr into a log file (opened with O_NOFOLLOW: never through a planted
+// link). It runs in a process group of its own, killed whole when the
+// time-out expires, and, once main() has called installInterruptHandler(),
+// when xval is interrupted.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace xval {
+
+struct ProcessResult {
+  bool started = false;    // false: the executable was not found / not runnable
+  bool timed_out = false;
+  int exit_code = -1;      // valid when it exited normally
+  int signal = 0;          // non-zero when killed by a signal
+  double seconds = 0.0;    // wall time
+  std::filesystem::path log;
+  std::string error;       // why it could not start
+
+  bool ok() const { return started && !timed_out && signal == 0 && exit_code == 0; }
+  // One line saying what happened ("exit code 3", "timed out after 300 s", ...).
+  std::string describe() const;
+};
+
+ProcessResult runProcess(const std::vector<std::string>& argv, const std::filesystem::path& cwd,
+                         const std::filesystem::path& log, double timeout_seconds);
+
+// SIGINT, SIGTERM and SIGHUP (unless SIGHUP was ignored, as under nohup)
+// are taken by a thread of their own: on the first one, every process
+// group runProcess started and has not reaped is killed (SIGKILL), and
+// xval then dies of the same signal. Call once, from main(), before any
+// other thread starts (the signals are blocked in every thread). A
+// process is registered under the same lock as the kill, taken across
+// posix_spawn, so none is missed and none starts after an interrupt.
+void installInterruptHandler();
+
+// The quoted tail of a log is capped (a tool printing one 100 MiB line
+// must not copy it into every record and report).
+inline constexpr int kLogTailLines = 20;
+inline constexpr size_t kLogTailBytes = 4096;
+
+// The last `lines` lines of a text file, at most kLogTailBytes of it (the
+// end of an over-long line, marked as cut), each prefixed "  | ".
+std::string tailOfFile(const std::filesystem::path& file, int lines = kLogTailLines);
+
+// A name no earlier attempt used (16 hex digits): the harnesses name a
+// tool's output with it, so an image left or still being written by the
+// tool of an earlier, interrupted attempt is never taken for this one's.
+std::string attemptToken();
+
+// Full path of an executable found on PATH, or empty.
+std::filesystem::path findOnPath(const std::string& name);
+
+}  // namespace xval
