@@ -1,5 +1,7 @@
 #include "scene/scene_loader.h"
 
+#include "scene/precision_limits.h"
+
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
@@ -337,6 +339,8 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file) {
   if (auto rs = r.object("render")) s.render = readRender(*rs);
   s.tolerances = readTolerances(r);
   r.finish();
+  // Numbers its own precision cannot compute with (scene/precision_limits.h).
+  checkPrecision(s, s.render.precision);
   return s;
 }
 

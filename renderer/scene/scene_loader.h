@@ -30,6 +30,10 @@ inline constexpr long long kMaxSceneFileBytes = 64ll * 1024 * 1024;
 // loaded (and again when the image is read), before any pixel is allocated.
 inline constexpr int kMaxTextureSide = 16384;
 inline constexpr long long kMaxTexturePixels = 16ll * 1024 * 1024;
+// A texel value (code / (2^bits - 1) for integer images, as stored for
+// floating-point ones) must be finite and at most this in magnitude
+// (checked when the pixels are read; scene/precision_limits.h counts on it).
+inline constexpr double kMaxTexelValue = 1e6;
 // Scene names become folder names (`xval validate` writes DIR/NAME/): at
 // most this many bytes, no '/', no NUL, not "." or "..".
 inline constexpr size_t kMaxSceneNameBytes = 200;

@@ -1,6 +1,7 @@
 // Texture image I/O through OpenImageIO.
 #include <OpenImageIO/imageio.h>
 
+#include <cmath>
 #include <stdexcept>
 
 #include "scene/scene_loader.h"
@@ -42,6 +43,12 @@ Texture loadTextureImage(const std::filesystem::path& file) {
   // the stored-value convention the models use.
   if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, px.data()))
     throw std::runtime_error(file.string() + ": cannot decode texture image: " + in->geterror());
+  for (size_t i = 0; i < px.size(); ++i)
+    if (!(std::abs(px[i]) <= kMaxTexelValue))
+      throw std::runtime_error(file.string() + ": texel (" + std::to_string(i / nc % t.width) + ", " +
+                               std::to_string(i / nc / t.width) + ") has the value " + std::to_string(px[i]) +
+                               "; expected a finite value of magnitude at most " +
+                               std::to_string(kMaxTexelValue));
   std::vector<unsigned char> px8;
   if (is8) {
     px8.resize(px.size());
