@@ -29,7 +29,7 @@ Camera readCamera(JsonReader r) {
   c.position = r.requireVec3("position");
   c.target = r.requireVec3("target");
   c.up = r.vec3("up", c.up);
-  c.fov_y_deg = r.number("fov_y_deg", c.fov_y_deg, Range::open(0.0, 180.0));
+  c.fov_y_deg = r.number("fov_y_deg", c.fov_y_deg, Range{kMinFovDeg, 180.0, false, true});
   c.width = r.integer("width", c.width, 1, kMaxImageSide);
   c.height = r.integer("height", c.height, 1, kMaxImageSide);
   r.finish();

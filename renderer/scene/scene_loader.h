@@ -23,6 +23,10 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file);
 inline constexpr int kMaxImageSide = 16384;
 inline constexpr long long kMaxImagePixels = 64ll * 1024 * 1024;
 inline constexpr int kMaxSpp = 256;
+// The narrowest field of view: the float path's raster projects a scene
+// of size 1 to 1 / tan(fov / 2) pixels, and its edge functions multiply two
+// of those (1e-300 degrees: 1e302 px, whose products overflow).
+inline constexpr double kMinFovDeg = 1e-6;
 inline constexpr long long kMaxMeshVertices = 16ll * 1024 * 1024;
 // A scene file larger than this is refused before it is read.
 inline constexpr long long kMaxSceneFileBytes = 64ll * 1024 * 1024;
