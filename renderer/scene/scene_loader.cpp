@@ -344,20 +344,25 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file) {
   return s;
 }
 
-Scene loadScene(const std::filesystem::path& file) {
+std::string readJsonFile(const std::filesystem::path& file, const std::string& what) {
   std::error_code ec;
+  // Not a FIFO, device or folder: opening one blocks or reads without end.
   if (!std::filesystem::is_regular_file(file, ec))
-    throw SceneError(file.string() + ": scene file does not exist or is not a regular file");
+    throw SceneError(file.string() + ": " + what + " does not exist or is not a regular file");
   const auto bytes = std::filesystem::file_size(file, ec);
   if (!ec && bytes > std::uintmax_t(kMaxSceneFileBytes))
-    throw SceneError(file.string() + ": (top level): the scene file is " + std::to_string(bytes) +
+    throw SceneError(file.string() + ": (top level): the " + what + " is " + std::to_string(bytes) +
                      " bytes; the limit is " + std::to_string(kMaxSceneFileBytes));
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw SceneError(file.string() + ": cannot open scene file for reading");
+  if (!in) throw SceneError(file.string() + ": cannot open " + what + " for reading");
   std::ostringstream ss;
   ss << in.rdbuf();
-  if (in.bad()) throw SceneError(file.string() + ": error while reading the scene file");
-  return parseScene(ss.str(), file);
+  if (in.bad()) throw SceneError(file.string() + ": error while reading the " + what);
+  return ss.str();
+}
+
+Scene loadScene(const std::filesystem::path& file) {
+  return parseScene(readJsonFile(file, "scene file"), file);
 }
 
 const char* toString(ShadingMode m) {

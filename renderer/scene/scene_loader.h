@@ -14,6 +14,12 @@ namespace xval {
 // scene file's folder; the texture file must exist and be readable.
 Scene loadScene(const std::filesystem::path& file);
 
+// The text of a JSON file xval reads (scene, spec, tolerance file, validate's
+// plan and job records): refused, as a SceneError naming the file, unless it
+// is a regular file (not a FIFO or a folder) of at most kMaxSceneFileBytes.
+// `what` names it in messages ("scene file").
+std::string readJsonFile(const std::filesystem::path& file, const std::string& what);
+
 // Same, from text already in memory; `file` is used in messages and to
 // resolve relative paths.
 Scene parseScene(const std::string& text, const std::filesystem::path& file);
