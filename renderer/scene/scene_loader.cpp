@@ -1,5 +1,6 @@
 #include "scene/scene_loader.h"
 
+#include "image/image_header.h"
 #include "scene/precision_limits.h"
 
 #include <OpenImageIO/imageio.h>
@@ -200,18 +201,9 @@ void checkTextureImage(JsonReader& r, const std::filesystem::path& file, const s
                        (why.empty() ? std::string() : ": " + why));
   }
   const OIIO::ImageSpec& spec = in->spec();
-  const std::string size = std::to_string(spec.width) + "x" + std::to_string(spec.height);
-  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
-    r.fail("path", "texture file " + quoted + " has no pixels (" + size + ", " +
-                       std::to_string(spec.nchannels) + " channels)");
-  if (spec.depth != 1)
-    r.fail("path", "texture file " + quoted + " is a volume (depth " + std::to_string(spec.depth) +
-                       "); expected a 2D image");
-  if (spec.width > kMaxTextureSide || spec.height > kMaxTextureSide ||
-      (long long)spec.width * spec.height > kMaxTexturePixels)
-    r.fail("path", "texture file " + quoted + " is " + size + "; the limit is " +
-                       std::to_string(kMaxTextureSide) + " on a side and " +
-                       std::to_string(kMaxTexturePixels) + " texels in all");
+  const std::string problem = imageHeaderProblem({spec.width, spec.height, spec.depth, spec.nchannels},
+                                                 textureLimits());
+  if (!problem.empty()) r.fail("path", "texture file " + quoted + " " + problem);
   in->close();
 }
 
@@ -343,6 +335,8 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file) {
   checkPrecision(s, s.render.precision);
   return s;
 }
+
+ImageLimits textureLimits() { return {kMaxTextureSide, kMaxTexturePixels, "texels"}; }
 
 std::string readJsonFile(const std::filesystem::path& file, const std::string& what) {
   std::error_code ec;

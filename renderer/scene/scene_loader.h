@@ -44,6 +44,9 @@ inline constexpr long long kMaxTexturePixels = 16ll * 1024 * 1024;
 // floating-point ones) must be finite and at most this in magnitude
 // (checked when the pixels are read; scene/precision_limits.h counts on it).
 inline constexpr double kMaxTexelValue = 1e6;
+// The texture limits as image/image_header.h checks them.
+struct ImageLimits;
+ImageLimits textureLimits();
 // Scene names become folder names (`xval validate` writes DIR/NAME/): at
 // most this many bytes, no '/', no NUL, not "." or "..".
 inline constexpr size_t kMaxSceneNameBytes = 200;
