@@ -10,6 +10,7 @@
 #include <fstream>
 #include <memory>
 
+#include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "image/compare.h"
 #include "image/perceptual.h"
@@ -26,6 +27,7 @@ void addCrosscheckCommand(CLI::App& app, std::function<int()>& run) {
   struct Args {
     std::string scene, renderer = "povray", dir, tolerances;
     double timeout = kDefaultToolTimeoutSeconds;
+    BudgetOptions budget;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -45,10 +47,11 @@ void addCrosscheckCommand(CLI::App& app, std::function<int()>& run) {
                   "else the built-in default 2/65535 on 99.9%)");
   cmd->add_option("--timeout", args->timeout, "Seconds before the external renderer is killed")
       ->check(CLI::PositiveNumber);
+  addBudgetOptions(cmd, args->budget);
   cmd->callback([args, &run]() {
     run = [args]() -> int {
       try {
-        Scene scene = loadScene(args->scene);
+        Scene scene = loadScene(args->scene, args->budget.get());
         std::filesystem::path dir(args->dir);
         std::filesystem::create_directories(dir);
         std::filesystem::remove(dir / "metrics.json");

@@ -305,7 +305,7 @@ void checkSceneName(JsonReader& r, const std::string& name) {
 
 }  // namespace
 
-Scene parseScene(const std::string& text, const std::filesystem::path& file) {
+Scene parseScene(const std::string& text, const std::filesystem::path& file, const Budget& budget) {
   const std::string fname = file.string();
   // Syntax errors, duplicate keys, absurd nesting and numbers beyond a
   // double are SceneErrors naming the field (json_reader.h).
@@ -333,6 +333,8 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file) {
   r.finish();
   // Numbers its own precision cannot compute with (scene/precision_limits.h).
   checkPrecision(s, s.render.precision);
+  // Triangles, samples and memory in all (scene/scene_budget.h).
+  checkBudget(s, s.render.spp, budget);
   return s;
 }
 
@@ -355,8 +357,8 @@ std::string readJsonFile(const std::filesystem::path& file, const std::string& w
   return ss.str();
 }
 
-Scene loadScene(const std::filesystem::path& file) {
-  return parseScene(readJsonFile(file, "scene file"), file);
+Scene loadScene(const std::filesystem::path& file, const Budget& budget) {
+  return parseScene(readJsonFile(file, "scene file"), file, budget);
 }
 
 const char* toString(ShadingMode m) {

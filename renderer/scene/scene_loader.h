@@ -3,6 +3,7 @@
 
 #include "scene/json_reader.h"
 #include "scene/scene.h"
+#include "scene/scene_budget.h"
 
 #include <filesystem>
 #include <string>
@@ -12,7 +13,9 @@ namespace xval {
 // Reads and validates a scene file. Throws SceneError naming the file, the
 // field path and the bad value. Relative texture paths resolve against the
 // scene file's folder; the texture file must exist and be readable.
-Scene loadScene(const std::filesystem::path& file);
+// The scene must also fit `budget` at its own render.spp
+// (scene/scene_budget.h); a command that renders it otherwise checks again.
+Scene loadScene(const std::filesystem::path& file, const Budget& budget = Budget{});
 
 // The text of a JSON file xval reads (scene, spec, tolerance file, validate's
 // plan and job records): refused, as a SceneError naming the file, unless it
@@ -22,7 +25,8 @@ std::string readJsonFile(const std::filesystem::path& file, const std::string& w
 
 // Same, from text already in memory; `file` is used in messages and to
 // resolve relative paths.
-Scene parseScene(const std::string& text, const std::filesystem::path& file);
+Scene parseScene(const std::string& text, const std::filesystem::path& file,
+                 const Budget& budget = Budget{});
 
 // Largest accepted image side and pixel count (an "absurd resolution" is an
 // error, not an attempt to allocate it).
