@@ -115,7 +115,9 @@ TEST(PrecisionLimits, EveryNumberAtTheEdgesIsRefusedByNameOrRenderedAlike) {
   for (size_t s = 0; s < bases.size(); ++s) {
     std::vector<std::pair<std::string, json*>> leaves;
     numbers(bases[s], "", leaves);
-    for (auto& [path, leaf] : leaves) {
+    for (auto& entry : leaves) {
+      const std::string path = entry.first;  // a named copy: lambdas below capture it
+      json* leaf = entry.second;
       // Camera, objects and lights are the same in every base scene.
       if (s > 0 && path.rfind("material", 0) != 0 && path != "camera.position[0]") continue;
       const json saved = *leaf;
