@@ -8,6 +8,7 @@
 
 #include "process/run_process.h"
 #include "gltf/gltf_exporter.h"
+#include "image/image_header.h"
 #include "shading/models.h"
 
 namespace xval {
@@ -23,10 +24,15 @@ namespace {
 
 // The diffuse-direct pass of a multilayer EXR (channels "<layer>.DiffDir.R"
 // ...), with alpha from the combined pass.
-Image readDiffDir(const std::filesystem::path& file) {
+Image readDiffDir(const std::filesystem::path& file, int width, int height) {
+  requireRegularImageFile(file);
   auto in = OIIO::ImageInput::open(file.string());
   if (!in) throw ExternalToolError(file.string() + ": cannot open: " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
+  // The header must claim the camera's size before any pixel is allocated.
+  const std::string problem =
+      imageHeaderProblem({spec.width, spec.height, spec.depth, spec.nchannels}, readImageLimits(width, height));
+  if (!problem.empty()) throw ExternalToolError(file.string() + ": the image " + problem);
   const int nc = spec.nchannels;
   std::vector<float> buf(size_t(spec.width) * spec.height * nc);
   if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, buf.data()))
@@ -94,11 +100,12 @@ Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_di
   requireToolOutput("blender", ex.gltf, r, out);
   Image img;
   try {
-    img = mode == BlenderMode::Model ? readImage(out) : readDiffDir(out);
-  } catch (const ExternalToolError&) {
-    throw;
+    const int w = scene.camera.width, h = scene.camera.height;
+    img = mode == BlenderMode::Model ? readImage(out, w, h) : readDiffDir(out, w, h);
+  } catch (const ExternalToolError& e) {
+    throw ExternalToolError(std::string("blender wrote an unusable image: ") + e.what());
   } catch (const std::exception& e) {
-    throw ExternalToolError(std::string("blender wrote an unreadable image: ") + e.what());
+    throw ExternalToolError(std::string("blender wrote an unusable image: ") + e.what());
   }
   requireImageSize("blender", img, scene);
   requireFinite("blender", img);

@@ -41,9 +41,10 @@ Image renderWithPovray(const Scene& scene, const std::filesystem::path& work_dir
   requireToolOutput("povray", ex.pov, r, out);
   Image img;
   try {
-    img = readImage(out);
+    // Its header must claim the camera's size before any pixel is allocated.
+    img = readImage(out, scene.camera.width, scene.camera.height);
   } catch (const std::exception& e) {
-    throw ExternalToolError(std::string("povray wrote an unreadable image: ") + e.what());
+    throw ExternalToolError(std::string("povray wrote an unusable image: ") + e.what());
   }
   requireImageSize("povray", img, scene);
   requireFinite("povray", img);

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "scene/scene_budget.h"
+
 namespace xval::cli {
 
 // Throws unless spp is a perfect square in [1, 256] (an n x n stratified
@@ -49,6 +51,28 @@ inline const CLI::Validator FinitePositive(
       return "";
     },
     "POSITIVE", "FinitePositive");
+// --max-triangles, --max-samples, --max-memory-mb and --allow-large: the
+// total budget of a render (scene/scene_budget.h), checked when the scene
+// is loaded and whenever a command changes its size, spp or tessellation.
+struct BudgetOptions {
+  Budget budget;
+  bool allow_large = false;
+  Budget get() const { return allow_large ? unlimitedBudget() : budget; }
+};
+inline void addBudgetOptions(CLI::App* cmd, BudgetOptions& o) {
+  const Budget d;
+  cmd->add_option("--max-triangles", o.budget.max_triangles,
+                  "Most triangles over all objects (default " + std::to_string(d.max_triangles) + ")")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--max-samples", o.budget.max_samples,
+                  "Most samples, width x height x spp (default " + std::to_string(d.max_samples) + ")")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--max-memory-mb", o.budget.max_memory_mb,
+                  "Most estimated memory of a render, MiB (default " + std::to_string(d.max_memory_mb) + ")")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--allow-large", o.allow_large,
+                "Lift the three limits above (the per-field limits of the scene format remain)");
+}
 
 // Median, min and max of repeated measurements (n = 0: all zero).
 struct Spread {

@@ -66,6 +66,7 @@ void addBenchCommand(CLI::App& app, std::function<int()>& run) {
     std::string scene, renderers = "reference,povray,blender", json, precision = "both";
     int frames = 20, runs = 3, spp = 0, threads = 0;
     double timeout = kDefaultToolTimeoutSeconds;
+    BudgetOptions budget;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -92,9 +93,10 @@ void addBenchCommand(CLI::App& app, std::function<int()>& run) {
                   "both (default)")
       ->check(CLI::IsMember({"float", "double", "both"}));
   cmd->add_option("--json", args->json, "Also write the figures to this JSON file");
+  addBudgetOptions(cmd, args->budget);
   cmd->callback([args, &run]() {
     run = [args]() -> int {
-      Scene scene = loadScene(args->scene);
+      Scene scene = loadScene(args->scene, args->budget.get());
       std::vector<std::string> which;
       {
         std::stringstream ss(args->renderers);
@@ -119,6 +121,7 @@ void addBenchCommand(CLI::App& app, std::function<int()>& run) {
         if (args->spp) {
           requirePerfectSquareSpp(args->spp, "--spp");
           o.spp = args->spp;
+          checkBudget(scene, o.spp, args->budget.get());
         }
         o.threads = args->threads;
         o.diagnostics = false;

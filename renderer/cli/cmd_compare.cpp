@@ -1,9 +1,11 @@
 // xval compare A.exr B.exr [--tolerance-16bit T] [--fraction F] [--diff D.exr] [--json]
 #include <cstdio>
 #include <memory>
+#include <stdexcept>
 
 #include "cli/commands.h"
 #include "image/compare.h"
+#include "image/image_header.h"
 #include "image/perceptual.h"
 
 #include <nlohmann/json.hpp>
@@ -34,9 +36,23 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
   cmd->callback([args, &run]() {
     run = [args]() -> int {
      try {
-      Image a = readImage(args->a), b = readImage(args->b);
+      // Both headers first: sizes that differ, or exceed the limit of images
+      // read back (image/image.h), are refused before any pixel is allocated;
+      // so is a file that is not a regular file (a FIFO would block).
+      const ImageHeader ha = readImageHeader(args->a), hb = readImageHeader(args->b);
+      if (ha.width != hb.width || ha.height != hb.height)
+        throw std::runtime_error("cannot compare " + args->a + " (" + std::to_string(ha.width) + "x" +
+                                 std::to_string(ha.height) + ") with " + args->b + " (" +
+                                 std::to_string(hb.width) + "x" + std::to_string(hb.height) + ")");
+      Image a = readImage(args->a), b = readImage(args->b, a.width, a.height);
       Tolerance t{args->tol16 / 65535.0, args->fraction};
       CompareMetrics m = compareImages(a, b, t);
+      if (a.has_alpha != b.has_alpha)
+        std::fprintf(stderr,
+                     "xval compare: note: %s has no alpha channel (xval writes PNGs as RGB over black), so "
+                     "every one of its pixels counts as covered and the %lld mask disagreements say nothing "
+                     "about coverage; compare the EXRs (xval render -o OUT.exr) for the hit mask\n",
+                     (a.has_alpha ? args->b : args->a).c_str(), m.mask_disagree);
       if (!args->diff.empty()) writeImage(differenceImage(a, b), args->diff);
       PerceptualMetrics pm = perceptualMetrics(a, b);
       if (args->json) {

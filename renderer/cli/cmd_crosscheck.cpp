@@ -29,6 +29,7 @@ void addCrosscheckCommand(CLI::App& app, std::function<int()>& run) {
   struct Args {
     std::string scene, renderer = "povray", dir, tolerances;
     double timeout = kDefaultToolTimeoutSeconds;
+    BudgetOptions budget;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -48,10 +49,11 @@ void addCrosscheckCommand(CLI::App& app, std::function<int()>& run) {
                   "else the built-in default 2/65535 on 99.9%)");
   cmd->add_option("--timeout", args->timeout, "Seconds before the external renderer is killed")
       ->check(Seconds);
+  addBudgetOptions(cmd, args->budget);
   cmd->callback([args, &run]() {
     run = [args]() -> int {
       try {
-        Scene scene = loadScene(args->scene);
+        Scene scene = loadScene(args->scene, args->budget.get());
         std::filesystem::path dir(args->dir);
         std::filesystem::create_directories(dir);
         const FolderLock folder_lock(dir, FolderLock::Mode::Exclusive, "xval crosscheck");

@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "gltf/gltf_exporter.h"
 #include "povray/pov_exporter.h"
@@ -12,6 +13,7 @@ namespace xval::cli {
 void addExportCommand(CLI::App& app, std::function<int()>& run) {
   struct Args {
     std::string format, scene, dir;
+    BudgetOptions budget;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -23,9 +25,10 @@ void addExportCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("format", args->format, "Target format")->required()->check(CLI::IsMember({"pov", "gltf"}));
   cmd->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args->dir, "Output folder (created)")->required();
+  addBudgetOptions(cmd, args->budget);
   cmd->callback([args, &run]() {
     run = [args]() {
-      Scene scene = loadScene(args->scene);
+      Scene scene = loadScene(args->scene, args->budget.get());
       if (args->format == "gltf") {
         GltfExport ex = exportGltf(scene, args->dir);
         std::fprintf(stderr, "xval export: wrote %s\n", ex.gltf.c_str());

@@ -16,6 +16,7 @@ namespace {
 struct RenderArgs {
   std::string scene, output;
   int spp = 0;
+  BudgetOptions budget;
   std::string precision;
   int threads = 0;
   bool quiet = false, no_diagnostics = false, keep_back_faces = false;
@@ -75,13 +76,15 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--timeout", args->timeout,
                   "Seconds before an external renderer is killed and the render fails (default 600)")
       ->check(Seconds);
+  addBudgetOptions(cmd, args->budget);
   cmd->callback([args, &run]() {
     run = [args]() {
-      Scene scene = loadScene(args->scene);
+      Scene scene = loadScene(args->scene, args->budget.get());
       RenderOptions opt = defaultOptions(scene);
       if (args->spp) {
         requirePerfectSquareSpp(args->spp, "--spp");
         opt.spp = args->spp;
+        checkBudget(scene, opt.spp, args->budget.get());
       }
       if (!args->precision.empty())
         opt.precision = args->precision == "float" ? Precision::Float : Precision::Double;

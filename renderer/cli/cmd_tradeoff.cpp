@@ -345,6 +345,7 @@ void addTradeoffCommand(CLI::App& app, std::function<int()>& run) {
     double max_seconds = 3.0, reference_tessellation = 0.0;
     bool quick = false, images = false;
     std::vector<std::string> argv;
+    BudgetOptions budget;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -387,9 +388,10 @@ void addTradeoffCommand(CLI::App& app, std::function<int()>& run) {
                   "Error on the Pareto plot and front: rmse (default), p999, max, or ciede2000 (mean)")
       ->check(CLI::IsMember({"rmse", "p999", "max", "ciede2000"}));
   cmd->add_flag("--images", args->images, "Also write every configuration's image as DIR/images/ID.exr");
+  addBudgetOptions(cmd, args->budget);
   cmd->callback([args, &run]() {
     run = [args]() -> int {
-      Scene scene = loadScene(args->scene);
+      Scene scene = loadScene(args->scene, args->budget.get());
       if (args->width) scene.camera.width = args->width;
       if (args->height) scene.camera.height = args->height;
       SweepSettings settings;
@@ -403,9 +405,9 @@ void addTradeoffCommand(CLI::App& app, std::function<int()>& run) {
       const TradeoffConfig ref_cfg = configs.back();  // "converged"
       // Every configuration is checked by the loader before anything runs.
       std::vector<Scene> applied;
-      for (const auto& c : configs) applied.push_back(applyConfig(scene, c));
+      for (const auto& c : configs) applied.push_back(applyConfig(scene, c, args->budget.get()));
       std::vector<Scene> applied_checks;
-      for (const auto& c : checks) applied_checks.push_back(applyConfig(scene, c));
+      for (const auto& c : checks) applied_checks.push_back(applyConfig(scene, c, args->budget.get()));
 
       const fs::path dir(args->out);
       std::error_code ec;

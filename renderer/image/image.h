@@ -29,6 +29,10 @@ struct Image {
   // albedo: the surface colour C (texture or base colour) at the first
   // sample that hit, 3 floats per pixel (0 where nothing is hit).
   std::vector<float> depth, backfacing, incidence, albedo;
+  // False for an image read from a file without an alpha channel (xval's
+  // own PNGs are RGB over black): readImage then sets alpha = 1 everywhere,
+  // so every pixel counts as covered.
+  bool has_alpha = true;
 
   Image() = default;
   Image(int w, int h, bool with_raw)
@@ -55,7 +59,26 @@ void writePreviewPng(const Image& img, const std::filesystem::path& file, int ma
 // left empty, so every image xval writes is read back before it is renamed
 // into place (files/atomic_write.h).
 void requireDecodable(const std::filesystem::path& file, int width, int height);
+// Images read back (from the external renderers, by `xval compare` and
+// `xval validate`): at most the largest image xval renders (kMaxImageSide,
+// kMaxImagePixels: scene/scene_loader.h) and this many channels (xval's EXRs
+// have 13, a Blender multilayer EXR a few dozen); checked on the header
+// before any pixel is allocated (image/image_header.h).
+inline constexpr int kMaxReadImageChannels = 64;
+
+struct ImageHeader;
+struct ImageLimits;
+// The size and channel count a file's header claims (no pixel is read);
+// throws std::runtime_error naming the file if it is not a regular file or
+// not an image.
+ImageHeader readImageHeader(const std::filesystem::path& file);
+ImageLimits readImageLimits(int expect_width = 0, int expect_height = 0);
+
 // Reads R,G,B,A (and raw.* when present) from any file OpenImageIO reads.
-Image readImage(const std::filesystem::path& file);
+// A non-regular file (FIFO, device, folder) is refused before it is opened.
+// The header must be within readImageLimits(); with expect_width > 0 it must
+// also be exactly expect_width x expect_height (an external renderer's
+// image of a scene: a header claiming more costs nothing).
+Image readImage(const std::filesystem::path& file, int expect_width = 0, int expect_height = 0);
 
 }  // namespace xval

@@ -6,6 +6,8 @@
 
 #include "files/atomic_write.h"
 #include "image/image.h"
+#include "image/image_header.h"
+#include "scene/scene_loader.h"
 
 namespace xval {
 
@@ -114,11 +116,30 @@ void writePreviewPng(const Image& img, const std::filesystem::path& file, int ma
   });
 }
 
-Image readImage(const std::filesystem::path& file) {
+ImageHeader readImageHeader(const std::filesystem::path& file) {
+  requireRegularImageFile(file);
+  auto in = OIIO::ImageInput::open(file.string());
+  if (!in) throw std::runtime_error(file.string() + ": cannot open image: " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  return {spec.width, spec.height, spec.depth, spec.nchannels};
+}
+
+ImageLimits readImageLimits(int expect_width, int expect_height) {
+  ImageLimits l{kMaxImageSide, kMaxImagePixels, "pixels", kMaxReadImageChannels};
+  l.expect_width = expect_width, l.expect_height = expect_height;
+  return l;
+}
+
+Image readImage(const std::filesystem::path& file, int expect_width, int expect_height) {
   const std::string name = file.string();
+  requireRegularImageFile(file);
   auto in = OIIO::ImageInput::open(name);
   if (!in) throw std::runtime_error(name + ": cannot open image: " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
+  // The header's size is checked before the pixels are allocated.
+  const std::string problem = imageHeaderProblem({spec.width, spec.height, spec.depth, spec.nchannels},
+                                                 readImageLimits(expect_width, expect_height));
+  if (!problem.empty()) throw std::runtime_error(name + ": the image " + problem);
   const int nc = spec.nchannels;
   std::vector<float> buf(size_t(spec.width) * spec.height * nc);
   if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, buf.data()))
@@ -134,6 +155,7 @@ Image readImage(const std::filesystem::path& file) {
   int raw[3] = {channel("raw.R"), channel("raw.G"), channel("raw.B")};
   bool has_raw = raw[0] >= 0 && raw[1] >= 0 && raw[2] >= 0;
   Image img(spec.width, spec.height, has_raw);
+  img.has_alpha = ch[3] >= 0;
   int zc = channel("Z"), bc = channel("backfacing"), ic = channel("incidence");
   int ac[3] = {channel("albedo.R"), channel("albedo.G"), channel("albedo.B")};
   const bool diag = zc >= 0 && bc >= 0 && ic >= 0 && ac[0] >= 0 && ac[1] >= 0 && ac[2] >= 0;

@@ -1,5 +1,6 @@
 #include "render/raster.h"
 
+#include "render/pixel_index.h"
 #include "render/raster_band.h"
 
 #include <algorithm>
@@ -47,8 +48,8 @@ Rasteriser::Rasteriser(const std::vector<TriangleMesh>& meshes, const CameraRays
       const double y0 = std::min({P[tris[t][0]].y, P[tris[t][1]].y, P[tris[t][2]].y});
       const double y1 = std::max({P[tris[t][0]].y, P[tris[t][1]].y, P[tris[t][2]].y});
       // Samples sit at j + oy, oy in [0, 1): rows floor(y0) - 1 .. floor(y1).
-      const int j0 = std::max(0, int(std::floor(y0)) - 1);
-      const int j1 = std::min(cam.height - 1, int(std::floor(y1)));
+      const int j0 = clampedIndex(std::floor(y0) - 1.0, 0, cam.height);
+      const int j1 = clampedIndex(std::floor(y1), -1, cam.height - 1);
       if (!(j0 <= j1)) continue;  // off screen (or NaN)
       for (int b = j0 / band_rows; b <= j1 / band_rows; ++b)
         bins_[b].push_back((std::uint64_t(m) << 32) | std::uint64_t(t));

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/pixel_index.h"
 #include "render/raster_band.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -35,10 +36,12 @@ void RasterBandImpl(const RasterBand& job) {
     const Rasteriser::Vertex v[3] = {P[tri[0]], P[tri[1]], P[tri[2]]};
     const double minx = std::min({v[0].x, v[1].x, v[2].x}), maxx = std::max({v[0].x, v[1].x, v[2].x});
     const double miny = std::min({v[0].y, v[1].y, v[2].y}), maxy = std::max({v[0].y, v[1].y, v[2].y});
-    const int i0 = std::max(0, int(std::ceil(minx - ox - kSlack)));
-    const int i1 = std::min(W - 1, int(std::floor(maxx - ox + kSlack)));
-    const int j0 = std::max(row0, int(std::ceil(miny - oy - kSlack)));
-    const int j1 = std::min(row1 - 1, int(std::floor(maxy - oy + kSlack)));
+    // Clamped in double (pixel_index.h): a NaN start gives 0 and a NaN end
+    // -1, an empty box.
+    const int i0 = clampedIndex(std::ceil(minx - ox - kSlack), 0, W);
+    const int i1 = clampedIndex(std::floor(maxx - ox + kSlack), -1, W - 1);
+    const int j0 = clampedIndex(std::ceil(miny - oy - kSlack), row0, row1);
+    const int j1 = clampedIndex(std::floor(maxy - oy + kSlack), row0 - 1, row1 - 1);
     if (i0 > i1 || j0 > j1) continue;  // no sample inside the box (or NaN)
     const double area = (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
     if (!(area != 0.0)) continue;  // edge-on (or NaN): no sample sees it

@@ -17,6 +17,7 @@
 #include "geometry/mesh.h"
 #include "render/accel.h"
 #include "render/raster.h"
+#include "scene/precision_limits.h"
 #include "shading/batch_shader.h"
 #include "shading/flat_normals.h"
 #include "shading/shader.h"
@@ -153,6 +154,9 @@ PreparedScene::PreparedScene(const Scene& scene, Precision precision, bool cull_
     : impl_(new Impl) {
   auto t0 = Clock::now();
   Impl& d = *impl_;
+  // Numbers this precision cannot compute with are an error naming the field
+  // (the scene's own precision was checked when it was loaded).
+  checkPrecision(scene, precision);
   d.scene = scene;
   d.precision = precision;
   for (const Shape& s : scene.objects) d.meshes.push_back(tessellate(s));

@@ -88,19 +88,7 @@ void applyPatch(J& scene, const std::string& pointer, const J& value, const std:
 }  // namespace
 
 std::vector<GeneratedScene> generateScenes(const std::filesystem::path& spec_file) {
-  const std::string file = spec_file.string();
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(spec_file, ec))
-    throw SceneError(file + ": generator spec does not exist or is not a regular file");
-  const auto bytes = std::filesystem::file_size(spec_file, ec);
-  if (!ec && bytes > std::uintmax_t(kMaxSceneFileBytes))
-    throw SceneError(file + ": the generator spec is " + std::to_string(bytes) +
-                     " bytes; the limit is " + std::to_string(kMaxSceneFileBytes));
-  std::ifstream in(spec_file, std::ios::binary);
-  if (!in) throw SceneError(file + ": cannot open the generator spec");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return generateScenesFromText(ss.str(), spec_file);
+  return generateScenesFromText(readJsonFile(spec_file, "generator spec"), spec_file);
 }
 
 std::vector<GeneratedScene> generateScenesFromText(const std::string& text,

@@ -1,5 +1,8 @@
 #include "scene/scene_loader.h"
 
+#include "image/image_header.h"
+#include "scene/precision_limits.h"
+
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
@@ -27,7 +30,7 @@ Camera readCamera(JsonReader r) {
   c.position = r.requireVec3("position");
   c.target = r.requireVec3("target");
   c.up = r.vec3("up", c.up);
-  c.fov_y_deg = r.number("fov_y_deg", c.fov_y_deg, Range::open(0.0, 180.0));
+  c.fov_y_deg = r.number("fov_y_deg", c.fov_y_deg, Range{kMinFovDeg, 180.0, false, true});
   c.width = r.integer("width", c.width, 1, kMaxImageSide);
   c.height = r.integer("height", c.height, 1, kMaxImageSide);
   r.finish();
@@ -198,18 +201,9 @@ void checkTextureImage(JsonReader& r, const std::filesystem::path& file, const s
                        (why.empty() ? std::string() : ": " + why));
   }
   const OIIO::ImageSpec& spec = in->spec();
-  const std::string size = std::to_string(spec.width) + "x" + std::to_string(spec.height);
-  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
-    r.fail("path", "texture file " + quoted + " has no pixels (" + size + ", " +
-                       std::to_string(spec.nchannels) + " channels)");
-  if (spec.depth != 1)
-    r.fail("path", "texture file " + quoted + " is a volume (depth " + std::to_string(spec.depth) +
-                       "); expected a 2D image");
-  if (spec.width > kMaxTextureSide || spec.height > kMaxTextureSide ||
-      (long long)spec.width * spec.height > kMaxTexturePixels)
-    r.fail("path", "texture file " + quoted + " is " + size + "; the limit is " +
-                       std::to_string(kMaxTextureSide) + " on a side and " +
-                       std::to_string(kMaxTexturePixels) + " texels in all");
+  const std::string problem = imageHeaderProblem({spec.width, spec.height, spec.depth, spec.nchannels},
+                                                 textureLimits());
+  if (!problem.empty()) r.fail("path", "texture file " + quoted + " " + problem);
   in->close();
 }
 
@@ -319,7 +313,7 @@ std::string sceneNameProblem(const std::string& name) {
   return "";
 }
 
-Scene parseScene(const std::string& text, const std::filesystem::path& file) {
+Scene parseScene(const std::string& text, const std::filesystem::path& file, const Budget& budget) {
   const std::string fname = file.string();
   // Syntax errors, duplicate keys, absurd nesting and numbers beyond a
   // double are SceneErrors naming the field (json_reader.h).
@@ -345,23 +339,34 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file) {
   if (auto rs = r.object("render")) s.render = readRender(*rs);
   s.tolerances = readTolerances(r);
   r.finish();
+  // Numbers its own precision cannot compute with (scene/precision_limits.h).
+  checkPrecision(s, s.render.precision);
+  // Triangles, samples and memory in all (scene/scene_budget.h).
+  checkBudget(s, s.render.spp, budget);
   return s;
 }
 
-Scene loadScene(const std::filesystem::path& file) {
+ImageLimits textureLimits() { return {kMaxTextureSide, kMaxTexturePixels, "texels"}; }
+
+std::string readJsonFile(const std::filesystem::path& file, const std::string& what) {
   std::error_code ec;
+  // Not a FIFO, device or folder: opening one blocks or reads without end.
   if (!std::filesystem::is_regular_file(file, ec))
-    throw SceneError(file.string() + ": scene file does not exist or is not a regular file");
+    throw SceneError(file.string() + ": " + what + " does not exist or is not a regular file");
   const auto bytes = std::filesystem::file_size(file, ec);
   if (!ec && bytes > std::uintmax_t(kMaxSceneFileBytes))
-    throw SceneError(file.string() + ": (top level): the scene file is " + std::to_string(bytes) +
+    throw SceneError(file.string() + ": (top level): the " + what + " is " + std::to_string(bytes) +
                      " bytes; the limit is " + std::to_string(kMaxSceneFileBytes));
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw SceneError(file.string() + ": cannot open scene file for reading");
+  if (!in) throw SceneError(file.string() + ": cannot open " + what + " for reading");
   std::ostringstream ss;
   ss << in.rdbuf();
-  if (in.bad()) throw SceneError(file.string() + ": error while reading the scene file");
-  return parseScene(ss.str(), file);
+  if (in.bad()) throw SceneError(file.string() + ": error while reading the " + what);
+  return ss.str();
+}
+
+Scene loadScene(const std::filesystem::path& file, const Budget& budget) {
+  return parseScene(readJsonFile(file, "scene file"), file, budget);
 }
 
 const char* toString(ShadingMode m) {

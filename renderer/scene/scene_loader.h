@@ -3,6 +3,7 @@
 
 #include "scene/json_reader.h"
 #include "scene/scene.h"
+#include "scene/scene_budget.h"
 
 #include <filesystem>
 #include <string>
@@ -12,17 +13,30 @@ namespace xval {
 // Reads and validates a scene file. Throws SceneError naming the file, the
 // field path and the bad value. Relative texture paths resolve against the
 // scene file's folder; the texture file must exist and be readable.
-Scene loadScene(const std::filesystem::path& file);
+// The scene must also fit `budget` at its own render.spp
+// (scene/scene_budget.h); a command that renders it otherwise checks again.
+Scene loadScene(const std::filesystem::path& file, const Budget& budget = Budget{});
+
+// The text of a JSON file xval reads (scene, spec, tolerance file, validate's
+// plan and job records): refused, as a SceneError naming the file, unless it
+// is a regular file (not a FIFO or a folder) of at most kMaxSceneFileBytes.
+// `what` names it in messages ("scene file").
+std::string readJsonFile(const std::filesystem::path& file, const std::string& what);
 
 // Same, from text already in memory; `file` is used in messages and to
 // resolve relative paths.
-Scene parseScene(const std::string& text, const std::filesystem::path& file);
+Scene parseScene(const std::string& text, const std::filesystem::path& file,
+                 const Budget& budget = Budget{});
 
 // Largest accepted image side and pixel count (an "absurd resolution" is an
 // error, not an attempt to allocate it).
 inline constexpr int kMaxImageSide = 16384;
 inline constexpr long long kMaxImagePixels = 64ll * 1024 * 1024;
 inline constexpr int kMaxSpp = 256;
+// The narrowest field of view: the float path's raster projects a scene
+// of size 1 to 1 / tan(fov / 2) pixels, and its edge functions multiply two
+// of those (1e-300 degrees: 1e302 px, whose products overflow).
+inline constexpr double kMinFovDeg = 1e-6;
 inline constexpr long long kMaxMeshVertices = 16ll * 1024 * 1024;
 // A scene file larger than this is refused before it is read.
 inline constexpr long long kMaxSceneFileBytes = 64ll * 1024 * 1024;
@@ -30,6 +44,13 @@ inline constexpr long long kMaxSceneFileBytes = 64ll * 1024 * 1024;
 // loaded (and again when the image is read), before any pixel is allocated.
 inline constexpr int kMaxTextureSide = 16384;
 inline constexpr long long kMaxTexturePixels = 16ll * 1024 * 1024;
+// A texel value (code / (2^bits - 1) for integer images, as stored for
+// floating-point ones) must be finite and at most this in magnitude
+// (checked when the pixels are read; scene/precision_limits.h counts on it).
+inline constexpr double kMaxTexelValue = 1e6;
+// The texture limits as image/image_header.h checks them.
+struct ImageLimits;
+ImageLimits textureLimits();
 // Scene names become folder names (`xval validate` writes DIR/NAME/): at
 // most this many bytes, no '/', no NUL, not "." or "..".
 inline constexpr size_t kMaxSceneNameBytes = 200;

@@ -73,7 +73,11 @@ HWY_INLINE V3 texel(DF d, const Texture& t, VI at) {
 // Texture::lookup<float>.
 HWY_INLINE V3 lookup(DF d, const Texture& t, TextureFilter f, VF u, VF v) {
   const DI di;
-  const VF fu = u - hn::Floor(u), fv = v - hn::Floor(v);
+  // Texture::lookup's frac, NaN (a non-finite u or v) -> 0.
+  const VF fu0 = u - hn::Floor(u), fv0 = v - hn::Floor(v);
+  const VF zero = hn::Zero(d), one1 = hn::Set(d, 1.0f);
+  const VF fu = hn::IfThenElseZero(hn::And(fu0 >= zero, fu0 <= one1), fu0);
+  const VF fv = hn::IfThenElseZero(hn::And(fv0 >= zero, fv0 <= one1), fv0);
   const VF w = hn::Set(d, float(t.width)), h = hn::Set(d, float(t.height));
   if (f == TextureFilter::Nearest) {
     const VI ix = hn::Min(hn::ConvertTo(di, fu * w), hn::Set(di, t.width - 1));
@@ -86,9 +90,9 @@ HWY_INLINE V3 lookup(DF d, const Texture& t, TextureFilter f, VF u, VF v) {
   const VF wx = x - x0f, wy = y - y0f;
   VI x0 = hn::ConvertTo(di, x0f), y0 = hn::ConvertTo(di, y0f);
   VI x1 = x0 + hn::Set(di, 1), y1 = y0 + hn::Set(di, 1);
-  const VI W = hn::Set(di, t.width), H = hn::Set(di, t.height), zero = hn::Zero(di);
-  x0 = hn::IfThenElse(x0 < zero, x0 + W, x0);
-  y0 = hn::IfThenElse(y0 < zero, y0 + H, y0);
+  const VI W = hn::Set(di, t.width), H = hn::Set(di, t.height), izero = hn::Zero(di);
+  x0 = hn::IfThenElse(x0 < izero, x0 + W, x0);
+  y0 = hn::IfThenElse(y0 < izero, y0 + H, y0);
   x1 = hn::IfThenElse(x1 < W, x1, x1 - W);
   y1 = hn::IfThenElse(y1 < H, y1, y1 - H);
   const VI r0 = y0 * W, r1 = y1 * W;

@@ -56,6 +56,8 @@ struct Texture {
   template <class T>
   glm::vec<3, T> lookup(glm::vec<2, T> uv, TextureFilter f) const {
     T fu = uv.x - std::floor(uv.x), fv = uv.y - std::floor(uv.y);
+    if (!(fu >= T(0) && fu <= T(1))) fu = T(0);  // NaN: a non-finite u
+    if (!(fv >= T(0) && fv <= T(1))) fv = T(0);
     if (f == TextureFilter::Nearest) {
       int ix = std::min(int(fu * width), width - 1);
       int iy = std::min(int(fv * height), height - 1);

@@ -1,10 +1,12 @@
 // Texture image I/O through OpenImageIO.
 #include <OpenImageIO/imageio.h>
 
+#include <cmath>
 #include <stdexcept>
 
 #include "files/atomic_write.h"
 #include "image/image.h"
+#include "image/image_header.h"
 #include "scene/scene_loader.h"
 #include "texture/brick.h"
 #include "texture/texture.h"
@@ -25,17 +27,9 @@ Texture loadTextureImage(const std::filesystem::path& file) {
   const OIIO::ImageSpec& spec = in->spec();
   // The header is checked before anything is allocated (the scene loader
   // checked it too; the file may have changed since).
-  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
-    throw std::runtime_error(file.string() + ": texture image has no pixels");
-  if (spec.depth != 1)
-    throw std::runtime_error(file.string() + ": texture image is a volume (depth " +
-                             std::to_string(spec.depth) + "); expected a 2D image");
-  if (spec.width > kMaxTextureSide || spec.height > kMaxTextureSide ||
-      (long long)spec.width * spec.height > kMaxTexturePixels)
-    throw std::runtime_error(file.string() + ": texture image is " + std::to_string(spec.width) +
-                             "x" + std::to_string(spec.height) + "; the limit is " +
-                             std::to_string(kMaxTextureSide) + " on a side and " +
-                             std::to_string(kMaxTexturePixels) + " texels in all");
+  const std::string problem = imageHeaderProblem({spec.width, spec.height, spec.depth, spec.nchannels},
+                                                 textureLimits());
+  if (!problem.empty()) throw std::runtime_error(file.string() + ": texture image " + problem);
   Texture t;
   t.width = spec.width;
   t.height = spec.height;
@@ -70,6 +64,13 @@ Texture loadTextureImage(const std::filesystem::path& file) {
     read(OIIO::TypeDesc::FLOAT, px.data());
     rgb(px, t.rgb);
   }
+  // Integer codes are finite and at most 1; a float image may hold anything.
+  for (size_t i = 0; i < t.rgb.size(); ++i)
+    if (!(std::abs(t.rgb[i]) <= kMaxTexelValue))
+      throw std::runtime_error(file.string() + ": texel (" + std::to_string(i / 3 % t.width) + ", " +
+                               std::to_string(i / 3 / t.width) + ") has the value " + std::to_string(t.rgb[i]) +
+                               "; expected a finite value of magnitude at most " +
+                               std::to_string(kMaxTexelValue));
   return t;
 }
 

@@ -4,20 +4,14 @@
 #include <sstream>
 
 #include "scene/json_reader.h"
+#include "scene/scene_loader.h"
 
 namespace xval {
 
 ToleranceTable loadTolerances(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw SceneError(file.string() + ": cannot open tolerance file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(ss.str());
-  } catch (const nlohmann::json::exception& e) {
-    throw SceneError(file.string() + ": not valid JSON: " + e.what());
-  }
+  // As a scene file: a duplicated key, deep nesting or a number beyond a
+  // double is an error naming the field.
+  const nlohmann::json doc = parseJsonText(readJsonFile(file, "tolerance file"), file.string());
   ToleranceTable table;
   table.source = file;
   JsonReader r(doc, "", file.string());

@@ -163,7 +163,7 @@ int scaledSegments(int segments, double factor, int minimum) {
   return std::max(minimum, int(v));
 }
 
-Scene applyConfig(const Scene& scene, const TradeoffConfig& c) {
+Scene applyConfig(const Scene& scene, const TradeoffConfig& c, const Budget& budget) {
   Scene s = scene;
   s.render.spp = c.spp;
   s.render.precision = c.precision;
@@ -182,7 +182,7 @@ Scene applyConfig(const Scene& scene, const TradeoffConfig& c) {
   // Validate the result as a scene file would be (mesh limits, ...); the
   // message names the scene, this configuration, the field and the value.
   const std::string label = scene.source_file.string() + " [tradeoff " + c.id + "]";
-  Scene checked = parseScene(sceneToJson(s).dump(), label);
+  Scene checked = parseScene(sceneToJson(s).dump(), label, budget);
   checked.source_file = scene.source_file;
   return checked;
 }

@@ -52,6 +52,7 @@
 
 #include "image/image.h"
 #include "scene/scene.h"
+#include "scene/scene_budget.h"
 
 namespace xval {
 
@@ -92,7 +93,7 @@ int scaledSegments(int segments, double factor, int minimum);
 // The scene with the configuration's knobs applied, validated again by the
 // scene loader (so a factor that makes a mesh too large is an error naming
 // the scene, the field and the value).
-Scene applyConfig(const Scene& scene, const TradeoffConfig& c);
+Scene applyConfig(const Scene& scene, const TradeoffConfig& c, const Budget& budget = Budget{});
 
 // Error of `img` against `reference` over the pixels either image covers
 // (alpha > 0; the colour is premultiplied by coverage, over black, so a

@@ -22,6 +22,7 @@
 #include "image/perceptual.h"
 #include "povray/pov_render.h"
 #include "render/renderer.h"
+#include "scene/json_reader.h"
 #include "scene/scene_loader.h"
 #include "validate/colour_stats.h"
 #include "validate/report.h"
@@ -266,12 +267,9 @@ void writePlan(const Plan& plan) {
 
 Plan readPlan(const fs::path& file) {
   const std::string name = file.string();
-  J j;
-  try {
-    j = J::parse(readBytes(file));
-  } catch (const nlohmann::json::exception& e) {
-    throw std::runtime_error(name + ": not valid JSON: " + e.what());
-  }
+  // As a scene file: a duplicated key, deep nesting or a number beyond a
+  // double is an error naming the field (scene/json_reader.h).
+  const J j = parseOrderedJsonText(readJsonFile(file, "plan"), name);
   Reader rd{name};
   const std::string format = rd.str(j, "format");
   if (format != kPlanFormat)
@@ -333,7 +331,7 @@ JobRecord readRecord(const Plan& plan, const RenderJob& job) {
     return rec;
   }
   try {
-    J j = J::parse(readBytes(file));
+    const J j = parseOrderedJsonText(readJsonFile(file, "job record"), file.string());
     Reader rd{file.string()};
     const std::string format = rd.str(j, "format");
     if (format != kRecordFormat)

@@ -6,7 +6,8 @@
 #   - nothing named in NOT_CREATED exists afterwards.
 # Arguments: XVAL, INPUT (file; or PREPARE=<kind> to make it under WORK),
 # WORK (scratch folder), EXIT, EXPECT (;-list), optional MODE (render,
-# generate or validate; default render), NOT_CREATED (;-list of paths).
+# generate, validate, bench, tradeoff, export or crosscheck; default render),
+# ARGS (|-list of extra arguments), NOT_CREATED (;-list of paths).
 foreach(_v XVAL WORK EXIT EXPECT)
   if(NOT DEFINED ${_v})
     message(FATAL_ERROR "bad_input.cmake: -D${_v}=... is required")
@@ -44,6 +45,14 @@ elseif(PREPARE STREQUAL "texture_is_a_directory")
  \"material\": {\"model\": {\"type\": \"lambert\"},
               \"texture\": {\"source\": \"image\", \"path\": \"texture_dir.png\"}},
  \"lights\": []}\n")
+elseif(PREPARE STREQUAL "many_objects")
+  # 1000 objects, each at the per-mesh maximum (16777216 vertices: 4095 x
+  # 4095 segments), in a 100 KB file: 33 billion triangles in all.
+  set(INPUT ${WORK}/many_objects.json)
+  string(REPEAT "{\"shape\": \"sphere\", \"segments_longitude\": 4095, \"segments_latitude\": 4095}, " 999 _objs)
+  file(WRITE ${INPUT} "{\"camera\": {\"position\": [0, 0, 4], \"target\": [0, 0, 0], \"width\": 16, \"height\": 16},
+ \"objects\": [${_objs}{\"shape\": \"sphere\"}],
+ \"material\": {\"model\": {\"type\": \"lambert\"}}, \"lights\": []}\n")
 elseif(DEFINED PREPARE)
   message(FATAL_ERROR "bad_input.cmake: unknown PREPARE=${PREPARE}")
 endif()
@@ -52,11 +61,23 @@ if(MODE STREQUAL "render")
   set(_cmd ${XVAL} render ${INPUT} -o ${WORK}/out.exr -q)
 elseif(MODE STREQUAL "generate")
   set(_cmd ${XVAL} generate ${INPUT} -o ${WORK}/out)
+elseif(MODE STREQUAL "bench")
+  set(_cmd ${XVAL} bench ${INPUT} --frames 1 --runs 1 --renderers reference)
+elseif(MODE STREQUAL "tradeoff")
+  set(_cmd ${XVAL} tradeoff ${INPUT} -o ${WORK}/out --quick --frames 1)
+elseif(MODE STREQUAL "export")
+  set(_cmd ${XVAL} export pov ${INPUT} -o ${WORK}/out)
+elseif(MODE STREQUAL "crosscheck")
+  set(_cmd ${XVAL} crosscheck ${INPUT} --renderer povray -o ${WORK}/out --timeout 5)
 elseif(MODE STREQUAL "validate")
   set(_cmd ${XVAL} validate ${INPUT} -o ${WORK}/out --jobs 1 --timeout 5
            --tolerances ${CMAKE_CURRENT_LIST_DIR}/../../reference/tolerances.json)
 else()
   message(FATAL_ERROR "bad_input.cmake: unknown MODE=${MODE}")
+endif()
+if(DEFINED ARGS)
+  string(REPLACE "|" ";" ARGS "${ARGS}")
+  list(APPEND _cmd ${ARGS})
 endif()
 execute_process(COMMAND ${_cmd} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("command: ${_cmd}\nexit: ${rc}\nstderr:\n${err}")

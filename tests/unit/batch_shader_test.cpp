@@ -3,7 +3,9 @@
 // covers; and it declines the cases it does not cover.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 
 #include <hwy/targets.h>
@@ -189,4 +191,44 @@ TEST(BatchShader, TexelDecodesAgree) {
   size_t lit = 0;
   for (float v : out[0]) lit += v > 0.05f && v < 0.95f;
   EXPECT_GT(lit, count);  // the texture shows
+}
+
+// The kernel's texture lookup of a uv that is not finite (or beyond float's
+// integers) is that of uv 0, as Texture::lookup's: every output equals the
+// same mesh's with all uvs 0. Before, the NaN frac became an out-of-range
+// texel index in the gather.
+TEST(BatchShader, NonFiniteUvLooksUpFracZero) {
+  UvSphere sphere;
+  const TriangleMesh mesh = tessellate(sphere);
+  const glm::dvec3 eye(0, 0, 4.2);
+  std::vector<glm::vec3> p, n;
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    p.emplace_back(mesh.positions[i] - eye);
+    n.emplace_back(mesh.normals[i]);
+  }
+  Scene s = sphereScene();
+  s.material.texture = TextureSpec{};
+  s.lights = {PointLight{{2, 2, 3}, glm::dvec3(1.0), {}}, AmbientLight{{0.2, 0.2, 0.2}}};
+  const Texture tex = loadTexture(*s.material.texture);
+  const size_t count = 1000, padded = (count + kBatchPad - 1) / kBatchPad * kBatchPad;
+  const test::RandomHits hits = test::randomHits(mesh.triangles.size(), padded, 11);
+  auto shade = [&](float u, TextureFilter f) {
+    const std::vector<glm::vec2> uv(mesh.positions.size(), glm::vec2(u, u));
+    const BatchMesh bm = batchMesh(p, n, uv, mesh.triangles);
+    auto shading = batchShading(s, &tex, eye);
+    shading->filter = f;
+    std::vector<float> r(padded), g(padded), b(padded);
+    shadeBatch(*shading, bm, count, hits.tri.data(), hits.b1.data(), hits.b2.data(), r.data(), g.data(), b.data());
+    r.insert(r.end(), g.begin(), g.end());
+    r.insert(r.end(), b.begin(), b.end());
+    return r;
+  };
+  const float inf = std::numeric_limits<float>::infinity();
+  for (TextureFilter f : {TextureFilter::Nearest, TextureFilter::Bilinear}) {
+    const std::vector<float> zero = shade(0.0f, f);
+    for (float u : {inf, -inf, std::nanf(""), 3e38f}) {
+      SCOPED_TRACE(u);
+      EXPECT_EQ(0, std::memcmp(shade(u, f).data(), zero.data(), zero.size() * sizeof(float)));
+    }
+  }
 }

@@ -279,3 +279,28 @@ TEST(Renderer, FastPathFallsBackToPacketsWhenGeometryIsBehindTheCamera) {
   EXPECT_GT(covered, 100);
   EXPECT_LE(diff, 2);
 }
+
+// A vertex just in front of the eye projects to ~1e14 px: the raster's
+// bounding boxes are clamped in double before the conversion to int (a
+// double beyond int's range converted to int is undefined behaviour, which
+// UBSan reports in the sanitizer build). The float image still matches the
+// double path's mask.
+TEST(Renderer, RasterClampsVerticesProjectedFarOffScreen) {
+  Scene s = litPlane(ShadingMode::Phong);
+  s.camera.position = {0, 0, 1e-6};  // float32's grid is ~1e-13 there
+  s.camera.target = {0, 0, -1};
+  Plane p;
+  p.center = {0, 0, 1e-6 - 1e-12};  // in front of the eye by 1e-12
+  p.size = {2, 2};
+  Plane back;
+  back.center = {0, 0, -1};
+  s.objects = {p, back};
+  RenderOptions od, of;
+  of.precision = Precision::Float;
+  RenderStats stats;
+  Image a = renderScene(s, od), b = renderScene(s, of, &stats);
+  EXPECT_STREQ(stats.visibility, "rasterised");
+  int diff = 0;
+  for (size_t i = 0; i < a.rgba.size() / 4; ++i) diff += (a.rgba[i * 4 + 3] > 0) != (b.rgba[i * 4 + 3] > 0);
+  EXPECT_LE(diff, 2);
+}

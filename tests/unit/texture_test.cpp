@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "texture/brick.h"
 #include "texture/texture.h"
@@ -85,4 +86,25 @@ TEST(Texture, PackedTexelsAreBitIdenticalAndOnlyWhenExact) {
   r.pack();
   EXPECT_FALSE(r.packed.empty());
   EXPECT_FALSE(r.codes_are_c_over_255);
+}
+
+// A uv that is not finite (a huge uv_repeat overflows float to inf; inf -
+// floor(inf) is NaN) looks up the texel at frac 0, in both filters and
+// precisions, as a uv beyond float's integers (3e38, whose frac is 0) does.
+// Before, NaN reached int(fu * width): a texel index out of the image
+// (`xval render --precision float` crashed with SIGSEGV).
+TEST(Texture, NonFiniteUvLooksUpFracZero) {
+  Texture t = makeBrickTexture();
+  for (TextureFilter f : {TextureFilter::Nearest, TextureFilter::Bilinear}) {
+    const glm::vec3 at0 = t.lookup(glm::vec2(0.0f), f);
+    const glm::dvec3 at0d = t.lookup(glm::dvec2(0.0), f);
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::nanf("");
+    for (float u : {inf, -inf, nan, 3e38f, -3e38f}) {
+      SCOPED_TRACE(u);
+      EXPECT_EQ(t.lookup(glm::vec2(u, 0.0f), f), at0);
+      EXPECT_EQ(t.lookup(glm::vec2(0.0f, u), f), at0);
+      EXPECT_EQ(t.lookup(glm::vec2(u, u), f), at0);
+      EXPECT_EQ(t.lookup(glm::dvec2(double(u), double(u)), f), at0d);
+    }
+  }
 }

@@ -1,0 +1,255 @@
+#include "scene/precision_limits.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <string>
+
+#include "scene/json_reader.h"
+#include "scene/scene_loader.h"
+
+namespace xval {
+
+namespace {
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+// Every number of the scene that a renderer computes with, with its field
+// path as in the scene file and whether it is a coordinate or length of the
+// camera or an object. (Integers are exact in both precisions and bounded
+// by the loader; the tolerances are not rendered.)
+enum class Kind { Coordinate, UvRepeat, Number };
+using Visit = std::function<void(const std::string& path, double value, Kind kind)>;
+
+void vec(const Visit& f, const std::string& path, const glm::dvec3& v, Kind kind) {
+  for (int i = 0; i < 3; ++i) f(path + "[" + std::to_string(i) + "]", v[i], kind);
+}
+void vec(const Visit& f, const std::string& path, const glm::dvec2& v, Kind kind) {
+  for (int i = 0; i < 2; ++i) f(path + "[" + std::to_string(i) + "]", v[i], kind);
+}
+
+void attenuation(const Visit& f, const std::string& at, const Attenuation& a) {
+  f(at + ".attenuation.constant", a.constant, Kind::Number);
+  f(at + ".attenuation.linear", a.linear, Kind::Number);
+  f(at + ".attenuation.quadratic", a.quadratic, Kind::Number);
+}
+
+void forEachNumber(const Scene& s, const Visit& f) {
+  vec(f, "camera.position", s.camera.position, Kind::Coordinate);
+  vec(f, "camera.target", s.camera.target, Kind::Coordinate);
+  vec(f, "camera.up", s.camera.up, Kind::Number);
+  f("camera.fov_y_deg", s.camera.fov_y_deg, Kind::Number);
+  for (size_t k = 0; k < s.objects.size(); ++k) {
+    const std::string at = "objects[" + std::to_string(k) + "]";
+    if (const auto* t = std::get_if<TorusKnot>(&s.objects[k])) {
+      f(at + ".major_radius", t->major_radius, Kind::Coordinate);
+      f(at + ".minor_radius", t->minor_radius, Kind::Coordinate);
+      f(at + ".tube_radius", t->tube_radius, Kind::Coordinate);
+      vec(f, at + ".uv_repeat", t->uv_repeat, Kind::UvRepeat);
+      vec(f, at + ".center", t->center, Kind::Coordinate);
+    } else if (const auto* u = std::get_if<UvSphere>(&s.objects[k])) {
+      vec(f, at + ".center", u->center, Kind::Coordinate);
+      f(at + ".radius", u->radius, Kind::Coordinate);
+      vec(f, at + ".uv_repeat", u->uv_repeat, Kind::UvRepeat);
+    } else if (const auto* p = std::get_if<Plane>(&s.objects[k])) {
+      vec(f, at + ".center", p->center, Kind::Coordinate);
+      vec(f, at + ".normal", p->normal, Kind::Number);
+      vec(f, at + ".size", p->size, Kind::Coordinate);
+      vec(f, at + ".uv_repeat", p->uv_repeat, Kind::UvRepeat);
+    }
+  }
+  const std::string m = "material.model";
+  std::visit(
+      [&](const auto& mm) {
+        using M = std::decay_t<decltype(mm)>;
+        if constexpr (std::is_same_v<M, ClassicPhong>) {
+          f(m + ".ka", mm.ka, Kind::Number), f(m + ".kd", mm.kd, Kind::Number), f(m + ".ks", mm.ks, Kind::Number);
+          f(m + ".shininess", mm.shininess, Kind::Number);
+        } else if constexpr (std::is_same_v<M, YiqLuma>) {
+          f(m + ".kd", mm.kd, Kind::Number), f(m + ".ks", mm.ks, Kind::Number);
+          f(m + ".shininess", mm.shininess, Kind::Number), f(m + ".luma_offset", mm.luma_offset, Kind::Number);
+        } else if constexpr (std::is_same_v<M, Lambert>) {
+          vec(f, m + ".c0", mm.c0, Kind::Number);
+        } else if constexpr (std::is_same_v<M, WrapAround>) {
+          vec(f, m + ".c0", mm.c0, Kind::Number), f(m + ".factor", mm.factor, Kind::Number);
+        } else if constexpr (std::is_same_v<M, Trilight>) {
+          vec(f, m + ".c0", mm.c0, Kind::Number), vec(f, m + ".c1", mm.c1, Kind::Number), vec(f, m + ".c2", mm.c2, Kind::Number);
+        } else {  // hemispherical, bidirectional
+          vec(f, m + ".c0", mm.c0, Kind::Number), vec(f, m + ".c2", mm.c2, Kind::Number);
+        }
+      },
+      s.material.model);
+  if (!s.material.texture) vec(f, "material.base_color", s.material.base_color, Kind::Number);
+  for (size_t k = 0; k < s.lights.size(); ++k) {
+    const std::string at = "lights[" + std::to_string(k) + "]";
+    std::visit(
+        [&](const auto& l) {
+          using L = std::decay_t<decltype(l)>;
+          if constexpr (std::is_same_v<L, PointLight>) {
+            vec(f, at + ".position", l.position, Kind::Number);
+            attenuation(f, at, l.attenuation);
+          } else if constexpr (std::is_same_v<L, DirectionalLight>) {
+            vec(f, at + ".direction", l.direction, Kind::Number);
+          } else if constexpr (std::is_same_v<L, SpotLight>) {
+            vec(f, at + ".position", l.position, Kind::Number);
+            vec(f, at + ".direction", l.direction, Kind::Number);
+            f(at + ".cutoff_deg", l.cutoff_deg, Kind::Number);
+            attenuation(f, at, l.attenuation);
+          }
+          vec(f, at + ".color", l.color, Kind::Number);
+        },
+        s.lights[k]);
+  }
+}
+
+double maxChannel(const glm::dvec3& c) { return std::max({std::abs(c.x), std::abs(c.y), std::abs(c.z)}); }
+
+// One factor of the bound, with the field it comes from.
+struct Factor {
+  double value = 1.0;
+  std::string field;  // empty: the factor is 1 by definition
+};
+
+struct Bound {
+  Factor C, K, F, L;
+  double value() const { return 4.0 * C.value * K.value * F.value * std::max(1.0, L.value); }
+};
+
+Bound shadingFactors(const Scene& s) {
+  Bound b;
+  if (s.material.texture) {
+    if (s.material.texture->source == TextureSpec::Source::Image)
+      b.C = {kMaxTexelValue, "material.texture.path"};
+  } else if (maxChannel(s.material.base_color) > 1.0) {
+    b.C = {maxChannel(s.material.base_color), "material.base_color"};
+  }
+  const std::string m = "material.model";
+  std::visit(
+      [&](const auto& mm) {
+        using M = std::decay_t<decltype(mm)>;
+        auto largest = [&](std::initializer_list<std::pair<const char*, double>> terms, double sum) {
+          const auto* top = terms.begin();
+          for (const auto* t = terms.begin(); t != terms.end(); ++t)
+            if (std::abs(t->second) > std::abs(top->second)) top = t;
+          if (sum > 1.0) b.K = {sum, m + "." + top->first};
+        };
+        if constexpr (std::is_same_v<M, ClassicPhong>) {
+          largest({{"ka", mm.ka}, {"kd", mm.kd}, {"ks", mm.ks}}, mm.ka + mm.kd + mm.ks);
+        } else if constexpr (std::is_same_v<M, YiqLuma>) {
+          largest({{"kd", mm.kd}, {"ks", mm.ks}, {"luma_offset", mm.luma_offset}},
+                  mm.kd + mm.ks + std::abs(mm.luma_offset));
+        } else {  // Forsyth's family
+          glm::dvec3 sum(0.0);
+          const char* top = "c0";
+          double top_v = 0.0;
+          auto add = [&](const char* name, const glm::dvec3& c) {
+            sum += glm::abs(c);
+            if (maxChannel(c) > top_v) top = name, top_v = maxChannel(c);
+          };
+          if constexpr (std::is_same_v<M, Lambert> || std::is_same_v<M, WrapAround>) {
+            add("c0", mm.c0);
+          } else if constexpr (std::is_same_v<M, Trilight>) {
+            add("c0", mm.c0), add("c1", mm.c1), add("c2", mm.c2);
+          } else {
+            add("c0", mm.c0), add("c2", mm.c2);
+          }
+          if (maxChannel(sum) > 1.0) b.F = {maxChannel(sum), m + "." + top};
+        }
+      },
+      s.material.model);
+  double top = -1.0;
+  b.L.value = 0.0;
+  for (size_t k = 0; k < s.lights.size(); ++k) {
+    const std::string at = "lights[" + std::to_string(k) + "]";
+    std::visit(
+        [&](const auto& l) {
+          using Lt = std::decay_t<decltype(l)>;
+          double term = maxChannel(l.color);
+          std::string field = at + ".color";
+          if constexpr (std::is_same_v<Lt, PointLight> || std::is_same_v<Lt, SpotLight>) {
+            if (!l.attenuation.isNone()) {
+              const double att = 1.0 / l.attenuation.constant;
+              if (att > term) field = at + ".attenuation.constant";
+              term *= att;
+            }
+          }
+          b.L.value += term;
+          if (term > top) top = term, b.L.field = field;
+        },
+        s.lights[k]);
+  }
+  return b;
+}
+
+}  // namespace
+
+PrecisionLimits precisionLimits(Precision p) {
+  if (p == Precision::Float) return {1e12, 1e30, 1e-30, 4096.0, 1e36, 512.0};
+  return {1e18, 1e300, 1e-300, 1e300, 1e306, 0x1p38};
+}
+
+double shadingBound(const Scene& scene) { return shadingFactors(scene).value(); }
+
+double specularWeight(const Scene& scene) {
+  double ks = 0.0;
+  if (const auto* c = std::get_if<ClassicPhong>(&scene.material.model)) ks = c->ks;
+  if (const auto* y = std::get_if<YiqLuma>(&scene.material.model)) ks = y->ks;
+  return ks * shadingFactors(scene).L.value;
+}
+
+void checkPrecision(const Scene& scene, Precision p) {
+  const PrecisionLimits lim = precisionLimits(p);
+  const std::string file = scene.source_file.string();
+  const std::string prec = std::string(toString(p)) + " precision";
+  const std::string fix = p == Precision::Float
+                              ? "; render in double precision (--precision double) or change the value"
+                              : "; change the value";
+  forEachNumber(scene, [&](const std::string& path, double v, Kind kind) {
+    const double max = kind == Kind::Coordinate ? lim.max_coordinate
+                       : kind == Kind::UvRepeat ? lim.max_uv_repeat
+                                                : lim.max_number;
+    const char* what = kind == Kind::Coordinate ? "a coordinate or length of the camera or an object"
+                       : kind == Kind::UvRepeat ? "a uv repeat (beyond it the texture coordinates round "
+                                                  "by more than an eighth of a texel)"
+                                                : "this number";
+    if (!(std::abs(v) <= max))
+      throw SceneError(file + ": " + path + ": " + num(v) + " is beyond what " + prec + " computes with: " +
+                       what + " must be at most " + num(max) + " in magnitude" + fix);
+    if (v != 0.0 && !(std::abs(v) >= lim.min_nonzero))
+      throw SceneError(file + ": " + path + ": " + num(v) + " is too small for " + prec +
+                       " (it would round to 0 or lose its digits): a non-zero number must be at least " +
+                       num(lim.min_nonzero) + " in magnitude" + fix + " (0 is allowed)");
+  });
+  const Bound b = shadingFactors(scene);
+  const double B = b.value();
+  if (!(B <= lim.max_shading)) {
+    // The field of the largest factor leads the message.
+    const Factor* lead = &b.L;
+    for (const Factor* f : {&b.C, &b.K, &b.F})
+      if (f->value > lead->value && !f->field.empty()) lead = f;
+    auto part = [](const char* what, const Factor& f) {
+      return std::string(what) + " " + num(f.value) + (f.field.empty() ? "" : " (" + f.field + ")");
+    };
+    throw SceneError(file + ": " + (lead->field.empty() ? "lights" : lead->field) +
+                     ": the shading could reach " + num(B) + " = 4 x " + part("surface colour", b.C) + " x " +
+                     part("model coefficients", b.K) + " x " + part("Forsyth colours", b.F) + " x " +
+                     part("light (colour / attenuation constant, summed)", b.L) + ", beyond " +
+                     num(lim.max_shading) + ", the limit of " + prec + fix);
+  }
+  const double W = specularWeight(scene);
+  const double ks = b.L.value > 0.0 ? W / b.L.value : 0.0;
+  if (!(W <= lim.max_specular_weight))
+    throw SceneError(file + ": " + (ks >= b.L.value || b.L.field.empty() ? "material.model.ks" : b.L.field) +
+                     ": ks x light (colour / attenuation constant, summed) = " + num(ks) + " x " +
+                     num(b.L.value) + " = " + num(W) + " is beyond " + num(lim.max_specular_weight) + ", the most " + prec +
+                     " shades accurately: the specular power is taken as 0 where it is below " +
+                     (p == Precision::Float ? "2^-25" : "2^-54") +
+                     " (models::phongSpecular), an error of up to that times ks x light" + fix);
+}
+
+}  // namespace xval

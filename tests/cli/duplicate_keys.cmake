@@ -1,0 +1,53 @@
+# validate's own files refuse a field given twice, as scene files do
+# (scene/json_reader.h), naming the file and the field: the plan
+# (jobs.json), a job record and the tolerance file.
+# Arguments: XVAL, SCENE (a scene file), TOLERANCES (a valid tolerance
+# file), WORK (scratch folder).
+foreach(_v XVAL SCENE TOLERANCES WORK)
+  if(NOT DEFINED ${_v})
+    message(FATAL_ERROR "duplicate_keys.cmake: -D${_v}=... is required")
+  endif()
+endforeach()
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+
+function(run expect_rc)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message("command: ${ARGN}\nexit: ${rc}\nstderr:\n${err}")
+  if(NOT rc EQUAL expect_rc)
+    message(FATAL_ERROR "exit status ${rc}, expected ${expect_rc}")
+  endif()
+  set(err "${err}" PARENT_SCOPE)
+endfunction()
+function(expect_in text what)
+  string(FIND "${text}" "${what}" _at)
+  if(_at EQUAL -1)
+    message(FATAL_ERROR "does not say \"${what}\"")
+  endif()
+endfunction()
+
+run(0 ${XVAL} validate ${SCENE} -o ${WORK}/out --plan-only --tolerances ${TOLERANCES})
+
+# The plan, with "format" twice.
+file(READ ${WORK}/out/jobs.json _plan)
+string(REPLACE "\"format\":" "\"format\": \"xval-validate-plan/1\",\n  \"format\":" _dup "${_plan}")
+file(MAKE_DIRECTORY ${WORK}/dup_plan)
+file(WRITE ${WORK}/dup_plan/jobs.json "${_dup}")
+run(2 ${XVAL} validate --plan ${WORK}/dup_plan/jobs.json --compare-only)
+expect_in("${err}" "dup_plan/jobs.json: not valid JSON in field format: duplicate field \"format\"")
+
+# The tolerance file, with "fraction" twice.
+file(WRITE ${WORK}/tolerances.json
+  "{\"default\": {\"max_abs_16bit\": 2, \"fraction\": 0.5, \"fraction\": 0.999}}\n")
+run(2 ${XVAL} validate ${SCENE} -o ${WORK}/out2 --plan-only --tolerances ${WORK}/tolerances.json)
+expect_in("${err}" "tolerances.json: not valid JSON in field default.fraction: duplicate field \"fraction\"")
+
+# A job record with "error" twice: the job counts as not done, and the
+# reason names the field.
+get_filename_component(_name ${SCENE} NAME_WE)
+file(WRITE ${WORK}/out/${_name}/reference.job.json
+  "{\"format\": \"xval-validate-job/1\", \"scene\": \"${_name}\", \"renderer\": \"reference\",
+    \"input_hash\": \"0\", \"seconds\": 1, \"error\": \"x\", \"error\": \"\"}\n")
+run(2 ${XVAL} validate --plan ${WORK}/out/jobs.json --compare-only)
+file(READ ${WORK}/out/results.json _results)
+expect_in("${_results}" "reference.job.json: not valid JSON in field error: duplicate field")

@@ -1,0 +1,68 @@
+# Images read back are checked on their header before any pixel is
+# allocated, and only regular files are opened (image/image_header.h):
+#   - `xval compare` with an image whose header claims another size, or
+#     more than the limit, is refused naming both sizes or the limit;
+#   - `xval compare` with a FIFO is refused at once (it blocked forever);
+#   - comparing xval's EXR with its own PNG says the PNG has no alpha;
+#   - a stand-in povray whose PNG claims 4000x4000 for a 16x16 scene: the
+#     render fails saying so (before, 192 MB were allocated first).
+# Arguments: XVAL, SCENE (16x16), CLAIMS (a PNG header claiming 4000x4000),
+# HUGE (one claiming 100000x100000), WORK.
+foreach(_v XVAL SCENE CLAIMS HUGE WORK)
+  if(NOT DEFINED ${_v})
+    message(FATAL_ERROR "image_headers.cmake: -D${_v}=... is required")
+  endif()
+endforeach()
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK}/bin)
+
+function(run expect_rc)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 60)
+  message("command: ${ARGN}\nexit: ${rc}\nstderr:\n${err}")
+  if(NOT rc EQUAL expect_rc)
+    message(FATAL_ERROR "exit status ${rc}, expected ${expect_rc}")
+  endif()
+  foreach(_s "AddressSanitizer" "runtime error:" "terminate called")
+    string(FIND "${err}" "${_s}" _at)
+    if(NOT _at EQUAL -1)
+      message(FATAL_ERROR "stderr shows a crash or sanitizer report (\"${_s}\")")
+    endif()
+  endforeach()
+  set(err "${err}" PARENT_SCOPE)
+endfunction()
+function(expect_in text what)
+  string(FIND "${text}" "${what}" _at)
+  if(_at EQUAL -1)
+    message(FATAL_ERROR "does not say \"${what}\"")
+  endif()
+endfunction()
+
+run(0 ${XVAL} render ${SCENE} -o ${WORK}/t.exr -q)
+run(0 ${XVAL} render ${SCENE} -o ${WORK}/t.png -q)
+
+run(2 ${XVAL} compare ${WORK}/t.exr ${CLAIMS})
+expect_in("${err}" "cannot compare ${WORK}/t.exr (16x16) with ${CLAIMS} (4000x4000)")
+run(2 ${XVAL} compare ${HUGE} ${HUGE})
+expect_in("${err}" "the image is 100000x100000; the limit is 16384 on a side and 67108864 pixels in all")
+
+execute_process(COMMAND mkfifo ${WORK}/fifo RESULT_VARIABLE _rc)
+if(NOT _rc EQUAL 0)
+  message(FATAL_ERROR "mkfifo failed: ${_rc}")
+endif()
+run(2 ${XVAL} compare ${WORK}/t.exr ${WORK}/fifo)
+expect_in("${err}" "fifo: is not a regular file")
+
+run(1 ${XVAL} compare ${WORK}/t.exr ${WORK}/t.png)
+expect_in("${err}" "t.png has no alpha channel")
+
+file(WRITE ${WORK}/bin/povray "#!/bin/sh\ncp '${CLAIMS}' scene.png\n")
+file(CHMOD ${WORK}/bin/povray PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
+execute_process(COMMAND ${CMAKE_COMMAND} -E env PATH=${WORK}/bin:/usr/bin:/bin
+                        ${XVAL} render ${SCENE} -o ${WORK}/pov.exr --renderer povray --timeout 20 -q
+  RESULT_VARIABLE rc ERROR_VARIABLE err TIMEOUT 60)
+message("povray stand-in: exit ${rc}\n${err}")
+if(NOT rc EQUAL 1)
+  message(FATAL_ERROR "exit status ${rc}, expected 1")
+endif()
+expect_in("${err}" "povray wrote an unusable image")
+expect_in("${err}" "the image is 4000x4000; expected 16x16")
