@@ -96,6 +96,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
     long run_job = -1;
     bool resume = false, plan_only = false, compare_only = false;
     double timeout = kDefaultToolTimeoutSeconds;
+    BudgetOptions budget;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -119,6 +120,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
       ->check(CLI::Range(1, 256));
   cmd->add_option("--timeout", args->timeout, "Seconds before an external renderer is killed")
       ->check(Seconds);
+  addBudgetOptions(cmd, args->budget);
   auto* resume = cmd->add_flag(
       "--resume", args->resume,
       "Keep the renders of an earlier run into the same folder whose record says ok, whose "
@@ -144,7 +146,9 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
   run_job->excludes(compare_only);
   plan->excludes(plan_only)->excludes(resume);
   cmd->callback([args, &run, cmd]() {
-    const bool local_options_given = cmd->count("--jobs") + cmd->count("--timeout") > 0;
+    const bool local_options_given = cmd->count("--jobs") + cmd->count("--timeout") + cmd->count("--max-triangles") +
+                                         cmd->count("--max-samples") + cmd->count("--max-memory-mb") +
+                                         cmd->count("--allow-large") > 0;
     run = [args, local_options_given]() -> int {
       try {
         if (!args->plan.empty()) {
@@ -153,7 +157,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
           if (!args->inputs.empty() || !args->dir.empty() || !args->tolerances.empty() ||
               local_options_given)
             throw std::runtime_error("--plan " + args->plan +
-                                     ": scenes, -o, --tolerances and --timeout come from the plan "
+                                     ": scenes, -o, --tolerances, --timeout and the budget options come from the plan "
                                      "(and --jobs is for a plain run); give none of them");
           const v::Plan plan = v::readPlan(args->plan);
           // Jobs of one plan run side by side (a cluster array): they share
@@ -178,7 +182,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
         std::vector<std::string> inputs = args->inputs;
         if (inputs.empty()) inputs.push_back("reference/scenes");
         const std::string tol = args->tolerances.empty() ? "reference/tolerances.json" : args->tolerances;
-        const v::Plan plan = v::makePlan(inputs, tol, args->dir, args->timeout);
+        const v::Plan plan = v::makePlan(inputs, tol, args->dir, args->timeout, args->budget.get());
         std::filesystem::create_directories(plan.dir);
         const FolderLock folder_lock(plan.dir, FolderLock::Mode::Exclusive, "xval validate");
         // A new run: the old verdict must not pass for this run's, even if

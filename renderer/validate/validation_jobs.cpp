@@ -200,7 +200,7 @@ void removeVerdict(const Plan& plan) {
 }
 
 Plan makePlan(const std::vector<std::string>& inputs, const std::string& tolerances,
-              const fs::path& dir, double timeout_seconds) {
+              const fs::path& dir, double timeout_seconds, const Budget& budget) {
   Plan plan;
   plan.dir = fs::absolute(dir).lexically_normal();
   if (!plan.dir.has_filename()) plan.dir = plan.dir.parent_path();  // "out/" -> "out"
@@ -209,9 +209,10 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
   plan.tolerances_path = fs::absolute(tolerances).lexically_normal();
   loadTolerances(plan.tolerances_path);  // fail early on a bad tolerance file
   plan.timeout_seconds = timeout_seconds;
+  plan.budget = budget;
   std::map<std::string, std::string> seen;  // scene name -> file
   for (const auto& f : collectScenes(inputs)) {
-    Scene scene = loadScene(f);
+    Scene scene = loadScene(f, plan.budget);
     checkSceneName(scene.name, f.string());
     // Its case folder, if it exists already, is a real folder (not a link
     // planted or left there): refused before anything renders.
@@ -250,6 +251,9 @@ void writePlan(const Plan& plan) {
   j["tolerances"] = plan.tolerances;
   j["tolerances_path"] = plan.tolerances_path.string();
   j["timeout_seconds"] = plan.timeout_seconds;
+  j["budget"] = {{"max_triangles", plan.budget.max_triangles},
+                 {"max_samples", plan.budget.max_samples},
+                 {"max_memory_mb", plan.budget.max_memory_mb}};
   j["jobs"] = J::array();
   for (const auto& job : plan.jobs)
     j["jobs"].push_back({{"index", job.index},
@@ -284,6 +288,22 @@ Plan readPlan(const fs::path& file) {
   if (!(plan.timeout_seconds > 0) || !std::isfinite(plan.timeout_seconds))
     throw std::runtime_error(name + ": timeout_seconds: " + j["timeout_seconds"].dump() +
                              ": expected a positive, finite number");
+  // The budget every scene of the plan is loaded with (validate's
+  // --max-triangles, --max-samples, --max-memory-mb, --allow-large); a plan
+  // without one uses the defaults.
+  if (j.contains("budget")) {
+    const J& b = j["budget"];
+    if (!b.is_object())
+      throw std::runtime_error(name + ": budget: expected an object, got " + std::string(b.type_name()));
+    for (auto [key, field] : {std::pair{"max_triangles", &plan.budget.max_triangles},
+                              std::pair{"max_samples", &plan.budget.max_samples},
+                              std::pair{"max_memory_mb", &plan.budget.max_memory_mb}}) {
+      const J& v = rd.at(b, key, "budget.");
+      if (!v.is_number_integer() || v.get<long long>() <= 0)
+        throw std::runtime_error(name + ": budget." + key + ": " + v.dump() + ": expected a positive integer");
+      *field = v.get<long long>();
+    }
+  }
   const J& jobs = rd.at(j, "jobs", "");
   if (!jobs.is_array() || jobs.empty() || jobs.size() % 3 != 0)
     throw std::runtime_error(name + ": jobs: expected a non-empty array of 3 jobs per scene, got " +
@@ -387,7 +407,7 @@ JobRecord runJob(const Plan& plan, const RenderJob& job) {
     std::error_code ec;
     if (!fs::remove(record, ec) && ec)
       throw std::runtime_error(record.string() + ": cannot remove the previous record: " + ec.message());
-    Scene scene = loadScene(job.path);
+    Scene scene = loadScene(job.path, plan.budget);
     const std::string now_hash = inputHash(scene, job.path, job.renderer);
     if (now_hash != job.input_hash)
       throw std::runtime_error(job.path.string() + ": changed since the plan was written (input_hash " +
@@ -447,7 +467,7 @@ int compareAndReport(const Plan& plan) {
   std::vector<fs::path> setting_files{plan.tolerances_path};
   for (size_t first = 0; first < plan.jobs.size(); first += 3) {
     const RenderJob& j0 = plan.jobs[first];
-    Scene scene = loadScene(j0.path);
+    Scene scene = loadScene(j0.path, plan.budget);
     if (scene.name != j0.scene)
       throw std::runtime_error(j0.path.string() + ": name: \"" + scene.name + "\": the plan (" +
                                planFile(dir).string() + ") says \"" + j0.scene + "\": plan again");

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "files/output_folder.h"
+#include "scene/scene_budget.h"
 
 namespace xval::validation {
 
@@ -53,6 +54,7 @@ struct Plan {
   std::string tolerances;                 // the tolerance file as given
   std::filesystem::path tolerances_path;  // the same, absolute
   double timeout_seconds = 0.0;           // for the external renderers
+  Budget budget;                          // every scene is loaded with it (planning and every job)
   double created_unix = 0.0;              // when the plan was made (wall_seconds counts from it)
   std::vector<RenderJob> jobs;            // per scene, in scene order: reference, povray, blender
 };
@@ -75,7 +77,8 @@ void removeVerdict(const Plan& plan);
 // and checked (scene names unique and usable as folder names), three jobs
 // each. Throws std::runtime_error / SceneError naming the file and field.
 Plan makePlan(const std::vector<std::string>& inputs, const std::string& tolerances,
-              const std::filesystem::path& dir, double timeout_seconds);
+              const std::filesystem::path& dir, double timeout_seconds,
+              const Budget& budget = Budget{});
 void writePlan(const Plan& plan);  // to planFile(plan.dir), atomically
 // Throws std::runtime_error naming the file, the field and what was expected.
 Plan readPlan(const std::filesystem::path& file);
