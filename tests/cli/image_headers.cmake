@@ -55,7 +55,9 @@ expect_in("${err}" "fifo: is not a regular file")
 run(1 ${XVAL} compare ${WORK}/t.exr ${WORK}/t.png)
 expect_in("${err}" "t.png has no alpha channel")
 
-file(WRITE ${WORK}/bin/povray "#!/bin/sh\ncp '${CLAIMS}' scene.png\n")
+# The stand-in writes where the real POV-Ray would: the Output_File_Name
+# of the scene.ini it is given (a fresh name for every attempt).
+file(WRITE ${WORK}/bin/povray "#!/bin/sh\nout=$(/bin/sed -n 's/^Output_File_Name=//p' scene.ini)\ncp '${CLAIMS}' \"$out\"\n")
 file(CHMOD ${WORK}/bin/povray PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
 execute_process(COMMAND ${CMAKE_COMMAND} -E env PATH=${WORK}/bin:/usr/bin:/bin
                         ${XVAL} render ${SCENE} -o ${WORK}/pov.exr --renderer povray --timeout 20 -q
