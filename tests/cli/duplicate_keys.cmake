@@ -3,28 +3,10 @@
 # (jobs.json), a job record and the tolerance file.
 # Arguments: XVAL, SCENE (a scene file), TOLERANCES (a valid tolerance
 # file), WORK (scratch folder).
-foreach(_v XVAL SCENE TOLERANCES WORK)
-  if(NOT DEFINED ${_v})
-    message(FATAL_ERROR "duplicate_keys.cmake: -D${_v}=... is required")
-  endif()
-endforeach()
+include(${CMAKE_CURRENT_LIST_DIR}/cli_run.cmake)
+require_defined(duplicate_keys.cmake XVAL SCENE TOLERANCES WORK)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
-
-function(run expect_rc)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  message("command: ${ARGN}\nexit: ${rc}\nstderr:\n${err}")
-  if(NOT rc EQUAL expect_rc)
-    message(FATAL_ERROR "exit status ${rc}, expected ${expect_rc}")
-  endif()
-  set(err "${err}" PARENT_SCOPE)
-endfunction()
-function(expect_in text what)
-  string(FIND "${text}" "${what}" _at)
-  if(_at EQUAL -1)
-    message(FATAL_ERROR "does not say \"${what}\"")
-  endif()
-endfunction()
 
 run(0 ${XVAL} validate ${SCENE} -o ${WORK}/out --plan-only --tolerances ${TOLERANCES})
 

@@ -1,0 +1,37 @@
+# Helpers shared by the CLI test scripts run with `cmake -P`.
+#
+# require_defined(SCRIPT VAR...): fails unless every -DVAR=... was given.
+# run(EXPECT_RC COMMAND...): runs COMMAND (at most 60 s), prints it with its
+#   exit status and stderr, fails unless it exits EXPECT_RC or if stderr
+#   shows a crash or a sanitizer report; sets `err` (its stderr) in the
+#   caller.
+# expect_in(TEXT WHAT): fails unless TEXT contains WHAT.
+function(require_defined script)
+  foreach(_v ${ARGN})
+    if(NOT DEFINED ${_v})
+      message(FATAL_ERROR "${script}: -D${_v}=... is required")
+    endif()
+  endforeach()
+endfunction()
+
+function(run expect_rc)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 60)
+  message("command: ${ARGN}\nexit: ${rc}\nstderr:\n${err}")
+  if(NOT rc EQUAL expect_rc)
+    message(FATAL_ERROR "exit status ${rc}, expected ${expect_rc}")
+  endif()
+  foreach(_s "AddressSanitizer" "runtime error:" "terminate called")
+    string(FIND "${err}" "${_s}" _at)
+    if(NOT _at EQUAL -1)
+      message(FATAL_ERROR "stderr shows a crash or sanitizer report (\"${_s}\")")
+    endif()
+  endforeach()
+  set(err "${err}" PARENT_SCOPE)
+endfunction()
+
+function(expect_in text what)
+  string(FIND "${text}" "${what}" _at)
+  if(_at EQUAL -1)
+    message(FATAL_ERROR "does not say \"${what}\"")
+  endif()
+endfunction()
