@@ -7,9 +7,9 @@
 #include <fstream>
 
 #include "process/run_process.h"
+#include "common/supersample.h"
 #include "gltf/gltf_exporter.h"
 #include "image/image_header.h"
-#include "shading/models.h"
 
 namespace xval {
 
@@ -71,10 +71,9 @@ double renderTimeFromLog(const std::filesystem::path& log) {
 
 Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_dir,
                         double timeout_seconds, ExternalRenderInfo* info, BlenderMode mode) {
-  if (scene.render.spp != 1)
-    throw ExportError("render.spp = " + std::to_string(scene.render.spp) +
-                      ": the Blender harness renders one sample through each pixel centre; "
-                      "export at spp 1");
+  // render.spp = n^2: Blender renders n W x n H pixels, one sample through
+  // each centre (common/supersample.h); checked before anything is written.
+  const SubpixelGrid g = subpixelGrid(scene);
   const std::filesystem::path script = blenderScript();
   if (!std::filesystem::is_regular_file(script))
     throw ExternalToolError("Blender script " + script.string() +
@@ -98,26 +97,28 @@ Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_di
       work_dir, log, timeout_seconds);
   if (info) *info = {r.seconds, log, renderTimeFromLog(log)};
   requireToolOutput("blender", ex.gltf, r, out);
-  Image img;
+  Image fine;
   try {
-    const int w = scene.camera.width, h = scene.camera.height;
-    img = mode == BlenderMode::Model ? readImage(out, w, h) : readDiffDir(out, w, h);
-  } catch (const ExternalToolError& e) {
-    throw ExternalToolError(std::string("blender wrote an unusable image: ") + e.what());
+    fine = mode == BlenderMode::Model ? readImage(out, g.width, g.height) : readDiffDir(out, g.width, g.height);
   } catch (const std::exception& e) {
     throw ExternalToolError(std::string("blender wrote an unusable image: ") + e.what());
   }
-  requireImageSize("blender", img, scene);
-  requireFinite("blender", img);
-  if (mode == BlenderMode::Model) {
-    // One sample per pixel: saturating the pixel is the reference
-    // renderer's per-sample saturate. Keep the unsaturated value as raw.
-    img.raw.resize(size_t(img.width) * img.height * 3);
+  requireImageSize("blender", fine, g.width, g.height);
+  requireFinite("blender", fine);
+  // The EXR holds each sample unsaturated: keep it as raw for the box
+  // filter's unsaturated mean.
+  fine.raw.resize(size_t(fine.width) * fine.height * 3);
+  for (size_t i = 0; i < size_t(fine.width) * fine.height; ++i)
+    for (int c = 0; c < 3; ++c) fine.raw[i * 3 + c] = fine.rgba[i * 4 + c];
+  // Model: each sample saturated, as the reference renderer's, then
+  // averaged (boxFilter).
+  Image img = boxFilter(fine, g.n);
+  if (mode == BlenderMode::NativeLambert) {
+    // The diffuse-direct pass is compared unsaturated (a physical
+    // quantity): the unsaturated mean.
     for (size_t i = 0; i < size_t(img.width) * img.height; ++i)
-      for (int c = 0; c < 3; ++c) {
-        img.raw[i * 3 + c] = img.rgba[i * 4 + c];
-        img.rgba[i * 4 + c] = models::saturate(img.rgba[i * 4 + c]);
-      }
+      for (int c = 0; c < 3; ++c) img.rgba[i * 4 + c] = img.raw[i * 3 + c];
+    img.raw.clear();
   }
   return img;
 }

@@ -1,8 +1,11 @@
 // Rendering a scene with Blender 3.4: export glTF, run
 //   blender -b --factory-startup -P exporters/blender/render_gltf.py -- ...
-// with a time-out, and read its float EXR back as an Image (alpha = hit
-// mask; colours saturated per pixel as the reference renderer's per-sample
-// saturate at 1 spp, the unsaturated values kept in raw).
+// with a time-out, and read its float EXR back as an Image. At render.spp =
+// n^2 Blender renders n W x n H pixels, one sample through each centre,
+// and the n x n blocks are box-filtered (common/supersample.h): each
+// sample's colour saturated as the reference renderer's, then averaged;
+// alpha = the fraction of samples that hit; the unsaturated mean kept in
+// raw.
 #pragma once
 
 #include <filesystem>

@@ -24,6 +24,9 @@ V is normalize(eye - P) from the exported camera position (Geometry >
 Incoming is up to 4.3e-6 off, which pow(R.V, 55) turns into ~15/65535).
 The node graph is checked numerically against the reference shader by
 tests/unit/blender_graph (plain python3 with a numeric stand-in for bpy).
+The resolution is the export's `xval_render` scene extras (width, height):
+for render.spp = n^2 the exporter asks for n times the camera's resolution,
+one sample through each pixel centre (the harness box-filters n x n blocks).
 The render settings make Cycles evaluate that exactly once per pixel
 centre: 1 sample, no adaptive sampling, no denoising, 0 bounces, Box filter
 of width 0.01, transparent film (alpha = hit mask), no clamping, Standard
@@ -352,9 +355,11 @@ def build_model_material(nt, k, image):
 # Cycles places its single sample (Box filter of width 0.01) at a constant
 # offset from the pixel centre: +0.000488758 px right and up, the same for
 # every pixel, resolution, seed and sampling pattern (measured by rendering
-# an orthographic plane whose emission is its position). The camera shift
-# below moves it back to the centre (residual < 2e-6 px); without it,
-# sharp texture edges differ by up to ~3000/65535.
+# an orthographic plane whose emission is its position, at 64, 256 and 1024
+# pixels a side: 2^-11 px each time). The camera shift below, in units of
+# the larger side of the image actually rendered (n W x n H when
+# supersampling), moves it back to the centre (residual < 2e-6 px); without
+# it, sharp texture edges differ by up to ~3000/65535.
 SAMPLE_OFFSET_PX = 0.000488758
 
 
@@ -412,7 +417,6 @@ def main():
     scene = bpy.context.scene
     if "xval" not in scene.keys():
         fail("no xval scene description in the glTF scene extras")
-    desc = json.loads(scene["xval"])
     data = GltfData(args.gltf)
     scene.world = None
     cams = [o for o in scene.objects if o.type == "CAMERA"]
@@ -420,7 +424,13 @@ def main():
         fail("expected one camera, found %d" % len(cams))
     scene.camera = cams[0]
     cams[0].data.sensor_fit = "VERTICAL"
-    centre_samples(cams[0], desc["camera"]["width"], desc["camera"]["height"])
+    if "xval_render" not in scene.keys():
+        fail("no xval_render resolution in the glTF scene extras")
+    size = json.loads(scene["xval_render"])
+    width, height = int(size["width"]), int(size["height"])
+    if width < 1 or height < 1:
+        fail("xval_render resolution %dx%d" % (width, height))
+    centre_samples(cams[0], width, height)
 
     meshes = [o for o in scene.objects if o.type == "MESH"]
     if args.mode == "native-lambert":
@@ -441,7 +451,7 @@ def main():
             o.data.materials.clear()
             o.data.materials.append(mat)
         bpy.context.view_layer.use_pass_diffuse_direct = True
-        setup_render(scene, desc["camera"]["width"], desc["camera"]["height"], args.out, True)
+        setup_render(scene, width, height, args.out, True)
         bpy.ops.render.render(write_still=True)
         return
 
@@ -475,7 +485,7 @@ def main():
     for o in meshes:
         o.data.materials.clear()
         o.data.materials.append(mat)
-    setup_render(scene, desc["camera"]["width"], desc["camera"]["height"], args.out, False)
+    setup_render(scene, width, height, args.out, False)
     bpy.ops.render.render(write_still=True)
 
 

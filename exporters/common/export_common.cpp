@@ -47,12 +47,11 @@ void requireFinite(const std::string& tool, const Image& img) {
                           "); a renderer's image must be finite");
 }
 
-void requireImageSize(const std::string& tool, const Image& img, const Scene& scene) {
-  if (img.width != scene.camera.width || img.height != scene.camera.height)
+void requireImageSize(const std::string& tool, const Image& img, int width, int height) {
+  if (img.width != width || img.height != height)
     throw ExternalToolError(tool + " wrote a " + std::to_string(img.width) + "x" +
                             std::to_string(img.height) + " image, expected " +
-                            std::to_string(scene.camera.width) + "x" +
-                            std::to_string(scene.camera.height));
+                            std::to_string(width) + "x" + std::to_string(height));
 }
 
 }  // namespace xval

@@ -51,7 +51,8 @@ void requireToolOutput(const std::string& tool, const std::filesystem::path& inp
 // anything saturates, which would turn NaN into 0 and +Inf into 1.
 void requireFinite(const std::string& tool, const Image& img);
 
-// Throws ExternalToolError unless `img` has the scene camera's size.
-void requireImageSize(const std::string& tool, const Image& img, const Scene& scene);
+// Throws ExternalToolError unless `img` is width x height (the image the
+// tool was asked for: common/supersample.h's grid).
+void requireImageSize(const std::string& tool, const Image& img, int width, int height);
 
 }  // namespace xval

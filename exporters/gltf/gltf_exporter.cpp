@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "camera/camera.h"
+#include "common/supersample.h"
 #include "geometry/float_rounding.h"
 #include "geometry/mesh.h"
 #include "common/export_common.h"
@@ -119,6 +120,9 @@ tinygltf::Value attenuationExtras(const Attenuation& a) {
 }  // namespace
 
 GltfExport exportGltf(const Scene& scene, const std::filesystem::path& dir) {
+  // The resolution Blender renders: n W x n H for render.spp = n^2, one
+  // sample through each pixel centre (common/supersample.h); checked first.
+  const SubpixelGrid grid = subpixelGrid(scene);
   std::filesystem::create_directories(dir);
   GltfExport ex{dir / "scene.gltf", dir};
   tinygltf::Model m;
@@ -251,6 +255,8 @@ GltfExport exportGltf(const Scene& scene, const std::filesystem::path& dir) {
   tinygltf::Value::Object extras;
   extras["xval"] = tinygltf::Value(sceneToJson(scene, textured ? &exported_texture : nullptr).dump());
   extras["xval_shading"] = tinygltf::Value(shadingConstants(scene).dump());
+  extras["xval_render"] = tinygltf::Value(
+      nlohmann::json{{"width", grid.width}, {"height", grid.height}, {"subpixels_per_side", grid.n}}.dump());
   gs.extras = tinygltf::Value(extras);
   gs.name = "xval_scene";
   m.scenes.push_back(gs);

@@ -7,7 +7,10 @@
 //    model evaluated per vertex by the reference shader, unsaturated);
 //  - the texture as PNG with a sampler matching the filter (NEAREST or
 //    LINEAR, REPEAT wrapping);
-//  - the camera (yfov, aspectRatio) on a node looking down its -Z;
+//  - the camera (yfov, aspectRatio) on a node looking down its -Z, and
+//    the resolution to render in the scene's extras, {"xval_render":
+//    "{width, height, subpixels_per_side}"}: n W x n H for render.spp =
+//    n^2 (common/supersample.h; the harness box-filters n x n blocks);
 //  - point, spot and directional lights as KHR_lights_punctual (colour
 //    normalised to max 1 with the maximum as intensity; a spot's hard cone
 //    as outer = cutoff, inner just below it, as the extension requires

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "camera/camera.h"
+#include "common/supersample.h"
 #include "files/atomic_write.h"
 #include "geometry/mesh.h"
 #include "povray/gouraud_image.h"
@@ -72,16 +73,17 @@ void writeMesh(std::ostream& o, const TriangleMesh& m, const Scene& s, bool text
 }  // namespace
 
 PovExport exportPov(const Scene& scene, const std::filesystem::path& dir, const std::string& output_name) {
-  if (scene.render.spp != 1)
-    throw ExportError("render.spp = " + std::to_string(scene.render.spp) +
-                      ": POV-Ray's antialiasing averages unsaturated samples and the reference "
-                      "renderer saturates each sample; export at spp 1");
+  // render.spp = n^2: n x n sub-pixels, one sample through each centre
+  // (common/supersample.h); POV-Ray's own antialiasing stays off, as it
+  // averages unsaturated samples.
+  const SubpixelGrid grid = subpixelGrid(scene);
   std::filesystem::create_directories(dir);
   PovExport ex;
   ex.dir = dir;
   ex.pov = dir / "scene.pov";
   ex.ini = dir / "scene.ini";
   ex.output_name = output_name;
+  ex.grid = grid;
 
   std::vector<TriangleMesh> meshes;
   for (const auto& o : scene.objects) meshes.push_back(tessellate(o));
@@ -142,8 +144,13 @@ PovExport exportPov(const Scene& scene, const std::filesystem::path& dir, const 
     std::ostringstream f;
     f << "; POV-Ray 3.7 options for scene.pov. Run from this folder: povray scene.ini\n"
       << "Input_File_Name=scene.pov\nOutput_File_Name=" << ex.output_name << "\n"
-      << "Width=" << scene.camera.width << "\nHeight=" << scene.camera.height << "\n"
-      << "; one sample per pixel, through the pixel centre\nAntialias=Off\n"
+      << "Width=" << grid.width << "\nHeight=" << grid.height << "\n"
+      << "; one sample through each pixel centre"
+      << (grid.n > 1 ? ": " + std::to_string(grid.n) + " x " + std::to_string(grid.n) +
+                           " sub-pixels of each scene pixel (render.spp = " + std::to_string(scene.render.spp) +
+                           "), box-filtered afterwards"
+                     : std::string())
+      << "\nAntialias=Off\n"
       << "; 16-bit PNG, linear (no transfer function), alpha = hit mask\n"
       << "Output_File_Type=N\nBits_Per_Color=16\nFile_Gamma=1.0\nOutput_Alpha=On\n"
       << "Display=Off\nPause_When_Done=Off\nVerbose=Off\n";
@@ -154,9 +161,15 @@ PovExport exportPov(const Scene& scene, const std::filesystem::path& dir, const 
     f << "Exported by xval from scene: " << commentSafe(scene.name) << "\n\n"
       << "Render with POV-Ray 3.7 from this folder:\n\n    povray scene.ini\n\n"
       << "or, equivalently:\n\n    povray +Iscene.pov +O" << ex.output_name << " +W"
-      << scene.camera.width << " +H" << scene.camera.height
+      << grid.width << " +H" << grid.height
       << " -A +FN16 +UA File_Gamma=1.0 -D\n\n"
       << "The output holds the model's values linearly (round(v * 65535)), alpha = hit mask.\n";
+    if (grid.n > 1)
+      f << "\nThe scene asks for " << scene.render.spp << " samples per pixel (render.spp): the output is\n"
+        << grid.width << "x" << grid.height << ", " << grid.n << " x " << grid.n << " samples for each of the scene's "
+        << scene.camera.width << "x" << scene.camera.height << " pixels,\none through each sub-pixel centre. "
+        << "The scene's image is the mean of each " << grid.n << " x " << grid.n << " block\n"
+        << "(colour and alpha; the PNG already holds each sample clipped to [0, 1]).\n";
     writeFileAtomically(dir / "README.txt", f.str());
   }
   return ex;

@@ -12,6 +12,10 @@
 //    (u, 1 - v: POV-Ray's image_map runs v bottom-up).
 //  - camera: location, direction, right and up set explicitly so that the
 //    primary ray of pixel (i, j) is the reference renderer's.
+//  - render.spp = n^2: scene.ini asks for n W x n H pixels, one sample
+//    through each centre, which are the reference renderer's n x n
+//    sub-pixel samples (common/supersample.h); the harness box-filters
+//    them. POV-Ray's antialiasing stays off (it averages unclipped samples).
 //  - everything but the specular term is an emission pigment built from
 //    blend maps (pigment_tree.h) over
 //      * slope { point_at P } / slope { -dir } with `sine_wave frequency
@@ -39,6 +43,7 @@
 #include <string>
 
 #include "common/export_common.h"
+#include "common/supersample.h"
 #include "scene/scene.h"
 
 namespace xval {
@@ -46,6 +51,7 @@ namespace xval {
 struct PovExport {
   std::filesystem::path pov, ini, dir;
   std::string output_name = "scene.png";  // written by POV-Ray into dir
+  SubpixelGrid grid;                       // the size POV-Ray renders (n W x n H)
 };
 
 // `output_name`: the image POV-Ray is told to write (the render harness

@@ -39,18 +39,22 @@ Image renderWithPovray(const Scene& scene, const std::filesystem::path& work_dir
   ProcessResult r = runProcess({"povray", "scene.ini"}, work_dir, log, timeout_seconds);
   if (info) *info = {r.seconds, log, traceTimeFromLog(log)};
   requireToolOutput("povray", ex.pov, r, out);
-  Image img;
+  const SubpixelGrid& g = ex.grid;
+  Image fine;
   try {
-    // Its header must claim the camera's size before any pixel is allocated.
-    img = readImage(out, scene.camera.width, scene.camera.height);
+    // Its header must claim the requested size before any pixel is allocated.
+    fine = readImage(out, g.width, g.height);
   } catch (const std::exception& e) {
     throw ExternalToolError(std::string("povray wrote an unusable image: ") + e.what());
   }
-  requireImageSize("povray", img, scene);
-  requireFinite("povray", img);
+  requireImageSize("povray", fine, g.width, g.height);
+  requireFinite("povray", fine);
   // Background: alpha 0, colour 0 (as the reference renderer's).
-  for (size_t i = 0; i < img.rgba.size(); i += 4)
-    if (img.rgba[i + 3] == 0.0f) img.rgba[i] = img.rgba[i + 1] = img.rgba[i + 2] = 0.0f;
+  for (size_t i = 0; i < fine.rgba.size(); i += 4)
+    if (fine.rgba[i + 3] == 0.0f) fine.rgba[i] = fine.rgba[i + 1] = fine.rgba[i + 2] = 0.0f;
+  // The PNG holds every sample clipped to [0, 1] (the per-sample saturate);
+  // n x n blocks to pixels.
+  Image img = boxFilter(fine, g.n);
   return img;
 }
 

@@ -1,6 +1,8 @@
 // Rendering a scene with POV-Ray: export, run `povray scene.ini` with a
 // time-out, read the 16-bit PNG back as an Image (linear values, alpha =
 // hit mask), so the comparison never cares which renderer made an image.
+// At render.spp = n^2 POV-Ray renders n W x n H pixels, which are box-
+// filtered to W x H (common/supersample.h).
 #pragma once
 
 #include <filesystem>
