@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <variant>
 
 #include "geometry/torus_knot.h"
@@ -11,7 +12,7 @@ namespace xval {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586476925;
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 // How far rounding to float32 may have moved a vertex (tessellate() rounds
 // every coordinate): 2^-24 of the largest coordinate, per coordinate; this
