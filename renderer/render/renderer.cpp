@@ -322,6 +322,8 @@ struct TileTracer {
   }
 };
 
+// ---- The two paths' units of work: visibility, then accumulation ----------
+
 // Adds every in-image pixel of the tile at (x0, y0) from its samples'
 // hits (TileTracer's layout), in the (sy, sx) order, and stores it.
 template <class T>
