@@ -12,6 +12,7 @@ packages=(
   # libraries
   libopenimageio-dev openimageio-tools libglm-dev nlohmann-json3-dev libcli11-dev
   libtinygltf-dev libembree-dev libhwy-dev libgtest-dev libgmock-dev libbenchmark-dev
+  liblcms2-dev
   # external renderers and what Blender's glTF add-on needs
   povray blender python3-numpy
   # the report: plots, and the headless browser its test opens it in

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <numbers>
 #include <optional>
 
 #include "camera/camera.h"
@@ -200,7 +201,7 @@ GltfExport exportGltf(const Scene& scene, const std::filesystem::path& dir) {
   tinygltf::Camera c;
   c.type = "perspective";
   c.name = "xval_camera";
-  c.perspective.yfov = scene.camera.fov_y_deg * 3.14159265358979323846 / 180.0;
+  c.perspective.yfov = scene.camera.fov_y_deg * std::numbers::pi / 180.0;
   c.perspective.aspectRatio = double(scene.camera.width) / scene.camera.height;
   c.perspective.znear = 1e-6 * std::max(1.0, glm::length(scene.camera.position));
   c.perspective.zfar = 1e9 * std::max(1.0, glm::length(scene.camera.position));
@@ -227,7 +228,7 @@ GltfExport exportGltf(const Scene& scene, const std::filesystem::path& dir) {
       colour = s->color;
       ln.translation = {s->position.x, s->position.y, s->position.z};
       ln.rotation = lookAlong(s->direction);
-      gl.spot.outerConeAngle = s->cutoff_deg * 3.14159265358979323846 / 180.0;
+      gl.spot.outerConeAngle = s->cutoff_deg * std::numbers::pi / 180.0;
       gl.spot.innerConeAngle = gl.spot.outerConeAngle * (1.0 - 1e-6);
       gl.extras = attenuationExtras(s->attenuation);
     } else if (auto* d = std::get_if<DirectionalLight>(&l)) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <numbers>
 
 #include "common/export_common.h"
 #include "povray/sdl.h"
@@ -24,7 +25,6 @@ std::string lightSourceSdl(const LightSource& l) {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // (1 + N.L) / 2 for a light, exactly (docs/povray-export.md).
 Pattern slopePattern(const Light& l) {
@@ -64,7 +64,7 @@ Pattern attPattern(const LightInfo& l) {
 
 // 1 inside the spot's cone (dot(p - p_light, axis) >= cos(cutoff) d), else 0.
 Pattern conePattern(const LightInfo& l) {
-  return cone(l.position, l.axis, std::cos(l.cutoff_deg * kPi / 180.0));
+  return cone(l.position, l.axis, std::cos(l.cutoff_deg * std::numbers::pi / 180.0));
 }
 
 // att (and the cone, when `with_cone`) times node.

@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include <cmath>
+#include <numbers>
 
 #include "scene/scene.h"
 
@@ -29,7 +30,7 @@ struct CameraRays {
         forward(glm::normalize(c.target - c.position)),
         right(glm::normalize(glm::cross(forward, c.up))),
         up(glm::cross(right, forward)),
-        tan_half_fov(std::tan(c.fov_y_deg * 3.14159265358979323846 / 360.0)),
+        tan_half_fov(std::tan(c.fov_y_deg * std::numbers::pi / 360.0)),
         aspect(double(c.width) / c.height),
         width(c.width),
         height(c.height) {}

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <variant>
 
 #include "geometry/torus_knot.h"
@@ -11,7 +12,7 @@ namespace xval {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586476925;
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 // How far rounding to float32 may have moved a vertex (tessellate() rounds
 // every coordinate): 2^-24 of the largest coordinate, per coordinate; this
@@ -76,6 +77,20 @@ bool backFacesNeverFirstHit(const Shape& shape, const TriangleMesh& mesh, glm::d
   const double rounding = roundingScale(mesh);
   const bool outside = std::visit([&](const auto& s) { return eyeOutside(s, eye, rounding); }, shape);
   return outside && windingAgreesWithNormals(mesh, rounding);
+}
+
+bool facesAwayFromEye(glm::dvec3 p0, glm::dvec3 p1, glm::dvec3 p2, glm::dvec3 eye) {
+  const glm::dvec3 g = glm::cross(p1 - p0, p2 - p0), e = eye - p0;
+  return !(glm::dot(g, e) >= -1e-9 * glm::length(g) * glm::length(e));  // condition 3
+}
+
+std::vector<uint32_t> trianglesNotFacingAway(const TriangleMesh& m, glm::dvec3 eye) {
+  std::vector<uint32_t> kept;
+  for (uint32_t t = 0; t < m.triangles.size(); ++t) {
+    const glm::u32vec3& v = m.triangles[t];
+    if (!facesAwayFromEye(m.positions[v[0]], m.positions[v[1]], m.positions[v[2]], eye)) kept.push_back(t);
+  }
+  return kept;
 }
 
 }  // namespace xval

@@ -40,11 +40,37 @@
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
+#include <vector>
+
 #include "geometry/mesh.h"
 #include "scene/scene.h"
 
 namespace xval {
 
 bool backFacesNeverFirstHit(const Shape& shape, const TriangleMesh& mesh, glm::dvec3 eye);
+
+// The ray paths' twin of the rasteriser's back-face test: which triangles
+// of `mesh` the BVH must hold so that every camera ray from `eye` finds
+// the same first hit as with all of them.
+//
+// Why it holds: a ray eye + t d (t > 0) that meets triangle P0 P1 P2 at q
+// has g . (q - P0) = 0 (q is in its plane), so
+//   g . d = g . (q - eye) / t = -g . (eye - P0) / t:
+// the sign of g . d is the same for every ray from the eye. A triangle
+// with g . (eye - P0) < 0 is met by every such ray from behind (g . d > 0),
+// a back face, and when backFacesNeverFirstHit holds a back face is never
+// a first hit: leaving it out changes no first hit. Three conditions:
+//   1. backFacesNeverFirstHit(shape, mesh, eye) holds (the caller checks
+//      it: this function does not know the shape);
+//   2. every ray starts exactly at `eye` (camera rays do; CameraRays::
+//      origin);
+//   3. only triangles clearly facing away are dropped: g . e <
+//      -1e-9 |g| |e| with e = eye - P0; those within 1e-9 (relative) of
+//      edge-on are kept, so the rounding of g . e cannot drop a triangle
+//      that faces the eye, and a zero-area triangle (g = 0) is kept.
+// Returns the indices of the triangles kept, ascending.
+bool facesAwayFromEye(glm::dvec3 p0, glm::dvec3 p1, glm::dvec3 p2, glm::dvec3 eye);
+std::vector<uint32_t> trianglesNotFacingAway(const TriangleMesh& mesh, glm::dvec3 eye);
 
 }  // namespace xval

@@ -1,5 +1,6 @@
 // Sphere and plane tessellation, and the shape dispatch.
 #include <cmath>
+#include <numbers>
 
 #include "geometry/float_rounding.h"
 #include "geometry/mesh.h"
@@ -7,7 +8,6 @@
 namespace xval {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 }
 
 // Latitude j = 0 is the +y pole, longitude i = 0 faces +z. uv = (i/nlon,
@@ -17,11 +17,11 @@ TriangleMesh tessellateSphere(const UvSphere& s) {
   TriangleMesh m;
   auto idx = [nlon](int i, int j) { return uint32_t(j * (nlon + 1) + i); };
   for (int j = 0; j <= nlat; ++j) {
-    double theta = kPi * j / nlat;
+    double theta = std::numbers::pi * j / nlat;
     double st = j == 0 || j == nlat ? 0.0 : std::sin(theta);
     double ct = j == 0 ? 1.0 : j == nlat ? -1.0 : std::cos(theta);
     for (int i = 0; i <= nlon; ++i) {
-      double phi = 2.0 * kPi * (i == nlon ? 0 : i) / nlon;
+      double phi = 2.0 * std::numbers::pi * (i == nlon ? 0 : i) / nlon;
       glm::dvec3 n(st * std::sin(phi), ct, st * std::cos(phi));
       m.normals.push_back(n);
       m.positions.push_back(s.center + s.radius * n);

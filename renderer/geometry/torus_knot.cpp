@@ -2,13 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "geometry/mesh.h"
 
 namespace xval {
 
 namespace {
-constexpr double kTwoPi = 6.283185307179586476925286766559;
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 // One double-reflection step (Wang, Juettler, Zheng, Liu 2008): transports
 // normal n from (x0, t0) to (x1, t1).

@@ -32,15 +32,12 @@ class TorusKnotCurve {
   glm::dvec3 derivative(double t) const;  // dc/dt
   // The closed rotation-minimising frame at t in [0, 2 pi].
   CurveFrame frame(double t) const;
-  // Twist (radians) the transported frame gains over one loop, before the
-  // correction that closes it.
-  double closingTwist() const { return twist_; }
 
  private:
   TorusKnot k_;
   std::vector<glm::dvec3> grid_normals_;  // transported N at grid points
   double step_ = 0.0;
-  double twist_ = 0.0;
+  double twist_ = 0.0;  // radians the transported frame gains over one loop, before the closing correction
 };
 
 }  // namespace xval

@@ -1,21 +1,35 @@
 #include "image/heat_map.h"
 
-#include <glm/glm.hpp>
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace xval {
 
 namespace {
 
-glm::vec3 ramp(double t) {
-  static const glm::vec3 stops[] = {{0, 0, 0}, {0, 0, 1}, {0, 1, 1}, {0, 1, 0},
-                                    {1, 1, 0}, {1, 0, 0}, {1, 1, 1}};
-  t = std::clamp(t, 0.0, 1.0) * 6.0;
-  int i = std::min(5, int(t));
-  float f = float(t - i);
-  return stops[i] * (1.0f - f) + stops[i + 1] * f;
+// The ramp's knots, equally spaced over t in [0, 1]; OpenImageIO's
+// color_map interpolates linearly between neighbours (fmath.h
+// interpolate_linear: k_i (1 - f) + k_{i+1} f, i + f = 6 t, in float).
+constexpr float kRampKnots[] = {0, 0, 0, 0, 0, 1, 0, 1, 1, 0, 1, 0, 1, 1, 0, 1, 0, 0, 1, 1, 1};
+constexpr int kRampKnotCount = 7;
+
+// The ramp's colour at each t of a w x h image (row-major), 3 floats each.
+std::vector<float> ramp(const std::vector<float>& t, int w, int h) {
+  std::vector<float> rgb(t.size() * 3);
+  if (t.empty()) return rgb;
+  const OIIO::ImageBuf src(OIIO::ImageSpec(w, h, 1, OIIO::TypeDesc::FLOAT), const_cast<float*>(t.data()));
+  const OIIO::ImageBuf out = OIIO::ImageBufAlgo::color_map(src, 0, kRampKnotCount, 3, kRampKnots);
+  if (out.has_error() || out.nchannels() != 3 ||
+      !out.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, rgb.data()))
+    throw std::runtime_error("heat map: OpenImageIO color_map failed on a " + std::to_string(w) + "x" +
+                             std::to_string(h) + " image: " + out.geterror());
+  return rgb;
 }
 
 double heatT(double err16) {
@@ -27,29 +41,32 @@ double heatT(double err16) {
 }  // namespace
 
 Image heatMap(const Image& d) {
+  const size_t n = size_t(d.width) * d.height;
+  std::vector<float> t(n, 0.0f);
+  for (size_t i = 0; i < n; ++i)
+    if (d.rgba[i * 4 + 3] > 0)
+      t[i] = float(heatT(std::max({d.rgba[i * 4], d.rgba[i * 4 + 1], d.rgba[i * 4 + 2]}) * 65535.0));
+  const std::vector<float> rgb = ramp(t, d.width, d.height);
   Image h(d.width, d.height, false);
-  for (size_t i = 0; i < size_t(d.width) * d.height; ++i) {
-    glm::vec3 c(0.35f);  // covered by neither render
-    if (d.rgba[i * 4 + 3] > 0) {
-      double e = std::max({d.rgba[i * 4], d.rgba[i * 4 + 1], d.rgba[i * 4 + 2]}) * 65535.0;
-      c = ramp(heatT(e));
-    }
-    for (int k = 0; k < 3; ++k) h.rgba[i * 4 + k] = c[k];
+  for (size_t i = 0; i < n; ++i) {
+    for (int k = 0; k < 3; ++k)  // grey 0.35: covered by neither render
+      h.rgba[i * 4 + k] = d.rgba[i * 4 + 3] > 0 ? rgb[i * 3 + k] : 0.35f;
     h.rgba[i * 4 + 3] = 1.0f;
   }
   return h;
 }
 
 void writeHeatScalePng(const std::filesystem::path& png) {
-  Image s(512, 16, false);
-  for (int x = 0; x < 512; ++x) {
-    glm::vec3 c = ramp(x / 511.0);
-    for (int y = 0; y < 16; ++y) {
-      float* p = s.pixel(x, y);
-      p[0] = c.r, p[1] = c.g, p[2] = c.b, p[3] = 1.0f;
-    }
+  const int W = 512, H = 16;
+  std::vector<float> t(size_t(W) * H);
+  for (size_t i = 0; i < t.size(); ++i) t[i] = float(int(i % W) / double(W - 1));  // left 0, right 1
+  const std::vector<float> rgb = ramp(t, W, H);
+  Image s(W, H, false);
+  for (size_t i = 0; i < t.size(); ++i) {
+    for (int k = 0; k < 3; ++k) s.rgba[i * 4 + k] = rgb[i * 3 + k];
+    s.rgba[i * 4 + 3] = 1.0f;
   }
-  writePreviewPng(s, png, 512);
+  writePreviewPng(s, png, W);
 }
 
 }  // namespace xval

@@ -3,9 +3,10 @@
 // Inputs are colours in the models' stored encoding. For CIELAB they are
 // taken as sRGB-encoded (IEC 61966-2-1; display-referred 8-bit texture
 // values are), decoded to linear sRGB, then XYZ (D65) and CIELAB with the
-// D65 reference white.
+// D65 reference white (the last step by lcms2's cmsXYZ2Lab).
 //   ciede2000: Sharma, Wu, Dalal, "The CIEDE2000 color-difference
-//              formula: implementation notes ..." (2005), kL = kC = kH = 1;
+//              formula: implementation notes ..." (2005), kL = kC = kH = 1,
+//              computed by lcms2 (cmsCIE2000DeltaE);
 //   yiqDelta:  Kotsarenko & Ramos (2010), "Measuring perceived color
 //              difference using YIQ NTSC transmission color space in mobile
 //              applications": sqrt(0.5053 dY^2 + 0.299 dI^2 + 0.1957 dQ^2)

@@ -36,7 +36,7 @@ class Accel {
  public:
   // only: per mesh, the triangles to put in the BVH (nullopt: all of them;
   // the renderer leaves out back faces that cannot be a camera ray's first
-  // hit, render/renderer.cpp). Hits name triangles by their mesh index.
+  // hit, geometry/front_faces.h trianglesNotFacingAway). Hits name triangles by their mesh index.
   Accel(const std::vector<TriangleMesh>& meshes, Precision precision,
         const std::vector<std::optional<std::vector<uint32_t>>>& only = {});
   ~Accel();

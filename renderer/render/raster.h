@@ -59,7 +59,6 @@ class Rasteriser {
              const std::vector<bool>& cull_back = {});
 
   int bands() const { return int(bins_.size()); }
-  int bandRows() const { return band_rows_; }
   size_t culledTriangles() const { return culled_; }
 
   // The first hit of every sample (i + ox, j + oy) of band b's rows (ox, oy

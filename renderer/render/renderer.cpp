@@ -106,6 +106,7 @@ template <class T> struct Shading {
   using V = glm::vec<3, T>;
   Shader<T> shader;
   SurfaceColour<T> colour;
+  ShadingMode mode;
   // Shading coordinates are camera-relative: every position minus the eye,
   // subtracted in double before the rounding to T (shading/shader.h), so
   // the eye is the origin and a float surface point keeps float's relative
@@ -116,11 +117,44 @@ template <class T> struct Shading {
 
   Shading(const Scene& scene, const std::vector<TriangleMesh>& src, const Texture* texture)
       : shader(scene.material, scene.lights, CameraRays(scene.camera).origin),
-        colour(scene.material, texture) {
+        colour(scene.material, texture),
+        mode(scene.shading) {
     const glm::dvec3 eye_world = CameraRays(scene.camera).origin;
     for (const auto& m : src) meshes.push_back(prepareMesh<T>(m, scene.shading, shader, colour, eye_world));
   }
 };
+
+// ---- Accumulation: what a hit contributes to its pixel ----------------------
+
+// The unsaturated colour c of one hit: the model at the hit's point p =
+// sum b_k P_k, normal (Phong: normalize(sum b_k N_k), zero stays zero; flat:
+// the face normal), texture colour at the wrapped uv; Gouraud: sum b_k of
+// the vertex colours. backfacing: the shading normal faces away from the
+// eye, N . (eye - p) < 0 (always false for Gouraud).
+template <class T>
+__attribute__((flatten)) glm::vec<3, T> shadeHit(const Shading<T>& sh, const Hit& h, bool& backfacing) {
+  using V = glm::vec<3, T>;
+  const ShadedMesh<T>& m = sh.meshes[h.mesh];
+  const auto& tri = m.src->triangles[h.triangle];
+  const T b1 = T(h.b1), b2 = T(h.b2), b0 = T(1) - b1 - b2;
+  if (sh.mode == ShadingMode::Gouraud) {
+    backfacing = false;
+    return b0 * m.vertex_colour[tri[0]] + b1 * m.vertex_colour[tri[1]] + b2 * m.vertex_colour[tri[2]];
+  }
+  V p = b0 * m.p[tri[0]] + b1 * m.p[tri[1]] + b2 * m.p[tri[2]];
+  V nrm;
+  if (sh.mode == ShadingMode::Flat) {
+    nrm = m.face_n[h.triangle];
+  } else {
+    nrm = b0 * m.n[tri[0]] + b1 * m.n[tri[1]] + b2 * m.n[tri[2]];
+    T len = glm::length(nrm);
+    nrm = len > T(0) ? nrm / len : V(0);  // zero-length normals stay 0
+  }
+  const glm::vec<2, T> uv = interpolateUv(m.uv, tri, b1, b2);
+  V v = glm::normalize(sh.eye - p);
+  backfacing = glm::dot(nrm, v) < T(0);
+  return sh.shader.shade(p, nrm, v, sh.colour.at(uv));
+}
 
 // One pixel's running sums over its samples.
 template <class T> struct PixelSums {
@@ -128,6 +162,267 @@ template <class T> struct PixelSums {
   int hits = 0, backfacing = 0;
   double nearest = 0.0, incidence = 1.0;
 };
+
+// A pixel's value from its n x n samples, box-filtered:
+//   colour = sum saturate(c) / n^2,  alpha = hits / n^2;
+// with diagnostics also raw = sum c / n^2, depth = the nearest hit's t,
+// backfacing = the fraction of hits whose shading normal faces away,
+// incidence = the smallest |cos| between a ray and its triangle's plane,
+// albedo = the first hit's texture colour (0 where nothing is hit).
+template <class T> struct Accumulation {
+  const Shading<T>& sh;
+  Image& img;
+  bool diag;  // diagnostics asked for and the image has their channels
+  T inv;      // 1 / n^2
+
+  // Adds one sample's hit (dir: its ray direction, read with diagnostics).
+  void add(const Hit& h, const glm::dvec3& dir, PixelSums<T>& px) const {
+    if (px.hits == 0 || h.t < px.nearest) px.nearest = h.t;
+    if (diag) {
+      const ShadedMesh<T>& m = sh.meshes[h.mesh];
+      const auto& tri = m.src->triangles[h.triangle];
+      px.incidence = std::min(px.incidence, geometricIncidence(*m.src, tri, dir));
+      if (px.hits == 0) px.albedo = sh.colour.at(interpolateUv(m.uv, tri, T(h.b1), T(h.b2)));
+    }
+    bool back = false;
+    const glm::vec<3, T> c = shadeHit(sh, h, back);
+    px.backfacing += back;
+    px.final_sum += models::saturate(c);
+    if (diag) px.raw_sum += c;
+    ++px.hits;
+  }
+
+  // Writes pixel (i, j) from its sums.
+  void store(const PixelSums<T>& s, int i, int j) const {
+    float* px = img.pixel(i, j);
+    for (int q = 0; q < 3; ++q) px[q] = float(s.final_sum[q] * inv);
+    px[3] = float(T(s.hits) * inv);
+    if (diag) {
+      const size_t at = size_t(j) * img.width + i;
+      for (int q = 0; q < 3; ++q) img.raw[at * 3 + q] = float(s.raw_sum[q] * inv);
+      img.depth[at] = float(s.nearest);
+      img.backfacing[at] = s.hits ? float(s.backfacing) / float(s.hits) : 0.0f;
+      img.incidence[at] = s.hits ? float(s.incidence) : 0.0f;
+      for (int q = 0; q < 3; ++q) img.albedo[at * 3 + q] = float(s.albedo[q]);
+    }
+  }
+
+  // One sample per pixel, no diagnostics: saturate(c) straight into the
+  // pixel, alpha 1 (store's value with n = 1); no hit: all 0.
+  void storeOne(const Hit& h, float* px) const {
+    if (!h.hit) {
+      px[0] = px[1] = px[2] = px[3] = 0.0f;
+      return;
+    }
+    bool back;
+    const glm::vec<3, T> c = models::saturate(shadeHit(sh, h, back));
+    px[0] = float(c.x), px[1] = float(c.y), px[2] = float(c.z), px[3] = 1.0f;
+  }
+};
+
+// The SIMD kernel's per-thread inputs and outputs: a band's hits on one
+// mesh, compacted, padded to kBatchPad.
+struct BatchBuffers {
+  std::vector<std::uint32_t> at, tri;
+  std::vector<float> b1, b2, r, g, b;
+  explicit BatchBuffers(size_t n)
+      : at(n), tri(n + kBatchPad), b1(n + kBatchPad), b2(n + kBatchPad), r(n + kBatchPad),
+        g(n + kBatchPad), b(n + kBatchPad) {}
+};
+
+// Shades hits[0, count) with the kernel, one mesh at a time, and hands
+// each hit's saturated colour to emit(sample index, r, g, b): the same
+// numbers as saturate(shadeHit) in float (shading/batch_shader.h).
+template <class Emit>
+void shadeBatched(const BatchShading& kernel, const std::vector<BatchMesh>& meshes, const std::vector<Hit>& hits,
+                  size_t count, BatchBuffers& bb, Emit&& emit) {
+  for (size_t mi = 0; mi < meshes.size(); ++mi) {
+    size_t c = 0;
+    for (size_t k = 0; k < count; ++k) {
+      const Hit& h = hits[k];
+      if (!h.hit || h.mesh != mi) continue;
+      bb.at[c] = std::uint32_t(k), bb.tri[c] = h.triangle;
+      bb.b1[c] = float(h.b1), bb.b2[c] = float(h.b2);  // as the scalar path's T(h.b1)
+      ++c;
+    }
+    if (c == 0) continue;
+    for (size_t k = c; k < (c + kBatchPad - 1) / kBatchPad * kBatchPad; ++k)
+      bb.tri[k] = 0, bb.b1[k] = bb.b2[k] = 0.0f;  // padding: a valid triangle
+    shadeBatch(kernel, meshes[mi], c, bb.tri.data(), bb.b1.data(), bb.b2.data(), bb.r.data(), bb.g.data(),
+               bb.b.data());
+    for (size_t k = 0; k < c; ++k) emit(bb.at[k], bb.r[k], bb.g[k], bb.b[k]);
+  }
+}
+
+// Progress lines on stderr while a frame renders: at most once a second,
+// from whichever thread gets there; "~s left" assumes a constant rate.
+class Progress {
+ public:
+  explicit Progress(bool on) : on_(on), start_(Clock::now()), last_(start_) {}
+  Clock::time_point start() const { return start_; }
+  void report(int done, int total) {
+    if (!on_ || !lock_.try_lock()) return;
+    if (secondsSince(last_) >= 1.0 && done < total) {
+      last_ = Clock::now();
+      const double f = double(done) / total, el = secondsSince(start_);
+      std::fprintf(stderr, "  render: %5.1f%%  %.1f s elapsed, ~%.1f s left\n", 100.0 * f, el, el * (1.0 - f) / f);
+    }
+    lock_.unlock();
+  }
+
+ private:
+  bool on_;
+  Clock::time_point start_, last_;
+  std::mutex lock_;
+};
+
+// ---- Visibility: which triangle each sample's ray hits first ----------------
+
+// The tile's samples, traced as Embree packets. A tile is kTile x kTile
+// pixels of n x n samples each, side = kTile n samples along a side, the
+// sample (gx, gy) of the tile's grid at pixel (x0 + gx / n, y0 + gy / n),
+// offset ((gx % n + 0.5) / n, (gy % n + 0.5) / n). Packets are 4 x 4
+// neighbouring samples (one pixel's 16 at 16 spp, 4 x 4 pixels at 1 spp):
+// the closer the rays, the less of the BVH a packet visits. Writes
+// hit[gy side + gx] (and dir[...] when dir is not empty) for every sample
+// inside the image; the others are left as they were.
+struct TileTracer {
+  const Accel& accel;
+  const CameraRays& cam;
+  int n, W, H;
+  const std::vector<double>& screen_x;  // per pixel column i and sample sx: cam.screenX(i + (sx + 0.5) / n)
+  const std::vector<double>& screen_y;  // per pixel row j and sample sy
+
+  void trace(int x0, int y0, std::vector<Hit>& hit, std::vector<glm::dvec3>& dir) const {
+    constexpr int P = Accel::kPacketSide;
+    const int side = kTile * n;
+    std::array<glm::dvec3, P * P> dirs;
+    std::array<bool, P * P> valid;
+    std::array<Hit, P * P> hits;
+    for (int by = 0; by < side; by += P)
+      for (int bx = 0; bx < side; bx += P) {
+        bool any = false;
+        for (int r = 0; r < P * P; ++r) {
+          const int gx = bx + r % P, gy = by + r / P;  // sample in the tile's grid
+          const int i = x0 + gx / n, j = y0 + gy / n;
+          valid[r] = i < W && j < H;
+          any |= valid[r];
+          if (valid[r])
+            dirs[r] = cam.directionFromScreen(screen_x[size_t(i) * n + gx % n], screen_y[size_t(j) * n + gy % n]);
+        }
+        if (!any) continue;
+        accel.intersectPacket(cam.origin, dirs.data(), valid.data(), hits.data());
+        for (int r = 0; r < P * P; ++r) {
+          if (!valid[r]) continue;
+          const size_t at = size_t(by + r / P) * side + bx + r % P;
+          hit[at] = hits[r];
+          if (!dir.empty()) dir[at] = dirs[r];
+        }
+      }
+  }
+};
+
+// ---- The two paths' units of work: visibility, then accumulation ----------
+
+// Adds every in-image pixel of the tile at (x0, y0) from its samples'
+// hits (TileTracer's layout), in the (sy, sx) order, and stores it.
+template <class T>
+void accumulateTile(const Accumulation<T>& acc, int n, int x0, int y0, const std::vector<Hit>& hit,
+                    const std::vector<glm::dvec3>& dir) {
+  const int side = kTile * n;
+  for (int ty = 0; ty < kTile && y0 + ty < acc.img.height; ++ty)
+    for (int tx = 0; tx < kTile && x0 + tx < acc.img.width; ++tx) {
+      PixelSums<T> px;
+      for (int sy = 0; sy < n; ++sy)
+        for (int sx = 0; sx < n; ++sx) {
+          const size_t at = size_t(ty * n + sy) * side + tx * n + sx;
+          if (hit[at].hit) acc.add(hit[at], acc.diag ? dir[at] : glm::dvec3(0), px);
+        }
+      acc.store(px, x0 + tx, y0 + ty);
+    }
+}
+
+// The rasterised path's work on one band of kBand rows (float only):
+// raster.visibility gives the first hit of every pixel's sample at one
+// offset (ox, oy) inside the pixel; the accumulation turns them into
+// pixels.
+struct RasterBand {
+  const Rasteriser& raster;
+  const Accumulation<float>& acc;
+  const BatchShading* kernel;  // the SIMD kernel (no diagnostics), or null: shadeHit
+  const std::vector<BatchMesh>& batch_meshes;
+  const CameraRays& cam;
+  int n;  // samples per pixel side
+
+  struct Buffers {  // per thread
+    std::vector<Hit> hits;
+    std::vector<PixelSums<float>> sums;
+    BatchBuffers bb;
+    Buffers(int W, bool kernel)
+        : hits(size_t(kBand) * W), sums(size_t(kBand) * W), bb(kernel ? size_t(kBand) * W : 0) {}
+  };
+
+  // Band b's pixels.
+  void render(int b, Buffers& buf) const {
+    const int row0 = b * kBand, rows = std::min(kBand, acc.img.height - row0);
+    if (n == 1 && !acc.diag)
+      oneSample(b, row0, rows, buf);
+    else
+      samples(b, row0, rows, buf);
+  }
+
+  // One sample at the pixel centre, no diagnostics: straight to the pixels.
+  void oneSample(int b, int row0, int rows, Buffers& buf) const {
+    raster.visibility(b, 0.5, 0.5, false, buf.hits);
+    float* band = acc.img.pixel(0, row0);
+    const size_t count = size_t(rows) * acc.img.width;
+    if (!kernel) {
+      for (size_t k = 0; k < count; ++k) acc.storeOne(buf.hits[k], band + k * 4);
+      return;
+    }
+    std::fill(band, band + count * 4, 0.0f);
+    shadeBatched(*kernel, batch_meshes, buf.hits, count, buf.bb, [&](std::uint32_t at, float r, float g, float bl) {
+      float* px = band + size_t(at) * 4;
+      px[0] = r, px[1] = g, px[2] = bl, px[3] = 1.0f;
+    });
+  }
+
+  // n x n samples (or diagnostics): each pixel's sums, added in the
+  // (sy, sx) order, then stored.
+  void samples(int b, int row0, int rows, Buffers& buf) const {
+    const int W = acc.img.width;
+    std::fill(buf.sums.begin(), buf.sums.begin() + size_t(rows) * W, PixelSums<float>{});
+    for (int sy = 0; sy < n; ++sy)
+      for (int sx = 0; sx < n; ++sx) {
+        const double ox = (sx + 0.5) / n, oy = (sy + 0.5) / n;
+        raster.visibility(b, ox, oy, acc.diag, buf.hits);
+        if (kernel) {  // no diagnostics: add()'s final_sum += saturate(c) and ++hits
+          shadeBatched(*kernel, batch_meshes, buf.hits, size_t(rows) * W, buf.bb,
+                       [&](std::uint32_t at, float r, float g, float bl) {
+                         buf.sums[at].final_sum += glm::vec3(r, g, bl);
+                         ++buf.sums[at].hits;
+                       });
+          continue;
+        }
+        for (int r = 0; r < rows; ++r)
+          for (int i = 0; i < W; ++i) {
+            const Hit& h = buf.hits[size_t(r) * W + i];
+            if (!h.hit) continue;
+            const glm::dvec3 dir = acc.diag ? cam.direction(i + ox, row0 + r + oy) : glm::dvec3(0);
+            acc.add(h, dir, buf.sums[size_t(r) * W + i]);
+          }
+      }
+    for (int r = 0; r < rows; ++r)
+      for (int i = 0; i < W; ++i) acc.store(buf.sums[size_t(r) * W + i], i, row0 + r);
+  }
+};
+
+// n of the n x n sample grid (spp is a perfect square).
+int samplesPerSide(const RenderOptions& opt) { return int(std::lround(std::sqrt(double(opt.spp)))); }
+
+int threadCount(const RenderOptions& opt) {
+  return opt.threads > 0 ? opt.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+}
 
 }  // namespace
 
@@ -148,6 +443,11 @@ struct PreparedScene::Impl {
 
   template <class T>
   void renderT(const Shading<T>& sh, const RenderOptions& opt, Image& img, RenderStats& stats) const;
+  void renderRasterised(const Shading<float>& sh, const RenderOptions& opt, Image& img, RenderStats& stats,
+                        Progress& progress) const;
+  template <class T>
+  void renderTraced(const Shading<T>& sh, const RenderOptions& opt, Image& img, RenderStats& stats,
+                    Progress& progress) const;
 };
 
 PreparedScene::PreparedScene(const Scene& scene, Precision precision, bool cull_back_faces)
@@ -165,22 +465,13 @@ PreparedScene::PreparedScene(const Scene& scene, Precision precision, bool cull_
   for (size_t k = 0; k < d.meshes.size(); ++k)
     d.back_faces_hidden.push_back(backFacesNeverFirstHit(scene.objects[k], d.meshes[k], eye));
   if (scene.material.texture) d.texture = loadTexture(*scene.material.texture);
-  // The ray paths' BVH: without the back faces that cannot be a first hit
-  // from the eye. Every camera ray starts at the eye, so a triangle facing
-  // away from the eye (g . (eye - p0) < 0, g its winding normal) faces away
-  // from every camera ray; those within 1e-9 (relative) of edge-on are kept.
+  // The ray paths' BVH: without the back faces no camera ray hits first
+  // (geometry/front_faces.h, trianglesNotFacingAway and its conditions).
   std::vector<std::optional<std::vector<uint32_t>>> only(d.meshes.size());
   for (size_t k = 0; cull_back_faces && k < d.meshes.size(); ++k) {
-    if (!d.back_faces_hidden[k]) continue;
-    const TriangleMesh& m = d.meshes[k];
-    only[k].emplace();
-    for (uint32_t t = 0; t < m.triangles.size(); ++t) {
-      const glm::dvec3 p0 = m.positions[m.triangles[t][0]];
-      const glm::dvec3 g = glm::cross(m.positions[m.triangles[t][1]] - p0, m.positions[m.triangles[t][2]] - p0);
-      const glm::dvec3 e = eye - p0;
-      if (glm::dot(g, e) >= -1e-9 * glm::length(g) * glm::length(e)) only[k]->push_back(t);
-    }
-    d.bvh_culled += m.triangles.size() - only[k]->size();
+    if (!d.back_faces_hidden[k]) continue;  // condition 1
+    only[k] = trianglesNotFacingAway(d.meshes[k], eye);
+    d.bvh_culled += d.meshes[k].triangles.size() - only[k]->size();
   }
   d.accel.emplace(d.meshes, precision, only);
   const Texture* tex = d.texture ? &*d.texture : nullptr;
@@ -218,263 +509,82 @@ void PreparedScene::render(const RenderOptions& opt, Image& img, RenderStats* st
   if (stats_out) *stats_out = stats;
 }
 
+// One frame: visibility (rasterised when the float path may, else traced)
+// and accumulation, on threadCount(opt) threads; the timings into stats.
 template <class T>
 void PreparedScene::Impl::renderT(const Shading<T>& sh, const RenderOptions& opt, Image& img,
                                   RenderStats& stats) const {
-  using V = glm::vec<3, T>;
-  const CameraRays cam(scene.camera);
-  const int n = int(std::lround(std::sqrt(double(opt.spp))));
-  const int W = img.width, H = img.height;
-  const bool diag = opt.diagnostics && !img.raw.empty();
-  const int tiles_x = (W + kTile - 1) / kTile, tiles_y = (H + kTile - 1) / kTile;
-  const int tiles = tiles_x * tiles_y;
-  const ShadingMode mode = scene.shading;
-  std::atomic<int> next_tile{0}, tiles_done{0};
-  auto t_trace = Clock::now();
-  std::mutex progress_lock;
-  auto last_report = t_trace;
-
-  // One sample: shade the hit and add it to the pixel's sums.
-  // The unsaturated colour of one hit; backfacing is set when the shading
-  // normal faces away from the eye.
-  auto shadeHit = [&](const Hit& h, bool& backfacing) __attribute__((flatten)) -> V {
-    const ShadedMesh<T>& m = sh.meshes[h.mesh];
-    const auto& tri = m.src->triangles[h.triangle];
-    const T b1 = T(h.b1), b2 = T(h.b2), b0 = T(1) - b1 - b2;
-    if (mode == ShadingMode::Gouraud) {
-      backfacing = false;
-      return b0 * m.vertex_colour[tri[0]] + b1 * m.vertex_colour[tri[1]] + b2 * m.vertex_colour[tri[2]];
-    }
-    V p = b0 * m.p[tri[0]] + b1 * m.p[tri[1]] + b2 * m.p[tri[2]];
-    V nrm;
-    if (mode == ShadingMode::Flat) {
-      nrm = m.face_n[h.triangle];
-    } else {
-      nrm = b0 * m.n[tri[0]] + b1 * m.n[tri[1]] + b2 * m.n[tri[2]];
-      T len = glm::length(nrm);
-      nrm = len > T(0) ? nrm / len : V(0);  // zero-length normals stay 0
-    }
-    const glm::vec<2, T> uv = interpolateUv(m.uv, tri, b1, b2);
-    V v = glm::normalize(sh.eye - p);
-    backfacing = glm::dot(nrm, v) < T(0);
-    return sh.shader.shade(p, nrm, v, sh.colour.at(uv));
-  };
-
-  // One sample: shade the hit and add it to the pixel's sums.
-  auto addSample = [&](const Hit& h, const glm::dvec3& dir, PixelSums<T>& px) {
-    if (px.hits == 0 || h.t < px.nearest) px.nearest = h.t;
-    if (diag) {
-      const ShadedMesh<T>& m = sh.meshes[h.mesh];
-      const auto& tri = m.src->triangles[h.triangle];
-      px.incidence = std::min(px.incidence, geometricIncidence(*m.src, tri, dir));
-      if (px.hits == 0) px.albedo = sh.colour.at(interpolateUv(m.uv, tri, T(h.b1), T(h.b2)));
-    }
-    bool back = false;
-    const V c = shadeHit(h, back);
-    px.backfacing += back;
-    px.final_sum += models::saturate(c);
-    if (diag) px.raw_sum += c;
-    ++px.hits;
-  };
-
-  // Writes one pixel's box-filtered sums.
-  const T inv = T(1) / T(n * n);
-  auto store = [&](const PixelSums<T>& s, int i, int j) {
-    float* px = img.pixel(i, j);
-    for (int q = 0; q < 3; ++q) px[q] = float(s.final_sum[q] * inv);
-    px[3] = float(T(s.hits) * inv);
-    if (diag) {
-      const size_t at = size_t(j) * W + i;
-      for (int q = 0; q < 3; ++q) img.raw[at * 3 + q] = float(s.raw_sum[q] * inv);
-      img.depth[at] = float(s.nearest);
-      img.backfacing[at] = s.hits ? float(s.backfacing) / float(s.hits) : 0.0f;
-      img.incidence[at] = s.hits ? float(s.incidence) : 0.0f;
-      for (int q = 0; q < 3; ++q) img.albedo[at * 3 + q] = float(s.albedo[q]);
-    }
-  };
-  auto reportProgress = [&](int done, int total) {
-    // At most once a second, from whichever thread gets there.
-    if (opt.progress && progress_lock.try_lock()) {
-      if (secondsSince(last_report) >= 1.0 && done < total) {
-        last_report = Clock::now();
-        double f = double(done) / total, el = secondsSince(t_trace);
-        std::fprintf(stderr, "  render: %5.1f%%  %.1f s elapsed, ~%.1f s left\n", 100.0 * f, el,
-                     el * (1.0 - f) / f);
-      }
-      progress_lock.unlock();
-    }
-  };
-  int threads = opt.threads > 0 ? opt.threads : int(std::max(1u, std::thread::hardware_concurrency()));
-
-  if (std::is_same_v<T, float> && opt.rasterise && Rasteriser::applicable(meshes, cam)) {
-    stats.visibility = "rasterised";
-    const Rasteriser raster(meshes, cam, kBand,
-                            opt.cull_back_faces ? back_faces_hidden : std::vector<bool>{});
-    stats.culled_triangles = raster.culledTriangles();
-    std::atomic<int> next_band{0}, bands_done{0};
-    // The SIMD kernel's inputs: the band's hits on one mesh, compacted.
-    const BatchShading* batch_kernel =
-        std::is_same_v<T, float> && batch && opt.batch_shading && !diag ? &*batch : nullptr;
-    if (batch_kernel) stats.shading = std::string("SIMD, ") + batchShaderTarget();
-    struct BatchBuffers {
-      std::vector<std::uint32_t> at, tri;
-      std::vector<float> b1, b2, r, g, b;
-      explicit BatchBuffers(size_t n)
-          : at(n), tri(n + kBatchPad), b1(n + kBatchPad), b2(n + kBatchPad), r(n + kBatchPad),
-            g(n + kBatchPad), b(n + kBatchPad) {}
-    };
-    // Shades hits[0, count) with the kernel, one mesh at a time, and hands
-    // each hit's saturated colour to emit(sample index, r, g, b).
-    auto shadeBandBatched = [&](const std::vector<Hit>& hits, size_t count, BatchBuffers& bb, auto&& emit) {
-      for (size_t mi = 0; mi < batch_meshes.size(); ++mi) {
-        size_t c = 0;
-        for (size_t k = 0; k < count; ++k) {
-          const Hit& h = hits[k];
-          if (!h.hit || h.mesh != mi) continue;
-          bb.at[c] = std::uint32_t(k), bb.tri[c] = h.triangle;
-          bb.b1[c] = float(h.b1), bb.b2[c] = float(h.b2);  // as the scalar path's T(h.b1)
-          ++c;
-        }
-        if (c == 0) continue;
-        for (size_t k = c; k < (c + kBatchPad - 1) / kBatchPad * kBatchPad; ++k)
-          bb.tri[k] = 0, bb.b1[k] = bb.b2[k] = 0.0f;  // padding: a valid triangle
-        shadeBatch(*batch_kernel, batch_meshes[mi], c, bb.tri.data(), bb.b1.data(), bb.b2.data(),
-                   bb.r.data(), bb.g.data(), bb.b.data());
-        for (size_t k = 0; k < c; ++k) emit(bb.at[k], bb.r[k], bb.g[k], bb.b[k]);
-      }
-    };
-    auto band_worker = [&]() {
-      std::vector<Hit> hits(size_t(kBand) * W);
-      std::vector<PixelSums<T>> sums(size_t(kBand) * W);
-      BatchBuffers bb(batch_kernel ? size_t(kBand) * W : 0);
-      for (int b = next_band++; b < raster.bands(); b = next_band++) {
-        const int row0 = b * kBand, rows = std::min(kBand, H - row0);
-        if (batch_kernel && n == 1) {  // one sample, no diagnostics, SIMD shading
-          raster.visibility(b, 0.5, 0.5, false, hits);
-          float* band = img.pixel(0, row0);
-          std::fill(band, band + size_t(rows) * W * 4, 0.0f);
-          shadeBandBatched(hits, size_t(rows) * W, bb, [&](std::uint32_t at, float r, float g, float bl) {
-            float* px = band + size_t(at) * 4;
-            px[0] = r, px[1] = g, px[2] = bl, px[3] = 1.0f;
-          });
-          reportProgress(++bands_done, raster.bands());
-          continue;
-        }
-        if (n == 1 && !diag) {  // one sample, no diagnostics: straight to the pixels
-          raster.visibility(b, 0.5, 0.5, false, hits);
-          for (int r = 0; r < rows; ++r)
-            for (int i = 0; i < W; ++i) {
-              const Hit& h = hits[size_t(r) * W + i];
-              float* px = img.pixel(i, row0 + r);
-              if (!h.hit) {
-                px[0] = px[1] = px[2] = px[3] = 0.0f;
-                continue;
-              }
-              bool back;
-              const V c = models::saturate(shadeHit(h, back));
-              px[0] = float(c.x), px[1] = float(c.y), px[2] = float(c.z), px[3] = 1.0f;
-            }
-          reportProgress(++bands_done, raster.bands());
-          continue;
-        }
-        std::fill(sums.begin(), sums.begin() + size_t(rows) * W, PixelSums<T>{});
-        for (int sy = 0; sy < n; ++sy)
-          for (int sx = 0; sx < n; ++sx) {
-            const double ox = (sx + 0.5) / n, oy = (sy + 0.5) / n;
-            raster.visibility(b, ox, oy, diag, hits);
-            if (batch_kernel) {  // no diagnostics: the kernel, each pixel's sums in the same order
-              if constexpr (std::is_same_v<T, float>)
-                shadeBandBatched(hits, size_t(rows) * W, bb, [&](std::uint32_t at, float r, float g, float bl) {
-                  PixelSums<T>& px = sums[at];
-                  px.final_sum += glm::vec3(r, g, bl);  // addSample's final_sum += saturate(c)
-                  ++px.hits;
-                });
-              continue;
-            }
-            for (int r = 0; r < rows; ++r)
-              for (int i = 0; i < W; ++i) {
-                const Hit& h = hits[size_t(r) * W + i];
-                if (!h.hit) continue;
-                const glm::dvec3 dir = diag ? cam.direction(i + ox, row0 + r + oy) : glm::dvec3(0);
-                addSample(h, dir, sums[size_t(r) * W + i]);
-              }
-          }
-        for (int r = 0; r < rows; ++r)
-          for (int i = 0; i < W; ++i) store(sums[size_t(r) * W + i], i, row0 + r);
-        reportProgress(++bands_done, raster.bands());
-      }
-    };
-    runOnThreads(std::min(threads, raster.bands()), band_worker);
-    stats.setup_seconds = setup_seconds;
-    stats.trace_seconds = secondsSince(t_trace);
-    return;
+  Progress progress(opt.progress);
+  if constexpr (std::is_same_v<T, float>) {
+    if (opt.rasterise && Rasteriser::applicable(meshes, CameraRays(scene.camera)))
+      renderRasterised(sh, opt, img, stats, progress);
+    else
+      renderTraced(sh, opt, img, stats, progress);
+  } else {
+    renderTraced(sh, opt, img, stats, progress);
   }
+  stats.setup_seconds = setup_seconds;
+  stats.trace_seconds = secondsSince(progress.start());
+}
+
+// Rasterised visibility (float, every vertex in front of the camera; back
+// faces of the meshes in back_faces_hidden dropped when binning): the
+// image in bands of kBand rows, handed to the threads in order.
+void PreparedScene::Impl::renderRasterised(const Shading<float>& sh, const RenderOptions& opt, Image& img,
+                                           RenderStats& stats, Progress& progress) const {
+  const CameraRays cam(scene.camera);
+  const int n = samplesPerSide(opt);
+  const Accumulation<float> acc{sh, img, opt.diagnostics && !img.raw.empty(), 1.0f / float(n * n)};
+  stats.visibility = "rasterised";
+  const Rasteriser raster(meshes, cam, kBand, opt.cull_back_faces ? back_faces_hidden : std::vector<bool>{});
+  stats.culled_triangles = raster.culledTriangles();
+  const BatchShading* kernel = batch && opt.batch_shading && !acc.diag ? &*batch : nullptr;
+  if (kernel) stats.shading = std::string("SIMD, ") + batchShaderTarget();
+  const RasterBand band{raster, acc, kernel, batch_meshes, cam, n};
+  std::atomic<int> next_band{0}, bands_done{0};
+  auto worker = [&]() {
+    RasterBand::Buffers buf(img.width, kernel != nullptr);
+    for (int b = next_band++; b < raster.bands(); b = next_band++) {
+      band.render(b, buf);
+      progress.report(++bands_done, raster.bands());
+    }
+  };
+  runOnThreads(std::min(threadCount(opt), raster.bands()), worker);
+}
+
+// Traced visibility (Embree packets; the BVH without the back faces no
+// camera ray hits first, geometry/front_faces.h): the image in tiles of
+// kTile x kTile pixels, handed to the threads in order.
+template <class T>
+void PreparedScene::Impl::renderTraced(const Shading<T>& sh, const RenderOptions& opt, Image& img,
+                                       RenderStats& stats, Progress& progress) const {
+  const CameraRays cam(scene.camera);
+  const int n = samplesPerSide(opt), W = img.width, H = img.height;
+  const Accumulation<T> acc{sh, img, opt.diagnostics && !img.raw.empty(), T(1) / T(n * n)};
   stats.visibility = std::is_same_v<T, float> ? "Embree 16-ray packets (float)"
                                               : "Embree 16-ray packets, double-precision watertight test";
   stats.culled_triangles = bvh_culled;
-
   // The screen coordinates of every sample column and row, once per frame
-  // (CameraRays::screenX/screenY; the directions are bit-identical to
-  // cam.direction(i + ox, j + oy)).
+  // (the directions are bit-identical to cam.direction(i + ox, j + oy)).
   std::vector<double> screen_x(size_t(W) * n), screen_y(size_t(H) * n);
   for (int i = 0; i < W; ++i)
     for (int sx = 0; sx < n; ++sx) screen_x[size_t(i) * n + sx] = cam.screenX(i + (sx + 0.5) / n);
   for (int j = 0; j < H; ++j)
     for (int sy = 0; sy < n; ++sy) screen_y[size_t(j) * n + sy] = cam.screenY(j + (sy + 0.5) / n);
-
-  // Packets are 4 x 4 neighbouring samples of the tile's n x n-per-pixel
-  // sample grid (one pixel's 16 samples at 16 spp, 4 x 4 pixels at 1 spp):
-  // the closer the rays, the less of the BVH a packet visits. Hits are
-  // kept per sample and added to each pixel in the (sy, sx) order.
+  const TileTracer tracer{*accel, cam, n, W, H, screen_x, screen_y};
+  const int tiles_x = (W + kTile - 1) / kTile, tiles = tiles_x * ((H + kTile - 1) / kTile);
+  std::atomic<int> next_tile{0}, tiles_done{0};
   auto worker = [&]() {
-    constexpr int P = Accel::kPacketSide;
-    const int side = kTile * n;  // samples along a tile's side
-    std::array<PixelSums<T>, kTile * kTile> sums;
-    std::array<glm::dvec3, P * P> dirs;
-    std::array<bool, P * P> valid;
-    std::array<Hit, P * P> hits;
-    std::vector<Hit> sample_hit(size_t(side) * side);
-    std::vector<glm::dvec3> sample_dir(diag ? size_t(side) * side : 0);
+    std::vector<Hit> hit(size_t(kTile * n) * (kTile * n));  // TileTracer's layout
+    std::vector<glm::dvec3> dir(acc.diag ? hit.size() : 0);
     for (int k = next_tile++; k < tiles; k = next_tile++) {
       const int x0 = (k % tiles_x) * kTile, y0 = (k / tiles_x) * kTile;
-      sums.fill(PixelSums<T>{});
-      for (int by = 0; by < side; by += P)
-        for (int bx = 0; bx < side; bx += P) {
-          bool any = false;
-          for (int r = 0; r < P * P; ++r) {
-            const int gx = bx + r % P, gy = by + r / P;  // sample in the tile's grid
-            const int i = x0 + gx / n, j = y0 + gy / n;
-            valid[r] = i < W && j < H;
-            any |= valid[r];
-            if (valid[r])
-              dirs[r] = cam.directionFromScreen(screen_x[size_t(i) * n + gx % n], screen_y[size_t(j) * n + gy % n]);
-          }
-          if (!any) continue;
-          accel->intersectPacket(cam.origin, dirs.data(), valid.data(), hits.data());
-          for (int r = 0; r < P * P; ++r) {
-            if (!valid[r]) continue;
-            const size_t at = size_t(by + r / P) * side + bx + r % P;
-            sample_hit[at] = hits[r];
-            if (diag) sample_dir[at] = dirs[r];
-          }
-        }
-      for (int ty = 0; ty < kTile && y0 + ty < H; ++ty)
-        for (int tx = 0; tx < kTile && x0 + tx < W; ++tx) {
-          PixelSums<T>& px = sums[ty * kTile + tx];
-          for (int sy = 0; sy < n; ++sy)
-            for (int sx = 0; sx < n; ++sx) {
-              const size_t at = size_t(ty * n + sy) * side + tx * n + sx;
-              if (sample_hit[at].hit) addSample(sample_hit[at], diag ? sample_dir[at] : glm::dvec3(0), px);
-            }
-          store(px, x0 + tx, y0 + ty);
-        }
-      reportProgress(++tiles_done, tiles);
+      tracer.trace(x0, y0, hit, dir);
+      accumulateTile(acc, n, x0, y0, hit, dir);
+      progress.report(++tiles_done, tiles);
     }
   };
-
-  runOnThreads(std::min(threads, tiles), worker);
-  stats.setup_seconds = setup_seconds;
-  stats.trace_seconds = secondsSince(t_trace);
+  runOnThreads(std::min(threadCount(opt), tiles), worker);
 }
 
 Image renderScene(const Scene& scene, const RenderOptions& options, RenderStats* stats) {

@@ -80,7 +80,7 @@ struct TextureSpec {
   TextureFilter filter = TextureFilter::Bilinear;
 };
 
-// --- lighting models (../shared/models.md) ------------------------------
+// --- lighting models (docs/models.md) -----------------------------------
 // Classic Phong. variant Paper (paper eq. 3, seed 003):
 //   F = C (x) (ka A + kd sum att Lc D) + ks sum att Lc S
 // variant Course (seed 004, specular tinted, per-light ambient):

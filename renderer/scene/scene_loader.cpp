@@ -382,9 +382,18 @@ const char* toString(TextureFilter f) {
   return f == TextureFilter::Nearest ? "nearest" : "bilinear";
 }
 const char* modelName(const LightingModel& m) {
-  static const char* names[] = {"classic_phong", "yiq_luma",      "lambert", "wrap_around",
-                                "hemispherical", "bidirectional", "trilight"};
-  return names[m.index()];
+  // One overload per alternative: the name does not depend on the
+  // variant's order.
+  struct Name {
+    const char* operator()(const ClassicPhong&) const { return "classic_phong"; }
+    const char* operator()(const YiqLuma&) const { return "yiq_luma"; }
+    const char* operator()(const Lambert&) const { return "lambert"; }
+    const char* operator()(const WrapAround&) const { return "wrap_around"; }
+    const char* operator()(const Hemispherical&) const { return "hemispherical"; }
+    const char* operator()(const BiDirectional&) const { return "bidirectional"; }
+    const char* operator()(const Trilight&) const { return "trilight"; }
+  };
+  return std::visit(Name{}, m);
 }
 
 }  // namespace xval

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <vector>
 
 #include "scene/scene.h"
@@ -112,7 +113,7 @@ void prepareLights(const std::vector<Light>& lights, glm::vec<3, T>& ambient,
       pl.position = V(s->position - origin);
       pl.direction = V(glm::normalize(s->direction));
       pl.color = V(s->color);
-      pl.cos_cutoff = T(std::cos(s->cutoff_deg * 3.14159265358979323846 / 180.0));
+      pl.cos_cutoff = T(std::cos(s->cutoff_deg * std::numbers::pi / 180.0));
       set_att(s->attenuation);
     }
     pl.color_luma = models::lightLuma(pl.color);

@@ -1,4 +1,4 @@
-// The lighting models as pure functions (../shared/models.md, docs/models.md).
+// The lighting models as pure functions (docs/models.md).
 //
 // Templated on the scalar T (float for the fast path, double for the
 // reference path). x = N.L throughout; all vectors unit length.

@@ -1,5 +1,5 @@
 // Shader: evaluates the scene's lighting model, summed over its lights, at
-// one surface point. The per-model formulas (../shared/models.md):
+// one surface point. The per-model formulas (docs/models.md):
 //
 //   classic_phong, variant paper (paper eq. 3, seed 003):
 //     F = C (x) (ka A + kd sum_l att Lc clamp(N.L)) + ks sum_l att Lc clamp(R.V)^n
@@ -52,8 +52,7 @@ template <class T> class Shader {
       : origin_(origin) {
     prepareLights<T>(lights, ambient_, lights_, origin);
     ambient_luma_ = models::lightLuma(ambient_);
-    kind_ = Kind(m.model.index());
-    std::visit([this](const auto& mm) { this->setParams(mm); }, m.model);
+    std::visit([this](const auto& mm) { this->setParams(mm); }, m.model);  // sets kind_
   }
 
   bool usesSpecular() const { return specular_; }
@@ -137,20 +136,23 @@ template <class T> class Shader {
     }
   }
 
+  // Each sets kind_ for its own alternative (not from the variant's order).
   void setParams(const ClassicPhong& m) {
+    kind_ = Kind::ClassicPhong;
     course_ = m.variant == ClassicPhong::Variant::Course;
     ka_ = T(m.ka), kd_ = T(m.kd), ks_ = T(m.ks), n_ = T(m.shininess);
     specular_ = m.ks != 0.0;
   }
   void setParams(const YiqLuma& m) {
+    kind_ = Kind::YiqLuma;
     kd_ = T(m.kd), ks_ = T(m.ks), n_ = T(m.shininess), offset_ = T(m.luma_offset);
     specular_ = m.ks != 0.0;
   }
-  void setParams(const Lambert& m) { c0_ = V(m.c0); }
-  void setParams(const WrapAround& m) { c0_ = V(m.c0), factor_ = T(m.factor); }
-  void setParams(const Hemispherical& m) { c0_ = V(m.c0), c2_ = V(m.c2); }
-  void setParams(const BiDirectional& m) { c0_ = V(m.c0), c2_ = V(m.c2); }
-  void setParams(const Trilight& m) { c0_ = V(m.c0), c1_ = V(m.c1), c2_ = V(m.c2); }
+  void setParams(const Lambert& m) { kind_ = Kind::Lambert, c0_ = V(m.c0); }
+  void setParams(const WrapAround& m) { kind_ = Kind::WrapAround, c0_ = V(m.c0), factor_ = T(m.factor); }
+  void setParams(const Hemispherical& m) { kind_ = Kind::Hemispherical, c0_ = V(m.c0), c2_ = V(m.c2); }
+  void setParams(const BiDirectional& m) { kind_ = Kind::BiDirectional, c0_ = V(m.c0), c2_ = V(m.c2); }
+  void setParams(const Trilight& m) { kind_ = Kind::Trilight, c0_ = V(m.c0), c1_ = V(m.c1), c2_ = V(m.c2); }
 
   Kind kind_ = Kind::ClassicPhong;
   glm::dvec3 origin_{0};

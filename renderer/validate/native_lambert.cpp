@@ -1,11 +1,11 @@
 #include "validate/native_lambert.h"
 
+#include <numbers>
 #include <stdexcept>
 
 namespace xval {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 }
 
 void checkNativeLambertScene(const Scene& s) {
@@ -28,7 +28,7 @@ void checkNativeLambertScene(const Scene& s) {
 void scaleNativeLambert(const Scene& s, Image& img) {
   checkNativeLambertScene(s);
   // P = I watts (RAW import): DiffDir = I / (4 pi^2) max(N.L,0) / d^2.
-  const float k = float(4.0 * kPi * kPi);
+  const float k = float(4.0 * std::numbers::pi * std::numbers::pi);
   for (size_t i = 0; i < img.rgba.size(); i += 4)
     for (int c = 0; c < 3; ++c) img.rgba[i + c] = std::min(1.0f, std::max(0.0f, img.rgba[i + c] * k));
 }

@@ -6,7 +6,7 @@
 // importing its KHR light in 'RAW' mode, makes a point light of power
 // P = I watts; Cycles' diffuse-direct pass is then
 //   DiffDir = P / (4 pi^2) max(N.L, 0) / d^2
-// (../shared/notes/blender.md), so DiffDir * 4 pi^2 is the reference
+// (docs/blender-export.md, Native tier), so DiffDir * 4 pi^2 is the reference
 // Lambert I max(N.L, 0) / (c + q d^2) with q = 1 (the reference saturates
 // at 1; so does the scaled pass here). Checks geometry, camera
 // and light conversion against Blender's own shading, not our node math.

@@ -129,3 +129,53 @@ TEST(FrontFaces, APlaneSeenFromBehindIsDrawn) {
   EXPECT_EQ(st.culled_triangles, 0u);
   EXPECT_EQ(img.pixel(32, 32)[3], 1.0f);
 }
+
+// The BVH's twin of the raster test (trianglesNotFacingAway): a triangle
+// is left out only when it clearly faces away from the eye, g . (eye - P0)
+// < -1e-9 |g| |eye - P0| (condition 3).
+TEST(FrontFaces, BvhLeavesOutOnlyTrianglesClearlyFacingAway) {
+  const glm::dvec3 p0{0, 0, 0}, p1{1, 0, 0}, p2{0, 1, 0};  // g = +z
+  EXPECT_FALSE(facesAwayFromEye(p0, p1, p2, {0.2, 0.2, 5}));   // in front
+  EXPECT_TRUE(facesAwayFromEye(p0, p1, p2, {0.2, 0.2, -5}));   // behind
+  EXPECT_FALSE(facesAwayFromEye(p0, p1, p2, {10, 3, 0}));      // edge-on: kept
+  // 1e-11 (relative) behind the plane: within the margin, kept; 1e-8: left out.
+  EXPECT_FALSE(facesAwayFromEye(p0, p1, p2, {10, 0, -1e-10}));
+  EXPECT_TRUE(facesAwayFromEye(p0, p1, p2, {10, 0, -1e-7}));
+  // A zero-area triangle (g = 0) is kept wherever the eye is.
+  EXPECT_FALSE(facesAwayFromEye(p0, p1, {2, 0, 0}, {0.2, 0.2, -5}));
+}
+
+// Why leaving them out is safe: every ray from the eye meets a left-out
+// triangle from behind (g . d > 0, the same sign for the whole triangle),
+// and the mesh's back faces are never a first hit (condition 1), so no
+// camera ray's first hit is among them; and the kept ones are all the rest.
+TEST(FrontFaces, BvhTrianglesOfASphereAreTheOnesRaysCanMeetFromTheFront) {
+  UvSphere s;
+  s.center = {0.5, -0.25, 0}, s.radius = 1.5;
+  const TriangleMesh m = tessellate(s);
+  const glm::dvec3 eye{0.3, 0.8, 4.2};
+  ASSERT_TRUE(backFacesNeverFirstHit(s, m, eye));
+  const std::vector<uint32_t> kept = trianglesNotFacingAway(m, eye);
+  size_t k = 0, left_out = 0;
+  for (uint32_t t = 0; t < m.triangles.size(); ++t) {
+    const glm::dvec3 a = m.positions[m.triangles[t][0]], b = m.positions[m.triangles[t][1]],
+                     c = m.positions[m.triangles[t][2]];
+    const glm::dvec3 g = glm::cross(b - a, c - a);
+    const bool is_kept = k < kept.size() && kept[k] == t;  // ascending
+    if (is_kept) {
+      ++k;
+      continue;
+    }
+    ++left_out;
+    // Rays from the eye through the centroid and near each vertex.
+    for (glm::dvec3 q : {(a + b + c) / 3.0, 0.9 * a + 0.05 * (b + c), 0.9 * b + 0.05 * (a + c),
+                         0.9 * c + 0.05 * (a + b)})
+      EXPECT_GT(glm::dot(g, glm::normalize(q - eye)), 0.0) << "triangle " << t;
+  }
+  EXPECT_EQ(k, kept.size());  // every kept index named a triangle, in order
+  // From 4.2 away the eye sees about a third of the sphere: about two
+  // thirds of the 64 x 62 triangles face away.
+  EXPECT_GT(left_out, 2400u);
+  EXPECT_LT(left_out, 3200u);
+  EXPECT_EQ(kept.size() + left_out, m.triangles.size());
+}

@@ -1,5 +1,5 @@
 // The lighting models against hand-computed values, and the identities of
-// seed 002 (Forsyth) and of the YIQ reduction (../shared/models.md).
+// seed 002 (Forsyth) and of the YIQ reduction (docs/models.md).
 #include <gtest/gtest.h>
 
 #include <random>

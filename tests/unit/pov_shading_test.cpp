@@ -41,6 +41,7 @@
 
 #include <cmath>
 #include <map>
+#include <numbers>
 
 #include "camera/camera.h"
 #include "geometry/mesh.h"
@@ -60,7 +61,6 @@ namespace {
 using namespace pov;
 using glm::dvec3;
 
-constexpr double kPi = 3.14159265358979323846;
 
 // Every number as POV-Ray reads it: the SDL text of num() parsed back.
 double sdl(double v) { return std::strtod(num(v).c_str(), nullptr); }
@@ -76,10 +76,10 @@ double patternValue(const Pattern& pt, const Point& q) {
   switch (pt.kind) {
     case Pattern::Kind::Slope: {
       const dvec3 l = pt.point_at ? glm::normalize(sdl(pt.point) - q.x) : glm::normalize(sdl(pt.direction));
-      const double raw = 0.5 + std::asin(std::clamp(glm::dot(q.n, l), -1.0, 1.0)) / kPi;
+      const double raw = 0.5 + std::asin(std::clamp(glm::dot(q.n, l), -1.0, 1.0)) / std::numbers::pi;
       double v = raw * sdl(kSlopeFrequency) + sdl(kSlopePhase);
       v -= std::floor(v);
-      return 0.5 * (1.0 + std::sin(2.0 * kPi * v));
+      return 0.5 * (1.0 + std::sin(2.0 * std::numbers::pi * v));
     }
     case Pattern::Kind::Attenuation: {
       const double d = glm::length(q.x - sdl(pt.point));
@@ -151,7 +151,7 @@ dvec3 phong(const Specular& sp, const Point& q) {
     }
     if (s.spotlight) {
       const double cos_theta = glm::dot(glm::normalize(q.x - loc), glm::normalize(sdl(s.point_at) - loc));
-      if (!(cos_theta > std::cos(sdl(s.cone_deg) * kPi / 180.0))) continue;
+      if (!(cos_theta > std::cos(sdl(s.cone_deg) * std::numbers::pi / 180.0))) continue;
     }
     const double c = glm::dot(r, l);
     if (c > 0.0) out += sdl(sp.ks) * std::pow(c, sdl(sp.shininess)) * sdl(s.colour) * att;

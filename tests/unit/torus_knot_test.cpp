@@ -1,13 +1,15 @@
 // The torus knot mesh: the paper's tessellation, normals, frame, seams, uvs.
 #include <gtest/gtest.h>
 
+#include <numbers>
+
 #include "geometry/mesh.h"
 #include "geometry/torus_knot.h"
 
 using namespace xval;
 
 namespace {
-constexpr double kTwoPi = 6.283185307179586476925286766559;
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
 }
 
 TEST(TorusKnot, PaperTessellationHas61440TrianglesAnd31529Vertices) {

@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <numbers>
 #include <optional>
 
 #include "camera/camera.h"
@@ -61,7 +62,7 @@ std::optional<dvec3> onCone(const PreparedLight<double>& l, test::CaseRng& r) {
   const dvec3 u = glm::normalize(glm::cross(a, any)), w = glm::cross(a, u);
   const double s = std::sqrt(std::max(0.0, 1.0 - l.cos_cutoff * l.cos_cutoff));
   for (int tries = 0; tries < 20000; ++tries) {
-    const double phi = r.uniform(0, 6.283185307179586);
+    const double phi = r.uniform(0, 2.0 * std::numbers::pi);
     const dvec3 g = l.cos_cutoff * a + s * (std::cos(phi) * u + std::sin(phi) * w);
     const dvec3 p = l.position + r.uniform(1.0, 4.0) * g;
     dvec3 L;
