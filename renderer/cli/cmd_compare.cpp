@@ -60,9 +60,9 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
       if (args->tol16) t.max_abs = *args->tol16 / 65535.0;
       if (args->fraction) t.fraction = *args->fraction;
       const std::string tol_source = args->tol16 && args->fraction
-                                         ? std::string("--tolerance-16bit and --fraction")
-                                         : "the default of " + tol_file.describe() +
-                                               (args->tol16 || args->fraction ? ", with the option given" : "");
+                                         ? std::string("from --tolerance-16bit and --fraction")
+                                         : std::string(args->tol16 || args->fraction ? "the option given, the rest " : "") +
+                                               "from the default of " + tol_file.describe();
       CompareMetrics m = compareImages(a, b, t);
       if (a.has_alpha != b.has_alpha)
         std::fprintf(stderr,
@@ -77,7 +77,7 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
         j["tolerance_source"] = tol_source;
         std::printf("%s\n", j.dump(2).c_str());
       } else {
-        std::printf("tolerance: %.6g/65535 on %.6g%% (%s)\n", t.max_abs * 65535.0, 100.0 * t.fraction,
+        std::printf("tolerance: %.6g/65535 on %.6g%%, %s\n", t.max_abs * 65535.0, 100.0 * t.fraction,
                     tol_source.c_str());
         std::printf("SSIM %.6f  CIEDE2000 mean %.4f max %.4f  YIQ delta mean %.3g max %.3g\n", pm.ssim,
                     pm.ciede2000_mean, pm.ciede2000_max, pm.yiq_mean, pm.yiq_max);

@@ -65,7 +65,7 @@ inline constexpr const char* kToleranceFileHelp =
     "Tolerance file. Default: the nearest tolerances.json in the scene file's folder or one of its "
     "ancestors (reference/scenes/x.json -> reference/tolerances.json; all scenes must find the same "
     "one), else the toolkit's own reference/tolerances.json; never the working directory. The file "
-    "used is printed and recorded (docs/scene-format.md, \"tolerances\")";
+    "used is printed and recorded (docs/scene-format.md, \"Which tolerance file\")";
 
 // A tolerance file found by the rule above.
 struct ToleranceFile {
