@@ -1,12 +1,18 @@
-// xval compare A.exr B.exr [--tolerance-16bit T] [--fraction F] [--diff D.exr] [--json]
+// xval compare A.exr B.exr [--tolerances FILE] [--tolerance-16bit T] [--fraction F] [--diff D.exr] [--json]
+//
+// The tolerance is the default of the tolerance file (validate/tolerances.h:
+// --tolerances FILE, else the toolkit's own: compare has no scene), with
+// --tolerance-16bit and --fraction replacing its fields.
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "cli/commands.h"
 #include "image/compare.h"
 #include "image/image_header.h"
 #include "image/perceptual.h"
+#include "validate/tolerances.h"
 
 #include <nlohmann/json.hpp>
 
@@ -14,8 +20,8 @@ namespace xval::cli {
 
 void addCompareCommand(CLI::App& app, std::function<int()>& run) {
   struct Args {
-    std::string a, b, diff;
-    double tol16 = 2.0, fraction = 0.999;
+    std::string a, b, diff, tolerances;
+    std::optional<double> tol16, fraction;
     bool json = false;
   };
   auto args = std::make_shared<Args>();
@@ -26,10 +32,14 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
       "silhouettes or not).\nExit 0 when within tolerance, 1 when not, 2 on errors.");
   cmd->add_option("a", args->a, "First image")->required()->check(CLI::ExistingFile);
   cmd->add_option("b", args->b, "Second image")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--tolerance-16bit", args->tol16, "Per-pixel tolerance in 1/65535 (default 2)")
+  cmd->add_option("--tolerances", args->tolerances,
+                  "Tolerance file whose default is used (default: the toolkit's own "
+                  "reference/tolerances.json; compare has no scene, so no search; the file used is printed)");
+  cmd->add_option("--tolerance-16bit", args->tol16,
+                  "Per-pixel tolerance in 1/65535 (default: the tolerance file's max_abs_16bit)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--fraction", args->fraction,
-                  "Fraction of covered pixels that must be within it (default 0.999)")
+                  "Fraction of covered pixels that must be within it (default: the tolerance file's fraction)")
       ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--diff", args->diff, "Write |a - b| to this image");
   cmd->add_flag("--json", args->json, "Print the metrics as JSON");
@@ -45,7 +55,14 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
                                  std::to_string(ha.height) + ") with " + args->b + " (" +
                                  std::to_string(hb.width) + "x" + std::to_string(hb.height) + ")");
       Image a = readImage(args->a), b = readImage(args->b, a.width, a.height);
-      Tolerance t{args->tol16 / 65535.0, args->fraction};
+      const ToleranceFile tol_file = findToleranceFile(args->tolerances, {});
+      Tolerance t = loadTolerances(tol_file.path).default_tolerance;
+      if (args->tol16) t.max_abs = *args->tol16 / 65535.0;
+      if (args->fraction) t.fraction = *args->fraction;
+      const std::string tol_source = args->tol16 && args->fraction
+                                         ? std::string("from --tolerance-16bit and --fraction")
+                                         : std::string(args->tol16 || args->fraction ? "the option given, the rest " : "") +
+                                               "from the default of " + tol_file.describe();
       CompareMetrics m = compareImages(a, b, t);
       if (a.has_alpha != b.has_alpha)
         std::fprintf(stderr,
@@ -56,15 +73,19 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
       if (!args->diff.empty()) writeImage(differenceImage(a, b), args->diff);
       PerceptualMetrics pm = perceptualMetrics(a, b);
       if (args->json) {
-        std::printf("%s\n", toJson(m, t, &pm).c_str());
+        nlohmann::json j = nlohmann::json::parse(toJson(m, t, &pm));
+        j["tolerance_source"] = tol_source;
+        std::printf("%s\n", j.dump(2).c_str());
       } else {
+        std::printf("tolerance: %.6g/65535 on %.6g%%, %s\n", t.max_abs * 65535.0, 100.0 * t.fraction,
+                    tol_source.c_str());
         std::printf("SSIM %.6f  CIEDE2000 mean %.4f max %.4f  YIQ delta mean %.3g max %.3g\n", pm.ssim,
                     pm.ciede2000_mean, pm.ciede2000_max, pm.yiq_mean, pm.yiq_max);
         std::printf(
             "covered %lld px, mask disagreements %lld (%lld on silhouettes)\n"
             "max %.3f  p99.9 %.3f  RMSE %.4f (x/65535)  PSNR %.1f dB  within %.3g: %.5f%%  -> %s\n",
             m.covered_both, m.mask_disagree, m.mask_disagree_silhouette, m.max_abs * 65535,
-            m.p999_abs * 65535, m.rmse * 65535, m.psnr_db, args->tol16, 100 * m.fraction_within,
+            m.p999_abs * 65535, m.rmse * 65535, m.psnr_db, t.max_abs * 65535, 100 * m.fraction_within,
             t.passes(m) ? "PASS" : "FAIL");
         std::printf("pixels by error (x/65535):");
         const char* names[7] = {"<=0.5", "<=1", "<=2", "<=4", "<=16", "<=256", ">256"};

@@ -44,9 +44,7 @@ void addCrosscheckCommand(CLI::App& app, std::function<int()>& run) {
                   "docs/blender-export.md)")
       ->check(CLI::IsMember({"povray", "blender", "blender-native"}));
   cmd->add_option("-o,--output", args->dir, "Output folder")->required();
-  cmd->add_option("--tolerances", args->tolerances,
-                  "Tolerance file (default: reference/tolerances.json beside the scene's folder, "
-                  "else the built-in default 2/65535 on 99.9%)");
+  cmd->add_option("--tolerances", args->tolerances, kToleranceFileHelp);
   cmd->add_option("--timeout", args->timeout, "Seconds before the external renderer is killed")
       ->check(Seconds);
   addBudgetOptions(cmd, args->budget);
@@ -58,13 +56,9 @@ void addCrosscheckCommand(CLI::App& app, std::function<int()>& run) {
         std::filesystem::create_directories(dir);
         const FolderLock folder_lock(dir, FolderLock::Mode::Exclusive, "xval crosscheck");
         std::filesystem::remove(dir / "metrics.json");
-        std::filesystem::path tol_file = args->tolerances;
-        if (tol_file.empty()) {
-          auto guess = std::filesystem::path(args->scene).parent_path().parent_path() / "tolerances.json";
-          if (std::filesystem::exists(guess)) tol_file = guess;
-        }
-        ToleranceTable table;
-        if (!tol_file.empty()) table = loadTolerances(tol_file);
+        const ToleranceFile tol_file = findToleranceFile(args->tolerances, {args->scene});
+        const ToleranceTable table = loadTolerances(tol_file.path);
+        std::printf("tolerances: %s\n", tol_file.describe().c_str());
         std::string reason;
         Tolerance tol = table.lookup(scene, args->renderer, &reason);
 
@@ -94,6 +88,7 @@ void addCrosscheckCommand(CLI::App& app, std::function<int()>& run) {
         j["scene"] = scene.name;
         j["renderer"] = args->renderer;
         j["tolerance_reason"] = reason;
+        j["tolerance_file"] = {{"path", tol_file.path.string()}, {"found_by", tol_file.found_by}};
         j["seconds"] = {{"reference", ref_s}, {args->renderer, info.seconds}};
         if (info.render_seconds >= 0) j["seconds"][args->renderer + "_render"] = info.render_seconds;
         writeFileAtomically(dir / "metrics.json", j.dump(2) + "\n");

@@ -1,4 +1,5 @@
 // xval validate [SCENES or DIRS...] -o results/<run>/ [--jobs N] [--timeout S] [--resume]
+//               [--tolerances FILE] [--extremes DIR] [--tradeoff DIR]
 // xval validate [SCENES or DIRS...] -o OUT --plan-only [--resume]
 // xval validate --plan OUT/jobs.json --run-job K
 // xval validate --plan OUT/jobs.json --compare-only
@@ -35,6 +36,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "common/export_common.h"
+#include "validate/tolerances.h"
 #include "validate/validation_jobs.h"
 
 namespace xval::cli {
@@ -91,7 +93,7 @@ void runJobs(const v::Plan& plan, const std::vector<size_t>& todo, int workers) 
 void addValidateCommand(CLI::App& app, std::function<int()>& run) {
   struct Args {
     std::vector<std::string> inputs;
-    std::string dir, tolerances, plan;
+    std::string dir, tolerances, plan, extremes, tradeoff;
     int jobs = 0;
     long run_job = -1;
     bool resume = false, plan_only = false, compare_only = false;
@@ -99,6 +101,12 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
     BudgetOptions budget;
   };
   auto args = std::make_shared<Args>();
+  auto sections = [](const Args& a) {
+    ReportSections s;
+    if (!a.extremes.empty()) s.extremes = a.extremes;
+    if (!a.tradeoff.empty()) s.tradeoff = a.tradeoff;
+    return s;
+  };
   CLI::App* cmd = app.add_subcommand(
       "validate",
       "Render scenes with the reference renderer, POV-Ray and Blender, compare every pair with "
@@ -114,13 +122,18 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("scenes", args->inputs, "Scene files or folders (default: reference/scenes)");
   cmd->add_option("-o,--output", args->dir,
                   "Output folder, e.g. results/<run>/ (required unless --plan is given)");
-  cmd->add_option("--tolerances", args->tolerances,
-                  "Tolerance file (default: reference/tolerances.json)");
+  cmd->add_option("--tolerances", args->tolerances, kToleranceFileHelp);
   cmd->add_option("--jobs", args->jobs, "Renders in parallel (default: the core count)")
       ->check(CLI::Range(1, 256));
   cmd->add_option("--timeout", args->timeout, "Seconds before an external renderer is killed")
       ->check(Seconds);
   addBudgetOptions(cmd, args->budget);
+  cmd->add_option("--extremes", args->extremes,
+                  "The folder of `xval extremes -o DIR` whose section the report shows (recorded in "
+                  "results.json, relative to it; default: no extremes section)");
+  cmd->add_option("--tradeoff", args->tradeoff,
+                  "The folder of `xval tradeoff SCENE -o DIR` whose section the report shows (recorded in "
+                  "results.json, relative to it; default: no trade-off section)");
   auto* resume = cmd->add_flag(
       "--resume", args->resume,
       "Keep the renders of an earlier run into the same folder whose record says ok, whose "
@@ -145,11 +158,11 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
   compare_only->needs(plan);
   run_job->excludes(compare_only);
   plan->excludes(plan_only)->excludes(resume);
-  cmd->callback([args, &run, cmd]() {
+  cmd->callback([args, &run, cmd, sections]() {
     const bool local_options_given = cmd->count("--jobs") + cmd->count("--timeout") + cmd->count("--max-triangles") +
                                          cmd->count("--max-samples") + cmd->count("--max-memory-mb") +
                                          cmd->count("--allow-large") > 0;
-    run = [args, local_options_given]() -> int {
+    run = [args, local_options_given, sections]() -> int {
       try {
         if (!args->plan.empty()) {
           if (args->run_job < 0 && !args->compare_only)
@@ -166,7 +179,10 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
           const FolderLock folder_lock(plan.dir,
                                        args->compare_only ? FolderLock::Mode::Exclusive : FolderLock::Mode::Shared,
                                        "xval validate");
-          if (args->compare_only) return v::compareAndReport(plan);
+          if (args->compare_only) return v::compareAndReport(plan, sections(*args));
+          if (!args->extremes.empty() || !args->tradeoff.empty())
+            throw std::runtime_error("--extremes and --tradeoff are for the compare step (a plain run or "
+                                     "--compare-only), not --run-job");
           if (size_t(args->run_job) >= plan.jobs.size())
             throw std::runtime_error("--run-job " + std::to_string(args->run_job) + ": " + args->plan +
                                      " has jobs 0 to " + std::to_string(plan.jobs.size() - 1));
@@ -179,10 +195,13 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
           return rec.error.empty() ? 0 : 2;
         }
         if (args->dir.empty()) throw std::runtime_error("-o OUTPUT is required (or --plan with --run-job / --compare-only)");
+        if (args->plan_only && (!args->extremes.empty() || !args->tradeoff.empty()))
+          throw std::runtime_error("--extremes and --tradeoff are for the compare step (a plain run or "
+                                   "--compare-only), not --plan-only");
+        sectionsJson(sections(*args), args->dir);  // a folder with no results fails before any render
         std::vector<std::string> inputs = args->inputs;
         if (inputs.empty()) inputs.push_back("reference/scenes");
-        const std::string tol = args->tolerances.empty() ? "reference/tolerances.json" : args->tolerances;
-        const v::Plan plan = v::makePlan(inputs, tol, args->dir, args->timeout, args->budget.get());
+        const v::Plan plan = v::makePlan(inputs, args->tolerances, args->dir, args->timeout, args->budget.get());
         std::filesystem::create_directories(plan.dir);
         const FolderLock folder_lock(plan.dir, FolderLock::Mode::Exclusive, "xval validate");
         // A new run: the old verdict must not pass for this run's, even if
@@ -202,7 +221,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
         const int workers =
             args->jobs > 0 ? args->jobs : int(std::max(1u, std::thread::hardware_concurrency()));
         runJobs(plan, todo, workers);
-        return v::compareAndReport(plan);
+        return v::compareAndReport(plan, sections(*args));
       } catch (const std::exception& e) {
         std::fprintf(stderr, "xval validate: error: %s\n", e.what());
         return 2;

@@ -45,9 +45,11 @@ struct CompareMetrics {
 // With exclude_backfacing, pixels whose shading normal faces away from the
 // eye are left out of the colour metrics (for a renderer that documents
 // turning such normals around); they are still counted.
+// Tolerance{} accepts only equal images; the project's default is in a
+// tolerance file (validate/tolerances.h says which one).
 struct Tolerance {
-  double max_abs = 2.0 / 65535.0;
-  double fraction = 0.999;
+  double max_abs = 0.0;
+  double fraction = 1.0;
   bool exclude_backfacing = false;
   bool passes(const CompareMetrics& m) const {
     return m.fraction_within >= fraction && m.mask_disagree == m.mask_disagree_silhouette &&

@@ -24,6 +24,7 @@
 
 #include "geometry/mesh.h"
 #include "render/renderer.h"
+#include "validate/tolerances.h"
 
 namespace xval::extremes {
 
@@ -432,7 +433,10 @@ ReferenceRender renderReference(const Scene& scene, Precision precision, int thr
 }
 
 CompareMetrics compareToReference(const Image& reference, const Image& other) {
-  return compareImages(reference, other, Tolerance{});
+  // The default of the tolerance file found as for a command without a
+  // scene (validate/tolerances.h): 2/65535 on 99.9% (fraction_within_2).
+  static const Tolerance t = loadTolerances(findToleranceFile({}, {}).path).default_tolerance;
+  return compareImages(reference, other, t);
 }
 
 J metricsJson(const CompareMetrics& m) {

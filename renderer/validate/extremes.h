@@ -97,8 +97,10 @@ void writeHeatScale(const std::filesystem::path& png);
 std::string shortCommit(const std::string& described);
 
 // The report's section (validate/report.cpp calls it): HTML for
-// report_dir/extremes/extremes.json, with its tables and maps; "" when
-// there is no such file. Throws std::runtime_error on a malformed file.
-std::string reportSection(const std::filesystem::path& report_dir);
+// folder/extremes.json (the folder of `xval extremes -o folder`), with its
+// tables and maps, whose paths start with `href` (the folder relative to the
+// report); "" when there is no such file. Throws std::runtime_error on a
+// malformed file.
+std::string reportSection(const std::filesystem::path& folder, const std::string& href);
 
 }  // namespace xval::extremes

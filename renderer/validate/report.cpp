@@ -10,17 +10,22 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "image/image.h"
 #include "process/run_process.h"
+#include "scene/json_reader.h"
+#include "scene/scene_loader.h"
 #include "validate/extremes.h"
 #include "validate/report_tradeoff.h"
 
 namespace xval {
 
-using J = nlohmann::json;
+namespace fs = std::filesystem;
+using J = nlohmann::ordered_json;
 
 std::string htmlEscape(const std::string& s) {
   std::string o;
@@ -39,9 +44,7 @@ std::string htmlEscape(const std::string& s) {
 
 namespace {
 
-void writeHeatMap(const std::filesystem::path& diff_exr, const std::filesystem::path& png) {
-  writePreviewPng(heatMap(readImage(diff_exr)), png, 360);
-}
+constexpr int kHeatMapSide = 360;  // heat map previews: at most 360 px
 
 std::string fmt(double v, int prec = 3) {
   if (!std::isfinite(v)) return "inf";
@@ -50,17 +53,45 @@ std::string fmt(double v, int prec = 3) {
   return b;
 }
 
+// gnuplot string: only [A-Za-z0-9_.-] of a name, the rest '_'.
+std::string gnuplotSafe(const std::string& n) {
+  std::string safe;
+  for (char ch : n) safe += (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-' || ch == '.') ? ch : '_';
+  return safe;
+}
+
+// The pair ids of the run, in the order of their first appearance.
+std::vector<std::string> pairIds(const J& cases) {
+  std::vector<std::string> ids;
+  for (const auto& c : cases)
+    for (const auto& p : c["pairs"]) {
+      const std::string id = p["pair"].get<std::string>();
+      if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
+    }
+  return ids;
+}
+
+const J* findPair(const J& c, const std::string& id) {
+  for (const auto& p : c["pairs"])
+    if (p["pair"] == id) return &p;
+  return nullptr;
+}
+
 // The p99.9 error of every pair of every case, as a gnuplot bar chart.
-void writePlot(const J& cases, const std::filesystem::path& dir) {
+void writePlot(const J& cases, const std::vector<std::string>& pairs, const std::filesystem::path& dir) {
   const std::filesystem::path dat = dir / "p999.dat", gp = dir / "p999.gp";
   {
     std::ostringstream d;
-    d << "# case ref-povray ref-blender povray-blender (p99.9 error, 1/65535)\n";
+    d << "# case";
+    for (const auto& id : pairs) d << " " << gnuplotSafe(id);
+    d << " (p99.9 error, 1/65535)\n";
     int i = 0;
     for (const auto& c : cases) {
       d << i++;
-      for (const auto& p : c["pairs"])
-        d << " " << (p.contains("metrics") ? std::max(0.01, p["metrics"]["p999_abs_16bit"].get<double>()) : 0.01);
+      for (const auto& id : pairs) {
+        const J* p = findPair(c, id);
+        d << " " << (p && p->contains("metrics") ? std::max(0.01, (*p)["metrics"]["p999_abs_16bit"].get<double>()) : 0.01);
+      }
       d << "\n";
     }
     writeFileAtomically(dat, d.str());
@@ -74,16 +105,15 @@ void writePlot(const J& cases, const std::filesystem::path& dir) {
   g << "set xtics (";
   int i = 0;
   for (const auto& c : cases) {
-    // gnuplot string: only [A-Za-z0-9_.-] of the scene name, the rest '_'.
-    std::string n = c["scene"].get<std::string>();
-    std::string safe;
-    for (char ch : n) safe += (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-' || ch == '.') ? ch : '_';
-    g << (i ? ", " : "") << "'" << safe << "' " << i;
+    g << (i ? ", " : "") << "'" << gnuplotSafe(c["scene"].get<std::string>()) << "' " << i;
     ++i;
   }
   g << ")\n";
-  const std::string plot = "plot 'p999.dat' using 2 title 'reference-povray', '' using 3 title "
-                           "'reference-blender', '' using 4 title 'povray-blender'\n";
+  std::string plot = "plot ";
+  for (size_t k = 0; k < pairs.size(); ++k)
+    plot += std::string(k ? ", '' " : "'p999.dat' ") + "using " + std::to_string(k + 2) + " title '" +
+            gnuplotSafe(pairs[k]) + "'";
+  plot += "\n";
   writeFileAtomically(gp, g.str() + plot);  // the script as a user would rerun it
   // gnuplot (no shell: process/run_process.h) runs a copy that writes the
   // plot into the private folder of writeFileAtomically (a name relative to
@@ -112,15 +142,12 @@ const J* findCase(const J& cases, const std::string& name) {
   return nullptr;
 }
 
-// The paper's Figure 1 claims, measured on the reference renders
-// (docs/paper-claims.md states the conditions).
-std::string paperClaims(const J& cases) {
-  const char* names[] = {"fig1_phong_front", "fig1_phong_behind", "fig1_phong_specular",
-                         "fig1_yiq_front",   "fig1_yiq_behind",   "fig1_yiq_specular"};
-  const J* st[6];
-  for (int i = 0; i < 6; ++i)
-    if (!(st[i] = findCase(cases, names[i]))) return "";  // not in this run
-  auto v = [&](int i, const char* k) { return (*st[i])[k].get<double>(); };
+// The paper's Figure 1 claims as results.json states them (`paper_claims`,
+// judged by the compare step: validate/paper_claims.h), with the colour
+// statistics of the scenes they are judged on.
+std::string paperClaimsSection(const J& results, const J& cases) {
+  if (!results.contains("paper_claims")) return "";  // not in this run
+  const J& pc = results["paper_claims"];
   std::ostringstream h;
   h << "<h2>The paper's Figure 1 claims, measured</h2>\n<p>On the reference renders of the "
        "Figure 1 scenes, over lit pixels (luma &gt; 0.02), colours as sRGB-coded CIELAB: mean "
@@ -128,58 +155,95 @@ std::string paperClaims(const J& cases) {
        "texture colour at the same pixel (where both have C* &ge; 5). See docs/paper-claims.md.</p>\n"
        "<table><tr><th class=\"l\">scene</th><th>lit pixels</th><th>mean C*</th><th>texture mean C*</th>"
        "<th>grey share</th><th>hue error (deg)</th></tr>\n";
-  for (int i = 0; i < 6; ++i)
-    h << "<tr><td class=\"l\">" << names[i] << "</td><td>" << (*st[i])["lit_pixels"].get<long long>()
-      << "</td><td>" << fmt(v(i, "mean_chroma"), 2) << "</td><td>" << fmt(v(i, "mean_albedo_chroma"), 2)
-      << "</td><td>" << fmt(100 * v(i, "grey_fraction"), 1) << "%</td><td>" << fmt(v(i, "hue_error_deg"), 2)
+  for (const auto& name : pc["scenes"]) {
+    const J* st = findCase(cases, name.get<std::string>());
+    h << "<tr><td class=\"l\">" << htmlEscape(name.get<std::string>()) << "</td>";
+    if (!st) {
+      h << "<td class=\"err\" colspan=\"5\">no colour statistics in results.json</td></tr>\n";
+      continue;
+    }
+    h << "<td>" << (*st)["lit_pixels"].get<long long>() << "</td><td>" << fmt((*st)["mean_chroma"], 2)
+      << "</td><td>" << fmt((*st)["mean_albedo_chroma"], 2) << "</td><td>"
+      << fmt(100 * (*st)["grey_fraction"].get<double>(), 1) << "%</td><td>" << fmt((*st)["hue_error_deg"], 2)
       << "</td></tr>\n";
+  }
   h << "</table>\n<table><tr><th class=\"l\">claim (paper, section 4)</th><th class=\"l\">condition</th>"
        "<th>measured</th><th>verdict</th></tr>\n";
-  auto row = [&](const std::string& claim, const std::string& cond, const std::string& meas, bool ok) {
-    h << "<tr><td class=\"l\">" << claim << "</td><td class=\"l\">" << cond << "</td><td>" << meas
-      << "</td><td class=\"" << (ok ? "pass\">holds" : "fail\">does not hold") << "</td></tr>\n";
-  };
-  row("Specular only, classic Phong is grey whatever the texture",
-      "grey share of fig1_phong_specular &ge; 95%", fmt(100 * v(2, "grey_fraction"), 1) + "%",
-      v(2, "grey_fraction") >= 0.95);
-  row("Specular only, the YIQ model follows the texture",
-      "grey share of fig1_yiq_specular &le; 20% and hue error &le; 15 deg",
-      fmt(100 * v(5, "grey_fraction"), 1) + "%, " + fmt(v(5, "hue_error_deg"), 1) + " deg",
-      v(5, "grey_fraction") <= 0.2 && v(5, "hue_error_deg") <= 15.0);
-  row("Light behind, classic Phong greys out and YIQ does not",
-      "grey share: phong_behind &ge; 2 x yiq_behind, and mean C*: yiq_behind &gt; phong_behind",
-      fmt(100 * v(1, "grey_fraction"), 1) + "% vs " + fmt(100 * v(4, "grey_fraction"), 1) + "%; C* " +
-          fmt(v(4, "mean_chroma"), 1) + " vs " + fmt(v(1, "mean_chroma"), 1),
-      v(1, "grey_fraction") >= 2 * v(4, "grey_fraction") && v(4, "mean_chroma") > v(1, "mean_chroma"));
-  row("Light in front, YIQ is no worse than classic Phong",
-      "hue error: yiq_front &le; phong_front + 2 deg",
-      fmt(v(3, "hue_error_deg"), 2) + " vs " + fmt(v(0, "hue_error_deg"), 2) + " deg",
-      v(3, "hue_error_deg") <= v(0, "hue_error_deg") + 2.0);
+  for (const auto& c : pc["claims"])
+    h << "<tr><td class=\"l\">" << htmlEscape(c["claim"].get<std::string>()) << "</td><td class=\"l\">"
+      << htmlEscape(c["condition"].get<std::string>()) << "</td><td>" << htmlEscape(c["measured"].get<std::string>())
+      << "</td><td class=\"" << (c["holds"].get<bool>() ? "pass\">holds" : "fail\">does not hold")
+      << "</td></tr>\n";
   h << "</table>\n";
   return h.str();
 }
 
+// The folder of an extremes or trade-off section: the one given, else the
+// one results.json names (relative to its folder), else none.
+std::optional<fs::path> sectionFolder(const J& results, const char* key, const std::optional<fs::path>& given,
+                                      const fs::path& dir) {
+  if (given) return *given;
+  if (results.contains("sections") && results["sections"].contains(key))
+    return dir / results["sections"][key].get<std::string>();
+  return std::nullopt;
+}
+
+std::string relativeHref(const fs::path& folder, const fs::path& html_dir) {
+  const fs::path rel = fs::absolute(folder).lexically_normal().lexically_relative(
+      fs::absolute(html_dir).lexically_normal());
+  std::string href = rel.empty() ? std::string(".") : rel.generic_string();
+  while (href.size() > 1 && href.back() == '/') href.pop_back();
+  return href;
+}
+
+void requireSectionFile(const fs::path& folder, const char* file, const char* what) {
+  if (!fs::is_regular_file(folder / file))
+    throw std::runtime_error((folder / file).string() + ": no " + what + " results there (expected the folder of `xval " +
+                             what + " -o DIR`)");
+}
+
 }  // namespace
 
-void writeReport(const std::filesystem::path& results_json, const std::filesystem::path& html) {
-  std::ifstream in(results_json);
-  if (!in) throw std::runtime_error(results_json.string() + ": cannot open");
-  J r;
-  try {
-    r = J::parse(in);
-  } catch (const J::exception& e) {
-    throw std::runtime_error(results_json.string() + ": not valid JSON: " + e.what());
+nlohmann::ordered_json sectionsJson(const ReportSections& sections, const fs::path& results_dir) {
+  J j = J::object();
+  if (sections.extremes) {
+    requireSectionFile(*sections.extremes, "extremes.json", "extremes");
+    j["extremes"] = relativeHref(*sections.extremes, results_dir);
   }
+  if (sections.tradeoff) {
+    requireSectionFile(*sections.tradeoff, "tradeoff.json", "tradeoff");
+    j["tradeoff"] = relativeHref(*sections.tradeoff, results_dir);
+  }
+  return j;
+}
+
+std::string writeHeatMapPng(const Image& diff, const fs::path& results_dir, const std::string& scene,
+                            const std::string& pair) {
+  const std::string rel = scene + "/heat_" + pair + ".png";
+  writePreviewPng(heatMap(diff), results_dir / rel, kHeatMapSide);
+  return rel;
+}
+
+void writeReport(const std::filesystem::path& results_json, const std::filesystem::path& html,
+                 const ReportSections& sections) {
+  // Read as scene files are: a key given twice is refused.
+  const J r = parseOrderedJsonText(readJsonFile(results_json, "results file"), results_json.string());
   if (r.value("format", "") != "xval-results/1")
     throw std::runtime_error(results_json.string() + ": format: expected \"xval-results/1\"");
   const std::filesystem::path dir = results_json.parent_path().empty() ? "." : results_json.parent_path();
+  const fs::path html_dir = html.parent_path().empty() ? "." : html.parent_path();
   J cases = r["cases"];
   // Failures (and errors) first, then by name.
   std::stable_sort(cases.begin(), cases.end(), [](const J& a, const J& b) {
     return a["pass"].get<bool>() < b["pass"].get<bool>();
   });
+  const std::vector<std::string> pairs = pairIds(cases);
+  const std::optional<fs::path> extremes_dir = sectionFolder(r, "extremes", sections.extremes, dir);
+  const std::optional<fs::path> tradeoff_dir = sectionFolder(r, "tradeoff", sections.tradeoff, dir);
+  if (extremes_dir) requireSectionFile(*extremes_dir, "extremes.json", "extremes");
+  if (tradeoff_dir) requireSectionFile(*tradeoff_dir, "tradeoff.json", "tradeoff");
   writeHeatScalePng(dir / "heat_scale.png");
-  writePlot(cases, dir);
+  writePlot(cases, pairs, dir);
 
   int pass = 0, fail = 0, err = 0;
   for (const auto& c : cases) {
@@ -211,15 +275,20 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   h << "</table>\n";
   h << "<h2>Summary</h2>\n<table><tr><th class=\"l\">scene</th><th class=\"l\">verdict</th>"
        "<th class=\"l\">who deviates</th>";
-  for (const char* p : {"reference-povray", "reference-blender", "povray-blender"})
-    h << "<th>" << p << "<br>p99.9 / max</th>";
+  for (const auto& p : pairs) h << "<th>" << htmlEscape(p) << "<br>p99.9 / max</th>";
   h << "</tr>\n";
   for (const auto& c : cases) {
     const std::string id = htmlEscape(c["scene"].get<std::string>());
     h << "<tr><td class=\"l\"><a href=\"#" << id << "\">" << id << "</a></td><td class=\"l "
       << (c["pass"].get<bool>() ? "pass\">PASS" : "fail\">FAIL") << "</td><td class=\"l\">"
       << htmlEscape(c["attribution"].get<std::string>()) << "</td>";
-    for (const auto& p : c["pairs"]) {
+    for (const auto& id : pairs) {
+      const J* pp = findPair(c, id);
+      if (!pp) {
+        h << "<td></td>";  // this case has no such pair
+        continue;
+      }
+      const J& p = *pp;
       if (!p.contains("metrics")) {
         h << "<td class=\"err\">error</td>";
         continue;
@@ -233,22 +302,21 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   h << "</table>\n<figure><img src=\"p999.png\" alt=\"p99.9 error per scene and pair\">"
        "<figcaption>p99.9 error per scene and pair (log scale; gnuplot)</figcaption></figure>\n";
 
-  h << paperClaims(cases);
-  h << extremes::reportSection(dir);  // when DIR/extremes/extremes.json exists (xval extremes)
-  h << tradeoffReportSection(dir);  // when DIR/tradeoff/tradeoff.json exists (xval tradeoff)
+  h << paperClaimsSection(r, cases);
+  if (extremes_dir) h << extremes::reportSection(*extremes_dir, relativeHref(*extremes_dir, html_dir));
+  if (tradeoff_dir) h << tradeoffReportSection(*tradeoff_dir, relativeHref(*tradeoff_dir, html_dir));
   h << "<h2>Cases</h2>\n<p>Heat maps: largest channel difference per pixel, "
        "<img src=\"heat_scale.png\" alt=\"scale\" style=\"width:300px;height:12px;vertical-align:middle\">"
        " from 0 through 1 (first seventh, linear) to 4096/65535 (logarithmic); grey: not covered.</p>\n";
   for (const auto& c : cases) {
-    const std::string scene = c["scene"].get<std::string>();
-    const std::string id = htmlEscape(scene);
+    const std::string id = htmlEscape(c["scene"].get<std::string>());
     h << "<div class=\"case\" id=\"" << id << "\"><h3>" << id << " &mdash; <span class=\""
       << (c["pass"].get<bool>() ? "pass\">PASS" : "fail\">FAIL") << "</span></h3>\n";
     h << "<p>" << htmlEscape(c["attribution"].get<std::string>()) << ". Reproduce: <code>xval validate "
       << htmlEscape(c["file"].get<std::string>()) << " -o DIR</code></p>\n<div class=\"imgs\">";
-    for (const char* renderer : {"reference", "povray", "blender"}) {
-      if (!c["renders"].contains(renderer)) continue;
-      const J& rr = c["renders"][renderer];
+    for (auto it = c["renders"].begin(); it != c["renders"].end(); ++it) {
+      const std::string renderer = htmlEscape(it.key());
+      const J& rr = it.value();
       h << "<figure><img src=\"" << htmlEscape(rr["image"].get<std::string>()) << "\" alt=\""
         << renderer << "\"><figcaption>" << renderer << ", "
         << fmt(rr["seconds"], 2) << " s";
@@ -258,11 +326,14 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
     }
     h << "</div>\n<div class=\"imgs\">";
     for (const auto& p : c["pairs"]) {
+      // The heat map the compare step wrote and named (it had the EXRs).
+      if (!p.contains("heat_map")) continue;
       const std::string pair = p["pair"].get<std::string>();
-      const std::filesystem::path diff = dir / scene / ("diff_" + pair + ".exr");
-      if (!p.contains("metrics") || !std::filesystem::exists(diff)) continue;
-      const std::string heat = scene + "/heat_" + pair + ".png";
-      writeHeatMap(diff, dir / heat);
+      const std::string heat = p["heat_map"].get<std::string>();
+      if (!fs::is_regular_file(dir / heat)) {
+        h << "<p class=\"err\">heat map " << htmlEscape(heat) << " (named in results.json) is missing</p>";
+        continue;
+      }
       h << "<figure><img src=\"" << htmlEscape(heat) << "\" alt=\"heat map " << htmlEscape(pair)
         << "\"><figcaption>|" << htmlEscape(pair) << "|</figcaption></figure>";
     }

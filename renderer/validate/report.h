@@ -1,23 +1,52 @@
-// report.html from a results.json of `xval validate`.
+// report.html from a results.json of `xval validate`: a view of
+// results.json and of the files it names, nothing else.
 //
-// Reads only results.json and the images `validate` wrote beside it; writes
-// report.html, a heat map PNG per pair (heat_<pair>.png, the largest
-// channel difference per pixel on a logarithmic colour scale from 1/65535
-// to 4096/65535, grey where neither render covers the pixel), the scale
-// (heat_scale.png) and the summary plot (p999.png, drawn by gnuplot).
-// Every string from the results is HTML-escaped. The page checks on load
-// that every image decoded and says so in its title ("xval report: N
-// images OK" or "xval report: BROKEN ..."), which the report's test reads.
+// What the report shows comes from results.json: the cases, their renders
+// (each with the preview PNG it names) and pairs in the order stored, the
+// pairs' heat maps (the PNG each pair names in `heat_map`, written by the
+// compare step, which has the EXRs: writeHeatMapPng), the paper's Figure 1
+// verdicts (`paper_claims`, computed by the compare step:
+// validate/paper_claims.h), and the extremes and trade-off sections from
+// the folders `sections` names (or the ones given to writeReport). It
+// regenerates only what it can from results.json alone: the summary plot
+// (p999.png, drawn by gnuplot through process/run_process.h) and the heat
+// map's scale (heat_scale.png). Every string from the results is
+// HTML-escaped. The page checks on load that every image decoded and says
+// so in its title ("xval report: N images OK" or "xval report: BROKEN
+// ..."), which the report's test reads.
 #pragma once
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
+
+#include "image/image.h"
 
 namespace xval {
 
+// The folders of the extremes (`xval extremes -o DIR`: DIR/extremes.json)
+// and trade-off (`xval tradeoff -o DIR`: DIR/tradeoff.json) results.
+// Unset: the one results.json names in `sections`, if any.
+struct ReportSections {
+  std::optional<std::filesystem::path> extremes, tradeoff;
+};
+
+// results.json's `sections`: each folder given, relative to `results_dir`
+// (so the report folder can move as a whole). Throws std::runtime_error when
+// a folder has no extremes.json / tradeoff.json.
+nlohmann::ordered_json sectionsJson(const ReportSections& sections, const std::filesystem::path& results_dir);
+
 // Throws std::runtime_error (file, what is wrong) on bad input or when
 // gnuplot is missing or fails.
-void writeReport(const std::filesystem::path& results_json, const std::filesystem::path& html);
+void writeReport(const std::filesystem::path& results_json, const std::filesystem::path& html,
+                 const ReportSections& sections = {});
+
+// The heat map of one pair (image/heat_map.h, a preview of at most 360 px)
+// as results_dir/<scene>/heat_<pair>.png; returns that path relative to
+// results_dir, for the pair's `heat_map` in results.json.
+std::string writeHeatMapPng(const Image& diff, const std::filesystem::path& results_dir,
+                            const std::string& scene, const std::string& pair);
 
 std::string htmlEscape(const std::string& s);
 

@@ -1,7 +1,8 @@
 // The report's "Extremes" section (validate/extremes.h: reportSection),
-// from REPORT_DIR/extremes/extremes.json as written by `xval extremes -o
-// REPORT_DIR/extremes`. Reads nothing else; every string from the file is
-// HTML-escaped; image paths are relative to the report (extremes/...).
+// from FOLDER/extremes.json as written by `xval extremes -o FOLDER` (the
+// folder results.json or `xval report --extremes` names). Reads nothing
+// else; every string from the file is HTML-escaped; image paths are
+// relative to the report (HREF/...).
 //
 // Layout: a paragraph with the totals and the command; one table, a row
 // per case: NaN/Inf pixels of the reference renderer (double, float; final
@@ -54,8 +55,9 @@ std::string shortCommit(const std::string& described) {
          (dirty ? " plus uncommitted changes" : "");
 }
 
-std::string reportSection(const std::filesystem::path& report_dir) {
-  const std::filesystem::path file = report_dir / "extremes" / "extremes.json";
+std::string reportSection(const std::filesystem::path& folder, const std::string& href) {
+  const std::filesystem::path file = folder / "extremes.json";
+  const std::string prefix = htmlEscape(href) + "/";
   if (!std::filesystem::exists(file)) return "";
   std::ifstream in(file);
   J r;
@@ -90,7 +92,7 @@ std::string reportSection(const std::filesystem::path& report_dir) {
     << htmlEscape(prov["command"].get<std::string>()) << "</code> on " << htmlEscape(prov["date"].get<std::string>())
     << " (" << htmlEscape(prov["machine"].get<std::string>()) << "; commit "
     << htmlEscape(shortCommit(prov["git_commit"].get<std::string>())) << "). Each scene is in "
-       "<code>extremes/scenes/</code> and renders with <code>xval render</code>.</p>\n";
+       "<code>" << prefix << "scenes/</code> and renders with <code>xval render</code>.</p>\n";
   h << "<table><tr><th class=\"l\">case</th><th class=\"l\">group</th><th>NaN/Inf double<br>final / raw</th>"
        "<th>NaN/Inf float<br>final / raw</th><th>float vs double<br>max / p99.9</th>";
   for (const auto& rr : renderers) h << "<th>" << label(rr) << " vs double<br>max / p99.9</th>";
@@ -122,16 +124,16 @@ std::string reportSection(const std::filesystem::path& report_dir) {
   h << "</table>\n";
   if (!reasons.str().empty()) h << "<ul class=\"reason\">\n" << reasons.str() << "</ul>\n";
   h << "<p>Maps: largest channel difference per pixel against the double render, "
-       "<img src=\"extremes/heat_scale.png\" alt=\"scale\" style=\"width:300px;height:12px;"
+       "<img src=\"" << prefix << "heat_scale.png\" alt=\"scale\" style=\"width:300px;height:12px;"
        "vertical-align:middle\"> from 0 through 1 (first seventh, linear) to 4096/65535 "
        "(logarithmic); grey: covered by neither.</p>\n";
   for (const auto& c : cases) {
     const std::string name = htmlEscape(c["name"].get<std::string>());
     h << "<div class=\"case\" id=\"x-" << name << "\"><h3>" << name << "</h3><p class=\"reason\">"
-      << htmlEscape(c["what"].get<std::string>()) << ". Scene: <code>extremes/"
+      << htmlEscape(c["what"].get<std::string>()) << ". Scene: <code>" << prefix
       << htmlEscape(c["scene"].get<std::string>()) << "</code></p>\n<div class=\"imgs\">";
     auto fig = [&](const std::string& src, const std::string& caption) {
-      h << "<figure><img src=\"extremes/" << htmlEscape(src) << "\" alt=\"" << htmlEscape(caption)
+      h << "<figure><img src=\"" << prefix << htmlEscape(src) << "\" alt=\"" << htmlEscape(caption)
         << "\"><figcaption>" << htmlEscape(caption) << "</figcaption></figure>";
     };
     fig(c["preview"].get<std::string>(), "double (reference)");

@@ -28,8 +28,8 @@ std::string text(const J& j) { return htmlEscape(j.is_string() ? j.get<std::stri
 
 }  // namespace
 
-std::string tradeoffReportSection(const std::filesystem::path& report_dir) {
-  const std::filesystem::path file = report_dir / "tradeoff" / "tradeoff.json";
+std::string tradeoffReportSection(const std::filesystem::path& folder, const std::string& href) {
+  const std::filesystem::path file = folder / "tradeoff.json";
   if (!std::filesystem::exists(file)) return "";
   std::ifstream in(file);
   if (!in) throw std::runtime_error(file.string() + ": cannot open");
@@ -69,14 +69,14 @@ std::string tradeoffReportSection(const std::filesystem::path& report_dir) {
         << num(r.at("ciede2000_mean"), 4) << "</td></tr>\n";
     }
     h << "</table>\n";
-    if (std::filesystem::exists(report_dir / "tradeoff" / "pareto.png"))
-      h << "<figure><img src=\"tradeoff/pareto.png\" alt=\"Pareto plot\" style=\"width:800px\">"
+    if (std::filesystem::exists(folder / "pareto.png"))
+      h << "<figure><img src=\"" << htmlEscape(href) << "/pareto.png\" alt=\"Pareto plot\" style=\"width:800px\">"
            "<figcaption>Error (" << text(t.at("pareto_metric"))
         << ") against frame time, log axes; Pareto-optimal configurations in red, errors closer than the "
            "reference's residual (" << num(t.at("pareto_error_tolerance").get<double>(), 2)
         << ") counted as equal (gnuplot)</figcaption></figure>\n";
     else
-      h << "<p class=\"err\">tradeoff/pareto.png is missing.</p>\n";
+      h << "<p class=\"err\">" << htmlEscape(href) << "/pareto.png is missing.</p>\n";
     h << "<table><tr><th class=\"l\">configuration</th><th>spp</th><th>segments</th><th>triangles</th>"
          "<th class=\"l\">precision</th><th class=\"l\">shading</th><th class=\"l\">filter</th>"
          "<th>frame ms: median (min..max, n)</th><th>setup s</th><th>max</th><th>p99.9</th><th>RMSE</th>"

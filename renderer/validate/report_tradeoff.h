@@ -1,9 +1,9 @@
-// The report's trade-off section: when the report's folder holds
-// tradeoff/tradeoff.json (written by `xval tradeoff SCENE -o DIR/tradeoff`),
+// The report's trade-off section: from the folder of `xval tradeoff SCENE
+// -o DIR` (named in results.json or by `xval report --tradeoff DIR`),
 // report.html shows its table (every configuration's knobs, frame time,
 // errors against the converged reference, Pareto-optimal marked), the
 // reference's convergence residuals and the Pareto plot
-// (tradeoff/pareto.png, drawn by `xval tradeoff` with gnuplot).
+// (DIR/pareto.png, drawn by `xval tradeoff` with gnuplot).
 #pragma once
 
 #include <filesystem>
@@ -11,9 +11,11 @@
 
 namespace xval {
 
-// The section's HTML, or "" when report_dir/tradeoff/tradeoff.json does not
-// exist. Throws std::runtime_error naming the file and the field when it
-// exists but is not a tradeoff file this version reads.
-std::string tradeoffReportSection(const std::filesystem::path& report_dir);
+// The section's HTML for folder/tradeoff.json (the folder of `xval tradeoff
+// -o folder`), its image paths starting with `href` (the folder relative to
+// the report), or "" when that file does not exist. Throws
+// std::runtime_error naming the file and the field when it exists but is
+// not a tradeoff file this version reads.
+std::string tradeoffReportSection(const std::filesystem::path& folder, const std::string& href);
 
 }  // namespace xval

@@ -1,28 +1,87 @@
-// Cross-renderer tolerances: the default in one file
-// (reference/tolerances.json), each exception declared by its scene, next to
-// it, in the scene file's `tolerances` field with a written reason
-// (docs/scene-format.md).
+// Cross-renderer tolerances: the default in one file (a tolerances.json,
+// the toolkit's own is reference/tolerances.json), each exception declared
+// by its scene, next to it, in the scene file's `tolerances` field with a
+// written reason (docs/scene-format.md, "tolerances").
+//
+// Which tolerance file: one rule, the same for validate, crosscheck,
+// compare and extremes, that does not depend on the working directory
+// (findToleranceFile):
+//   1. the file given (--tolerances FILE), if any;
+//   2. else the nearest `tolerances.json` in the scene file's folder or one
+//      of its ancestors (reference/scenes/x.json -> reference/tolerances.json);
+//      with several scenes, they must all find the same file;
+//   3. else the toolkit's own, reference/tolerances.json of the source tree
+//      the executable was built from (toolkitToleranceFile()).
+// Commands without a scene (compare, extremes) skip step 2.
+//
+// The pair of two external renderers has no declared tolerance: it is
+// derived from theirs against the reference (lookupPair).
 #pragma once
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "image/compare.h"
 #include "scene/scene.h"
 
 namespace xval {
 
+// The renderer every other one is compared with; a pair that includes it
+// uses the other renderer's declared tolerance.
+inline constexpr const char* kReferenceRendererId = "reference";
+
 struct ToleranceTable {
-  Tolerance default_tolerance;
+  Tolerance default_tolerance;  // from the file's "default"
   std::filesystem::path source;
 
-  // The tolerance for the scene against `renderer` and, when the scene
-  // declares its own, why.
+  // The tolerance for the scene against `renderer` (compared with the
+  // reference renderer): the default, with the fields the scene declares
+  // for that renderer replaced; `reason` is the declared reason ("" for the
+  // default).
   Tolerance lookup(const Scene& scene, const std::string& renderer,
                    std::string* reason = nullptr) const;
+
+  // The tolerance of the pair (a, b). With the reference renderer in the
+  // pair: lookup() of the other one. Two external renderers a and b, each
+  // within (e1 on f1) and (e2 on f2) of the reference: on the pixels where
+  // both are within, |a - b| <= |a - ref| + |ref - b| <= e1 + e2 (triangle
+  // inequality), and at most (1 - f1) + (1 - f2) of the pixels are outside
+  // either (union bound), so the pair is held to e1 + e2 on
+  // max(0, f1 + f2 - 1); back faces are left out if either leaves them out.
+  Tolerance lookupPair(const Scene& scene, const std::string& a, const std::string& b,
+                       std::string* reason = nullptr) const;
 };
 
-// Throws SceneError (file, field, value) on a malformed file.
+// Throws SceneError (file, field, value) on a malformed file; read as a
+// scene file is (scene/json_reader.h: a key given twice refused).
 ToleranceTable loadTolerances(const std::filesystem::path& file);
+
+// The toolkit's own tolerance file, absolute (fixed when it was built).
+std::filesystem::path toolkitToleranceFile();
+
+// The rule above, for --help.
+inline constexpr const char* kToleranceFileHelp =
+    "Tolerance file. Default: the nearest tolerances.json in the scene file's folder or one of its "
+    "ancestors (reference/scenes/x.json -> reference/tolerances.json; all scenes must find the same "
+    "one), else the toolkit's own reference/tolerances.json; never the working directory. The file "
+    "used is printed and recorded (docs/scene-format.md, \"Which tolerance file\")";
+
+// A tolerance file found by the rule above.
+struct ToleranceFile {
+  std::filesystem::path path;  // absolute, lexically normal
+  std::string found_by;        // "given", "nearest to the scene" or "the toolkit's own"
+  // The path relative to the working directory when it lies below it,
+  // else absolute (for messages and provenance only).
+  std::string shown() const;
+  std::string describe() const { return shown() + " (" + found_by + ")"; }
+};
+
+// The rule above. `given` empty: not given (a file given is not opened
+// here: loadTolerances says what is wrong with it). Throws
+// std::runtime_error when the scenes find different files (naming two of
+// them and what each found).
+ToleranceFile findToleranceFile(const std::filesystem::path& given,
+                                const std::vector<std::filesystem::path>& scene_files);
 
 }  // namespace xval

@@ -25,6 +25,7 @@
 #include "scene/json_reader.h"
 #include "scene/scene_loader.h"
 #include "validate/colour_stats.h"
+#include "validate/paper_claims.h"
 #include "validate/report.h"
 #include "validate/tolerances.h"
 
@@ -205,13 +206,16 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
   plan.dir = fs::absolute(dir).lexically_normal();
   if (!plan.dir.has_filename()) plan.dir = plan.dir.parent_path();  // "out/" -> "out"
   checkToolPath(plan.dir);
-  plan.tolerances = tolerances;
-  plan.tolerances_path = fs::absolute(tolerances).lexically_normal();
+  const std::vector<fs::path> scene_files = collectScenes(inputs);
+  const ToleranceFile tol_file = findToleranceFile(tolerances, scene_files);  // the rule: tolerances.h
+  plan.tolerances = tolerances.empty() ? tol_file.shown() : tolerances;
+  plan.tolerances_path = tol_file.path;
   loadTolerances(plan.tolerances_path);  // fail early on a bad tolerance file
+  std::fprintf(stderr, "xval validate: tolerances: %s\n", tol_file.describe().c_str());
   plan.timeout_seconds = timeout_seconds;
   plan.budget = budget;
   std::map<std::string, std::string> seen;  // scene name -> file
-  for (const auto& f : collectScenes(inputs)) {
+  for (const auto& f : scene_files) {
     Scene scene = loadScene(f, plan.budget);
     checkSceneName(scene.name, f.string());
     // Its case folder, if it exists already, is a real folder (not a link
@@ -456,8 +460,9 @@ JobRecord runJob(const Plan& plan, const RenderJob& job) {
   return rec;
 }
 
-int compareAndReport(const Plan& plan) {
+int compareAndReport(const Plan& plan, const ReportSections& sections) {
   const fs::path& dir = plan.dir;
+  const J jsections = sectionsJson(sections, dir);  // fails early on a folder with no results
   // The old verdict must not outlive this run: whatever stops it from here
   // on (an error, a kill) leaves no results.json or report.html at all.
   removeVerdict(plan);
@@ -521,22 +526,8 @@ int compareAndReport(const Plan& plan) {
         continue;
       }
       std::string reason;
-      Tolerance tol;
-      if (p < 2) {
-        tol = table.lookup(scene, pairs[p].b, &reason);
-      } else {
-        // POV-Ray vs Blender: where both are within their tolerance of the
-        // reference, their difference is within the sum (the triangle
-        // inequality); that holds on at least f1 + f2 - 1 of the pixels
-        // (the union bound on the pixels outside).
-        std::string r1, r2;
-        Tolerance t1 = table.lookup(scene, "povray", &r1);
-        Tolerance t2 = table.lookup(scene, "blender", &r2);
-        tol.max_abs = t1.max_abs + t2.max_abs;
-        tol.fraction = std::max(0.0, t1.fraction + t2.fraction - 1.0);
-        tol.exclude_backfacing = t1.exclude_backfacing || t2.exclude_backfacing;
-        reason = "derived: the sum of the POV-Ray and Blender tolerances on f1 + f2 - 1 of "
-                 "the pixels (triangle inequality and union bound)";
+      const Tolerance tol = table.lookupPair(scene, pairs[p].a, pairs[p].b, &reason);
+      if (p == 2) {
         // The reference's diagnostics describe the same pixels.
         A.image.depth = renders["reference"].image.depth;
         A.image.backfacing = renders["reference"].image.backfacing;
@@ -544,7 +535,9 @@ int compareAndReport(const Plan& plan) {
       }
       CompareMetrics m = compareImages(A.image, B.image, tol);
       PerceptualMetrics pm = perceptualMetrics(A.image, B.image);
-      writeImage(differenceImage(A.image, B.image), dir / j0.scene / ("diff_" + key + ".exr"));
+      const Image diff = differenceImage(A.image, B.image);
+      writeImage(diff, dir / j0.scene / ("diff_" + key + ".exr"));
+      jp["heat_map"] = writeHeatMapPng(diff, dir, j0.scene, key);  // the report only shows it
       J jm = J::parse(toJson(m, tol, &pm));
       jm["tolerance_reason"] = reason;
       jp["metrics"] = jm;
@@ -587,6 +580,8 @@ int compareAndReport(const Plan& plan) {
   // jobs waited in the queue.
   results["wall_seconds"] = std::max(0.0, nowUnix() - plan.created_unix);
   results["cases"] = jcases;
+  if (J claims = paperClaims(jcases); !claims.is_null()) results["paper_claims"] = claims;
+  if (!jsections.empty()) results["sections"] = jsections;
   writeAtomically(dir / "results.json", results.dump(2) + "\n");
   writeReport(dir / "results.json", dir / "report.html");
   // For every failing case: how to look closer, and how to accept it. The

@@ -30,6 +30,7 @@
 
 #include "files/output_folder.h"
 #include "scene/scene_budget.h"
+#include "validate/report.h"
 
 namespace xval::validation {
 
@@ -102,10 +103,12 @@ bool isDone(const Plan& plan, const RenderJob& job, std::string* why = nullptr);
 JobRecord runJob(const Plan& plan, const RenderJob& job);
 
 // Compares every pair of every scene from the EXRs and records, writes
-// results.json and report.html, prints the failing cases' next steps.
+// each pair's difference EXR and heat map PNG, results.json (with the
+// paper's Figure 1 verdicts, validate/paper_claims.h, and the `sections`
+// folders) and report.html, prints the failing cases' next steps.
 // Returns the exit status of `xval validate`: 0 all pass, 1 some case
 // outside its tolerance, 2 an error (a render failed or a job has no
 // usable record).
-int compareAndReport(const Plan& plan);
+int compareAndReport(const Plan& plan, const ReportSections& sections = {});
 
 }  // namespace xval::validation

@@ -1,6 +1,6 @@
 # `xval extremes` end to end without external renderers, at 48 x 48 (a few
-# seconds), then `xval report` on a copy of a results.json with the
-# extremes folder beside it. Checks:
+# seconds), then `xval report` on a copy of a results.json given the
+# extremes folder (--extremes). Checks:
 #   - exit 0: the reference renderer has no NaN/Inf in any case, in either
 #     precision, final or raw channels (the command exits 1 otherwise);
 #   - a progress line per case on stderr;
@@ -89,7 +89,7 @@ endif()
 # The report's section.
 file(COPY ${RESULTS} DESTINATION ${WORK}/report)
 get_filename_component(_results_name ${RESULTS} NAME)
-execute_process(COMMAND ${XVAL} report ${WORK}/report/${_results_name}
+execute_process(COMMAND ${XVAL} report ${WORK}/report/${_results_name} --extremes ${_out}
                 RESULT_VARIABLE _rc ERROR_VARIABLE _err)
 if(NOT _rc EQUAL 0)
   message(FATAL_ERROR "xval report exited ${_rc}:\n${_err}")

@@ -1,7 +1,7 @@
 # `xval tradeoff` end to end on the Table 2 scene (textured YIQ knot,
 # Phong shading, bilinear brick texture) at a small resolution, then
-# `xval report` on a copy of the published results.json with the tradeoff
-# folder beside it. Checks:
+# `xval report` on a copy of the published results.json given the tradeoff
+# folder (--tradeoff). Checks:
 #   - exit 0, and the outputs exist (tradeoff.json, .tsv, .md, pareto.png);
 #   - tradeoff.json has its fields, on every configuration;
 #   - the converged configuration's own error is 0 (max and RMSE): it is
@@ -109,9 +109,9 @@ if(NOT _de_base GREATER _de_spp_16)
 endif()
 message("converged error 0; RMSE 1 spp ${_rmse_base} > 16 spp ${_rmse_spp_16}; CIEDE2000 ${_de_base} > ${_de_spp_16}")
 
-# The report on a copy of a results.json with the tradeoff folder beside it.
+# The report on a copy of a results.json, given the tradeoff folder.
 file(COPY_FILE ${RESULTS} ${WORK}/report/results.json)
-execute_process(COMMAND ${XVAL} report ${WORK}/report/results.json
+execute_process(COMMAND ${XVAL} report ${WORK}/report/results.json --tradeoff ${_out}
   RESULT_VARIABLE _rc ERROR_VARIABLE _err)
 if(NOT _rc EQUAL 0)
   message(FATAL_ERROR "xval report exited ${_rc}:\n${_err}")

@@ -1,7 +1,8 @@
 # `xval extremes` with POV-Ray and Blender over the whole matrix (160 x 160;
 # about 1 minute on an idle 2-core machine, 2.5 under a load of 8), then
 # `xval report` on a copy of the published report folder (its PNGs and
-# results.json; no EXRs needed) with the extremes folder inside it.
+# results.json; no EXRs needed) given the extremes folder inside it
+# (--extremes).
 # Checks:
 #   - exit 0: no NaN/Inf in the reference renderer, and every external
 #     render either succeeded or was refused by its exporter with a reason
@@ -49,7 +50,7 @@ foreach(_i RANGE ${_last})
     endif()
   endforeach()
 endforeach()
-execute_process(COMMAND ${XVAL} report ${WORK}/report/results.json
+execute_process(COMMAND ${XVAL} report ${WORK}/report/results.json --extremes ${_out}
                 RESULT_VARIABLE _rc ERROR_VARIABLE _err)
 if(NOT _rc EQUAL 0)
   message(FATAL_ERROR "xval report exited ${_rc}:\n${_err}")
