@@ -15,8 +15,8 @@
 
 #include "image/image.h"
 #include "process/run_process.h"
-#include "validate/extremes.h"
-#include "validate/report_tradeoff.h"
+#include "validate/extremes/matrix.h"
+#include "validate/tradeoff/report_section.h"
 
 namespace xval {
 

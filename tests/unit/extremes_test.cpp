@@ -25,7 +25,7 @@
 #include "shading/lights.h"
 #include "shading/models.h"
 #include "shading/shader.h"
-#include "validate/extremes.h"
+#include "validate/extremes/matrix.h"
 
 using namespace xval;
 namespace m = xval::models;

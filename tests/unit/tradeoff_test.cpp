@@ -7,7 +7,7 @@
 #include <limits>
 
 #include "scene/scene_loader.h"
-#include "validate/tradeoff.h"
+#include "validate/tradeoff/sweep.h"
 
 using namespace xval;
 

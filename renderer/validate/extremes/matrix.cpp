@@ -8,7 +8,7 @@
 //   - "front" light at (-0.5, 2, 1.25) (the paper's default), "behind" at
 //     its reflection through the origin (docs/models.md);
 //   - sphere: radius 1, 64 x 32 segments; plane: 2 triangles.
-#include "validate/extremes.h"
+#include "validate/extremes/matrix.h"
 
 #include "files/atomic_write.h"
 #include "image/heat_map.h"

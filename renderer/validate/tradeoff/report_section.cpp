@@ -1,5 +1,5 @@
 // The report's trade-off section (validate/report_tradeoff.h).
-#include "validate/report_tradeoff.h"
+#include "validate/tradeoff/report_section.h"
 
 #include <nlohmann/json.hpp>
 

@@ -17,7 +17,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "validate/extremes.h"
+#include "validate/extremes/matrix.h"
 #include "validate/report.h"
 
 namespace xval::extremes {

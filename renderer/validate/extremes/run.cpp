@@ -47,7 +47,7 @@
 #include "files/output_folder.h"
 #include "povray/pov_render.h"
 #include "scene/scene_loader.h"
-#include "validate/extremes.h"
+#include "validate/extremes/matrix.h"
 
 namespace xval::cli {
 

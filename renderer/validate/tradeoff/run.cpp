@@ -63,7 +63,7 @@
 #include "image/image.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
-#include "validate/tradeoff.h"
+#include "validate/tradeoff/sweep.h"
 
 namespace xval::cli {
 

@@ -1,6 +1,6 @@
 // The trade-off sweep, the converged reference, errors and the Pareto
 // front (validate/tradeoff.h documents every parameter and default).
-#include "validate/tradeoff.h"
+#include "validate/tradeoff/sweep.h"
 
 #include <algorithm>
 #include <cmath>
