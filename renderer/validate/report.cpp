@@ -15,7 +15,7 @@
 
 #include "image/image.h"
 #include "process/run_process.h"
-#include "validate/extremes/matrix.h"
+#include "validate/extremes/report_section.h"
 #include "validate/tradeoff/report_section.h"
 
 namespace xval {

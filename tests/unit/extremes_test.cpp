@@ -26,6 +26,7 @@
 #include "shading/models.h"
 #include "shading/shader.h"
 #include "validate/extremes/matrix.h"
+#include "validate/extremes/measure.h"
 
 using namespace xval;
 namespace m = xval::models;

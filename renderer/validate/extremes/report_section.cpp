@@ -1,4 +1,4 @@
-// The report's "Extremes" section (validate/extremes.h: reportSection),
+// The report's "Extremes" section (report_section.h: reportSection),
 // from REPORT_DIR/extremes/extremes.json as written by `xval extremes -o
 // REPORT_DIR/extremes`. Reads nothing else; every string from the file is
 // HTML-escaped; image paths are relative to the report (extremes/...).
@@ -12,12 +12,15 @@
 // POV-Ray, Blender vs double) on the report's scale.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
-#include "validate/extremes/matrix.h"
+#include "validate/extremes/report_section.h"
+
+#include <nlohmann/json.hpp>
+
+#include "validate/common/number_text.h"
 #include "validate/report.h"
 
 namespace xval::extremes {
@@ -26,16 +29,9 @@ namespace {
 
 using J = nlohmann::json;
 
-std::string num(const J& v, int prec) {
-  if (v.is_null() || !v.is_number()) return "n/a";
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*f", prec, v.get<double>());
-  return b;
-}
-
 std::string metricsCell(const J& m) {
   const long long mask = m.value("mask_disagree", 0LL);
-  std::string s = num(m["max_abs_16bit"], 2) + " / " + num(m["p999_abs_16bit"], 2);
+  std::string s = fixed(m["max_abs_16bit"], 2) + " / " + fixed(m["p999_abs_16bit"], 2);
   if (mask) s += " <span class=\"reason\">(" + std::to_string(mask) + " mask)</span>";
   return s;
 }
@@ -136,7 +132,7 @@ std::string reportSection(const std::filesystem::path& report_dir) {
     };
     fig(c["preview"].get<std::string>(), "double (reference)");
     fig(c["float_vs_double"]["map"].get<std::string>(),
-        "|float - double|, p99.9 " + num(c["float_vs_double"]["p999_abs_16bit"], 2));
+        "|float - double|, p99.9 " + fixed(c["float_vs_double"]["p999_abs_16bit"], 2));
     for (const auto& rr : renderers) {
       if (!c["external"].contains(rr)) continue;
       const J& e = c["external"][rr];
@@ -144,7 +140,7 @@ std::string reportSection(const std::filesystem::path& report_dir) {
         std::string caption = "|";
         caption += label(rr);
         caption += " - double|, p99.9 ";
-        caption += num(e["metrics"]["p999_abs_16bit"], 2);
+        caption += fixed(e["metrics"]["p999_abs_16bit"], 2);
         fig(e["metrics"]["map"].get<std::string>(), caption);
       }
     }

@@ -1,0 +1,19 @@
+// The report's "Extremes" section (report_section.cpp documents its
+// layout), from REPORT_DIR/extremes/extremes.json as run.h writes it.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace xval::extremes {
+
+// "0123456789ab" from `git describe --always --dirty --abbrev=40` output,
+// with " plus uncommitted changes" for a dirty tree.
+std::string shortCommit(const std::string& described);
+
+// The report's section (validate/report.cpp calls it): HTML for
+// report_dir/extremes/extremes.json, with its tables and maps; "" when
+// there is no such file. Throws std::runtime_error on a malformed file.
+std::string reportSection(const std::filesystem::path& report_dir);
+
+}  // namespace xval::extremes
