@@ -243,3 +243,22 @@ TEST(Extremes, CountNonFiniteSeesFinalAndRawChannels) {
   EXPECT_EQ(n.final_pixels, 1);
   EXPECT_EQ(n.raw_pixels, 2);
 }
+
+// --only: the named cases in matrix order (not the order given), every
+// case when empty, and an unknown name is an error that lists the cases.
+TEST(Extremes, SelectCasesByName) {
+  const auto all = extremes::extremesMatrix({16});
+  ASSERT_GE(all.size(), 3u);
+  EXPECT_EQ(extremes::selectCases(all, "").size(), all.size());
+  const auto two = extremes::selectCases(all, all[2].name + "," + all[0].name + ",");
+  ASSERT_EQ(two.size(), 2u);
+  EXPECT_EQ(two[0].name, all[0].name);
+  EXPECT_EQ(two[1].name, all[2].name);
+  try {
+    extremes::selectCases(all, all[0].name + ",no_such_case");
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("no case named no_such_case"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(all.back().name), std::string::npos) << e.what();
+  }
+}
