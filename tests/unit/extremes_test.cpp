@@ -1,4 +1,4 @@
-// The extremes matrix (validate/extremes.h, docs/extremes.md) and the
+// The extremes matrix (validate/extremes/matrix.h, measure.h, docs/extremes.md) and the
 // formulation fixes its cases showed. Each fix has a test in which the old
 // formula gives a large error (or a vanished light) and the new one not:
 //   - clamp(R.V)^n from |R - V| (models::phongSpecular; case specular_n1e6);

@@ -1,4 +1,4 @@
-// validate/tradeoff.h: the Pareto front on hand-made points, the sweep's
+// validate/tradeoff/sweep.h: the Pareto front on hand-made points, the sweep's
 // rows, the tessellation scaling and the error of an image against a
 // reference on hand-made images.
 #include <gtest/gtest.h>
