@@ -102,136 +102,118 @@ std::string commandLine(const TradeoffRun& a, const SweepSettings& settings, int
          std::to_string(H) + " --metric " + a.metric + (a.threads ? " --threads " + std::to_string(a.threads) : "");
 }
 
-}  // namespace
+// Renders and times the configurations of one run.
+class Runner {
+ public:
+  Runner(const TradeoffRun& a, const fs::path& dir, int W, int H) : a_(a), dir_(dir), W_(W), H_(H) {
+    opt_.threads = a.threads;
+    opt_.diagnostics = false;
+  }
 
-void runTradeoff(const TradeoffRun& a) {
-  const char* metric_label = metricLabel(a.metric);
-  Scene scene = loadScene(a.scene_file, a.budget);
-  if (a.width) scene.camera.width = a.width;
-  if (a.height) scene.camera.height = a.height;
-  SweepSettings settings;
-  settings.quick = a.quick;
-  settings.reference_spp = a.reference_spp ? a.reference_spp : (a.quick ? 16 : 64);
-  settings.reference_tessellation = a.reference_tessellation > 0 ? a.reference_tessellation : (a.quick ? 2.0 : 4.0);
-  const std::vector<TradeoffConfig> configs = sweepConfigs(scene, settings);
-  const std::vector<TradeoffConfig> checks = convergenceChecks(scene, settings);
-  const TradeoffConfig ref_cfg = configs.back();  // "converged"
-  // Every configuration is checked by the loader before anything runs.
-  std::vector<Scene> applied;
-  for (const auto& c : configs) applied.push_back(applyConfig(scene, c, a.budget));
-  std::vector<Scene> applied_checks;
-  for (const auto& c : checks) applied_checks.push_back(applyConfig(scene, c, a.budget));
+  // 1. The converged reference (into `reference`), its knobs as "reference",
+  // and the converged row timed on it (the reference frame was its warm-up).
+  std::pair<J, J> reference(const TradeoffConfig& cfg, const Scene& applied, Image& reference) const {
+    std::fprintf(stderr, "[reference] preparing %s ...\n", cfg.id.c_str());
+    PreparedScene p(applied, Precision::Double);
+    std::fprintf(stderr, "[reference] %zu triangles, setup %.2f s; rendering %d spp ...\n", p.triangleCount(),
+                 p.setupSeconds(), cfg.spp);
+    const double t_ref = renderOnce(p, cfg.spp, reference, true);
+    std::fprintf(stderr, "[reference] %.2f s\n", t_ref);
+    saveImage("reference", reference);
+    J ref_json = knobsJson(cfg, applied, p.triangleCount());
+    ref_json["setup_s"] = p.setupSeconds();
+    ref_json["render_s"] = t_ref;
+    Image img(W_, H_, false);
+    const FrameTimes ft = timeFrames([&] { renderOnce(p, cfg.spp, img, false); }, budget(), WarmUp::AlreadyDone);
+    J converged_row = row(cfg, applied, p, ft, img, reference);
+    std::fprintf(stderr, "[converged] frame %.1f ms (n=%zu), error against the reference: RMSE %.3g\n",
+                 converged_row["frame_median_s"].get<double>() * 1e3, ft.wall_s.size(),
+                 converged_row["error"]["rmse_16bit"].get<double>());
+    return {ref_json, converged_row};
+  }
 
-  const fs::path dir(a.out);
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir))
-    throw std::runtime_error(dir.string() + ": cannot create the output folder" +
-                             (ec ? ": " + ec.message() : std::string()));
-  const FolderLock folder_lock(dir, FolderLock::Mode::Exclusive, "xval tradeoff");
-  if (a.images) makeRealFolder(dir, dir / "images");
+  // 2. The reference against one step finer each way: the residuals.
+  J convergence(const std::vector<TradeoffConfig>& checks, const std::vector<Scene>& applied,
+                const Image& reference) const {
+    J conv = J::array();
+    for (size_t i = 0; i < checks.size(); ++i) {
+      std::fprintf(stderr, "[check %zu/%zu] %s: preparing ...\n", i + 1, checks.size(), checks[i].id.c_str());
+      PreparedScene p(applied[i], Precision::Double);
+      Image img(W_, H_, false);
+      std::fprintf(stderr, "[check %zu/%zu] %zu triangles, setup %.2f s; rendering %d spp ...\n", i + 1,
+                   checks.size(), p.triangleCount(), p.setupSeconds(), checks[i].spp);
+      const double t = renderOnce(p, checks[i].spp, img, true);
+      const TradeoffError e = tradeoffError(img, reference);
+      saveImage(checks[i].id, img);
+      conv.push_back({{"id", checks[i].id}, {"knobs", knobsJson(checks[i], applied[i], p.triangleCount())},
+                      {"setup_s", p.setupSeconds()}, {"render_s", t}, {"residual", errorJson(e)}});
+      std::fprintf(stderr,
+                   "[check %zu/%zu] %s: %.2f s; residual max %.2f, p99.9 %.2f, RMSE %.3f (1/65535), "
+                   "CIEDE2000 mean %.4f\n",
+                   i + 1, checks.size(), checks[i].id.c_str(), t, e.max_16bit, e.p999_16bit, e.rmse_16bit,
+                   e.ciede2000_mean);
+    }
+    return conv;
+  }
 
-  RenderOptions opt;
-  opt.threads = a.threads;
-  opt.diagnostics = false;
-  const int W = scene.camera.width, H = scene.camera.height;
-  const auto t_all = Clock::now();
-  const Provenance prov = collectProvenance(dir / "git.log");
-  std::fprintf(stderr,
-               "xval tradeoff %s (%dx%d): %zu configurations, reference %d spp x%g tessellation "
-               "double phong, %zu convergence checks; up to %d frames or %.1f s per configuration\n",
-               scene.name.c_str(), W, H, configs.size(), ref_cfg.spp, ref_cfg.tessellation_factor, checks.size(),
-               a.frames, a.max_seconds);
+  // 3. The sweep: every configuration but the last ("converged").
+  J sweep(const std::vector<TradeoffConfig>& configs, const std::vector<Scene>& applied,
+          const Image& reference) const {
+    J rows = J::array();
+    for (size_t i = 0; i + 1 < configs.size(); ++i) {
+      const TradeoffConfig& c = configs[i];
+      PreparedScene p(applied[i], c.precision);
+      Image img(W_, H_, false);
+      const FrameTimes ft = timeFrames([&] { renderOnce(p, c.spp, img, false); }, budget(), WarmUp::Render);
+      saveImage(c.id, img);
+      rows.push_back(row(c, applied[i], p, ft, img, reference));
+      const J& r = rows.back();
+      const J& e = r["error"];
+      std::fprintf(stderr,
+                   "[%zu/%zu] %-20s frame %9.1f ms (%.1f..%.1f, n=%zu), setup %.2f s; "
+                   "max %.1f p99.9 %.1f RMSE %.2f (1/65535), CIEDE2000 %.3f\n",
+                   i + 1, configs.size() - 1, c.id.c_str(), r["frame_median_s"].get<double>() * 1e3,
+                   r["frame_min_s"].get<double>() * 1e3, r["frame_max_s"].get<double>() * 1e3, ft.wall_s.size(),
+                   p.setupSeconds(), e["max_16bit"].get<double>(), e["p999_16bit"].get<double>(),
+                   e["rmse_16bit"].get<double>(), e["ciede2000_mean"].get<double>());
+    }
+    return rows;
+  }
 
-  auto renderOnce = [&](const PreparedScene& p, int spp, Image& img, bool progress) {
-    RenderOptions o = opt;
+ private:
+  FrameBudget budget() const { return {a_.frames, a_.max_seconds}; }
+  double renderOnce(const PreparedScene& p, int spp, Image& img, bool progress) const {
+    RenderOptions o = opt_;
     o.spp = spp;
     o.precision = p.precision();
     o.progress = progress;
     const auto t0 = Clock::now();
     p.render(o, img);
     return since(t0);
-  };
-  auto saveImage = [&](const std::string& id, const Image& img) {
-    if (a.images) writeImage(img, dir / "images" / (fileSafe(id) + ".exr"));
-  };
-  const FrameBudget budget{a.frames, a.max_seconds};
-
-  // 1. The converged reference, and the converged row timed on it.
-  Image reference(W, H, false);
-  J ref_json;
-  J converged_row;
-  {
-    std::fprintf(stderr, "[reference] preparing %s ...\n", ref_cfg.id.c_str());
-    PreparedScene p(applied.back(), Precision::Double);
-    std::fprintf(stderr, "[reference] %zu triangles, setup %.2f s; rendering %d spp ...\n", p.triangleCount(),
-                 p.setupSeconds(), ref_cfg.spp);
-    const double t_ref = renderOnce(p, ref_cfg.spp, reference, true);
-    std::fprintf(stderr, "[reference] %.2f s\n", t_ref);
-    saveImage("reference", reference);
-    ref_json = knobsJson(ref_cfg, applied.back(), p.triangleCount());
-    ref_json["setup_s"] = p.setupSeconds();
-    ref_json["render_s"] = t_ref;
-    // Its row: the reference frame was the warm-up.
-    Image img(W, H, false);
-    const FrameTimes ft = timeFrames([&] { renderOnce(p, ref_cfg.spp, img, false); }, budget, WarmUp::AlreadyDone);
-    converged_row = row(ref_cfg, applied.back(), p, ft, img, reference);
-    std::fprintf(stderr, "[converged] frame %.1f ms (n=%zu), error against the reference: RMSE %.3g\n",
-                 converged_row["frame_median_s"].get<double>() * 1e3, ft.wall_s.size(),
-                 converged_row["error"]["rmse_16bit"].get<double>());
   }
-  // 2. The reference against one step finer each way.
-  J conv = J::array();
-  for (size_t i = 0; i < checks.size(); ++i) {
-    std::fprintf(stderr, "[check %zu/%zu] %s: preparing ...\n", i + 1, checks.size(), checks[i].id.c_str());
-    PreparedScene p(applied_checks[i], Precision::Double);
-    Image img(W, H, false);
-    std::fprintf(stderr, "[check %zu/%zu] %zu triangles, setup %.2f s; rendering %d spp ...\n", i + 1,
-                 checks.size(), p.triangleCount(), p.setupSeconds(), checks[i].spp);
-    const double t = renderOnce(p, checks[i].spp, img, true);
-    const TradeoffError e = tradeoffError(img, reference);
-    saveImage(checks[i].id, img);
-    conv.push_back({{"id", checks[i].id}, {"knobs", knobsJson(checks[i], applied_checks[i], p.triangleCount())},
-                    {"setup_s", p.setupSeconds()}, {"render_s", t}, {"residual", errorJson(e)}});
-    std::fprintf(stderr,
-                 "[check %zu/%zu] %s: %.2f s; residual max %.2f, p99.9 %.2f, RMSE %.3f (1/65535), "
-                 "CIEDE2000 mean %.4f\n",
-                 i + 1, checks.size(), checks[i].id.c_str(), t, e.max_16bit, e.p999_16bit, e.rmse_16bit,
-                 e.ciede2000_mean);
+  void saveImage(const std::string& id, const Image& img) const {
+    if (a_.images) writeImage(img, dir_ / "images" / (fileSafe(id) + ".exr"));
   }
-  ref_json["convergence"] = conv;
 
-  // 3. The sweep.
-  J rows = J::array();
-  for (size_t i = 0; i + 1 < configs.size(); ++i) {
-    const TradeoffConfig& c = configs[i];
-    PreparedScene p(applied[i], c.precision);
-    Image img(W, H, false);
-    const FrameTimes ft = timeFrames([&] { renderOnce(p, c.spp, img, false); }, budget, WarmUp::Render);
-    saveImage(c.id, img);
-    rows.push_back(row(c, applied[i], p, ft, img, reference));
-    const J& r = rows.back();
-    const J& e = r["error"];
-    std::fprintf(stderr,
-                 "[%zu/%zu] %-20s frame %9.1f ms (%.1f..%.1f, n=%zu), setup %.2f s; "
-                 "max %.1f p99.9 %.1f RMSE %.2f (1/65535), CIEDE2000 %.3f\n",
-                 i + 1, configs.size() - 1, c.id.c_str(), r["frame_median_s"].get<double>() * 1e3,
-                 r["frame_min_s"].get<double>() * 1e3, r["frame_max_s"].get<double>() * 1e3, ft.wall_s.size(),
-                 p.setupSeconds(), e["max_16bit"].get<double>(), e["p999_16bit"].get<double>(),
-                 e["rmse_16bit"].get<double>(), e["ciede2000_mean"].get<double>());
-  }
-  rows.push_back(converged_row);
+  const TradeoffRun& a_;
+  fs::path dir_;
+  int W_, H_;
+  RenderOptions opt_;
+};
 
-  // 4. The Pareto front (the converged row is the yardstick, not a candidate).
+// 4. The Pareto front (the converged row is the yardstick, not a
+// candidate): marks every row's pareto_error and pareto; returns the
+// front's ids and the tolerance (the largest convergence residual: errors
+// closer than the reference's own residual are not resolved).
+std::pair<J, double> markParetoFront(J& rows, const J& conv, const std::string& metric) {
   std::vector<ParetoPoint> pts;
   for (const auto& r : rows) {
     const TradeoffError e = errorFromJson(r["error"]);
     const bool candidate = r["group"] != "converged";
-    pts.push_back({candidate ? r["frame_median_s"].get<double>() : std::nan(""), errorMetric(e, a.metric)});
+    pts.push_back({candidate ? r["frame_median_s"].get<double>() : std::nan(""), errorMetric(e, metric)});
   }
-  // Errors closer than the reference's own residual are not resolved.
   double tolerance = 0.0;
-  for (const auto& c : conv) tolerance = std::max(tolerance, errorMetric(errorFromJson(c["residual"]), a.metric));
+  for (const auto& c : conv) tolerance = std::max(tolerance, errorMetric(errorFromJson(c["residual"]), metric));
   const std::vector<size_t> front = paretoFront(pts, tolerance);
   J front_ids = J::array();
   for (size_t i = 0; i < rows.size(); ++i) {
@@ -239,7 +221,12 @@ void runTradeoff(const TradeoffRun& a) {
     rows[i]["pareto"] = std::find(front.begin(), front.end(), i) != front.end();
   }
   for (size_t i : front) front_ids.push_back(rows[i]["id"]);
+  return {front_ids, tolerance};
+}
 
+// The run's header fields of tradeoff.json (format .. pareto_metric).
+J header(const TradeoffRun& a, const Scene& scene, const SweepSettings& settings, const Provenance& prov) {
+  const int W = scene.camera.width, H = scene.camera.height;
   J out;
   out["format"] = "xval-tradeoff/1";
   out["scene"] = scene.name;
@@ -266,12 +253,64 @@ void runTradeoff(const TradeoffRun& a) {
       "(premultiplied by coverage, over black); a pixel's error is its largest RGB channel difference; "
       "max, p99.9 (nearest rank) and RMSE in 1/65535; CIEDE2000 of the colours taken as sRGB-coded";
   out["pareto_metric"] = a.metric;
+  return out;
+}
+
+fs::path makeOutputFolder(const std::string& out) {
+  const fs::path dir(out);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir))
+    throw std::runtime_error(dir.string() + ": cannot create the output folder" +
+                             (ec ? ": " + ec.message() : std::string()));
+  return dir;
+}
+
+}  // namespace
+
+void runTradeoff(const TradeoffRun& a) {
+  const char* metric_label = metricLabel(a.metric);
+  Scene scene = loadScene(a.scene_file, a.budget);
+  if (a.width) scene.camera.width = a.width;
+  if (a.height) scene.camera.height = a.height;
+  SweepSettings settings;
+  settings.quick = a.quick;
+  settings.reference_spp = a.reference_spp ? a.reference_spp : (a.quick ? 16 : 64);
+  settings.reference_tessellation = a.reference_tessellation > 0 ? a.reference_tessellation : (a.quick ? 2.0 : 4.0);
+  const std::vector<TradeoffConfig> configs = sweepConfigs(scene, settings);
+  const std::vector<TradeoffConfig> checks = convergenceChecks(scene, settings);
+  // Every configuration is checked by the loader before anything runs.
+  std::vector<Scene> applied, applied_checks;
+  for (const auto& c : configs) applied.push_back(applyConfig(scene, c, a.budget));
+  for (const auto& c : checks) applied_checks.push_back(applyConfig(scene, c, a.budget));
+
+  const fs::path dir = makeOutputFolder(a.out);
+  const FolderLock folder_lock(dir, FolderLock::Mode::Exclusive, "xval tradeoff");
+  if (a.images) makeRealFolder(dir, dir / "images");
+  const int W = scene.camera.width, H = scene.camera.height;
+  const auto t_all = Clock::now();
+  const Provenance prov = collectProvenance(dir / "git.log");
+  std::fprintf(stderr,
+               "xval tradeoff %s (%dx%d): %zu configurations, reference %d spp x%g tessellation "
+               "double phong, %zu convergence checks; up to %d frames or %.1f s per configuration\n",
+               scene.name.c_str(), W, H, configs.size(), configs.back().spp, configs.back().tessellation_factor,
+               checks.size(), a.frames, a.max_seconds);
+
+  const Runner runner(a, dir, W, H);
+  Image reference(W, H, false);
+  auto [ref_json, converged_row] = runner.reference(configs.back(), applied.back(), reference);
+  const J conv = runner.convergence(checks, applied_checks, reference);
+  ref_json["convergence"] = conv;
+  J rows = runner.sweep(configs, applied, reference);
+  rows.push_back(converged_row);
+  const auto [front_ids, tolerance] = markParetoFront(rows, conv, a.metric);
+
+  J out = header(a, scene, settings, prov);
   out["pareto_error_tolerance"] = tolerance;
   out["reference"] = ref_json;
   out["configs"] = rows;
   out["pareto_front"] = front_ids;
   out["total_seconds"] = since(t_all);
-
   writeFileAtomically(dir / "tradeoff.json", out.dump(2) + "\n");
   writeFileAtomically(dir / "tradeoff.tsv", tsvTable(out));
   writeFileAtomically(dir / "tradeoff.md", markdownTable(out));
