@@ -69,12 +69,16 @@ double renderTimeFromLog(const std::filesystem::path& log) {
 
 }  // namespace
 
-Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_dir,
-                        double timeout_seconds, ExternalRenderInfo* info, BlenderMode mode) {
+void checkBlenderScene(const Scene& scene) {
   if (scene.render.spp != 1)
     throw ExportError("render.spp = " + std::to_string(scene.render.spp) +
                       ": the Blender harness renders one sample through each pixel centre; "
                       "export at spp 1");
+}
+
+Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_dir,
+                        double timeout_seconds, ExternalRenderInfo* info, BlenderMode mode) {
+  checkBlenderScene(scene);
   const std::filesystem::path script = blenderScript();
   if (!std::filesystem::is_regular_file(script))
     throw ExternalToolError("Blender script " + script.string() +
