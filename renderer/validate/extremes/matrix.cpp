@@ -1,5 +1,5 @@
 // The extremes matrix: its scenes, and the per-case measurement of the
-// reference renderer (validate/extremes.h; docs/extremes.md explains every
+// reference renderer (validate/extremes/matrix.h; docs/extremes.md explains every
 // case and what it showed).
 //
 // Conventions of the scenes below (unless a case says otherwise):

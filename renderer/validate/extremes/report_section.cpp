@@ -20,6 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "renderers/registry.h"
 #include "validate/common/number_text.h"
 #include "validate/report.h"
 
@@ -66,14 +67,17 @@ std::string reportSection(const std::filesystem::path& report_dir) {
   const J& prov = r["provenance"];
   std::vector<std::string> renderers;
   for (const auto& x : prov["renderers"]) renderers.push_back(x.get<std::string>());
-  auto label = [](const std::string& rr) { return rr == "povray" ? "POV-Ray" : "Blender"; };
+  auto label = [](const std::string& rr) {  // the registry's name; an unknown id as it is (not escaped)
+    const renderers::Renderer* r = renderers::registry().find(rr);
+    return r ? r->display_name : rr;
+  };
 
   std::ostringstream h;
   h << "<h2 id=\"extremes\">Extremes</h2>\n<p>" << cases.size()
     << " scenes at the edges of the models' domains (docs/extremes.md), each rendered by the "
        "reference renderer in double (the reference) and in float, and by ";
   if (renderers.empty()) h << "no external renderer (this run used --no-external)";
-  for (size_t i = 0; i < renderers.size(); ++i) h << (i ? " and " : "") << label(renderers[i]);
+  for (size_t i = 0; i < renderers.size(); ++i) h << (i ? " and " : "") << htmlEscape(label(renderers[i]));
   h << ". Reference renderer: <span class=\""
     << (r["totals"]["reference_nonfinite_pixels"].get<long long>() ? "fail" : "pass") << "\">"
     << r["totals"]["reference_nonfinite_pixels"].get<long long>()
@@ -89,7 +93,7 @@ std::string reportSection(const std::filesystem::path& report_dir) {
        "<code>extremes/scenes/</code> and renders with <code>xval render</code>.</p>\n";
   h << "<table><tr><th class=\"l\">case</th><th class=\"l\">group</th><th>NaN/Inf double<br>final / raw</th>"
        "<th>NaN/Inf float<br>final / raw</th><th>float vs double<br>max / p99.9</th>";
-  for (const auto& rr : renderers) h << "<th>" << label(rr) << " vs double<br>max / p99.9</th>";
+  for (const auto& rr : renderers) h << "<th>" << htmlEscape(label(rr)) << " vs double<br>max / p99.9</th>";
   h << "<th class=\"l\">what is extreme</th></tr>\n";
   std::ostringstream reasons;
   for (const auto& c : cases) {

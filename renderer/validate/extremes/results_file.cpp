@@ -3,7 +3,9 @@
 
 #include <sstream>
 
+#include "renderers/registry.h"
 #include "validate/common/number_text.h"
+#include "validate/extremes/run.h"
 #include "validate/extremes/report_section.h"
 
 namespace xval::extremes {
@@ -61,8 +63,12 @@ std::string markdownTable(const J& results) {
     << shortCommit(results["provenance"]["git_commit"].get<std::string>())
     << "). Errors in 1/65535 of full scale over the pixels both images cover; "
        "NaN/Inf: pixels with a non-finite final / raw value.\n\n"
-       "| case | NaN/Inf double | NaN/Inf float | float vs double: max / p99.9 (mask) | "
-       "POV-Ray: max / p99.9 (mask) | Blender: max / p99.9 (mask) |\n|---|---|---|---|---|---|\n";
+       "| case | NaN/Inf double | NaN/Inf float | float vs double: max / p99.9 (mask) |";
+  const std::vector<std::string> columns = externalRenderers();
+  for (const auto& id : columns) o << " " << renderers::registry().at(id).display_name << ": max / p99.9 (mask) |";
+  o << "\n|---|---|---|---|";
+  for (size_t k = 0; k < columns.size(); ++k) o << "---|";
+  o << "\n";
   for (const J& c : results["cases"]) {
     const J& r = c["reference"];
     auto nf = [](const J& p) {
@@ -75,7 +81,7 @@ std::string markdownTable(const J& results) {
     };
     o << "| " << c["name"].get<std::string>() << " | " << nf(r["double"]) << " | " << nf(r["float"]) << " | "
       << m(c["float_vs_double"]);
-    for (const char* rr : {"povray", "blender"}) {
+    for (const auto& rr : columns) {
       o << " | ";
       if (!c["external"].contains(rr)) {
         o << "not run";

@@ -13,7 +13,8 @@
 // reason}}.
 //
 // The Markdown table: per case the NaN/Inf counts (final / raw) and, for
-// float and each of povray and blender, "max / p99.9 (mask disagreements)"
+// float and each external renderer (run.h: externalRenderers(), a column
+// each, named by the registry), "max / p99.9 (mask disagreements)"
 // in 1/65535 with 2 decimals, "n/a" for a value that is null, or the
 // external renderer's status.
 #pragma once

@@ -6,13 +6,12 @@
 #include <map>
 #include <mutex>
 
-#include "blender/blender_render.h"
 #include "common/export_common.h"
 #include "files/atomic_write.h"
 #include "files/output_folder.h"
 #include "image/heat_map.h"
-#include "povray/pov_render.h"
 #include "process/job_pool.h"
+#include "renderers/registry.h"
 #include "scene/scene_loader.h"
 #include "validate/common/provenance.h"
 #include "validate/extremes/matrix.h"
@@ -29,8 +28,6 @@ using J = nlohmann::ordered_json;
 
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-const char* displayName(const std::string& renderer) { return renderer == "povray" ? "POV-Ray" : "Blender"; }
-
 struct CaseRun {
   Case c;
   Scene scene;
@@ -38,21 +35,21 @@ struct CaseRun {
   std::map<std::string, External> external;
 };
 
-External renderExternal(const Scene& scene, const std::string& renderer, const fs::path& work, double timeout) {
+External renderExternal(const Scene& scene, const std::string& id, const fs::path& work, double timeout) {
+  const renderers::Renderer& renderer = renderers::registry().at(id);
   External e;
   const auto t0 = Clock::now();
   try {
-    ExternalRenderInfo info;
-    e.image = renderer == "povray" ? renderWithPovray(scene, work, timeout, &info)
-                                   : renderWithBlender(scene, work, timeout, &info);
+    renderers::RenderInfo info;
+    e.image = renderer.render(scene, {work, timeout, {}}, &info);
     e.render_seconds = info.render_seconds;
     e.status = "ok";
   } catch (const ExportError& err) {
     e.status = "not renderable";
-    e.reason = std::string("not renderable by ") + displayName(renderer) + ": " + err.what();
+    e.reason = "not renderable by " + renderer.display_name + ": " + err.what();
   } catch (const std::exception& err) {
     e.status = "error";
-    e.reason = std::string(displayName(renderer)) + " failed: " + err.what();
+    e.reason = renderer.display_name + " failed: " + err.what();
   }
   e.seconds = since(t0);
   return e;
@@ -144,18 +141,24 @@ J compareCase(CaseRun& r, const std::vector<std::string>& renderers, const fs::p
 
 }  // namespace
 
-const std::vector<std::string>& externalRenderers() {
-  static const std::vector<std::string> all{"povray", "blender"};
-  return all;
+std::vector<std::string> externalRenderers() {
+  std::vector<std::string> ids;
+  for (const renderers::Renderer* r : renderers::registry().everySceneRenderers())
+    if (!r->reference) ids.push_back(r->id);
+  return ids;
 }
 
 int runExtremes(const ExtremesRun& a) {
   const auto t_start = Clock::now();
   const fs::path& dir = a.dir;
   const std::vector<Case> cases = selectCases(extremesMatrix({a.size}), a.only);
+  const std::vector<std::string> known = externalRenderers();
   for (const auto& rr : a.renderers)
-    if (std::find(externalRenderers().begin(), externalRenderers().end(), rr) == externalRenderers().end())
-      throw std::runtime_error("--renderers: expected povray and/or blender, got " + rr);
+    if (std::find(known.begin(), known.end(), rr) == known.end()) {
+      std::string expected;
+      for (const auto& k : known) expected += (expected.empty() ? "" : " and/or ") + k;
+      throw std::runtime_error("--renderers: expected " + expected + ", got " + rr);
+    }
   fs::create_directories(dir);
   const FolderLock folder_lock(dir, FolderLock::Mode::Exclusive, "xval extremes");
   fs::remove(dir / "extremes.json");  // a new run: no stale results

@@ -17,7 +17,7 @@
 //
 // ExtremesRun (defaults): dir (required); size = 160 pixels per side of
 // every case; only = "" (all cases; else comma-separated names);
-// renderers = {"povray", "blender"} (empty: reference renderer only);
+// renderers = externalRenderers() (empty: reference renderer only);
 // jobs = 0 (the hardware thread count); timeout = 600 s; threads = 0
 // (every hardware thread, for the reference renders); command: the
 // command line recorded in the provenance.
@@ -39,8 +39,10 @@
 
 namespace xval::extremes {
 
-// The external renderers the matrix can use, in report order.
-const std::vector<std::string>& externalRenderers();
+// The external renderers the matrix can use, in registry order
+// (renderers/registry.h): every renderer that renders every scene, but the
+// reference (today povray, blender).
+std::vector<std::string> externalRenderers();
 
 struct ExtremesRun {
   std::filesystem::path dir;

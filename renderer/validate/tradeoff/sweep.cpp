@@ -1,5 +1,5 @@
 // The trade-off sweep, the converged reference, errors and the Pareto
-// front (validate/tradeoff.h documents every parameter and default).
+// front (validate/tradeoff/sweep.h documents every parameter and default).
 #include "validate/tradeoff/sweep.h"
 
 #include <algorithm>
