@@ -69,10 +69,15 @@ double renderTimeFromLog(const std::filesystem::path& log) {
 
 }  // namespace
 
+void checkBlenderScene(const Scene& scene) {
+  // render.spp = n^2: Blender renders n W x n H pixels, one sample through
+  // each centre (common/supersample.h); the grid's limits are the harness's.
+  subpixelGrid(scene);
+}
+
 Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_dir,
                         double timeout_seconds, ExternalRenderInfo* info, BlenderMode mode) {
-  // render.spp = n^2: Blender renders n W x n H pixels, one sample through
-  // each centre (common/supersample.h); checked before anything is written.
+  // Checked before anything is written.
   const SubpixelGrid g = subpixelGrid(scene);
   const std::filesystem::path script = blenderScript();
   if (!std::filesystem::is_regular_file(script))

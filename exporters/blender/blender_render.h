@@ -25,6 +25,10 @@ enum class BlenderMode {
 // xval executable's source tree (compiled in), which must exist.
 std::filesystem::path blenderScript();
 
+// Throws ExportError when the harness cannot render the scene exactly
+// (checked before anything is exported; the glTF exporter may refuse more).
+void checkBlenderScene(const Scene& scene);
+
 Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_dir,
                         double timeout_seconds, ExternalRenderInfo* info = nullptr,
                         BlenderMode mode = BlenderMode::Model);

@@ -1,6 +1,6 @@
 // Small pieces several subcommands share: checking a samples-per-pixel
-// option, the median/min/max summary of repeated timings, and writing a
-// JSON file of figures.
+// option, time limits, budget options, and writing a JSON file of figures
+// (the median/min/max of timings: validate/common/frame_timing.h).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "scene/scene_budget.h"
+#include "validate/common/frame_timing.h"  // Spread, spread()
 
 namespace xval::cli {
 
@@ -72,22 +73,6 @@ inline void addBudgetOptions(CLI::App* cmd, BudgetOptions& o) {
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--allow-large", o.allow_large,
                 "Lift the three limits above (the per-field limits of the scene format remain)");
-}
-
-// Median, min and max of repeated measurements (n = 0: all zero).
-struct Spread {
-  double median = 0, min = 0, max = 0;
-  size_t n = 0;
-};
-
-inline Spread spread(std::vector<double> v) {
-  Spread s;
-  if (v.empty()) return s;
-  std::sort(v.begin(), v.end());
-  s.n = v.size();
-  s.min = v.front(), s.max = v.back();
-  s.median = v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-  return s;
 }
 
 // Writes j (indented) to `file`; throws naming the file when it cannot.

@@ -25,7 +25,6 @@
 #include <sstream>
 #include <thread>
 
-#include <time.h>
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
@@ -37,19 +36,11 @@
 #include "povray/pov_render.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
+#include "validate/common/frame_timing.h"
 
 namespace xval::cli {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-// CPU seconds used by this process so far, over all its threads.
-double processCpuSeconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
 
 
 std::string ms(const Spread& s) {
@@ -132,15 +123,9 @@ void addBenchCommand(CLI::App& app, std::function<int()>& run) {
           Image img(scene.camera.width, scene.camera.height, false);
           RenderStats stats;
           prepared.render(o, img, &stats);  // warm-up
-          std::vector<double> t, cpu;
-          for (int f = 0; f < args->frames; ++f) {
-            auto t0 = Clock::now();
-            const double c0 = processCpuSeconds();
-            prepared.render(o, img);
-            cpu.push_back(processCpuSeconds() - c0);
-            t.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
-          }
-          Spread s = spread(t), sc = spread(cpu);
+          const FrameTimes ft = timeFrames([&] { prepared.render(o, img); }, FrameBudget{args->frames},
+                                           WarmUp::AlreadyDone);
+          Spread s = spread(ft.wall_s), sc = spread(ft.cpu_s);
           const std::string key = std::string("reference_") + toString(p);
           medians[key] = s.median;
           std::printf("  %-18s frame %s   CPU time %s\n", key.c_str(), ms(s).c_str(), ms(sc).c_str());

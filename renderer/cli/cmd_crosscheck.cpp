@@ -18,7 +18,7 @@
 #include "image/perceptual.h"
 #include "blender/blender_render.h"
 #include "povray/pov_render.h"
-#include "validate/native_lambert.h"
+#include "blender/native_lambert.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "validate/tolerances.h"

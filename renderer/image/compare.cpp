@@ -62,12 +62,22 @@ CompareMetrics compareImages(const Image& a, const Image& b, const Tolerance& t)
   CompareMetrics m;
   m.width = a.width, m.height = a.height;
   m.tolerance = tolerance;
-  std::vector<double> errs;
-  double sq = 0.0;
+  std::vector<double> errs, errs_either;
+  double sq = 0.0, sq_either = 0.0;
   long long within = 0;
   for (int y = 0; y < a.height; ++y) {
     for (int x = 0; x < a.width; ++x) {
       bool ha = hit(a, x, y), hb = hit(b, x, y);
+      if (ha || hb) {
+        double e = 0.0;
+        for (int c = 0; c < 3; ++c) {
+          double d = double(a.pixel(x, y)[c]) - double(b.pixel(x, y)[c]);
+          if (!std::isfinite(d)) d = std::numeric_limits<double>::infinity();
+          sq_either += d * d;
+          e = std::max(e, std::abs(d));
+        }
+        errs_either.push_back(e);
+      }
       if (ha != hb) {
         ++m.mask_disagree;
         if (onSilhouette(a, x, y) || onSilhouette(b, x, y)) ++m.mask_disagree_silhouette;
@@ -100,16 +110,28 @@ CompareMetrics compareImages(const Image& a, const Image& b, const Tolerance& t)
       }
     }
   }
+  if (!errs_either.empty()) {
+    m.covered_either = (long long)errs_either.size();
+    m.max_abs_either = *std::max_element(errs_either.begin(), errs_either.end());
+    m.p999_abs_either = nearestRankPercentile(std::move(errs_either), 0.999);
+    m.rmse_either = std::sqrt(sq_either / (3.0 * double(m.covered_either)));
+  }
   if (m.covered_both > 0) {
-    std::sort(errs.begin(), errs.end());
-    // Nearest-rank percentile.
-    size_t k = size_t(std::ceil(0.999 * double(errs.size()))) - 1;
-    m.p999_abs = errs[std::min(k, errs.size() - 1)];
+    m.p999_abs = nearestRankPercentile(std::move(errs), 0.999);
     m.rmse = std::sqrt(sq / (3.0 * double(m.covered_both)));
     m.psnr_db = m.rmse > 0 ? 20.0 * std::log10(1.0 / m.rmse) : std::numeric_limits<double>::infinity();
     m.fraction_within = double(within) / double(m.covered_both);
   }
   return m;
+}
+
+double nearestRankPercentile(std::vector<double> v, double p) {
+  if (!(p > 0.0 && p <= 1.0))
+    throw std::invalid_argument("percentile " + std::to_string(p) + ": expected 0 < p <= 1");
+  if (v.empty()) return 0.0;
+  const size_t k = std::min(size_t(std::ceil(p * double(v.size()))), v.size()) - 1;  // 0-based rank
+  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end());
+  return v[k];
 }
 
 Image differenceImage(const Image& a, const Image& b) {
@@ -124,22 +146,22 @@ Image differenceImage(const Image& a, const Image& b) {
   return d;
 }
 
-std::string toJson(const CompareMetrics& m, const Tolerance& t, const PerceptualMetrics* pm) {
+nlohmann::json metricsJson(const CompareMetrics& m) {
   auto finite = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
-  nlohmann::json j = {
+  return {
       {"width", m.width},
       {"height", m.height},
       {"covered_both", m.covered_both},
       {"mask_disagree", m.mask_disagree},
       {"mask_disagree_silhouette", m.mask_disagree_silhouette},
-      {"max_abs", m.max_abs},
-      {"max_abs_16bit", m.max_abs * 65535.0},
-      {"p999_abs", m.p999_abs},
-      {"p999_abs_16bit", m.p999_abs * 65535.0},
-      {"rmse", m.rmse},
-      {"rmse_16bit", m.rmse * 65535.0},
+      {"max_abs", finite(m.max_abs)},
+      {"max_abs_16bit", finite(m.max_abs * 65535.0)},
+      {"p999_abs", finite(m.p999_abs)},
+      {"p999_abs_16bit", finite(m.p999_abs * 65535.0)},
+      {"rmse", finite(m.rmse)},
+      {"rmse_16bit", finite(m.rmse * 65535.0)},
       {"psnr_db", finite(m.psnr_db)},
-      {"fraction_within", m.fraction_within},
+      {"fraction_within", finite(m.fraction_within)},
       {"worst_pixel", {m.worst_x, m.worst_y}},
       {"backfacing_pixels", m.backfacing_pixels},
       {"over_tolerance", {{"total", m.over_tolerance},
@@ -149,10 +171,18 @@ std::string toJson(const CompareMetrics& m, const Tolerance& t, const Perceptual
                           {"unexplained", m.over_unexplained}}},
       {"histogram_16bit", {{"edges", CompareMetrics::kHistogramEdges16},
                            {"counts", m.histogram}}},
-      {"tolerance", {{"max_abs_16bit", t.max_abs * 65535.0},
-                     {"fraction", t.fraction},
-                     {"exclude_backfacing", t.exclude_backfacing}}},
-      {"pass", t.passes(m)}};
+      {"either_covered", {{"pixels", m.covered_either},
+                          {"max_abs_16bit", finite(m.max_abs_either * 65535.0)},
+                          {"p999_abs_16bit", finite(m.p999_abs_either * 65535.0)},
+                          {"rmse_16bit", finite(m.rmse_either * 65535.0)}}}};
+}
+
+std::string toJson(const CompareMetrics& m, const Tolerance& t, const PerceptualMetrics* pm) {
+  nlohmann::json j = metricsJson(m);
+  j["tolerance"] = {{"max_abs_16bit", t.max_abs * 65535.0},
+                    {"fraction", t.fraction},
+                    {"exclude_backfacing", t.exclude_backfacing}};
+  j["pass"] = t.passes(m);
   if (pm) {
     j["ssim"] = pm->ssim;
     j["ciede2000"] = {{"mean", pm->ciede2000_mean}, {"max", pm->ciede2000_max}};

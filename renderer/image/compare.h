@@ -7,9 +7,21 @@
 // metrics use the pixels both images hit; a pixel's error is its largest
 // channel difference. OpenImageIO's ImageBufAlgo::compare has no masks and
 // no percentiles, hence this.
+//
+// The same errors over the pixels EITHER image hits ("either_covered"):
+// the colours are premultiplied by coverage (over black), so a pixel one
+// image misses counts with its whole difference; for measurements where
+// coverage is part of the error (the speed/accuracy trade-off).
+//
+// Percentiles are nearest-rank: the p-quantile of n values is the k-th
+// smallest, k = ceil(p n) (1-based), so p99.9 of fewer than 1000 values is
+// the largest.
 #pragma once
 
 #include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "image/image.h"
 
@@ -38,7 +50,16 @@ struct CompareMetrics {
   // Pixels by error in 1/65535: <= 0.5, 1, 2, 4, 16, 256, and above.
   static constexpr double kHistogramEdges16[6] = {0.5, 1, 2, 4, 16, 256};
   long long histogram[7] = {0, 0, 0, 0, 0, 0, 0};
+  // Over the pixels either image hits (no backfacing exclusion):
+  long long covered_either = 0;
+  double max_abs_either = 0.0;   // largest channel difference
+  double p999_abs_either = 0.0;  // 99.9th percentile of the per-pixel error
+  double rmse_either = 0.0;      // over covered_either pixels and the 3 channels
 };
+
+// The nearest-rank p-quantile (0 < p <= 1) of `values` (any order; empty:
+// 0). Throws std::invalid_argument for p outside (0, 1].
+double nearestRankPercentile(std::vector<double> values, double p);
 
 // A declared tolerance: per-pixel error <= max_abs on at least `fraction`
 // of the pixels both images cover, and no mask disagreement off silhouettes.
@@ -63,9 +84,21 @@ CompareMetrics compareImages(const Image& a, const Image& b, const Tolerance& t)
 // |a - b| per channel (RGB, alpha = 1 where either hits), for looking at.
 Image differenceImage(const Image& a, const Image& b);
 
+// The one JSON form of the metrics record: every field above, errors as
+// fractions of full scale and (suffix _16bit) in 1/65535; a value that is
+// not finite is null. Keys: width, height, covered_both, mask_disagree,
+// mask_disagree_silhouette, max_abs[_16bit], p999_abs[_16bit],
+// rmse[_16bit], psnr_db, fraction_within, worst_pixel [x, y],
+// backfacing_pixels, over_tolerance {total, occlusion_edge,
+// backfacing_normal, grazing, unexplained}, histogram_16bit {edges,
+// counts}, either_covered {pixels, max_abs_16bit, p999_abs_16bit,
+// rmse_16bit}.
+nlohmann::json metricsJson(const CompareMetrics& m);
+
 struct PerceptualMetrics;
-// The metrics as JSON; with `pm`, also ssim, ciede2000 {mean, max} and
-// yiq_delta {mean, max}.
+// metricsJson(m) with the verdict: tolerance {max_abs_16bit, fraction,
+// exclude_backfacing} and pass; with `pm`, also ssim, ciede2000 {mean, max}
+// and yiq_delta {mean, max}.
 std::string toJson(const CompareMetrics& m, const Tolerance& t,
                    const PerceptualMetrics* pm = nullptr);
 

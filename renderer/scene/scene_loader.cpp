@@ -260,11 +260,18 @@ RenderSettings readRender(JsonReader r) {
   return s;
 }
 
+std::function<std::vector<std::string>()>& toleranceRenderers() {
+  static std::function<std::vector<std::string>()> ids;
+  return ids;
+}
+
 std::vector<DeclaredTolerance> readTolerances(JsonReader& r) {
   std::vector<DeclaredTolerance> out;
   auto o = r.object("tolerances");
   if (!o) return out;
-  for (const char* renderer : {"povray", "blender", "blender-native"}) {
+  if (!toleranceRenderers())
+    r.fail("tolerances", "cannot be checked: this program has no renderer registry (renderers/registry.h)");
+  for (const std::string& renderer : toleranceRenderers()()) {
     auto t = o->object(renderer);
     if (!t) continue;
     DeclaredTolerance d;
@@ -291,6 +298,8 @@ void checkSceneName(JsonReader& r, const std::string& name) {
 }
 
 }  // namespace
+
+void setToleranceRenderers(std::function<std::vector<std::string>()> ids) { toleranceRenderers() = std::move(ids); }
 
 // The name becomes a folder under the output folder (`xval validate`
 // writes DIR/NAME/...) and part of paths handed to OpenImageIO and the

@@ -6,7 +6,9 @@
 #include "scene/scene_budget.h"
 
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <vector>
 
 namespace xval {
 
@@ -22,6 +24,12 @@ Scene loadScene(const std::filesystem::path& file, const Budget& budget = Budget
 // is a regular file (not a FIFO or a folder) of at most kMaxSceneFileBytes.
 // `what` names it in messages ("scene file").
 std::string readJsonFile(const std::filesystem::path& file, const std::string& what);
+
+// The renderers a scene's `tolerances` may name: the renderer registry
+// (renderers/registry.h) installs its ids here (every renderer compared
+// against the reference). In a program without the registry a scene
+// declaring any tolerance is refused, saying so.
+void setToleranceRenderers(std::function<std::vector<std::string>()> ids);
 
 // Same, from text already in memory; `file` is used in messages and to
 // resolve relative paths.

@@ -19,8 +19,8 @@
 #include "process/run_process.h"
 #include "scene/json_reader.h"
 #include "scene/scene_loader.h"
-#include "validate/extremes.h"
-#include "validate/report_tradeoff.h"
+#include "validate/extremes/report_section.h"
+#include "validate/tradeoff/report_section.h"
 
 namespace xval {
 

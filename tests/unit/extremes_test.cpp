@@ -1,4 +1,4 @@
-// The extremes matrix (validate/extremes.h, docs/extremes.md) and the
+// The extremes matrix (validate/extremes/matrix.h, measure.h, docs/extremes.md) and the
 // formulation fixes its cases showed. Each fix has a test in which the old
 // formula gives a large error (or a vanished light) and the new one not:
 //   - clamp(R.V)^n from |R - V| (models::phongSpecular; case specular_n1e6);
@@ -25,7 +25,8 @@
 #include "shading/lights.h"
 #include "shading/models.h"
 #include "shading/shader.h"
-#include "validate/extremes.h"
+#include "validate/extremes/matrix.h"
+#include "validate/extremes/measure.h"
 
 using namespace xval;
 namespace m = xval::models;
@@ -241,4 +242,23 @@ TEST(Extremes, CountNonFiniteSeesFinalAndRawChannels) {
   const auto n = extremes::countNonFinite(img);
   EXPECT_EQ(n.final_pixels, 1);
   EXPECT_EQ(n.raw_pixels, 2);
+}
+
+// --only: the named cases in matrix order (not the order given), every
+// case when empty, and an unknown name is an error that lists the cases.
+TEST(Extremes, SelectCasesByName) {
+  const auto all = extremes::extremesMatrix({16});
+  ASSERT_GE(all.size(), 3u);
+  EXPECT_EQ(extremes::selectCases(all, "").size(), all.size());
+  const auto two = extremes::selectCases(all, all[2].name + "," + all[0].name + ",");
+  ASSERT_EQ(two.size(), 2u);
+  EXPECT_EQ(two[0].name, all[0].name);
+  EXPECT_EQ(two[1].name, all[2].name);
+  try {
+    extremes::selectCases(all, all[0].name + ",no_such_case");
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("no case named no_such_case"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(all.back().name), std::string::npos) << e.what();
+  }
 }

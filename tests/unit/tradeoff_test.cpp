@@ -1,4 +1,4 @@
-// validate/tradeoff.h: the Pareto front on hand-made points, the sweep's
+// validate/tradeoff/sweep.h: the Pareto front on hand-made points, the sweep's
 // rows, the tessellation scaling and the error of an image against a
 // reference on hand-made images.
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 #include <limits>
 
 #include "scene/scene_loader.h"
-#include "validate/tradeoff.h"
+#include "validate/tradeoff/sweep.h"
 
 using namespace xval;
 

@@ -1,14 +1,14 @@
-// The report's trade-off section (validate/report_tradeoff.h).
-#include "validate/report_tradeoff.h"
+// The report's trade-off section (validate/tradeoff/report_section.h).
+#include "validate/tradeoff/report_section.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
+#include "validate/common/number_text.h"
 #include "validate/report.h"
 
 namespace xval {
@@ -16,13 +16,6 @@ namespace xval {
 namespace {
 
 using J = nlohmann::json;
-
-std::string num(double v, int prec) {
-  if (!std::isfinite(v)) return "inf";
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*f", prec, v);
-  return b;
-}
 
 std::string text(const J& j) { return htmlEscape(j.is_string() ? j.get<std::string>() : j.dump()); }
 
@@ -49,13 +42,13 @@ std::string tradeoffReportSection(const std::filesystem::path& folder, const std
       << text(t.at("scene")) << " at " << t.at("width").get<int>() << "x" << t.at("height").get<int>()
       << ", each configuration against a converged reference (double, " << ref.at("spp").get<int>()
       << " spp, " << text(ref.at("segments")) << " segments = tessellation x"
-      << num(ref.at("tessellation_factor").get<double>(), 2) << ", " << text(ref.at("shading")) << ", "
-      << text(ref.at("texture_filter")) << " filter; " << num(ref.at("render_s").get<double>(), 1)
+      << fixed(ref.at("tessellation_factor").get<double>(), 2) << ", " << text(ref.at("shading")) << ", "
+      << text(ref.at("texture_filter")) << " filter; " << fixed(ref.at("render_s").get<double>(), 1)
       << " s). Frame time: " << text(t.at("timing").at("statistic")) << ". Error: "
       << text(t.at("error_definition")) << ". Machine: " << text(t.at("machine").at("cpu")) << ", "
       << t.at("machine").at("threads_used").get<unsigned>() << " threads, 1-minute load average "
-      << num(t.at("machine").at("load_average_1min_start").get<double>(), 2) << " at the start and "
-      << num(t.at("machine").at("load_average_1min_end").get<double>(), 2) << " at the end; "
+      << fixed(t.at("machine").at("load_average_1min_start").get<double>(), 2) << " at the start and "
+      << fixed(t.at("machine").at("load_average_1min_end").get<double>(), 2) << " at the end; "
       << text(t.at("date_utc")) << ". Reproduce: <code>" << text(t.at("command")) << "</code> "
       << "(docs/tradeoff.md).</p>\n";
     h << "<p>The reference against one step finer (its residual; errors below it mean nothing):</p>\n"
@@ -64,16 +57,16 @@ std::string tradeoffReportSection(const std::filesystem::path& folder, const std
     for (const auto& c : ref.at("convergence")) {
       const J& r = c.at("residual");
       h << "<tr><td class=\"l\">" << text(c.at("id")) << "</td><td>" << text(c.at("knobs").at("segments"))
-        << "</td><td>" << c.at("knobs").at("spp").get<int>() << "</td><td>" << num(r.at("max_16bit"), 2)
-        << "</td><td>" << num(r.at("p999_16bit"), 2) << "</td><td>" << num(r.at("rmse_16bit"), 3) << "</td><td>"
-        << num(r.at("ciede2000_mean"), 4) << "</td></tr>\n";
+        << "</td><td>" << c.at("knobs").at("spp").get<int>() << "</td><td>" << fixed(r.at("max_16bit"), 2)
+        << "</td><td>" << fixed(r.at("p999_16bit"), 2) << "</td><td>" << fixed(r.at("rmse_16bit"), 3) << "</td><td>"
+        << fixed(r.at("ciede2000_mean"), 4) << "</td></tr>\n";
     }
     h << "</table>\n";
     if (std::filesystem::exists(folder / "pareto.png"))
       h << "<figure><img src=\"" << htmlEscape(href) << "/pareto.png\" alt=\"Pareto plot\" style=\"width:800px\">"
            "<figcaption>Error (" << text(t.at("pareto_metric"))
         << ") against frame time, log axes; Pareto-optimal configurations in red, errors closer than the "
-           "reference's residual (" << num(t.at("pareto_error_tolerance").get<double>(), 2)
+           "reference's residual (" << fixed(t.at("pareto_error_tolerance").get<double>(), 2)
         << ") counted as equal (gnuplot)</figcaption></figure>\n";
     else
       h << "<p class=\"err\">" << htmlEscape(href) << "/pareto.png is missing.</p>\n";
@@ -90,12 +83,12 @@ std::string tradeoffReportSection(const std::filesystem::path& folder, const std
         << k.at("triangles").get<long long>() << "</td><td class=\"l\">" << text(k.at("precision"))
         << "</td><td class=\"l\">" << text(k.at("shading")) << "</td><td class=\"l\">"
         << (k.at("texture_filter").is_null() ? std::string("-") : text(k.at("texture_filter"))) << "</td><td>"
-        << num(c.at("frame_median_s").get<double>() * 1e3, 1) << " ("
-        << num(c.at("frame_min_s").get<double>() * 1e3, 1) << ".." << num(c.at("frame_max_s").get<double>() * 1e3, 1)
-        << ", " << c.at("frames").get<int>() << ")</td><td>" << num(c.at("setup_s"), 2) << "</td><td>"
-        << num(e.at("max_16bit"), 1) << "</td><td>" << num(e.at("p999_16bit"), 1) << "</td><td>"
-        << num(e.at("rmse_16bit"), 2) << "</td><td>" << num(e.at("ciede2000_mean"), 3) << " / "
-        << num(e.at("ciede2000_max"), 2) << "</td><td class=\"" << (pareto ? "pass\">yes" : "\">")
+        << fixed(c.at("frame_median_s").get<double>() * 1e3, 1) << " ("
+        << fixed(c.at("frame_min_s").get<double>() * 1e3, 1) << ".." << fixed(c.at("frame_max_s").get<double>() * 1e3, 1)
+        << ", " << c.at("frames").get<int>() << ")</td><td>" << fixed(c.at("setup_s"), 2) << "</td><td>"
+        << fixed(e.at("max_16bit"), 1) << "</td><td>" << fixed(e.at("p999_16bit"), 1) << "</td><td>"
+        << fixed(e.at("rmse_16bit"), 2) << "</td><td>" << fixed(e.at("ciede2000_mean"), 3) << " / "
+        << fixed(e.at("ciede2000_max"), 2) << "</td><td class=\"" << (pareto ? "pass\">yes" : "\">")
         << "</td></tr>\n";
     }
     h << "</table>\n";

@@ -1,5 +1,5 @@
 // The extremes matrix: its scenes, and the per-case measurement of the
-// reference renderer (validate/extremes.h; docs/extremes.md explains every
+// reference renderer (validate/extremes/matrix.h; docs/extremes.md explains every
 // case and what it showed).
 //
 // Conventions of the scenes below (unless a case says otherwise):
@@ -8,23 +8,21 @@
 //   - "front" light at (-0.5, 2, 1.25) (the paper's default), "behind" at
 //     its reflection through the origin (docs/models.md);
 //   - sphere: radius 1, 64 x 32 segments; plane: 2 triangles.
-#include "validate/extremes.h"
+#include "validate/extremes/matrix.h"
 
 #include "files/atomic_write.h"
-#include "image/heat_map.h"
 #include "image/image.h"
 
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <fstream>
+#include <set>
+#include <sstream>
 #include <stdexcept>
 
 #include "geometry/mesh.h"
-#include "render/renderer.h"
-#include "validate/tolerances.h"
 
 namespace xval::extremes {
 
@@ -403,59 +401,21 @@ std::vector<std::filesystem::path> writeCaseScenes(const std::vector<Case>& case
   return files;
 }
 
-NonFinite countNonFinite(const Image& img) {
-  NonFinite n;
-  const size_t pixels = size_t(img.width) * img.height;
-  for (size_t i = 0; i < pixels; ++i) {
-    bool bad = false;
-    for (int k = 0; k < 4; ++k) bad |= !std::isfinite(img.rgba[i * 4 + k]);
-    n.final_pixels += bad;
-    if (img.raw.size() == pixels * 3) {
-      bool bad_raw = false;
-      for (int k = 0; k < 3; ++k) bad_raw |= !std::isfinite(img.raw[i * 3 + k]);
-      n.raw_pixels += bad_raw;
-    }
+std::vector<Case> selectCases(const std::vector<Case>& all, const std::string& only) {
+  if (only.empty()) return all;
+  std::set<std::string> want;
+  std::stringstream ss(only);
+  for (std::string item; std::getline(ss, item, ',');)
+    if (!item.empty()) want.insert(item);
+  std::vector<Case> cases;
+  for (const auto& c : all)
+    if (want.erase(c.name)) cases.push_back(c);
+  if (!want.empty()) {
+    std::string names;
+    for (const auto& c : all) names += " " + c.name;
+    throw std::runtime_error("--only: no case named " + *want.begin() + "; the cases are:" + names);
   }
-  return n;
+  return cases;
 }
-
-ReferenceRender renderReference(const Scene& scene, Precision precision, int threads) {
-  RenderOptions o = defaultOptions(scene);
-  o.precision = precision;
-  o.threads = threads;
-  o.diagnostics = true;
-  const auto t0 = std::chrono::steady_clock::now();
-  ReferenceRender r;
-  r.image = renderScene(scene, o);
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  r.nonfinite = countNonFinite(r.image);
-  return r;
-}
-
-CompareMetrics compareToReference(const Image& reference, const Image& other) {
-  // The default of the tolerance file found as for a command without a
-  // scene (validate/tolerances.h): 2/65535 on 99.9% (fraction_within_2).
-  static const Tolerance t = loadTolerances(findToleranceFile({}, {}).path).default_tolerance;
-  return compareImages(reference, other, t);
-}
-
-J metricsJson(const CompareMetrics& m) {
-  auto num = [](double v) { return std::isfinite(v) ? J(v) : J(nullptr); };
-  return {{"max_abs_16bit", num(m.max_abs * 65535.0)},
-          {"p999_abs_16bit", num(m.p999_abs * 65535.0)},
-          {"rmse_16bit", num(m.rmse * 65535.0)},
-          {"covered_both", m.covered_both},
-          {"mask_disagree", m.mask_disagree},
-          {"mask_disagree_silhouette", m.mask_disagree_silhouette},
-          {"fraction_within_2", num(m.fraction_within)},
-          {"worst_pixel", J::array({m.worst_x, m.worst_y})}};
-}
-
-void writeHeatMap(const Image& a, const Image& b, const std::filesystem::path& png) {
-  Image d = differenceImage(a, b);
-  writePreviewPng(heatMap(d), png, std::max(d.width, d.height));
-}
-
-void writeHeatScale(const std::filesystem::path& png) { writeHeatScalePng(png); }
 
 }  // namespace xval::extremes

@@ -1,7 +1,7 @@
 // Speed/accuracy trade-off of the reference renderer's knobs: the sweep of
 // configurations, the converged reference, the error of an image against
-// it and the Pareto front. Pure logic (no rendering, no files); the
-// `xval tradeoff` command (cli/cmd_tradeoff.cpp) renders, times and writes.
+// it and the Pareto front. Pure logic (no rendering, no files); the run
+// (validate/tradeoff/run.h) renders, times and writes.
 //
 // Knobs (a Config), each with its accurate end:
 //   spp                  samples per pixel, a perfect square in [1, 256]
@@ -98,7 +98,9 @@ Scene applyConfig(const Scene& scene, const TradeoffConfig& c, const Budget& bud
 // Error of `img` against `reference` over the pixels either image covers
 // (alpha > 0; the colour is premultiplied by coverage, over black, so a
 // pixel covered by one image only counts with its whole difference). A
-// pixel's error is its largest RGB channel difference.
+// pixel's error is its largest RGB channel difference. max, p99.9 and
+// RMSE are image/compare.h's "either covered" metrics (one comparison,
+// one nearest-rank percentile); CIEDE2000 is taken over the same pixels.
 struct TradeoffError {
   long long pixels = 0;         // covered by either image
   double max_16bit = 0.0;       // largest pixel error, in 1/65535
@@ -113,7 +115,6 @@ TradeoffError tradeoffError(const Image& img, const Image& reference);
 // The error metric on the Pareto plot's axis: "rmse" (default), "p999",
 // "max" or "ciede2000" (the mean).
 double errorMetric(const TradeoffError& e, const std::string& metric);
-bool validErrorMetric(const std::string& metric);
 
 // A point to minimise in both coordinates.
 struct ParetoPoint {

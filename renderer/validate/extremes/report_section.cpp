@@ -1,4 +1,4 @@
-// The report's "Extremes" section (validate/extremes.h: reportSection),
+// The report's "Extremes" section (report_section.h: reportSection),
 // from FOLDER/extremes.json as written by `xval extremes -o FOLDER` (the
 // folder results.json or `xval report --extremes` names). Reads nothing
 // else; every string from the file is HTML-escaped; image paths are
@@ -13,12 +13,16 @@
 // POV-Ray, Blender vs double) on the report's scale.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
-#include "validate/extremes.h"
+#include "validate/extremes/report_section.h"
+
+#include <nlohmann/json.hpp>
+
+#include "renderers/registry.h"
+#include "validate/common/number_text.h"
 #include "validate/report.h"
 
 namespace xval::extremes {
@@ -27,16 +31,9 @@ namespace {
 
 using J = nlohmann::json;
 
-std::string num(const J& v, int prec) {
-  if (v.is_null() || !v.is_number()) return "n/a";
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*f", prec, v.get<double>());
-  return b;
-}
-
 std::string metricsCell(const J& m) {
   const long long mask = m.value("mask_disagree", 0LL);
-  std::string s = num(m["max_abs_16bit"], 2) + " / " + num(m["p999_abs_16bit"], 2);
+  std::string s = fixed(m["max_abs_16bit"], 2) + " / " + fixed(m["p999_abs_16bit"], 2);
   if (mask) s += " <span class=\"reason\">(" + std::to_string(mask) + " mask)</span>";
   return s;
 }
@@ -72,14 +69,17 @@ std::string reportSection(const std::filesystem::path& folder, const std::string
   const J& prov = r["provenance"];
   std::vector<std::string> renderers;
   for (const auto& x : prov["renderers"]) renderers.push_back(x.get<std::string>());
-  auto label = [](const std::string& rr) { return rr == "povray" ? "POV-Ray" : "Blender"; };
+  auto label = [](const std::string& rr) {  // the registry's name; an unknown id as it is (not escaped)
+    const renderers::Renderer* r = renderers::registry().find(rr);
+    return r ? r->display_name : rr;
+  };
 
   std::ostringstream h;
   h << "<h2 id=\"extremes\">Extremes</h2>\n<p>" << cases.size()
     << " scenes at the edges of the models' domains (docs/extremes.md), each rendered by the "
        "reference renderer in double (the reference) and in float, and by ";
   if (renderers.empty()) h << "no external renderer (this run used --no-external)";
-  for (size_t i = 0; i < renderers.size(); ++i) h << (i ? " and " : "") << label(renderers[i]);
+  for (size_t i = 0; i < renderers.size(); ++i) h << (i ? " and " : "") << htmlEscape(label(renderers[i]));
   h << ". Reference renderer: <span class=\""
     << (r["totals"]["reference_nonfinite_pixels"].get<long long>() ? "fail" : "pass") << "\">"
     << r["totals"]["reference_nonfinite_pixels"].get<long long>()
@@ -95,7 +95,7 @@ std::string reportSection(const std::filesystem::path& folder, const std::string
        "<code>" << prefix << "scenes/</code> and renders with <code>xval render</code>.</p>\n";
   h << "<table><tr><th class=\"l\">case</th><th class=\"l\">group</th><th>NaN/Inf double<br>final / raw</th>"
        "<th>NaN/Inf float<br>final / raw</th><th>float vs double<br>max / p99.9</th>";
-  for (const auto& rr : renderers) h << "<th>" << label(rr) << " vs double<br>max / p99.9</th>";
+  for (const auto& rr : renderers) h << "<th>" << htmlEscape(label(rr)) << " vs double<br>max / p99.9</th>";
   h << "<th class=\"l\">what is extreme</th></tr>\n";
   std::ostringstream reasons;
   for (const auto& c : cases) {
@@ -138,7 +138,7 @@ std::string reportSection(const std::filesystem::path& folder, const std::string
     };
     fig(c["preview"].get<std::string>(), "double (reference)");
     fig(c["float_vs_double"]["map"].get<std::string>(),
-        "|float - double|, p99.9 " + num(c["float_vs_double"]["p999_abs_16bit"], 2));
+        "|float - double|, p99.9 " + fixed(c["float_vs_double"]["p999_abs_16bit"], 2));
     for (const auto& rr : renderers) {
       if (!c["external"].contains(rr)) continue;
       const J& e = c["external"][rr];
@@ -146,7 +146,7 @@ std::string reportSection(const std::filesystem::path& folder, const std::string
         std::string caption = "|";
         caption += label(rr);
         caption += " - double|, p99.9 ";
-        caption += num(e["metrics"]["p999_abs_16bit"], 2);
+        caption += fixed(e["metrics"]["p999_abs_16bit"], 2);
         fig(e["metrics"]["map"].get<std::string>(), caption);
       }
     }

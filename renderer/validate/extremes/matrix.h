@@ -1,8 +1,9 @@
-// The extremes matrix (`xval extremes`, issue #7 item 1): scenes at the
-// edges of every model's domain, each rendered by the reference renderer in
-// float and in double, and by POV-Ray and Blender where they can render it.
+// The extremes matrix (`xval extremes`, the spec; run.h runs it): scenes at
+// the edges of every model's domain, each rendered by the reference
+// renderer in float and in double, and by POV-Ray and Blender where they
+// can render it.
 //
-// What is measured per case (docs/extremes.md):
+// What is measured per case (measure.h, docs/extremes.md):
 //   - NaN/Inf: pixels with a non-finite value in the final RGBA, and in the
 //     unsaturated raw.R/G/B, of the reference render in each precision (the
 //     final colour is saturated per sample and saturate maps NaN to 0, so
@@ -34,9 +35,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "image/compare.h"
-#include "image/image.h"
-#include "scene/scene.h"
 
 namespace xval::extremes {
 
@@ -64,43 +62,8 @@ void writePaletteTexture(const std::filesystem::path& file);
 std::vector<std::filesystem::path> writeCaseScenes(const std::vector<Case>& cases,
                                                    const std::filesystem::path& scenes_dir);
 
-// Pixels with a non-finite value: in R, G, B or A (final), in raw.R/G/B.
-struct NonFinite {
-  long long final_pixels = 0;
-  long long raw_pixels = 0;
-  long long total() const { return final_pixels + raw_pixels; }
-};
-NonFinite countNonFinite(const Image& img);
-
-// One reference render (diagnostics on, so raw is filled).
-struct ReferenceRender {
-  Image image;
-  NonFinite nonfinite;
-  double seconds = 0.0;
-};
-ReferenceRender renderReference(const Scene& scene, Precision precision, int threads);
-
-// b against a (the double reference): metrics at the default per-pixel
-// tolerance of 2/65535 (fraction_within is reported, not judged).
-CompareMetrics compareToReference(const Image& reference, const Image& other);
-
-// The metrics as JSON (errors in 1/65535).
-nlohmann::ordered_json metricsJson(const CompareMetrics& m);
-
-// Heat map of the largest channel difference per pixel (see above), 8-bit
-// PNG at the image's own size; and the scale bar.
-void writeHeatMap(const Image& a, const Image& b, const std::filesystem::path& png);
-void writeHeatScale(const std::filesystem::path& png);
-
-// "0123456789ab" from `git describe --always --dirty --abbrev=40` output,
-// with " plus uncommitted changes" for a dirty tree.
-std::string shortCommit(const std::string& described);
-
-// The report's section (validate/report.cpp calls it): HTML for
-// folder/extremes.json (the folder of `xval extremes -o folder`), with its
-// tables and maps, whose paths start with `href` (the folder relative to the
-// report); "" when there is no such file. Throws std::runtime_error on a
-// malformed file.
-std::string reportSection(const std::filesystem::path& folder, const std::string& href);
+// The cases `only` names (comma-separated; empty: all), in matrix order.
+// Throws std::runtime_error naming an unknown case and listing the cases.
+std::vector<Case> selectCases(const std::vector<Case>& all, const std::string& only);
 
 }  // namespace xval::extremes

@@ -1,4 +1,4 @@
-#include "validate/native_lambert.h"
+#include "blender/native_lambert.h"
 
 #include <numbers>
 #include <stdexcept>

@@ -1,6 +1,6 @@
 // The trade-off sweep, the converged reference, errors and the Pareto
-// front (validate/tradeoff.h documents every parameter and default).
-#include "validate/tradeoff.h"
+// front (validate/tradeoff/sweep.h documents every parameter and default).
+#include "validate/tradeoff/sweep.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <variant>
 
+#include "image/compare.h"
 #include "image/perceptual.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_writer.h"
@@ -192,42 +193,32 @@ TradeoffError tradeoffError(const Image& img, const Image& ref) {
     throw std::runtime_error("tradeoff error: image sizes differ (" + std::to_string(img.width) + "x" +
                              std::to_string(img.height) + " vs " + std::to_string(ref.width) + "x" +
                              std::to_string(ref.height) + ")");
+  // The one comparison (image/compare.h), over the pixels either image covers.
+  const CompareMetrics m = compareImages(img, ref, Tolerance{});
   TradeoffError e;
-  std::vector<double> errs;
-  double sq = 0.0, de_sum = 0.0;
+  e.pixels = m.covered_either;
+  if (e.pixels == 0) return e;
+  e.max_16bit = m.max_abs_either * 65535.0;
+  e.p999_16bit = m.p999_abs_either * 65535.0;
+  e.rmse_16bit = m.rmse_either * 65535.0;
+  // CIEDE2000 over the same pixels (perceptualMetrics covers only the
+  // pixels both images cover), of the colours clamped to [0, 1].
+  auto clamp01 = [](const float* p) {
+    return glm::dvec3(std::clamp(double(p[0]), 0.0, 1.0), std::clamp(double(p[1]), 0.0, 1.0),
+                      std::clamp(double(p[2]), 0.0, 1.0));
+  };
+  double de_sum = 0.0;
   const size_t n = size_t(img.width) * img.height;
   for (size_t i = 0; i < n; ++i) {
     const float* a = &img.rgba[i * 4];
     const float* b = &ref.rgba[i * 4];
     if (!(a[3] > 0.0f) && !(b[3] > 0.0f)) continue;
-    double worst = 0.0;
-    for (int k = 0; k < 3; ++k) {
-      const double d = double(a[k]) - double(b[k]);
-      worst = std::max(worst, std::abs(d));
-      sq += d * d;
-    }
-    errs.push_back(worst);
-    auto clamp01 = [](const float* p) {
-      return glm::dvec3(std::clamp(double(p[0]), 0.0, 1.0), std::clamp(double(p[1]), 0.0, 1.0),
-                        std::clamp(double(p[2]), 0.0, 1.0));
-    };
     const double de = ciede2000(srgbToLab(clamp01(a)), srgbToLab(clamp01(b)));
     de_sum += de;
     e.ciede2000_max = std::max(e.ciede2000_max, de);
   }
-  e.pixels = (long long)errs.size();
-  if (errs.empty()) return e;
-  std::sort(errs.begin(), errs.end());
-  const size_t k = size_t(std::ceil(0.999 * double(errs.size()))) - 1;  // nearest rank, as compare.cpp
-  e.max_16bit = errs.back() * 65535.0;
-  e.p999_16bit = errs[std::min(k, errs.size() - 1)] * 65535.0;
-  e.rmse_16bit = std::sqrt(sq / (3.0 * double(errs.size()))) * 65535.0;
-  e.ciede2000_mean = de_sum / double(errs.size());
+  e.ciede2000_mean = de_sum / double(e.pixels);
   return e;
-}
-
-bool validErrorMetric(const std::string& m) {
-  return m == "rmse" || m == "p999" || m == "max" || m == "ciede2000";
 }
 
 double errorMetric(const TradeoffError& e, const std::string& m) {

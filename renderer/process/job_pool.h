@@ -1,0 +1,26 @@
+// A pool of worker threads over a list of independent jobs.
+//
+// runJobPool(count, workers, job) calls job(i) once for every i in
+// [0, count), on min(workers, count) threads (at least one; this thread
+// waits), each thread taking the next index from a shared counter, so the
+// jobs start in index order and a long job does not hold up the others.
+// It returns when every job has returned. An exception never leaves a
+// worker thread (that would be std::terminate): the first one thrown is
+// kept, the remaining jobs still run, and it is rethrown here once every
+// thread has been joined. Jobs that must not stop at an error report it
+// themselves (validate's and extremes' jobs record it as that job's error).
+//
+// defaultWorkers(): the hardware thread count, at least 1 (the default of
+// every --jobs option).
+#pragma once
+
+#include <cstddef>
+#include <functional>
+
+namespace xval {
+
+int defaultWorkers();
+
+void runJobPool(size_t count, int workers, const std::function<void(size_t index)>& job);
+
+}  // namespace xval

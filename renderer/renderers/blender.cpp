@@ -1,0 +1,60 @@
+// blender: Blender 3.4 (Cycles), run as an outside tool
+// (blender/blender_render.h).
+//
+// The scene is exported as glTF (gltf/gltf_exporter.h) and rendered by
+// `blender -b --factory-startup -P render_gltf.py`, which rebuilds the
+// lighting model as shader nodes (an emission, so Cycles adds nothing of
+// its own; docs/blender-export.md); its float EXR is read back, saturated
+// per pixel as the reference does per sample, the unsaturated values kept
+// as raw. A scene the harness cannot express is refused with its reason.
+//
+// Parameters (RenderRequest):
+//   work_dir         the export (scene.gltf, scene.bin, texture.png), the
+//                    log (blender.log) and the raw EXR
+//   timeout_seconds  default kDefaultToolTimeoutSeconds (600)
+// Needs `blender` on PATH and the harness script (blenderScript():
+// $XVAL_BLENDER_SCRIPT, else the source tree's exporters/blender/
+// render_gltf.py); version: the "Blender ..." line of `blender --version`.
+// render_seconds: the log's render Time.
+#include "blender/blender_render.h"
+#include "gltf/gltf_exporter.h"
+#include "renderers/renderer.h"
+
+namespace xval::renderers {
+
+// Why the harness cannot run on this machine ("" when it can): its script.
+std::string blenderScriptMissing() {
+  const std::filesystem::path script = blenderScript();
+  if (std::filesystem::is_regular_file(script)) return "";
+  return "Blender script " + script.string() + " not found (set XVAL_BLENDER_SCRIPT)";
+}
+
+// The Blender harness's refusal of a scene, "" when it can render it.
+std::string blenderRefusal(const Scene& scene) {
+  try {
+    checkBlenderScene(scene);
+  } catch (const ExportError& e) {
+    return e.what();
+  }
+  return exportRefusal([&](const std::filesystem::path& dir) { exportGltf(scene, dir); });
+}
+
+Renderer blenderRenderer() {
+  Renderer r;
+  r.id = "blender";
+  r.display_name = "Blender";
+  r.summary = "Blender 3.4 Cycles: the scene exported as glTF, the model rebuilt as shader nodes";
+  r.version_command = {"blender", "--version"};
+  r.version_marker = "Blender";
+  r.missing = blenderScriptMissing;
+  r.cannot_express = blenderRefusal;
+  r.render = [](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
+    ExternalRenderInfo tool;
+    Image image = renderWithBlender(scene, request.work_dir, request.timeout_seconds, &tool);
+    setInfo(info, tool);
+    return image;
+  };
+  return r;
+}
+
+}  // namespace xval::renderers

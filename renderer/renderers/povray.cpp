@@ -1,0 +1,41 @@
+// povray: POV-Ray 3.7, run as an outside tool (povray/pov_render.h).
+//
+// The scene is exported as SDL that renders, in one render, the reference
+// renderer's image (povray/pov_exporter.h, docs/povray-export.md); a scene
+// it cannot express exactly is refused with the exporter's reason, never
+// approximated. `povray scene.ini` runs in the work folder with a time-out
+// (process/run_process.h); its 16-bit PNG is read back as linear values,
+// alpha = hit mask.
+//
+// Parameters (RenderRequest):
+//   work_dir         the export (scene.pov, scene.ini, texture.png), the
+//                    log (povray.log) and the raw image
+//   timeout_seconds  default kDefaultToolTimeoutSeconds (600)
+// Needs `povray` on PATH; version: the "POV-Ray ..." line of
+// `povray --version`. render_seconds: the log's Trace Time.
+#include "povray/pov_exporter.h"
+#include "povray/pov_render.h"
+#include "renderers/renderer.h"
+
+namespace xval::renderers {
+
+Renderer povrayRenderer() {
+  Renderer r;
+  r.id = "povray";
+  r.display_name = "POV-Ray";
+  r.summary = "POV-Ray 3.7: the scene exported as SDL, rendered by `povray` with a time-out";
+  r.version_command = {"povray", "--version"};
+  r.version_marker = "POV-Ray";
+  r.cannot_express = [](const Scene& scene) {
+    return exportRefusal([&](const std::filesystem::path& dir) { exportPov(scene, dir); });
+  };
+  r.render = [](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
+    ExternalRenderInfo tool;
+    Image image = renderWithPovray(scene, request.work_dir, request.timeout_seconds, &tool);
+    setInfo(info, tool);
+    return image;
+  };
+  return r;
+}
+
+}  // namespace xval::renderers

@@ -1,0 +1,50 @@
+// reference: xval's own renderer (render/renderer.h), the one every other
+// renderer is compared against.
+//
+// A ray caster with the paper's local illumination: no shadows, no
+// inter-reflection, each lighting model of shading/models.h evaluated at
+// the first hit of each sample. Runs in this process (no outside tool, no
+// work folder, no time-out); its version is xval's.
+//
+// Parameters (RenderRequest::options, a RenderOptions), with the defaults
+// used when none are given:
+//   precision        double: the exact reference path (double-precision
+//                    watertight ray test and shading); float is the fast
+//                    path (rasterised or Embree packets)
+//   spp              the scene's render.spp (n x n stratified, box filter)
+//   threads          0: every hardware thread
+//   diagnostics      on: the EXR's raw, Z, backfacing, incidence and albedo
+//   cull_back_faces  on: back faces of closed meshes seen from outside are
+//                    skipped (never a first hit; the image is the same)
+//   rasterise        on (float only): rasterise when the whole scene is in
+//                    front of the camera
+// It expresses every scene the loader accepts.
+#include <chrono>
+
+#include "renderers/renderer.h"
+
+namespace xval::renderers {
+
+Renderer referenceRenderer() {
+  Renderer r;
+  r.id = "reference";
+  r.display_name = "reference";
+  r.subject = "the reference renderer";
+  r.summary = "xval's ray caster (local illumination, no shadows; exact double-precision path)";
+  r.reference = true;
+  r.render = [](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
+    RenderOptions options = request.options ? *request.options : defaultOptions(scene);
+    if (!request.options) options.precision = Precision::Double;
+    const auto t0 = std::chrono::steady_clock::now();
+    RenderStats stats;
+    Image image = renderScene(scene, options, &stats);
+    if (info) {
+      info->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      info->stats = stats;
+    }
+    return image;
+  };
+  return r;
+}
+
+}  // namespace xval::renderers

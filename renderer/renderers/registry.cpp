@@ -1,0 +1,225 @@
+// The renderer registry (registry.h) and the built-in renderers' list.
+#include "renderers/registry.h"
+
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <fstream>
+#include <stdexcept>
+
+#include "process/run_process.h"
+#include "scene/scene_loader.h"
+
+// The built-in renderers, in registry order (the order of validate's jobs,
+// of the pairs and of every listing). Adding a renderer: its file
+// renderers/<name>.cpp defining `Renderer <name>Renderer()`, and its name
+// on this line.
+#define XVAL_BUILTIN_RENDERERS(X) X(reference) X(povray) X(blender) X(blenderNative)
+
+namespace xval::renderers {
+
+#define XVAL_DECLARE_RENDERER(name) Renderer name##Renderer();
+XVAL_BUILTIN_RENDERERS(XVAL_DECLARE_RENDERER)
+#undef XVAL_DECLARE_RENDERER
+
+namespace {
+
+bool validId(const std::string& id) {
+  if (id.empty() || id.front() == '-') return false;
+  return std::all_of(id.begin(), id.end(),
+                     [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-'; });
+}
+
+// A scene file's `tolerances` may name every renderer compared against the
+// reference (scene/scene_loader.h); installed before main() runs.
+const bool kToleranceKeysInstalled =
+    (setToleranceRenderers([] { return registry().comparedIds(); }), true);
+
+}  // namespace
+
+void Registry::add(Renderer r) {
+  if (!validId(r.id))
+    throw std::invalid_argument("renderer id \"" + r.id +
+                                "\": expected lower-case letters, digits and '-' (it names files)");
+  if (find(r.id)) throw std::invalid_argument("renderer id \"" + r.id + "\": already registered");
+  if (r.reference && std::any_of(entries_.begin(), entries_.end(), [](const Renderer& e) { return e.reference; }))
+    throw std::invalid_argument("renderer \"" + r.id + "\": a second reference renderer (" +
+                                reference().id + " is the reference)");
+  if (!r.render) throw std::invalid_argument("renderer \"" + r.id + "\": no render function");
+  if (r.display_name.empty()) r.display_name = r.id;
+  entries_.push_back(std::move(r));
+}
+
+const Renderer* Registry::find(std::string_view id) const {
+  for (const auto& e : entries_)
+    if (e.id == id) return &e;
+  return nullptr;
+}
+
+const Renderer& Registry::at(std::string_view id) const {
+  if (const Renderer* r = find(id)) return *r;
+  throw std::runtime_error("renderer \"" + std::string(id) + "\": unknown, expected one of " + joinNames(ids()) +
+                           " (xval renderers lists them)");
+}
+
+const Renderer& Registry::reference() const {
+  for (const auto& e : entries_)
+    if (e.reference) return e;
+  throw std::runtime_error("no reference renderer is registered");
+}
+
+std::vector<std::string> Registry::ids() const {
+  std::vector<std::string> out;
+  for (const auto& e : entries_) out.push_back(e.id);
+  return out;
+}
+
+std::vector<std::string> Registry::comparedIds() const {
+  std::vector<std::string> out;
+  for (const auto& e : entries_)
+    if (!e.reference) out.push_back(e.id);
+  return out;
+}
+
+std::vector<std::string> Registry::everySceneIds() const {
+  std::vector<std::string> out;
+  for (const Renderer* e : everySceneRenderers()) out.push_back(e->id);
+  return out;
+}
+
+std::vector<const Renderer*> Registry::everySceneRenderers() const {
+  std::vector<const Renderer*> out;
+  for (const auto& e : entries_)
+    if (e.every_scene) out.push_back(&e);
+  return out;
+}
+
+std::string Registry::version(std::string_view id) const {
+  const Renderer& r = at(id);
+  {
+    std::lock_guard<std::mutex> g(cache_lock_);
+    if (auto it = versions_.find(id); it != versions_.end()) return it->second;
+  }
+  const std::string v = r.external() ? probeToolVersion(r.version_command, r.version_marker, kVersionTimeoutSeconds)
+                                     : std::string(kXvalVersion);
+  std::lock_guard<std::mutex> g(cache_lock_);
+  return versions_.emplace(std::string(id), v).first->second;
+}
+
+Availability Registry::availability(std::string_view id) const {
+  const Renderer& r = at(id);
+  {
+    std::lock_guard<std::mutex> g(cache_lock_);
+    if (auto it = availability_.find(id); it != availability_.end()) return it->second;
+  }
+  Availability a{true, ""};
+  if (r.external() && findOnPath(r.version_command.front()).empty()) {
+    const char* path = std::getenv("PATH");
+    a = {false, "'" + r.version_command.front() + "' not found on PATH (" + (path ? path : "PATH unset") + ")"};
+  }
+  if (a.available && r.missing) {
+    const std::string m = r.missing();
+    if (!m.empty()) a = {false, m};
+  }
+  if (a.available && r.external()) {
+    const std::string v = version(id);
+    if (v.rfind("unavailable", 0) == 0) {
+      std::string argv;
+      for (const auto& w : r.version_command) argv += (argv.empty() ? "" : " ") + w;
+      a = {false, "`" + argv + "` failed: " + v};
+    }
+  }
+  std::lock_guard<std::mutex> g(cache_lock_);
+  return availability_.emplace(std::string(id), a).first->second;
+}
+
+Registry& registry() {
+  static Registry* r = [] {
+    auto* reg = new Registry;  // never destroyed: renderers may be used by exiting threads
+#define XVAL_ADD_RENDERER(name) reg->add(name##Renderer());
+    XVAL_BUILTIN_RENDERERS(XVAL_ADD_RENDERER)
+#undef XVAL_ADD_RENDERER
+    return reg;
+  }();
+  return *r;
+}
+
+std::string joinNames(const std::vector<std::string>& names) {
+  std::string out;
+  for (size_t k = 0; k < names.size(); ++k)
+    out += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];
+  return out;
+}
+
+std::vector<RendererPair> unorderedPairs(size_t n) {
+  std::vector<RendererPair> out;
+  for (size_t a = 0; a < n; ++a)
+    for (size_t b = a + 1; b < n; ++b) out.push_back({a, b});
+  return out;
+}
+
+std::string pairKey(const Renderer& a, const Renderer& b) { return a.id + "-" + b.id; }
+
+std::string attribute(const std::vector<const Renderer*>& rs, const std::vector<int>& verdicts) {
+  const size_t n = rs.size();
+  const std::vector<RendererPair> pairs = unorderedPairs(n);
+  if (verdicts.size() != pairs.size())
+    throw std::invalid_argument("attribute: " + std::to_string(verdicts.size()) + " verdicts for " +
+                                std::to_string(n) + " renderers (expected " + std::to_string(pairs.size()) + ")");
+  if (n < 2) return "nothing compared (fewer than two renderers)";
+  if (std::any_of(verdicts.begin(), verdicts.end(), [](int v) { return v < 0; }))
+    return "incomplete (a renderer failed)";
+  if (std::all_of(verdicts.begin(), verdicts.end(), [](int v) { return v == 1; }))
+    return n == 2 ? "both agree" : n == 3 ? "all three agree" : "all " + std::to_string(n) + " agree";
+  // pass[a][b]: renderers a and b agree.
+  std::vector<std::vector<bool>> pass(n, std::vector<bool>(n, true));
+  for (size_t k = 0; k < pairs.size(); ++k)
+    pass[pairs[k].a][pairs[k].b] = pass[pairs[k].b][pairs[k].a] = verdicts[k] == 1;
+  // The majority M: more than half, agreeing pairwise, every other
+  // renderer failing against each of M. Two such sets would share a member
+  // (both are over half) and then one's outsider would agree with it: M is
+  // unique, so the first found is the one.
+  if (n > 20) return "no two renderers agree on everything";  // 2^n subsets: not for that many
+  for (uint32_t m = 1; m < (uint32_t(1) << n); ++m) {
+    const size_t size = size_t(std::popcount(m));
+    if (2 * size <= n || size == n) continue;
+    auto in = [m](size_t k) { return (m >> k) & 1u; };
+    bool ok = true;
+    for (size_t a = 0; a < n && ok; ++a)
+      for (size_t b = a + 1; b < n && ok; ++b)
+        if (in(a) && in(b)) ok = pass[a][b];
+        else if (in(a) != in(b)) ok = !pass[a][b];
+    if (!ok) continue;
+    std::vector<std::string> deviating, agreeing;
+    for (size_t k = 0; k < n; ++k)
+      (in(k) ? agreeing : deviating).push_back(in(k) ? rs[k]->display_name : rs[k]->sentenceSubject());
+    return joinNames(deviating) + (deviating.size() == 1 ? " deviates (" : " deviate (") + joinNames(agreeing) +
+           " agree)";
+  }
+  return "no two renderers agree on everything";
+}
+
+std::string probeToolVersion(const std::vector<std::string>& argv, const std::string& marker,
+                             double timeout_seconds) {
+  namespace fs = std::filesystem;
+  const fs::path log = fs::temp_directory_path() / ("xval-version-" + attemptToken() + ".log");
+  const ProcessResult r = runProcess(argv, fs::current_path(), log, timeout_seconds);
+  std::string found = "unknown";
+  if (!r.ok()) {
+    found = "unavailable (" + r.describe() + ")";
+  } else {
+    std::ifstream in(log);
+    std::string line;
+    while (std::getline(in, line))
+      if ((!marker.empty() && line.find(marker) != std::string::npos) || line.find("version") != std::string::npos ||
+          (line.size() == 40 && line.find(' ') == std::string::npos)) {
+        found = line;
+        break;
+      }
+  }
+  std::error_code ec;
+  fs::remove(log, ec);
+  return found;
+}
+
+}  // namespace xval::renderers

@@ -1,0 +1,115 @@
+// The renderer registry: the one place that knows every renderer.
+//
+// Every command takes its renderer list and its dispatch from here:
+// `render --renderer`, `crosscheck --renderer`, `bench --renderers`,
+// `validate` (one job per scene and every-scene renderer, the pairs, who
+// deviates), `xval renderers`, and the keys of a scene file's `tolerances`.
+// The registry's order is the order of jobs, pairs and listings.
+//
+// The built-in renderers are added when the registry is first used
+// (registry.cpp: one line each); more can be added at run time with add()
+// (before anything renders: the registry is not locked against a
+// concurrent add).
+//
+//   #include "renderers/registry.h"
+//   const auto& r = xval::renderers::registry().at("povray");
+//   Image img = r.render(scene, {work_dir, timeout, {}}, &info);
+#pragma once
+
+#include <cstddef>
+#include <deque>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "renderers/renderer.h"
+
+namespace xval::renderers {
+
+// How long a version probe may take before it is killed (seconds).
+inline constexpr double kVersionTimeoutSeconds = 60.0;
+
+struct Availability {
+  bool available = false;
+  std::string reason;  // why not (what is missing or failing); empty when available
+};
+
+class Registry {
+ public:
+  // Adds a renderer at the end. Throws std::invalid_argument for an id
+  // that is empty, not [a-z0-9-]+, or already registered, for a second
+  // reference renderer, or for a renderer without a render function.
+  void add(Renderer renderer);
+
+  // Every renderer, in registry order (references stay valid across add()).
+  const std::deque<Renderer>& all() const { return entries_; }
+  size_t size() const { return entries_.size(); }
+  // Null when no renderer has this id.
+  const Renderer* find(std::string_view id) const;
+  // Throws std::runtime_error naming the id and listing the registered ones.
+  const Renderer& at(std::string_view id) const;
+  // The renderer the others are compared against; throws if none is registered.
+  const Renderer& reference() const;
+
+  // Ids in registry order: all of them; all but the reference (what a
+  // crosscheck and a scene's `tolerances` name); the every-scene ones
+  // (what validate renders and compares, and bench times by default).
+  std::vector<std::string> ids() const;
+  std::vector<std::string> comparedIds() const;
+  std::vector<std::string> everySceneIds() const;
+  std::vector<const Renderer*> everySceneRenderers() const;
+
+  // The version line of the renderer's outside tool (kXvalVersion when it
+  // runs none), probed once with a time-out and cached; "unavailable (...)"
+  // or "unknown" when the probe fails or prints no version line.
+  std::string version(std::string_view id) const;
+  // Whether it can render on this machine and, if not, why. Cached.
+  Availability availability(std::string_view id) const;
+
+ private:
+  std::deque<Renderer> entries_;
+  mutable std::mutex cache_lock_;
+  mutable std::map<std::string, std::string, std::less<>> versions_;
+  mutable std::map<std::string, Availability, std::less<>> availability_;
+};
+
+// The process's registry, with the built-in renderers.
+Registry& registry();
+
+// "a, b and c" (the ", " and " and " joins of a listing; "a" alone).
+std::string joinNames(const std::vector<std::string>& names);
+
+// An unordered pair of renderers, a before b in registry order.
+struct RendererPair {
+  size_t a = 0, b = 0;  // indices into the list the pairs were made from
+};
+// Every unordered pair of n renderers, in registry order: (0,1), (0,2),
+// ..., (0,n-1), (1,2), ... (for reference, povray, blender:
+// reference-povray, reference-blender, povray-blender).
+std::vector<RendererPair> unorderedPairs(size_t n);
+// "reference-povray": how results.json and the diff images name a pair.
+std::string pairKey(const Renderer& a, const Renderer& b);
+
+// Who deviates, from the pairwise verdicts of `renderers` (verdicts[k] for
+// unorderedPairs(renderers.size())[k]: 1 pass, 0 fail, -1 not compared).
+//   - any pair not compared: "incomplete (a renderer failed)";
+//   - every pair passes: "all three agree" ("both agree", "all N agree");
+//   - a majority M (more than half of them) agree pairwise and every
+//     renderer outside M fails against every member of M (such an M is
+//     unique): "X deviates (A and B agree)", "X and Y deviate (...)";
+//   - otherwise: "no two renderers agree on everything".
+// For three renderers this is the one deviating from the other two.
+std::string attribute(const std::vector<const Renderer*>& renderers, const std::vector<int>& verdicts);
+
+// The version line an outside tool prints for `argv` (see
+// Renderer::version_marker; a 40-character line without spaces, as
+// `git rev-parse HEAD` prints, is also taken), waiting at most
+// timeout_seconds; "unavailable (<what happened>)" when it cannot run or
+// fails, "unknown" when it prints no such line.
+std::string probeToolVersion(const std::vector<std::string>& argv, const std::string& marker,
+                             double timeout_seconds);
+
+}  // namespace xval::renderers

@@ -1,0 +1,34 @@
+// Helpers of the renderer files (renderer.h).
+#include "renderers/renderer.h"
+
+#include "process/run_process.h"
+
+namespace xval::renderers {
+
+std::string exportRefusal(const std::function<void(const std::filesystem::path& dir)>& write_export) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("xval-export-check-" + attemptToken());
+  struct Cleanup {
+    fs::path dir;
+    ~Cleanup() {
+      std::error_code ec;
+      fs::remove_all(dir, ec);
+    }
+  } cleanup{dir};
+  fs::create_directories(dir);
+  try {
+    write_export(dir);
+  } catch (const ExportError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void setInfo(RenderInfo* info, const ExternalRenderInfo& tool) {
+  if (!info) return;
+  info->seconds = tool.seconds;
+  info->render_seconds = tool.render_seconds;
+  info->log = tool.log;
+}
+
+}  // namespace xval::renderers

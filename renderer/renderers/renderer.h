@@ -1,0 +1,99 @@
+// A renderer, as every command sees it: something that turns a Scene into
+// an Image (linear colour, alpha = hit mask), with an id, a name, a version,
+// and a way to say, before rendering, whether it can express a scene.
+//
+// The renderers are listed in one place, the registry (renderers/registry.h);
+// each built-in renderer is one file beside it (reference.cpp, povray.cpp,
+// blender.cpp, blender_native.cpp) whose doc block says what it is and its
+// parameters and defaults.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/export_common.h"
+#include "image/image.h"
+#include "render/renderer.h"
+#include "scene/scene.h"
+
+namespace xval::renderers {
+
+// xval's own version: the version of every built-in renderer that runs no
+// outside tool.
+inline constexpr const char* kXvalVersion = "xval 0.1.0";
+
+// What a render needs besides the scene. The scene was checked against the
+// command's budget when it was loaded (scene/scene_budget.h).
+struct RenderRequest {
+  // An outside tool's export, log and raw output go here: a fresh folder
+  // the caller made (files/output_folder.h makeFreshFolder), or any folder
+  // it owns. Unused by renderers that run no outside tool.
+  std::filesystem::path work_dir;
+  // Seconds before an outside tool is killed and the render fails.
+  double timeout_seconds = kDefaultToolTimeoutSeconds;
+  // The reference renderer's options; without them it renders the scene's
+  // own settings (defaultOptions) on the exact double-precision path.
+  std::optional<RenderOptions> options;
+};
+
+// What a render took.
+struct RenderInfo {
+  double seconds = 0.0;          // the whole render (an outside tool: its whole process)
+  double render_seconds = -1.0;  // the render alone, as the tool reports it (-1: not reported)
+  std::filesystem::path log;     // an outside tool's log (empty for none)
+  RenderStats stats;             // the reference renderer's figures (default for the others)
+};
+
+struct Renderer {
+  // How commands, file names and scene files name it: lower-case letters,
+  // digits and '-' (it names files such as OUT/<scene>/<id>.exr).
+  std::string id;
+  // How listings and reports name it ("POV-Ray").
+  std::string display_name;
+  // As the subject of a sentence ("the reference renderer"); empty: the
+  // display name.
+  std::string subject;
+  // One line: what it renders and how.
+  std::string summary;
+  // The renderer every other one is compared against (exactly one is).
+  bool reference = false;
+  // True: it renders every scene of the format, so `xval validate` renders
+  // each scene with it and compares it with every other such renderer.
+  // False: a check for a restricted class of scenes, run by crosscheck.
+  bool every_scene = true;
+  // The command printing the outside tool's version, e.g. {"povray",
+  // "--version"}; its first word must be on PATH for the renderer to be
+  // available. Empty: it runs no outside tool (version: kXvalVersion).
+  std::vector<std::string> version_command;
+  // The version is the first line of that command's output that contains
+  // this ("POV-Ray") or the word "version".
+  std::string version_marker;
+  // Whatever else it needs that this machine lacks ("" when nothing is
+  // missing), e.g. a script file. Optional.
+  std::function<std::string()> missing;
+  // Why it cannot express the scene exactly, "" when it can: the
+  // exporter's refusal (ExportError), found without rendering. Optional
+  // (absent: it can express every scene).
+  std::function<std::string(const Scene&)> cannot_express;
+  // Renders the scene. Throws ExportError when it cannot express it,
+  // ExternalToolError when an outside tool is missing, fails, hangs or
+  // writes garbage, std::runtime_error otherwise; never returns a partial
+  // image. `info` may be null.
+  std::function<Image(const Scene&, const RenderRequest&, RenderInfo* info)> render;
+
+  const std::string& sentenceSubject() const { return subject.empty() ? display_name : subject; }
+  bool external() const { return !version_command.empty(); }
+};
+
+// For the renderer files: the exporter's refusal of a scene, found by
+// exporting it into a temporary folder (removed again) without rendering:
+// the ExportError's message, "" when `write_export` succeeds. Other errors
+// (a full disk) propagate.
+std::string exportRefusal(const std::function<void(const std::filesystem::path& dir)>& write_export);
+// An outside tool's figures as a RenderInfo (nothing when `info` is null).
+void setInfo(RenderInfo* info, const ExternalRenderInfo& tool);
+
+}  // namespace xval::renderers

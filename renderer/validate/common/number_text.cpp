@@ -1,0 +1,25 @@
+// Numbers as text (validate/common/number_text.h).
+#include "validate/common/number_text.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace xval {
+
+std::string fixed(double v, int digits) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char b[512];
+  std::snprintf(b, sizeof b, "%.*f", digits, v);
+  return b;
+}
+
+std::string fixed(const nlohmann::json& j, int digits) {
+  return j.is_number() ? fixed(j.get<double>(), digits) : "n/a";
+}
+
+std::string fixed(const nlohmann::ordered_json& j, int digits) {
+  return j.is_number() ? fixed(j.get<double>(), digits) : "n/a";
+}
+
+}  // namespace xval

@@ -1,0 +1,21 @@
+// Numbers as text for tables and reports (Markdown, TSV, HTML).
+//
+// fixed(v, digits): v with `digits` digits after the point ("%.*f"), so
+// fixed(0.125, 2) == "0.13" (printf rounding of the binary value); the
+// non-finite values as "inf", "-inf" and "nan".
+// fixed(j, digits): the same for a JSON number; "n/a" for anything else
+// (null is how a results file writes a value that does not exist, e.g.
+// an error over no pixels).
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace xval {
+
+std::string fixed(double v, int digits);
+std::string fixed(const nlohmann::json& j, int digits);
+std::string fixed(const nlohmann::ordered_json& j, int digits);
+
+}  // namespace xval

@@ -1,0 +1,163 @@
+// The renderer registry: ids, order, pairs and who deviates, for any number
+// of renderers (renderers/registry.h).
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "renderers/registry.h"
+#include "scene/scene_loader.h"
+
+using namespace xval;
+using namespace xval::renderers;
+
+namespace {
+
+Renderer stub(const std::string& id, const std::string& name, bool reference = false) {
+  Renderer r;
+  r.id = id;
+  r.display_name = name;
+  r.reference = reference;
+  r.render = [](const Scene&, const RenderRequest&, RenderInfo*) { return Image(1, 1, false); };
+  return r;
+}
+
+std::vector<const Renderer*> pointers(const std::vector<Renderer>& rs) {
+  std::vector<const Renderer*> out;
+  for (const auto& r : rs) out.push_back(&r);
+  return out;
+}
+
+}  // namespace
+
+TEST(Registry, IdsAreUniqueWellFormedAndOneIsTheReference) {
+  const Registry& reg = registry();
+  ASSERT_GE(reg.size(), 3u);
+  std::set<std::string> seen;
+  int references = 0;
+  for (const Renderer& r : reg.all()) {
+    EXPECT_TRUE(seen.insert(r.id).second) << "duplicate id " << r.id;
+    EXPECT_FALSE(r.display_name.empty()) << r.id;
+    EXPECT_FALSE(r.summary.empty()) << r.id;
+    EXPECT_TRUE(bool(r.render)) << r.id;
+    for (char c : r.id) EXPECT_TRUE((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-') << r.id;
+    references += r.reference;
+  }
+  EXPECT_EQ(references, 1);
+  EXPECT_EQ(reg.reference().id, reg.ids().front());
+}
+
+// validate's jobs and pairs (results.json keys) are these, in this order.
+TEST(Registry, BuiltInOrderAndRoles) {
+  const Registry& reg = registry();
+  EXPECT_EQ(reg.everySceneIds(), (std::vector<std::string>{"reference", "povray", "blender"}));
+  std::vector<std::string> compared = reg.ids();
+  compared.erase(compared.begin());
+  EXPECT_EQ(reg.comparedIds(), compared);
+  ASSERT_NE(reg.find("blender-native"), nullptr);
+  EXPECT_FALSE(reg.find("blender-native")->every_scene);
+  EXPECT_EQ(reg.find("mitsuba"), nullptr);
+  try {
+    reg.at("mitsuba");
+    FAIL() << "no error for an unknown id";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("\"mitsuba\": unknown, expected one of reference, povray"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(Registry, AddRefusesBadDuplicateAndSecondReference) {
+  Registry reg;
+  reg.add(stub("a", "A", true));
+  EXPECT_THROW(reg.add(stub("a", "A again")), std::invalid_argument);
+  EXPECT_THROW(reg.add(stub("b", "B", true)), std::invalid_argument);
+  EXPECT_THROW(reg.add(stub("", "empty")), std::invalid_argument);
+  EXPECT_THROW(reg.add(stub("Upper", "U")), std::invalid_argument);
+  EXPECT_THROW(reg.add(stub("a/b", "slash")), std::invalid_argument);
+  Renderer no_render = stub("c", "C");
+  no_render.render = nullptr;
+  EXPECT_THROW(reg.add(no_render), std::invalid_argument);
+  reg.add(stub("b", "B"));
+  EXPECT_EQ(reg.ids(), (std::vector<std::string>{"a", "b"}));
+}
+
+// Renderers added at run time are in the registry's listings, its pairs,
+// and the keys a scene's `tolerances` may use.
+TEST(Registry, RunTimeRendererIsAToleranceKey) {
+  const std::string scene = R"({"name": "t",
+    "camera": {"position": [0, 0, 4], "target": [0, 0, 0], "width": 8, "height": 8},
+    "objects": [{"shape": "sphere"}], "material": {"model": {"type": "lambert"}},
+    "lights": [{"type": "point", "position": [1, 2, 3]}],
+    "tolerances": {"user-renderer": {"max_abs_16bit": 8, "reason": "a long enough reason for the test"}}})";
+  EXPECT_THROW(parseScene(scene, "t.json"), SceneError);
+  // Restricted to some scenes, so that the every-scene list the other
+  // tests check is unchanged when they run in this process after it.
+  Renderer user = stub("user-renderer", "User");
+  user.every_scene = false;
+  registry().add(user);
+  const Scene s = parseScene(scene, "t.json");
+  ASSERT_EQ(s.tolerances.size(), 1u);
+  EXPECT_EQ(s.tolerances[0].renderer, "user-renderer");
+  EXPECT_EQ(registry().comparedIds().back(), "user-renderer");
+}
+
+TEST(Registry, PairsAreEveryUnorderedPairInOrder) {
+  const Registry& reg = registry();
+  std::vector<std::string> keys;
+  const auto rs = reg.everySceneRenderers();
+  for (const RendererPair& p : unorderedPairs(rs.size())) keys.push_back(pairKey(*rs[p.a], *rs[p.b]));
+  EXPECT_EQ(keys, (std::vector<std::string>{"reference-povray", "reference-blender", "povray-blender"}));
+  for (size_t n = 0; n < 7; ++n) {
+    const auto pairs = unorderedPairs(n);
+    EXPECT_EQ(pairs.size(), n * (n - 1) / 2);
+    std::set<std::pair<size_t, size_t>> seen;
+    for (const auto& p : pairs) {
+      EXPECT_LT(p.a, p.b);
+      EXPECT_LT(p.b, n);
+      EXPECT_TRUE(seen.insert({p.a, p.b}).second);
+    }
+  }
+}
+
+// Three renderers: the answers validate has always given.
+TEST(Attribution, ThreeRenderers) {
+  const auto& reg = registry();
+  const auto rs = reg.everySceneRenderers();
+  ASSERT_EQ(rs.size(), 3u);
+  // verdicts: reference-povray, reference-blender, povray-blender
+  EXPECT_EQ(attribute(rs, {1, 1, 1}), "all three agree");
+  EXPECT_EQ(attribute(rs, {0, 1, 0}), "POV-Ray deviates (reference and Blender agree)");
+  EXPECT_EQ(attribute(rs, {1, 0, 0}), "Blender deviates (reference and POV-Ray agree)");
+  EXPECT_EQ(attribute(rs, {0, 0, 1}), "the reference renderer deviates (POV-Ray and Blender agree)");
+  for (const std::vector<int>& v : {std::vector<int>{0, 0, 0}, {1, 1, 0}, {1, 0, 1}, {0, 1, 1}})
+    EXPECT_EQ(attribute(rs, v), "no two renderers agree on everything");
+  EXPECT_EQ(attribute(rs, {1, -1, 1}), "incomplete (a renderer failed)");
+  EXPECT_EQ(attribute(rs, {0, 0, -1}), "incomplete (a renderer failed)");
+  EXPECT_THROW(attribute(rs, {1, 1}), std::invalid_argument);
+}
+
+TEST(Attribution, TwoRenderers) {
+  const std::vector<Renderer> rs{stub("a", "A", true), stub("b", "B")};
+  EXPECT_EQ(attribute(pointers(rs), {1}), "both agree");
+  // Two cannot tell which of them deviates.
+  EXPECT_EQ(attribute(pointers(rs), {0}), "no two renderers agree on everything");
+  EXPECT_EQ(attribute(pointers(rs), {-1}), "incomplete (a renderer failed)");
+}
+
+TEST(Attribution, FourAndFiveRenderersTheMajority) {
+  const std::vector<Renderer> four{stub("a", "A", true), stub("b", "B"), stub("c", "C"), stub("d", "D")};
+  const auto rs = pointers(four);
+  // pairs: ab ac ad bc bd cd
+  EXPECT_EQ(attribute(rs, {1, 1, 1, 1, 1, 1}), "all 4 agree");
+  EXPECT_EQ(attribute(rs, {1, 1, 0, 1, 0, 0}), "D deviates (A, B and C agree)");
+  EXPECT_EQ(attribute(rs, {0, 0, 0, 1, 1, 1}), "A deviates (B, C and D agree)");
+  // D disagrees with A and B only: not with all of the majority.
+  EXPECT_EQ(attribute(rs, {1, 1, 0, 1, 0, 1}), "no two renderers agree on everything");
+  // Two against two: no majority.
+  EXPECT_EQ(attribute(rs, {1, 0, 0, 0, 0, 1}), "no two renderers agree on everything");
+  // Five: a majority of three, two deviating.
+  const std::vector<Renderer> five{stub("a", "A", true), stub("b", "B"), stub("c", "C"), stub("d", "D"),
+                                   stub("e", "E")};
+  // pairs: ab ac ad ae bc bd be cd ce de; A, B, C agree; D and E fail against them.
+  EXPECT_EQ(attribute(pointers(five), {1, 1, 0, 0, 1, 0, 0, 0, 0, 1}), "D and E deviate (A, B and C agree)");
+}
