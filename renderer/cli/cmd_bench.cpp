@@ -1,10 +1,12 @@
 // xval bench SCENE [--frames N] [--runs R] [--spp N] [--threads T]
 //                  [--renderers reference,povray,blender]
 //
-// Whole-frame timings of one scene, in one run, side by side:
+// Whole-frame timings of one scene, in one run, side by side, for the
+// renderers asked for (default: the registry's every-scene renderers,
+// renderers/registry.h), in registry order:
 //   reference float:  the fast path (Embree 16-ray packets, float shading);
 //   reference double: the exact reference path;
-//   povray, blender:  the external renderer's own render time as it reports
+//   the others:       the external renderer's own render time as it reports
 //                     it, and its whole process (export, start-up, parse,
 //                     render, read back).
 // For the reference renderer the scene is prepared once (tessellation,
@@ -29,12 +31,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "blender/blender_render.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "common/export_common.h"
-#include "povray/pov_render.h"
 #include "render/renderer.h"
+#include "renderers/registry.h"
 #include "scene/scene_loader.h"
 #include "validate/common/frame_timing.h"
 
@@ -54,7 +55,7 @@ std::string ms(const Spread& s) {
 
 void addBenchCommand(CLI::App& app, std::function<int()>& run) {
   struct Args {
-    std::string scene, renderers = "reference,povray,blender", json, precision = "both";
+    std::string scene, renderers, json, precision = "both";
     int frames = 20, runs = 3, spp = 0, threads = 0;
     double timeout = kDefaultToolTimeoutSeconds;
     BudgetOptions budget;
@@ -67,8 +68,11 @@ void addBenchCommand(CLI::App& app, std::function<int()>& run) {
       "(min..max) and ratios. Reference frames exclude the one-time setup (tessellation, "
       "texture, BVH), which is printed apart, and diagnostics.");
   cmd->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
+  const renderers::Registry& registry = renderers::registry();
+  for (const std::string& id : registry.everySceneIds()) args->renderers += (args->renderers.empty() ? "" : ",") + id;
   cmd->add_option("--renderers", args->renderers,
-                  "Comma-separated subset of reference,povray,blender (default: all three)");
+                  "Comma-separated subset of " + renderers::joinNames(registry.ids()) + " (default: " +
+                      args->renderers + ")");
   cmd->add_option("--frames", args->frames, "Reference frames per precision after one warm-up (default 20)")
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--runs", args->runs, "Runs of each external renderer (default 3)")
@@ -88,18 +92,19 @@ void addBenchCommand(CLI::App& app, std::function<int()>& run) {
   cmd->callback([args, &run]() {
     run = [args]() -> int {
       Scene scene = loadScene(args->scene, args->budget.get());
+      const renderers::Registry& registry = renderers::registry();
       std::vector<std::string> which;
       {
         std::stringstream ss(args->renderers);
         std::string r;
         while (std::getline(ss, r, ','))
-          if (r == "reference" || r == "povray" || r == "blender")
+          if (registry.find(r))
             which.push_back(r);
           else
-            throw std::runtime_error("--renderers: unknown renderer '" + r +
-                                     "', expected reference, povray or blender");
+            throw std::runtime_error("--renderers: unknown renderer '" + r + "', expected " +
+                                     renderers::joinNames(registry.ids()));
       }
-      auto wants = [&](const char* r) { return std::find(which.begin(), which.end(), r) != which.end(); };
+      auto wants = [&](const std::string& r) { return std::find(which.begin(), which.end(), r) != which.end(); };
       nlohmann::ordered_json out;
       out["scene"] = scene.name;
       out["width"] = scene.camera.width, out["height"] = scene.camera.height;
@@ -107,7 +112,8 @@ void addBenchCommand(CLI::App& app, std::function<int()>& run) {
       std::printf("xval bench %s (%dx%d), %u hardware threads\n", scene.name.c_str(),
                   scene.camera.width, scene.camera.height, std::thread::hardware_concurrency());
       std::map<std::string, double> medians;
-      if (wants("reference")) {
+      const std::string reference_id = registry.reference().id;
+      if (wants(reference_id)) {
         RenderOptions o = defaultOptions(scene);
         if (args->spp) {
           requirePerfectSquareSpp(args->spp, "--spp");
@@ -126,7 +132,7 @@ void addBenchCommand(CLI::App& app, std::function<int()>& run) {
           const FrameTimes ft = timeFrames([&] { prepared.render(o, img); }, FrameBudget{args->frames},
                                            WarmUp::AlreadyDone);
           Spread s = spread(ft.wall_s), sc = spread(ft.cpu_s);
-          const std::string key = std::string("reference_") + toString(p);
+          const std::string key = reference_id + "_" + toString(p);
           medians[key] = s.median;
           std::printf("  %-18s frame %s   CPU time %s\n", key.c_str(), ms(s).c_str(), ms(sc).c_str());
           std::printf("  %-18s setup %.1f ms once, %zu triangles, %d spp, visibility: %s\n", "",
@@ -138,35 +144,34 @@ void addBenchCommand(CLI::App& app, std::function<int()>& run) {
                       {"frames", s.n}, {"setup_s", prepared.setupSeconds()}, {"spp", o.spp}};
         }
       }
-      for (const char* r : {"povray", "blender"}) {
-        if (!wants(r)) continue;
+      for (const renderers::Renderer& renderer : registry.all()) {
+        if (renderer.reference || !wants(renderer.id)) continue;
+        const std::string& r = renderer.id;
         std::vector<double> whole, own;
         const std::filesystem::path work =
             std::filesystem::temp_directory_path() / ("xval-bench-" + std::to_string(getpid()) + "-" + r);
         for (int k = 0; k < args->runs; ++k) {
-          ExternalRenderInfo info;
-          if (std::string(r) == "povray")
-            renderWithPovray(scene, work, args->timeout, &info);
-          else
-            renderWithBlender(scene, work, args->timeout, &info);
+          renderers::RenderInfo info;
+          renderer.render(scene, {work, args->timeout, {}}, &info);
           whole.push_back(info.seconds);
           if (info.render_seconds >= 0) own.push_back(info.render_seconds);
         }
         std::filesystem::remove_all(work);
         Spread sw = spread(whole), so = spread(own);
-        medians[std::string(r) + "_render"] = so.median;
-        medians[std::string(r) + "_process"] = sw.median;
-        std::printf("  %-18s render %s   whole process %s\n", r, ms(so).c_str(), ms(sw).c_str());
+        medians[r + "_render"] = so.median;
+        medians[r + "_process"] = sw.median;
+        std::printf("  %-18s render %s   whole process %s\n", r.c_str(), ms(so).c_str(), ms(sw).c_str());
         out[r] = {{"render_median_s", so.median}, {"render_min_s", so.min}, {"render_max_s", so.max},
                   {"process_median_s", sw.median}, {"process_min_s", sw.min},
                   {"process_max_s", sw.max}, {"runs", sw.n}};
       }
       // Ratios of medians, against the fast path.
-      if (medians.count("reference_float")) {
-        const double base = medians["reference_float"];
+      const std::string base_key = reference_id + "_float";
+      if (medians.count(base_key)) {
+        const double base = medians[base_key];
         std::printf("  ratios to the reference float frame (medians):\n");
         for (const auto& [k, v] : medians) {
-          if (k == "reference_float" || v <= 0) continue;
+          if (k == base_key || v <= 0) continue;
           std::printf("    %-18s %8.1fx\n", k.c_str(), v / base);
           out["ratios_to_reference_float"][k] = v / base;
         }

@@ -5,9 +5,8 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "blender/blender_render.h"
-#include "povray/pov_render.h"
 #include "render/renderer.h"
+#include "renderers/registry.h"
 #include "scene/scene_loader.h"
 
 namespace xval::cli {
@@ -21,7 +20,7 @@ struct RenderArgs {
   int threads = 0;
   bool quiet = false, no_diagnostics = false, keep_back_faces = false;
   std::string visibility = "auto";
-  std::string renderer = "reference";
+  std::string renderer;  // default: the registry's reference
   std::string work_dir;
   std::string stats;
   double timeout = kDefaultToolTimeoutSeconds;
@@ -62,10 +61,13 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--threads", args->threads, "Worker threads (default: all hardware threads)")
       ->check(CLI::Range(1, 1024));
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr");
+  const renderers::Registry& registry = renderers::registry();
+  args->renderer = registry.reference().id;
   cmd->add_option("--renderer", args->renderer,
-                  "reference (default), povray or blender: export, run the external renderer "
-                  "with a time-out and return its image as linear float (alpha = hit mask)")
-      ->check(CLI::IsMember({"reference", "povray", "blender"}));
+                  "One of " + renderers::joinNames(registry.ids()) + " (default " + registry.reference().id +
+                      "; xval renderers lists them): an external renderer is exported to, run with a "
+                      "time-out, and its image returned as linear float (alpha = hit mask)")
+      ->check(CLI::IsMember(registry.ids()));
   cmd->add_option("--work-dir", args->work_dir,
                   "Folder for an external renderer's export, log and raw output (default: "
                   "OUT's folder/OUT-stem.RENDERER)");
@@ -96,17 +98,16 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
         throw std::runtime_error("--visibility " + args->visibility +
                                  ": applies to the float path only (--precision float)");
       opt.rasterise = args->visibility == "auto";
-      if (args->renderer != "reference") {
+      const renderers::Renderer& renderer = renderers::registry().at(args->renderer);
+      if (!renderer.reference) {
         if (args->spp || !args->precision.empty())
           throw std::runtime_error("--spp and --precision apply to the reference renderer only");
         std::filesystem::path out(args->output);
         std::filesystem::path work = args->work_dir.empty()
             ? out.parent_path() / (out.stem().string() + "." + args->renderer)
             : std::filesystem::path(args->work_dir);
-        ExternalRenderInfo info;
-        Image img = args->renderer == "povray"
-                        ? renderWithPovray(scene, work, args->timeout, &info)
-                        : renderWithBlender(scene, work, args->timeout, &info);
+        renderers::RenderInfo info;
+        Image img = renderer.render(scene, {work, args->timeout, {}}, &info);
         writeImage(img, out);
         if (!args->stats.empty())
           writeJsonFile(args->stats, {{"scene", scene.name}, {"renderer", args->renderer},
@@ -118,12 +119,13 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
                        info.seconds, work.c_str());
         return 0;
       }
-      RenderStats stats;
-      Image img = renderScene(scene, opt, &stats);
+      renderers::RenderInfo info;
+      Image img = renderer.render(scene, {{}, args->timeout, opt}, &info);
+      const RenderStats& stats = info.stats;
       writeImage(img, args->output);
       if (!args->stats.empty())
         writeJsonFile(args->stats,
-                      {{"scene", scene.name}, {"renderer", "reference"}, {"width", img.width},
+                      {{"scene", scene.name}, {"renderer", renderer.id}, {"width", img.width},
                        {"height", img.height}, {"spp", opt.spp}, {"precision", toString(opt.precision)},
                        {"visibility", stats.visibility}, {"culled_triangles", stats.culled_triangles},
                        {"shading", stats.shading}, {"setup_s", stats.setup_seconds},

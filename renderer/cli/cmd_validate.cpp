@@ -4,7 +4,8 @@
 // xval validate --plan OUT/jobs.json --run-job K
 // xval validate --plan OUT/jobs.json --compare-only
 //
-// Renders every scene with the reference renderer, POV-Ray and Blender,
+// Renders every scene with every every-scene renderer of the registry
+// (renderers/registry.h: the reference renderer, POV-Ray and Blender),
 // compares every pair (reference-povray, reference-blender, povray-blender)
 // with the declared tolerances, attributes each disagreement, and writes
 // results.json and, from it alone, report.html (validate/report.h).
@@ -25,12 +26,9 @@
 // locked (files/output_folder.h: a plain run, --plan-only and
 // --compare-only alone, --run-job shared), and a new run removes the old
 // results.json and report.html before it plans.
-#include <atomic>
-#include <chrono>
 #include <cstdio>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <thread>
 
 #include "cli/cli_common.h"
@@ -42,52 +40,7 @@
 namespace xval::cli {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
 namespace v = xval::validation;
-
-// The jobs not yet done (all of them unless resuming), in plan order.
-std::vector<size_t> jobsToRun(const v::Plan& plan, bool resume) {
-  std::vector<size_t> todo;
-  for (const auto& job : plan.jobs)
-    if (!resume || !v::isDone(plan, job)) todo.push_back(job.index);
-  return todo;
-}
-
-// Runs the given jobs, `workers` at a time, with a progress line each.
-void runJobs(const v::Plan& plan, const std::vector<size_t>& todo, int workers) {
-  const auto t_start = Clock::now();
-  std::atomic<size_t> next{0}, done{0};
-  std::mutex lock;
-  auto worker = [&]() {
-    for (size_t k = next++; k < todo.size(); k = next++) {
-      const v::RenderJob& job = plan.jobs[todo[k]];
-      // An exception must not leave this thread (std::terminate): it is
-      // this job's error, and the compare step finds the job not done.
-      v::JobRecord rec;
-      try {
-        rec = v::runJob(plan, job);
-      } catch (const std::exception& e) {
-        rec.error = e.what();
-      } catch (...) {
-        rec.error = "unknown exception";
-      }
-      std::lock_guard<std::mutex> g(lock);
-      const size_t n = ++done;
-      const double el = std::chrono::duration<double>(Clock::now() - t_start).count();
-      std::fprintf(stderr, "[%zu/%zu] %-32s %-9s %s %6.2f s   elapsed %.0f s, ~%.0f s left\n", n,
-                   todo.size(), job.scene.c_str(), job.renderer.c_str(),
-                   rec.error.empty() ? "ok   " : "ERROR", rec.seconds, el,
-                   el * double(todo.size() - n) / double(n));
-      if (!rec.error.empty()) std::fprintf(stderr, "  %s\n", rec.error.c_str());
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int w = 0; w < std::min<int>(workers, int(std::max<size_t>(1, todo.size()))); ++w)
-    pool.emplace_back(worker);
-  for (auto& t : pool) t.join();
-}
-
 }  // namespace
 
 void addValidateCommand(CLI::App& app, std::function<int()>& run) {
@@ -208,11 +161,13 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
         // this run is killed before it writes its own.
         v::removeVerdict(plan);
         v::writePlan(plan);
-        const std::vector<size_t> todo = jobsToRun(plan, args->resume);
+        const std::vector<size_t> todo = v::jobsToRun(plan, args->resume);
         if (args->plan_only) {
           for (size_t k : todo) std::printf("%zu\n", k);
-          std::fprintf(stderr, "xval validate: wrote %s: %zu jobs (%zu scenes x 3 renderers), %zu to run\n",
-                       v::planFile(plan.dir).c_str(), plan.jobs.size(), plan.jobs.size() / 3, todo.size());
+          const size_t per_scene = v::jobRenderers().size();
+          std::fprintf(stderr, "xval validate: wrote %s: %zu jobs (%zu scenes x %zu renderers), %zu to run\n",
+                       v::planFile(plan.dir).c_str(), plan.jobs.size(), plan.jobs.size() / per_scene, per_scene,
+                       todo.size());
           return 0;
         }
         if (todo.size() < plan.jobs.size())
@@ -220,7 +175,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
                        plan.jobs.size() - todo.size(), plan.jobs.size(), todo.size());
         const int workers =
             args->jobs > 0 ? args->jobs : int(std::max(1u, std::thread::hardware_concurrency()));
-        runJobs(plan, todo, workers);
+        v::runJobs(plan, todo, workers);
         return v::compareAndReport(plan, sections(*args));
       } catch (const std::exception& e) {
         std::fprintf(stderr, "xval validate: error: %s\n", e.what());

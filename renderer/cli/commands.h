@@ -18,5 +18,6 @@ void addReportCommand(CLI::App& app, std::function<int()>& run);
 void addBenchCommand(CLI::App& app, std::function<int()>& run);
 void addExtremesCommand(CLI::App& app, std::function<int()>& run);
 void addTradeoffCommand(CLI::App& app, std::function<int()>& run);
+void addRenderersCommand(CLI::App& app, std::function<int()>& run);
 
 }  // namespace xval::cli

@@ -12,6 +12,7 @@
 
 #include "cli/commands.h"
 #include "process/run_process.h"
+#include "renderers/renderer.h"
 
 int main(int argc, char** argv) {
   // Before any thread starts: an interrupt stops every tool xval started.
@@ -20,7 +21,7 @@ int main(int argc, char** argv) {
       "xval: cross-validates lighting models between a reference renderer, POV-Ray and "
       "Blender.\nScene files are JSON (docs/scene-format.md)."};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "xval 0.1.0");
+  app.set_version_flag("--version", xval::renderers::kXvalVersion);
   std::function<int()> run;
   xval::cli::addRenderCommand(app, run);
   xval::cli::addExportCommand(app, run);
@@ -32,6 +33,7 @@ int main(int argc, char** argv) {
   xval::cli::addBenchCommand(app, run);
   xval::cli::addExtremesCommand(app, run);
   xval::cli::addTradeoffCommand(app, run);
+  xval::cli::addRenderersCommand(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

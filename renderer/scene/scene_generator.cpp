@@ -41,11 +41,8 @@ std::string substitute(const std::string& tmpl,
                        std::to_string(kMaxSceneNameBytes) + " bytes");
     at = close + 1;
   }
-  const std::string& tmpl_out = out;
-  for (char c : tmpl_out)
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.'))
-      throw SceneError(file + ": name: generated name " + describeJson(J(tmpl_out)) +
-                       " must use only letters, digits, '_', '-' and '.' (it becomes a file name)");
+  // The name is then checked by the one scene-name rule (sceneNameProblem)
+  // when the generated scene is parsed, before anything is written.
   return out;
 }
 

@@ -304,7 +304,7 @@ void setToleranceRenderers(std::function<std::vector<std::string>()> ids) { tole
 // The name becomes a folder under the output folder (`xval validate`
 // writes DIR/NAME/...) and part of paths handed to OpenImageIO and the
 // external renderers: one path component that none of them misreads.
-std::string sceneNameProblem(const std::string& name) {
+std::string sceneNameProblem(const std::string& name, SceneNameUse use) {
   if (name.empty() || name == "." || name == "..") return "expected a name usable as a folder name";
   if (name.find('/') != std::string::npos || name.find('\0') != std::string::npos)
     return "expected a name without '/' or NUL (it becomes a folder name)";
@@ -319,6 +319,12 @@ std::string sceneNameProblem(const std::string& name) {
   if (name.find_first_of("\\?") != std::string::npos)
     return "expected a name without '\\' or '?' (Blender reads '\\' as a folder separator and "
            "OpenImageIO reads '?' in a file name as the start of options)";
+  if (use == SceneNameUse::Loaded) return "";
+  for (unsigned char c : name)
+    if (c < 0x20 || c == 0x7f) return "expected no control characters";
+  for (const std::string own : kReservedSceneNames)
+    if (name == own || name.rfind(own + ".partial-", 0) == 0)
+      return "expected none of the names xval validate uses in its output folder (" + own + ")";
   return "";
 }
 

@@ -1,6 +1,7 @@
 // Scene files: JSON -> validated Scene (docs/scene-format.md).
 #pragma once
 
+#include "files/output_folder.h"
 #include "scene/json_reader.h"
 #include "scene/scene.h"
 #include "scene/scene_budget.h"
@@ -63,10 +64,23 @@ ImageLimits textureLimits();
 // most this many bytes, no '/', no NUL, not "." or "..".
 inline constexpr size_t kMaxSceneNameBytes = 200;
 
-// What is wrong with a scene name ("expected ..."), empty when it is
-// usable: one path component (not empty, ".", ".."; no '/', NUL), UTF-8,
-// at most kMaxSceneNameBytes, and no character a tool misreads in a path
-// ('\\', '?'). The loader refuses such names.
-std::string sceneNameProblem(const std::string& name);
+// What xval validate writes or reads at the top of its output folder,
+// beside the scenes' case folders: no scene may be named like one of them
+// (nor like their temporary "<name>.partial-..." folders).
+inline constexpr const char* kReservedSceneNames[] = {
+    "jobs.json",  "results.json", "report.html", "p999.dat",  "p999.gp", "p999.png",
+    "p999.log",   "heat_scale.png", "version.log", kLockFileName, "extremes", "tradeoff"};
+
+// The one rule for a scene name, wherever it comes from (a scene file, a
+// generated scene, validate's plan): what is wrong with it ("expected
+// ..."), empty when it is usable.
+//   Loaded: one path component (not empty, ".", ".."; no '/', NUL), UTF-8,
+//     at most kMaxSceneNameBytes, and no character a tool misreads in a
+//     path ('\\', '?'). The loader (and so the generator) refuses others.
+//   CaseFolder: also no control characters (the name is in every progress
+//     line) and none of kReservedSceneNames: what `xval validate` checks
+//     before the name names a case folder in its output folder.
+enum class SceneNameUse { Loaded, CaseFolder };
+std::string sceneNameProblem(const std::string& name, SceneNameUse use = SceneNameUse::Loaded);
 
 }  // namespace xval

@@ -4,24 +4,26 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 #include <OpenImageIO/oiioversion.h>
 
-#include "blender/blender_render.h"
 #include "process/run_process.h"
 #include "files/atomic_write.h"
 #include "files/output_folder.h"
 #include "image/compare.h"
 #include "image/image.h"
 #include "image/perceptual.h"
-#include "povray/pov_render.h"
 #include "render/renderer.h"
+#include "renderers/registry.h"
 #include "scene/json_reader.h"
 #include "scene/scene_loader.h"
 #include "validate/colour_stats.h"
@@ -30,8 +32,6 @@
 #include "validate/tolerances.h"
 
 namespace xval::validation {
-
-const char* const kRenderers[3] = {"reference", "povray", "blender"};
 
 namespace {
 
@@ -115,49 +115,14 @@ std::vector<fs::path> collectScenes(const std::vector<std::string>& inputs) {
   return out;
 }
 
-// The scene's name names its case folder OUT/<name>/: the loader's rule
-// (sceneNameProblem), no control characters (the name is in every progress
-// line), and none of the names validate writes or reads at the top of OUT.
+// The scene's name names its case folder OUT/<name>/: the one scene-name
+// rule for a case folder (sceneNameProblem).
 void checkSceneName(const std::string& name, const std::string& where) {
-  std::string problem = sceneNameProblem(name);
-  if (problem.empty())
-    for (unsigned char c : name)
-      if (c < 0x20 || c == 0x7f) problem = "expected no control characters";
-  if (problem.empty())
-    for (const char* own : kOwnFiles) {
-      const std::string o = own;
-      if (name == o || name.rfind(o + ".partial-", 0) == 0)
-        problem = "expected none of the names xval validate uses in its output folder (" + o + ")";
-    }
+  const std::string problem = sceneNameProblem(name, SceneNameUse::CaseFolder);
   if (!problem.empty())
     throw std::runtime_error(where + ": name: " + nlohmann::json(name).dump(-1, ' ', false,
                                                                           nlohmann::json::error_handler_t::replace) +
                              ": cannot name a case folder: " + problem);
-}
-
-// The tool's version line for the provenance; waits at most
-// min(60 s, the validation's timeout) for it.
-std::string commandVersion(const std::vector<std::string>& argv, const fs::path& tmp, double timeout_seconds) {
-  ProcessResult r = runProcess(argv, fs::current_path(), tmp, std::min(60.0, timeout_seconds));
-  if (!r.ok()) return "unavailable (" + r.describe() + ")";
-  std::ifstream in(tmp);
-  std::string line;
-  while (std::getline(in, line))
-    if (line.find("POV-Ray") != std::string::npos || line.find("Blender") != std::string::npos ||
-        line.find("version") != std::string::npos || (line.size() == 40 && line.find(' ') == std::string::npos))
-      return line;
-  return "unknown";
-}
-
-// Who deviates, from the three pairwise verdicts.
-std::string attribute(int ref_pov, int ref_bl, int pov_bl) {
-  // 1 pass, 0 fail, -1 not compared (a render failed).
-  if (ref_pov < 0 || ref_bl < 0 || pov_bl < 0) return "incomplete (a renderer failed)";
-  if (ref_pov && ref_bl && pov_bl) return "all three agree";
-  if (!ref_pov && ref_bl && !pov_bl) return "POV-Ray deviates (reference and Blender agree)";
-  if (ref_pov && !ref_bl && !pov_bl) return "Blender deviates (reference and POV-Ray agree)";
-  if (!ref_pov && !ref_bl && pov_bl) return "the reference renderer deviates (POV-Ray and Blender agree)";
-  return "no two renderers agree on everything";
 }
 
 std::string hostName() {
@@ -189,6 +154,8 @@ struct Reader {
 };
 
 }  // namespace
+
+std::vector<std::string> jobRenderers() { return renderers::registry().everySceneIds(); }
 
 fs::path planFile(const fs::path& dir) { return dir / "jobs.json"; }
 
@@ -230,7 +197,7 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
     if (!fresh)
       throw std::runtime_error(f.string() + ": name: \"" + scene.name + "\": also the name of " +
                                it->second + " (scene names name the output folders: expected unique)");
-    for (const char* r : kRenderers) {
+    for (const std::string& r : jobRenderers()) {
       RenderJob job;
       job.index = plan.jobs.size();
       job.scene = scene.name;
@@ -309,8 +276,11 @@ Plan readPlan(const fs::path& file) {
     }
   }
   const J& jobs = rd.at(j, "jobs", "");
-  if (!jobs.is_array() || jobs.empty() || jobs.size() % 3 != 0)
-    throw std::runtime_error(name + ": jobs: expected a non-empty array of 3 jobs per scene, got " +
+  const std::vector<std::string> per_scene = jobRenderers();
+  const size_t n = per_scene.size();
+  if (!jobs.is_array() || jobs.empty() || jobs.size() % n != 0)
+    throw std::runtime_error(name + ": jobs: expected a non-empty array of " + std::to_string(n) +
+                             " jobs per scene (" + renderers::joinNames(per_scene) + "), got " +
                              (jobs.is_array() ? std::to_string(jobs.size()) + " entries" : jobs.type_name()));
   for (size_t k = 0; k < jobs.size(); ++k) {
     const std::string where = "jobs[" + std::to_string(k) + "].";
@@ -324,13 +294,13 @@ Plan readPlan(const fs::path& file) {
     job.scene = rd.str(e, "scene", where);
     checkSceneName(job.scene, name + ": " + where.substr(0, where.size() - 1));
     job.renderer = rd.str(e, "renderer", where);
-    const std::string expect = kRenderers[k % 3];
+    const std::string& expect = per_scene[k % n];
     if (job.renderer != expect)
       throw std::runtime_error(name + ": " + where + "renderer: \"" + job.renderer + "\": expected \"" +
-                               expect + "\" (jobs go reference, povray, blender per scene)");
-    if (k % 3 != 0 && job.scene != plan.jobs[k - k % 3].scene)
+                               expect + "\" (jobs go " + renderers::joinNames(per_scene) + " per scene)");
+    if (k % n != 0 && job.scene != plan.jobs[k - k % n].scene)
       throw std::runtime_error(name + ": " + where + "scene: \"" + job.scene + "\": expected \"" +
-                               plan.jobs[k - k % 3].scene + "\" (the three jobs of a scene are adjacent)");
+                               plan.jobs[k - k % n].scene + "\" (the jobs of a scene are adjacent)");
     job.file = rd.str(e, "file", where);
     job.path = rd.str(e, "path", where);
     job.input_hash = rd.str(e, "input_hash", where);
@@ -416,22 +386,24 @@ JobRecord runJob(const Plan& plan, const RenderJob& job) {
     if (now_hash != job.input_hash)
       throw std::runtime_error(job.path.string() + ": changed since the plan was written (input_hash " +
                                now_hash + ", the plan's is " + job.input_hash + "): plan again");
-    Image image;
-    if (job.renderer == "reference") {
+    const renderers::Renderer& renderer = renderers::registry().at(job.renderer);
+    renderers::RenderRequest request;
+    request.timeout_seconds = plan.timeout_seconds;
+    if (renderer.reference) {
       RenderOptions o = defaultOptions(scene);
       o.precision = Precision::Double;
       o.threads = 1;  // parallelism comes from running jobs side by side
-      image = renderScene(scene, o);
-    } else {
-      ExternalRenderInfo info;
+      request.options = o;
+    }
+    if (renderer.external()) {
       // A fresh work folder per attempt: nothing planted or left there by
       // an earlier attempt is read or written through.
-      const fs::path work = cdir / (job.renderer + ".work");
-      makeFreshFolder(work);
-      image = job.renderer == "povray" ? renderWithPovray(scene, work, plan.timeout_seconds, &info)
-                                       : renderWithBlender(scene, work, plan.timeout_seconds, &info);
-      rec.render_seconds = info.render_seconds;
+      request.work_dir = cdir / (job.renderer + ".work");
+      makeFreshFolder(request.work_dir);
     }
+    renderers::RenderInfo info;
+    Image image = renderer.render(scene, request, &info);
+    rec.render_seconds = info.render_seconds;
     writeImage(image, plan.dir / job.exr());
     writePreviewPng(image, plan.dir / job.png(), kPreviewSide);
   } catch (const std::exception& e) {
@@ -460,6 +432,48 @@ JobRecord runJob(const Plan& plan, const RenderJob& job) {
   return rec;
 }
 
+// The jobs not yet done (all of them unless resuming), in plan order.
+std::vector<size_t> jobsToRun(const Plan& plan, bool resume) {
+  std::vector<size_t> todo;
+  for (const auto& job : plan.jobs)
+    if (!resume || !isDone(plan, job)) todo.push_back(job.index);
+  return todo;
+}
+
+// Runs the given jobs, `workers` at a time, with a progress line each.
+void runJobs(const Plan& plan, const std::vector<size_t>& todo, int workers) {
+  const auto t_start = Clock::now();
+  std::atomic<size_t> next{0}, done{0};
+  std::mutex lock;
+  auto worker = [&]() {
+    for (size_t k = next++; k < todo.size(); k = next++) {
+      const RenderJob& job = plan.jobs[todo[k]];
+      // An exception must not leave this thread (std::terminate): it is
+      // this job's error, and the compare step finds the job not done.
+      JobRecord rec;
+      try {
+        rec = runJob(plan, job);
+      } catch (const std::exception& e) {
+        rec.error = e.what();
+      } catch (...) {
+        rec.error = "unknown exception";
+      }
+      std::lock_guard<std::mutex> g(lock);
+      const size_t n = ++done;
+      const double el = std::chrono::duration<double>(Clock::now() - t_start).count();
+      std::fprintf(stderr, "[%zu/%zu] %-32s %-9s %s %6.2f s   elapsed %.0f s, ~%.0f s left\n", n,
+                   todo.size(), job.scene.c_str(), job.renderer.c_str(),
+                   rec.error.empty() ? "ok   " : "ERROR", rec.seconds, el,
+                   el * double(todo.size() - n) / double(n));
+      if (!rec.error.empty()) std::fprintf(stderr, "  %s\n", rec.error.c_str());
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int w = 0; w < std::min<int>(workers, int(std::max<size_t>(1, todo.size()))); ++w)
+    pool.emplace_back(worker);
+  for (auto& t : pool) t.join();
+}
+
 int compareAndReport(const Plan& plan, const ReportSections& sections) {
   const fs::path& dir = plan.dir;
   const J jsections = sectionsJson(sections, dir);  // fails early on a folder with no results
@@ -470,7 +484,10 @@ int compareAndReport(const Plan& plan, const ReportSections& sections) {
   bool any_error = false, any_fail = false;
   J jcases = J::array();
   std::vector<fs::path> setting_files{plan.tolerances_path};
-  for (size_t first = 0; first < plan.jobs.size(); first += 3) {
+  const std::vector<const renderers::Renderer*> rs = renderers::registry().everySceneRenderers();
+  const std::vector<renderers::RendererPair> pairs = renderers::unorderedPairs(rs.size());
+  const std::string& reference_id = renderers::registry().reference().id;
+  for (size_t first = 0; first < plan.jobs.size(); first += rs.size()) {
     const RenderJob& j0 = plan.jobs[first];
     Scene scene = loadScene(j0.path, plan.budget);
     if (scene.name != j0.scene)
@@ -487,7 +504,7 @@ int compareAndReport(const Plan& plan, const ReportSections& sections) {
       std::string error;
     };
     std::map<std::string, Render> renders;
-    for (int r = 0; r < 3; ++r) {
+    for (size_t r = 0; r < rs.size(); ++r) {
       const RenderJob& job = plan.jobs[first + r];
       Render& rr = renders[job.renderer];
       rr.rec = readRecord(plan, job);
@@ -510,14 +527,14 @@ int compareAndReport(const Plan& plan, const ReportSections& sections) {
       if (!rr.error.empty()) jr["error"] = rr.error, any_error = true;
       jc["renders"][job.renderer] = jr;
     }
-    struct Pair { const char* a; const char* b; };
-    const Pair pairs[] = {{"reference", "povray"}, {"reference", "blender"}, {"povray", "blender"}};
-    int verdict[3];
+    std::vector<int> verdict(pairs.size());
     J jpairs = J::array();
-    for (int p = 0; p < 3; ++p) {
-      Render& A = renders[pairs[p].a];
-      Render& B = renders[pairs[p].b];
-      const std::string key = std::string(pairs[p].a) + "-" + pairs[p].b;
+    for (size_t p = 0; p < pairs.size(); ++p) {
+      const renderers::Renderer& ra = *rs[pairs[p].a];
+      const renderers::Renderer& rb = *rs[pairs[p].b];
+      Render& A = renders[ra.id];
+      Render& B = renders[rb.id];
+      const std::string key = renderers::pairKey(ra, rb);
       J jp = {{"pair", key}};
       if (!A.error.empty() || !B.error.empty()) {
         verdict[p] = -1;
@@ -526,12 +543,12 @@ int compareAndReport(const Plan& plan, const ReportSections& sections) {
         continue;
       }
       std::string reason;
-      const Tolerance tol = table.lookupPair(scene, pairs[p].a, pairs[p].b, &reason);
-      if (p == 2) {
+      const Tolerance tol = table.lookupPair(scene, ra.id, rb.id, &reason);
+      if (!ra.reference && !rb.reference) {
         // The reference's diagnostics describe the same pixels.
-        A.image.depth = renders["reference"].image.depth;
-        A.image.backfacing = renders["reference"].image.backfacing;
-        A.image.incidence = renders["reference"].image.incidence;
+        A.image.depth = renders[reference_id].image.depth;
+        A.image.backfacing = renders[reference_id].image.backfacing;
+        A.image.incidence = renders[reference_id].image.incidence;
       }
       CompareMetrics m = compareImages(A.image, B.image, tol);
       PerceptualMetrics pm = perceptualMetrics(A.image, B.image);
@@ -552,30 +569,30 @@ int compareAndReport(const Plan& plan, const ReportSections& sections) {
       jpairs.push_back(jp);
     }
     jc["pairs"] = jpairs;
-    if (renders["reference"].error.empty()) {
-      ColourStats st = colourStats(renders["reference"].image);
+    if (renders[reference_id].error.empty()) {
+      ColourStats st = colourStats(renders[reference_id].image);
       jc["colour_stats"] = {{"lit_pixels", st.lit_pixels},
                             {"mean_chroma", st.mean_chroma},
                             {"mean_albedo_chroma", st.mean_albedo_chroma},
                             {"grey_fraction", st.grey_fraction},
                             {"hue_error_deg", st.hue_error_deg}};
     }
-    jc["attribution"] = attribute(verdict[0], verdict[1], verdict[2]);
-    jc["pass"] = verdict[0] == 1 && verdict[1] == 1 && verdict[2] == 1;
+    jc["attribution"] = renderers::attribute(rs, verdict);
+    jc["pass"] = std::all_of(verdict.begin(), verdict.end(), [](int v) { return v == 1; });
     jcases.push_back(jc);
   }
-  const fs::path tmp = dir / "version.log";
   J results;
   results["format"] = "xval-results/1";
-  results["provenance"] = {
-      {"povray", commandVersion({"povray", "--version"}, tmp, plan.timeout_seconds)},
-      {"blender", commandVersion({"blender", "--version"}, tmp, plan.timeout_seconds)},
-      {"openimageio", OIIO_VERSION_STRING},
-      {"compiler", std::string("g++ ") + __VERSION__},
-      {"tolerances", plan.tolerances}};
-  results["provenance"]["git_commit"] = commandVersion({"git", "rev-parse", "HEAD"}, tmp, plan.timeout_seconds);
+  // The outside tools' versions (probed with a time-out, renderers/registry.h).
+  results["provenance"] = J::object();
+  for (const renderers::Renderer* r : rs)
+    if (r->external()) results["provenance"][r->id] = renderers::registry().version(r->id);
+  results["provenance"]["openimageio"] = OIIO_VERSION_STRING;
+  results["provenance"]["compiler"] = std::string("g++ ") + __VERSION__;
+  results["provenance"]["tolerances"] = plan.tolerances;
+  results["provenance"]["git_commit"] =
+      renderers::probeToolVersion({"git", "rev-parse", "HEAD"}, "", std::min(60.0, plan.timeout_seconds));
   results["provenance"]["settings_hash"] = settingsHash(setting_files);
-  fs::remove(tmp);
   // From the plan's making to now: on a cluster this includes the time the
   // jobs waited in the queue.
   results["wall_seconds"] = std::max(0.0, nowUnix() - plan.created_unix);
@@ -596,10 +613,11 @@ int compareAndReport(const Plan& plan, const ReportSections& sections) {
     if (jc["pass"].get<bool>()) continue;
     std::fprintf(stderr, "FAIL %s (%s)\n", jc["scene"].get<std::string>().c_str(),
                  jc["attribution"].get<std::string>().c_str());
-    for (const char* r : {"povray", "blender"})
-      std::fprintf(stderr, "  look closer: xval crosscheck %s --renderer %s -o %s\n",
-                   shellQuote(jc["file"].get<std::string>()).c_str(), r,
-                   shellQuote((dir / (jc["scene"].get<std::string>() + "." + r)).string()).c_str());
+    for (const renderers::Renderer* r : rs)
+      if (!r->reference)
+        std::fprintf(stderr, "  look closer: xval crosscheck %s --renderer %s -o %s\n",
+                     shellQuote(jc["file"].get<std::string>()).c_str(), r->id.c_str(),
+                     shellQuote((dir / (jc["scene"].get<std::string>() + "." + r->id)).string()).c_str());
     std::fprintf(stderr,
                  "  accept a documented difference: declare it, with its measured reason, in the\n"
                  "  `tolerances` field of %s (defaults: %s)\n"

@@ -2,8 +2,9 @@
 // run and a cluster run (Slurm job arrays, scripts/slurm/, docs/cluster.md)
 // execute the same code:
 //
-//   plan     the render jobs (one scene x one renderer each: reference,
-//            povray, blender), written to OUT/jobs.json; every output path
+//   plan     the render jobs (one scene x one renderer each: every
+//            every-scene renderer of the registry, renderers/registry.h,
+//            in its order), written to OUT/jobs.json; every output path
 //            is fixed by the plan: OUT/<scene>/<renderer>.exr, .png and
 //            the job's record OUT/<scene>/<renderer>.job.json
 //   run job  renders one job and writes its EXR (the reference keeps its
@@ -11,7 +12,9 @@
 //            (seconds, render_seconds, error), each under a temporary name
 //            and renamed: a record that says ok means the images are whole
 //   compare  reads the plan, the records and the EXRs, compares every pair
-//            and writes results.json and report.html
+//            (every unordered pair of those renderers, in registry order),
+//            attributes each disagreement (renderers::attribute), and
+//            writes results.json and report.html
 //
 // A local run is plan + every job in a thread pool + compare, so a local
 // and a cluster run of the same scenes give the same verdicts and metrics
@@ -31,18 +34,16 @@
 #include "files/output_folder.h"
 #include "scene/scene_budget.h"
 #include "validate/report.h"
+#include "scene/scene_loader.h"
 
 namespace xval::validation {
-
-// The renderers every scene goes through, in job order.
-extern const char* const kRenderers[3];
 
 struct RenderJob {
   size_t index = 0;             // position in the plan (the Slurm array index)
   std::string scene;            // the scene's name: its folder under the output folder
   std::string file;             // the scene file as given (shown in results.json)
   std::filesystem::path path;   // the scene file, absolute (read by the job)
-  std::string renderer;         // "reference", "povray" or "blender"
+  std::string renderer;         // a renderer id of the registry (renderers/registry.h)
   std::string input_hash;       // of what the render depends on (see above)
   // Outputs, relative to the plan's folder.
   std::string exr() const { return scene + "/" + renderer + ".exr"; }
@@ -57,26 +58,27 @@ struct Plan {
   double timeout_seconds = 0.0;           // for the external renderers
   Budget budget;                          // every scene is loaded with it (planning and every job)
   double created_unix = 0.0;              // when the plan was made (wall_seconds counts from it)
-  std::vector<RenderJob> jobs;            // per scene, in scene order: reference, povray, blender
+  std::vector<RenderJob> jobs;            // per scene, in scene order: one per renderer (jobRenderers())
 };
+
+// The renderers every scene goes through, in job order: the registry's
+// every-scene renderers (for the built-in ones: reference, povray, blender).
+std::vector<std::string> jobRenderers();
 
 // The plan's file in an output folder.
 std::filesystem::path planFile(const std::filesystem::path& dir);
 
-// What xval validate writes or reads at the top of its output folder; a
-// scene may not be named like one of them (nor like their temporary
-// "<name>.partial-..." folders), since its case folder sits beside them.
-inline constexpr const char* kOwnFiles[] = {
-    "jobs.json",  "results.json", "report.html", "p999.dat",  "p999.gp", "p999.png",
-    "p999.log",   "heat_scale.png", "version.log", kLockFileName, "extremes", "tradeoff"};
+// What xval validate writes or reads at the top of its output folder; no
+// scene is named like one of them (sceneNameProblem, scene/scene_loader.h).
+inline constexpr const auto& kOwnFiles = kReservedSceneNames;
 
 // Removes the output folder's results.json and report.html (a new run, or a
 // new compare step, starts with no verdict; the new ones are written last).
 void removeVerdict(const Plan& plan);
 
 // Scene files from files and folders (a folder: its *.json, sorted), loaded
-// and checked (scene names unique and usable as folder names), three jobs
-// each. Throws std::runtime_error / SceneError naming the file and field.
+// and checked (scene names unique and usable as folder names), one job per
+// renderer of jobRenderers() each. Throws std::runtime_error / SceneError naming the file and field.
 Plan makePlan(const std::vector<std::string>& inputs, const std::string& tolerances,
               const std::filesystem::path& dir, double timeout_seconds,
               const Budget& budget = Budget{});
@@ -101,6 +103,13 @@ bool isDone(const Plan& plan, const RenderJob& job, std::string* why = nullptr);
 // record itself cannot be written, the returned record is not `present`
 // and its error says why.
 JobRecord runJob(const Plan& plan, const RenderJob& job);
+
+// The jobs not yet done (all of them unless resuming), in plan order.
+std::vector<size_t> jobsToRun(const Plan& plan, bool resume);
+
+// Runs the given jobs (indices into plan.jobs), `workers` at a time, with a
+// progress line each on stderr. A job's exception is its record's error.
+void runJobs(const Plan& plan, const std::vector<size_t>& todo, int workers);
 
 // Compares every pair of every scene from the EXRs and records, writes
 // each pair's difference EXR and heat map PNG, results.json (with the

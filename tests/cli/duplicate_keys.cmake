@@ -18,6 +18,19 @@ file(WRITE ${WORK}/dup_plan/jobs.json "${_dup}")
 run(2 ${XVAL} validate --plan ${WORK}/dup_plan/jobs.json --compare-only)
 expect_in("${err}" "dup_plan/jobs.json: not valid JSON in field format: duplicate field \"format\"")
 
+# A job of the plan with "renderer" twice, and the plan's budget with
+# "max_triangles" twice: the field path names the job and the field.
+string(REPLACE "\"renderer\": \"reference\"" "\"renderer\": \"reference\",\n      \"renderer\": \"reference\"" _dup "${_plan}")
+file(MAKE_DIRECTORY ${WORK}/dup_job)
+file(WRITE ${WORK}/dup_job/jobs.json "${_dup}")
+run(2 ${XVAL} validate --plan ${WORK}/dup_job/jobs.json --compare-only)
+expect_in("${err}" "dup_job/jobs.json: not valid JSON in field jobs[0].renderer: duplicate field \"renderer\"")
+string(REPLACE "\"max_triangles\":" "\"max_triangles\": 5,\n    \"max_triangles\":" _dup "${_plan}")
+file(MAKE_DIRECTORY ${WORK}/dup_budget)
+file(WRITE ${WORK}/dup_budget/jobs.json "${_dup}")
+run(2 ${XVAL} validate --plan ${WORK}/dup_budget/jobs.json --run-job 0)
+expect_in("${err}" "dup_budget/jobs.json: not valid JSON in field budget.max_triangles: duplicate field \"max_triangles\"")
+
 # The tolerance file, with "fraction" twice.
 file(WRITE ${WORK}/tolerances.json
   "{\"default\": {\"max_abs_16bit\": 2, \"fraction\": 0.5, \"fraction\": 0.999}}\n")

@@ -1,0 +1,59 @@
+// xval renderers [--json]
+//
+// Lists every renderer of the registry (renderers/registry.h), in its
+// order: id, display name, version, and whether it can render on this
+// machine and, if not, why (an outside tool not on PATH, a failing
+// `--version`, a missing script). Exit 0 (the listing is the answer, an
+// unavailable renderer included).
+#include <cstdio>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.h"
+#include "renderers/registry.h"
+
+namespace xval::cli {
+
+void addRenderersCommand(CLI::App& app, std::function<int()>& run) {
+  auto json = std::make_shared<bool>(false);
+  CLI::App* cmd = app.add_subcommand(
+      "renderers",
+      "List the renderers (" + renderers::joinNames(renderers::registry().ids()) +
+          "): id, name, version, and whether each is available on this machine and, if not, why.");
+  cmd->add_flag("--json", *json,
+                "Print JSON instead: {\"renderers\": [{id, display_name, summary, reference, every_scene, "
+                "version, available, reason}]}");
+  cmd->callback([json, &run]() {
+    run = [json]() -> int {
+      const renderers::Registry& registry = renderers::registry();
+      nlohmann::ordered_json out;
+      out["renderers"] = nlohmann::ordered_json::array();
+      for (const renderers::Renderer& r : registry.all()) {
+        const renderers::Availability a = registry.availability(r.id);
+        const std::string version = registry.version(r.id);
+        if (*json) {
+          out["renderers"].push_back({{"id", r.id},
+                                      {"display_name", r.display_name},
+                                      {"summary", r.summary},
+                                      {"reference", r.reference},
+                                      {"every_scene", r.every_scene},
+                                      {"version", version},
+                                      {"available", a.available},
+                                      {"reason", a.reason}});
+          continue;
+        }
+        std::printf("%-16s %-24s %s\n", r.id.c_str(), r.display_name.c_str(), r.summary.c_str());
+        std::printf("%-16s version: %s\n", "", version.c_str());
+        std::printf("%-16s %s%s%s\n", "", a.available ? "available" : "UNAVAILABLE: ", a.reason.c_str(),
+                    r.reference      ? " (the reference: every other renderer is compared with it)"
+                    : r.every_scene ? ""
+                                    : " (for some scenes only: crosscheck, not validate)");
+      }
+      if (*json) std::printf("%s\n", out.dump(2).c_str());
+      return 0;
+    };
+  });
+}
+
+}  // namespace xval::cli

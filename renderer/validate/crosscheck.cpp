@@ -1,0 +1,70 @@
+// xval crosscheck (crosscheck.h).
+#include "validate/crosscheck.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "files/atomic_write.h"
+#include "files/output_folder.h"
+#include "image/compare.h"
+#include "image/perceptual.h"
+#include "render/renderer.h"
+#include "renderers/registry.h"
+#include "scene/scene_loader.h"
+#include "validate/tolerances.h"
+
+namespace xval::validation {
+
+int crosscheck(const CrosscheckRequest& request) {
+  Scene scene = loadScene(request.scene_file, request.budget);
+  std::filesystem::path dir(request.dir);
+  std::filesystem::create_directories(dir);
+  const FolderLock folder_lock(dir, FolderLock::Mode::Exclusive, "xval crosscheck");
+  std::filesystem::remove(dir / "metrics.json");
+  // The one rule (validate/tolerances.h): --tolerances, else the nearest
+  // tolerances.json at or above the scene, else the toolkit's own.
+  const ToleranceFile tol_file = findToleranceFile(request.tolerances, {request.scene_file});
+  const ToleranceTable table = loadTolerances(tol_file.path);
+  std::printf("tolerances: %s\n", tol_file.describe().c_str());
+  std::string reason;
+  Tolerance tol = table.lookup(scene, request.renderer, &reason);
+
+  // The reference on its exact double-precision path.
+  const renderers::Renderer& reference = renderers::registry().reference();
+  renderers::RenderInfo ref_info;
+  Image ref = reference.render(scene, {{}, request.timeout_seconds, {}}, &ref_info);
+  const double ref_s = ref_info.seconds;
+  writeImage(ref, dir / (reference.id + ".exr"));
+  renderers::RenderInfo info;
+  const std::filesystem::path work = dir / (request.renderer + ".work");
+  makeFreshFolder(work);  // nothing from an earlier attempt, no planted link
+  Image ext = renderers::registry().at(request.renderer).render(scene, {work, request.timeout_seconds, {}}, &info);
+  writeImage(ext, dir / (request.renderer + ".exr"));
+  CompareMetrics m = compareImages(ref, ext, tol);
+  writeImage(differenceImage(ref, ext), dir / "diff.exr");
+  PerceptualMetrics pm = perceptualMetrics(ref, ext);
+  nlohmann::json j = nlohmann::json::parse(toJson(m, tol, &pm));
+  j["scene"] = scene.name;
+  j["renderer"] = request.renderer;
+  j["tolerance_reason"] = reason;
+  j["tolerance_file"] = {{"path", tol_file.path.string()}, {"found_by", tol_file.found_by}};
+  j["seconds"] = {{reference.id, ref_s}, {request.renderer, info.seconds}};
+  if (info.render_seconds >= 0) j["seconds"][request.renderer + "_render"] = info.render_seconds;
+  writeFileAtomically(dir / "metrics.json", j.dump(2) + "\n");
+  const bool pass = tol.passes(m);
+  std::printf(
+      "%s vs %s: %s  max %.2f  p99.9 %.2f  RMSE %.3f (x/65535)  within %.0f: %.4f%% (need "
+      "%.2f%%)  masks: %lld off (%lld on silhouettes)  over tolerance: %lld (occlusion edge "
+      "%lld, backfacing normal %lld, grazing %lld, unexplained %lld)  time: reference %.2f s, %s %.2f s\n",
+      scene.name.c_str(), request.renderer.c_str(), pass ? "PASS" : "FAIL",
+      m.max_abs * 65535, m.p999_abs * 65535, m.rmse * 65535, tol.max_abs * 65535,
+      100 * m.fraction_within, 100 * tol.fraction, m.mask_disagree,
+      m.mask_disagree_silhouette, m.over_tolerance, m.over_occlusion_edge, m.over_backfacing,
+      m.over_grazing, m.over_unexplained, ref_s, request.renderer.c_str(), info.seconds);
+  if (!reason.empty()) std::printf("  declared tolerance: %s\n", reason.c_str());
+  return pass ? 0 : 1;
+}
+
+}  // namespace xval::validation
