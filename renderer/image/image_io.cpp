@@ -60,7 +60,14 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
     }
     spec.alpha_channel = 3;
     spec.attribute("compression", "zip");
-    spec.attribute("oiio:ColorSpace", "Linear");
+    // The colour channels hold display-referred code values: the models
+    // work on stored texture codes and no transfer function is applied
+    // (docs/scene-format.md), so a value of 0.5 is meant to be shown as the
+    // code 0.5, as the 2012 shader's render target showed it. That is what
+    // the sRGB tag tells a colour-managed viewer (the PNG of the same values
+    // carries the same tag); "Linear" would have it apply the sRGB curve.
+    spec.attribute("oiio:ColorSpace", "sRGB");
+    spec.attribute("xval:encoding", kColourEncoding);
     std::vector<float> buf(n * spec.nchannels);
     for (size_t i = 0; i < n; ++i) {
       std::copy_n(&img.rgba[i * 4], 4, &buf[i * spec.nchannels]);
@@ -74,15 +81,21 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
     }
     ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::FLOAT, buf.data());
   } else {
-    // RGB over black (the colour is premultiplied by coverage), no alpha.
-    OIIO::ImageSpec spec(img.width, img.height, 3, OIIO::TypeDesc::UINT16);
-    std::vector<uint16_t> buf(n * 3);
-    for (size_t i = 0; i < n; ++i)
-      for (int c = 0; c < 3; ++c)
-        buf[i * 3 + c] =
-            uint16_t(std::lround(std::clamp(img.rgba[i * 4 + c], 0.0f, 1.0f) * 65535.0f));
+    // RGBA, 16 bits. PNG's alpha is unassociated: the stored colour is
+    // the premultiplied colour divided by the coverage (0 where nothing is
+    // hit), clamped to [0,1], so a reader that associates it again (OIIO does)
+    // gets colour = stored x alpha back, within half a step.
+    OIIO::ImageSpec spec(img.width, img.height, 4, OIIO::TypeDesc::UINT16);
+    spec.alpha_channel = 3;
+    spec.attribute("xval:encoding", kColourEncoding);
+    std::vector<uint16_t> buf(n * 4);
+    auto code = [](float v) { return uint16_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 65535.0f)); };
+    for (size_t i = 0; i < n; ++i) {
+      const float a = std::clamp(img.rgba[i * 4 + 3], 0.0f, 1.0f);
+      for (int c = 0; c < 3; ++c) buf[i * 4 + c] = a > 0.0f ? code(img.rgba[i * 4 + c] / a) : 0;
+      buf[i * 4 + 3] = code(a);
+    }
     ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::UINT16, buf.data());
-  }
   ok = out->close() && ok;
   if (!ok) throw std::runtime_error("cannot write image: " + out->geterror());
   requireDecodable(tmp_path, img.width, img.height);
