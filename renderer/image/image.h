@@ -83,6 +83,8 @@ ImageHeader readImageHeader(const std::filesystem::path& file);
 ImageLimits readImageLimits(int expect_width = 0, int expect_height = 0);
 
 // Reads R,G,B,A (and raw.* when present) from any file OpenImageIO reads.
+// The colour comes back premultiplied by alpha (as EXR stores it): a file
+// with unassociated alpha (PNG) is read as stored and multiplied here.
 // A non-regular file (FIFO, device, folder) is refused before it is opened.
 // The header must be within readImageLimits(); with expect_width > 0 it must
 // also be exactly expect_width x expect_height (an external renderer's

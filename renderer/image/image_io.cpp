@@ -87,6 +87,9 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
     // gets colour = stored x alpha back, within half a step.
     OIIO::ImageSpec spec(img.width, img.height, 4, OIIO::TypeDesc::UINT16);
     spec.alpha_channel = 3;
+    // The buffer below is already unassociated: without this OpenImageIO
+    // would take it as premultiplied and divide by alpha again.
+    spec.attribute("oiio:UnassociatedAlpha", 1);
     spec.attribute("xval:encoding", kColourEncoding);
     std::vector<uint16_t> buf(n * 4);
     auto code = [](float v) { return uint16_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 65535.0f)); };
@@ -96,6 +99,7 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
       buf[i * 4 + 3] = code(a);
     }
     ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::UINT16, buf.data());
+  }
   ok = out->close() && ok;
   if (!ok) throw std::runtime_error("cannot write image: " + out->geterror());
   requireDecodable(tmp_path, img.width, img.height);
@@ -146,7 +150,12 @@ ImageLimits readImageLimits(int expect_width, int expect_height) {
 Image readImage(const std::filesystem::path& file, int expect_width, int expect_height) {
   const std::string name = file.string();
   requireRegularImageFile(file);
-  auto in = OIIO::ImageInput::open(name);
+  // Formats whose alpha is unassociated (PNG) are read as stored, whatever
+  // OpenImageIO's default, and associated below: the Image holds colour
+  // premultiplied by coverage, as EXR stores it.
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open(name, &config);
   if (!in) throw std::runtime_error(name + ": cannot open image: " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
   // The header's size is checked before the pixels are allocated.
@@ -169,6 +178,7 @@ Image readImage(const std::filesystem::path& file, int expect_width, int expect_
   bool has_raw = raw[0] >= 0 && raw[1] >= 0 && raw[2] >= 0;
   Image img(spec.width, spec.height, has_raw);
   img.has_alpha = ch[3] >= 0;
+  const bool unassociated = img.has_alpha && spec.get_int_attribute("oiio:UnassociatedAlpha", 0) != 0;
   int zc = channel("Z"), bc = channel("backfacing"), ic = channel("incidence");
   int ac[3] = {channel("albedo.R"), channel("albedo.G"), channel("albedo.B")};
   const bool diag = zc >= 0 && bc >= 0 && ic >= 0 && ac[0] >= 0 && ac[1] >= 0 && ac[2] >= 0;
@@ -185,6 +195,8 @@ Image readImage(const std::filesystem::path& file, int expect_width, int expect_
     }
     for (int c = 0; c < 4; ++c)
       img.rgba[i * 4 + c] = ch[c] >= 0 ? buf[i * nc + ch[c]] : 1.0f;
+    if (unassociated)
+      for (int c = 0; c < 3; ++c) img.rgba[i * 4 + c] *= img.rgba[i * 4 + 3];
     if (has_raw)
       for (int c = 0; c < 3; ++c) img.raw[i * 3 + c] = buf[i * nc + raw[c]];
   }

@@ -24,7 +24,7 @@ J results() {
   return {{"format", "xval-results/1"},
           {"cases",
            {{{"scene", "knot <&\"'\x01>"},
-             {"renders", {{"reference", {{"seconds", 0.25}}}, {"povray", {{"seconds", 1.5}}}, {"blender", {{"seconds", 2.0}, {"error", "blender: exit code 1 <tail>"}}}}},
+             {"renders", {{"reference", {{"seconds", 0.25}}}, {"povray", {{"seconds", 1.5}}}, {"blender", {{"seconds", 2.0}, {"error", "exit code 1 <tail>"}}}}},
              {"pairs",
               {{{"pair", "reference-povray"}, {"pass", true}, {"metrics", metrics_pass}},
                {{"pair", "reference-blender"}, {"error", "not compared: a render failed"}},
