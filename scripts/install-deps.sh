@@ -17,6 +17,8 @@ packages=(
   povray blender python3-numpy
   # the report: plots, and the headless browser its test opens it in
   gnuplot-nox chromium
+  # JUnit XML checked against its schema (tests/junit/junit.xsd)
+  libxml2-utils
 )
 # Node.js for the Khronos glTF Validator (tests): Debian's, unless a node
 # is already installed.

@@ -66,7 +66,7 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
       CompareMetrics m = compareImages(a, b, t);
       if (a.has_alpha != b.has_alpha)
         std::fprintf(stderr,
-                     "xval compare: note: %s has no alpha channel (xval writes PNGs as RGB over black), so "
+                     "xval compare: note: %s has no alpha channel (an RGB image: xval's own PNGs are RGBA), so "
                      "every one of its pixels counts as covered and the %lld mask disagreements say nothing "
                      "about coverage; compare the EXRs (xval render -o OUT.exr) for the hit mask\n",
                      (a.has_alpha ? args->b : args->a).c_str(), m.mask_disagree);

@@ -13,6 +13,7 @@
 #include "cli/commands.h"
 #include "renderers/registry.h"
 #include "validate/crosscheck.h"
+#include "validate/tolerances.h"
 
 namespace xval::cli {
 

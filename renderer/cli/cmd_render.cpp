@@ -34,7 +34,7 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
       "Render a scene with the reference renderer (ray caster, local illumination, no "
       "shadows).\nWrites OpenEXR (float RGBA, unclamped encoding: final colour saturated to "
       "[0,1],\nalpha = hit coverage, plus raw.R/G/B = the unsaturated model colour) or, for a "
-      ".png\noutput, 16-bit RGB PNG. No transfer function is applied.");
+      ".png\noutput, 16-bit RGBA PNG (alpha = coverage). No transfer function is applied.");
   cmd->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args->output, "Output image: .exr or .png")->required();
   cmd->add_option("--spp", args->spp,

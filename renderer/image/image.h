@@ -29,9 +29,9 @@ struct Image {
   // albedo: the surface colour C (texture or base colour) at the first
   // sample that hit, 3 floats per pixel (0 where nothing is hit).
   std::vector<float> depth, backfacing, incidence, albedo;
-  // False for an image read from a file without an alpha channel (xval's
-  // own PNGs are RGB over black): readImage then sets alpha = 1 everywhere,
-  // so every pixel counts as covered.
+  // False for an image read from a file without an alpha channel (an RGB
+  // PNG from elsewhere): readImage then sets alpha = 1 everywhere, so every
+  // pixel counts as covered.
   bool has_alpha = true;
 
   Image() = default;
@@ -46,9 +46,17 @@ struct Image {
   const float* pixel(int x, int y) const { return &rgba[(size_t(y) * width + x) * 4]; }
 };
 
+// What the colour channels of every image xval writes hold (the files'
+// "xval:encoding" attribute).
+inline constexpr const char* kColourEncoding =
+    "display-referred code values: no transfer function applied (docs/scene-format.md)";
+
 // OpenEXR (32-bit float; channels R,G,B,A and, when present, raw.R, raw.G,
-// raw.B, Z, backfacing, incidence and albedo.R/G/B) or, by extension .png, a 16-bit RGB PNG (over black, no alpha)
-// holding round(v * 65535) of the clamped values, no gamma. Throws std::runtime_error naming the file.
+// raw.B, Z, backfacing, incidence and albedo.R/G/B; tagged oiio:ColorSpace
+// "sRGB", since the values are display-referred codes) or, by extension
+// .png, a 16-bit RGBA PNG: alpha = coverage, colour unassociated as PNG
+// defines it (premultiplied colour / alpha), round(v * 65535) of the
+// clamped values, no gamma. Throws std::runtime_error naming the file.
 void writeImage(const Image& img, const std::filesystem::path& file);
 // An 8-bit RGB PNG for looking at (reports): the clamped colour over black,
 // box-filtered down by the smallest integer factor that brings the larger
@@ -75,6 +83,8 @@ ImageHeader readImageHeader(const std::filesystem::path& file);
 ImageLimits readImageLimits(int expect_width = 0, int expect_height = 0);
 
 // Reads R,G,B,A (and raw.* when present) from any file OpenImageIO reads.
+// The colour comes back premultiplied by alpha (as EXR stores it): a file
+// with unassociated alpha (PNG) is read as stored and multiplied here.
 // A non-regular file (FIFO, device, folder) is refused before it is opened.
 // The header must be within readImageLimits(); with expect_width > 0 it must
 // also be exactly expect_width x expect_height (an external renderer's

@@ -60,7 +60,14 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
     }
     spec.alpha_channel = 3;
     spec.attribute("compression", "zip");
-    spec.attribute("oiio:ColorSpace", "Linear");
+    // The colour channels hold display-referred code values: the models
+    // work on stored texture codes and no transfer function is applied
+    // (docs/scene-format.md), so a value of 0.5 is meant to be shown as the
+    // code 0.5, as the 2012 shader's render target showed it. That is what
+    // the sRGB tag tells a colour-managed viewer (the PNG of the same values
+    // carries the same tag); "Linear" would have it apply the sRGB curve.
+    spec.attribute("oiio:ColorSpace", "sRGB");
+    spec.attribute("xval:encoding", kColourEncoding);
     std::vector<float> buf(n * spec.nchannels);
     for (size_t i = 0; i < n; ++i) {
       std::copy_n(&img.rgba[i * 4], 4, &buf[i * spec.nchannels]);
@@ -74,13 +81,23 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
     }
     ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::FLOAT, buf.data());
   } else {
-    // RGB over black (the colour is premultiplied by coverage), no alpha.
-    OIIO::ImageSpec spec(img.width, img.height, 3, OIIO::TypeDesc::UINT16);
-    std::vector<uint16_t> buf(n * 3);
-    for (size_t i = 0; i < n; ++i)
-      for (int c = 0; c < 3; ++c)
-        buf[i * 3 + c] =
-            uint16_t(std::lround(std::clamp(img.rgba[i * 4 + c], 0.0f, 1.0f) * 65535.0f));
+    // RGBA, 16 bits. PNG's alpha is unassociated: the stored colour is
+    // the premultiplied colour divided by the coverage (0 where nothing is
+    // hit), clamped to [0,1], so a reader that associates it again (OIIO does)
+    // gets colour = stored x alpha back, within half a step.
+    OIIO::ImageSpec spec(img.width, img.height, 4, OIIO::TypeDesc::UINT16);
+    spec.alpha_channel = 3;
+    // The buffer below is already unassociated: without this OpenImageIO
+    // would take it as premultiplied and divide by alpha again.
+    spec.attribute("oiio:UnassociatedAlpha", 1);
+    spec.attribute("xval:encoding", kColourEncoding);
+    std::vector<uint16_t> buf(n * 4);
+    auto code = [](float v) { return uint16_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 65535.0f)); };
+    for (size_t i = 0; i < n; ++i) {
+      const float a = std::clamp(img.rgba[i * 4 + 3], 0.0f, 1.0f);
+      for (int c = 0; c < 3; ++c) buf[i * 4 + c] = a > 0.0f ? code(img.rgba[i * 4 + c] / a) : 0;
+      buf[i * 4 + 3] = code(a);
+    }
     ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::UINT16, buf.data());
   }
   ok = out->close() && ok;
@@ -133,7 +150,12 @@ ImageLimits readImageLimits(int expect_width, int expect_height) {
 Image readImage(const std::filesystem::path& file, int expect_width, int expect_height) {
   const std::string name = file.string();
   requireRegularImageFile(file);
-  auto in = OIIO::ImageInput::open(name);
+  // Formats whose alpha is unassociated (PNG) are read as stored, whatever
+  // OpenImageIO's default, and associated below: the Image holds colour
+  // premultiplied by coverage, as EXR stores it.
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open(name, &config);
   if (!in) throw std::runtime_error(name + ": cannot open image: " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
   // The header's size is checked before the pixels are allocated.
@@ -156,6 +178,7 @@ Image readImage(const std::filesystem::path& file, int expect_width, int expect_
   bool has_raw = raw[0] >= 0 && raw[1] >= 0 && raw[2] >= 0;
   Image img(spec.width, spec.height, has_raw);
   img.has_alpha = ch[3] >= 0;
+  const bool unassociated = img.has_alpha && spec.get_int_attribute("oiio:UnassociatedAlpha", 0) != 0;
   int zc = channel("Z"), bc = channel("backfacing"), ic = channel("incidence");
   int ac[3] = {channel("albedo.R"), channel("albedo.G"), channel("albedo.B")};
   const bool diag = zc >= 0 && bc >= 0 && ic >= 0 && ac[0] >= 0 && ac[1] >= 0 && ac[2] >= 0;
@@ -172,6 +195,8 @@ Image readImage(const std::filesystem::path& file, int expect_width, int expect_
     }
     for (int c = 0; c < 4; ++c)
       img.rgba[i * 4 + c] = ch[c] >= 0 ? buf[i * nc + ch[c]] : 1.0f;
+    if (unassociated)
+      for (int c = 0; c < 3; ++c) img.rgba[i * 4 + c] *= img.rgba[i * 4 + 3];
     if (has_raw)
       for (int c = 0; c < 3; ++c) img.raw[i * 3 + c] = buf[i * nc + raw[c]];
   }

@@ -106,7 +106,12 @@ std::string attemptToken() {
 
 std::string ProcessResult::describe() const {
   if (!started) return "could not start: " + error;
-  if (timed_out) return "timed out after " + std::to_string(int(seconds)) + " s and was killed";
+  if (timed_out) {
+    // %g: the time-out with the digits it was given (0.3, 2, 600), never 0.
+    char t[32];
+    std::snprintf(t, sizeof t, "%g", timeout_seconds);
+    return std::string("timed out after ") + t + " s and was killed";
+  }
   if (signal) return std::string("killed by signal ") + std::to_string(signal) + " (" +
                      strsignal(signal) + ")";
   return "exit code " + std::to_string(exit_code);
@@ -136,6 +141,7 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const std::filesy
                          const std::filesystem::path& log, double timeout_seconds) {
   ProcessResult r;
   r.log = log;
+  r.timeout_seconds = timeout_seconds;
   std::filesystem::path exe = findOnPath(argv.at(0));
   if (exe.empty()) {
     r.error = "'" + argv[0] + "' not found on PATH";

@@ -20,11 +20,13 @@ struct ProcessResult {
   int exit_code = -1;      // valid when it exited normally
   int signal = 0;          // non-zero when killed by a signal
   double seconds = 0.0;    // wall time
+  double timeout_seconds = 0.0;  // the time-out it ran with, as given
   std::filesystem::path log;
   std::string error;       // why it could not start
 
   bool ok() const { return started && !timed_out && signal == 0 && exit_code == 0; }
-  // One line saying what happened ("exit code 3", "timed out after 300 s", ...).
+  // One line saying what happened ("exit code 3", "timed out after 300 s",
+  // "timed out after 0.3 s": the time-out as given, not rounded, ...).
   std::string describe() const;
 };
 

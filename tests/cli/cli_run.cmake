@@ -3,8 +3,8 @@
 # require_defined(SCRIPT VAR...): fails unless every -DVAR=... was given.
 # run(EXPECT_RC COMMAND...): runs COMMAND (at most 60 s), prints it with its
 #   exit status and stderr, fails unless it exits EXPECT_RC or if stderr
-#   shows a crash or a sanitizer report; sets `err` (its stderr) in the
-#   caller.
+#   shows a crash or a sanitizer report; sets `err` (its stderr) and `out`
+#   (its stdout) in the caller.
 # expect_in(TEXT WHAT): fails unless TEXT contains WHAT.
 function(require_defined script)
   foreach(_v ${ARGN})
@@ -27,6 +27,7 @@ function(run expect_rc)
     endif()
   endforeach()
   set(err "${err}" PARENT_SCOPE)
+  set(out "${out}" PARENT_SCOPE)
 endfunction()
 
 function(expect_in text what)

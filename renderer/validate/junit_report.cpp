@@ -1,0 +1,143 @@
+#include "validate/junit_report.h"
+
+#include <cstdio>
+#include <stdexcept>
+
+namespace xval {
+
+using J = nlohmann::json;
+
+std::string xmlEscape(const std::string& s) {
+  std::string out;
+  out.reserve(s.size());
+  for (unsigned char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      default:
+        if (c < 0x20 && c != '\t' && c != '\n') out += "\xEF\xBF\xBD";  // U+FFFD
+        else out += char(c);
+    }
+  }
+  return out;
+}
+
+namespace {
+
+std::string num(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.6g", v);
+  return b;
+}
+
+// xs:decimal: no exponent.
+std::string secondsText(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3f", v < 0 ? 0.0 : v);
+  return b;
+}
+
+const J& field(const J& j, const char* key, const std::string& where) {
+  if (!j.is_object() || !j.contains(key))
+    throw std::runtime_error(where + ": no \"" + key + "\" field");
+  return j.at(key);
+}
+
+// "p99.9 0.55/65535, max 42219.5/65535, 99.9344% within 2/65535 (needs
+// 99.9%), 0 mask disagreements off silhouettes"
+std::string describeMetrics(const J& m) {
+  std::string s;
+  auto get = [&m](const char* k) { return m.contains(k) && m[k].is_number() ? m[k].get<double>() : 0.0; };
+  s += "p99.9 " + num(get("p999_abs_16bit")) + "/65535, max " + num(get("max_abs_16bit")) +
+       "/65535, " + num(100.0 * get("fraction_within")) + "% within ";
+  if (m.contains("tolerance") && m["tolerance"].is_object()) {
+    const J& t = m["tolerance"];
+    s += num(t.value("max_abs_16bit", 0.0)) + "/65535 (needs " + num(100.0 * t.value("fraction", 0.0)) +
+         "%)";
+  } else {
+    s += "the tolerance";
+  }
+  const double off = get("mask_disagree") - get("mask_disagree_silhouette");
+  s += ", " + num(off) + " mask disagreements off silhouettes";
+  if (m.contains("tolerance_reason") && m["tolerance_reason"].is_string() &&
+      !m["tolerance_reason"].get<std::string>().empty())
+    s += "; declared tolerance: " + m["tolerance_reason"].get<std::string>();
+  return s;
+}
+
+double seconds(const J& renders, const std::string& name) {
+  if (!renders.is_object() || !renders.contains(name)) return 0.0;
+  const J& r = renders[name];
+  return r.is_object() && r.contains("seconds") && r["seconds"].is_number() ? r["seconds"].get<double>()
+                                                                            : 0.0;
+}
+
+std::string renderErrors(const J& renders) {
+  std::string s;
+  if (!renders.is_object()) return s;
+  for (const auto& [name, r] : renders.items())
+    if (r.is_object() && r.contains("error") && r["error"].is_string())
+      s += name + ": " + r["error"].get<std::string>() + "\n";
+  return s;
+}
+
+}  // namespace
+
+std::string junitXml(const J& results, const std::string& suite_name) {
+  const J& cases = field(results, "cases", "results");
+  if (!cases.is_array()) throw std::runtime_error("results: \"cases\" is not an array");
+  struct Counts { int tests = 0, failures = 0, errors = 0, skipped = 0; double time = 0; } n;
+  std::string body;
+  for (size_t i = 0; i < cases.size(); ++i) {
+    const std::string where = "results: cases[" + std::to_string(i) + "]";
+    const J& c = cases[i];
+    const J& scene = field(c, "scene", where);
+    const J& pairs = field(c, "pairs", where);
+    if (!scene.is_string() || !pairs.is_array())
+      throw std::runtime_error(where + ": \"scene\" must be a string and \"pairs\" an array");
+    const J renders = c.value("renders", J::object());
+    for (size_t p = 0; p < pairs.size(); ++p) {
+      const J& jp = pairs[p];
+      const std::string pw = where + ".pairs[" + std::to_string(p) + "]";
+      const J& pair = field(jp, "pair", pw);
+      if (!pair.is_string()) throw std::runtime_error(pw + ": \"pair\" must be a string");
+      const std::string name = pair.get<std::string>();
+      double t = 0;
+      if (auto dash = name.find('-'); dash != std::string::npos)
+        t = seconds(renders, name.substr(0, dash)) + seconds(renders, name.substr(dash + 1));
+      ++n.tests;
+      n.time += t;
+      body += "    <testcase classname=\"" + xmlEscape(scene.get<std::string>()) + "\" name=\"" +
+              xmlEscape(name) + "\" time=\"" + secondsText(t) + "\"";
+      if (jp.contains("not_expressible")) {
+        ++n.skipped;
+        const std::string why = jp["not_expressible"].is_string() ? jp["not_expressible"].get<std::string>()
+                                                                  : std::string("not expressible");
+        body += ">\n      <skipped message=\"" + xmlEscape("not expressible: " + why) + "\"/>\n    </testcase>\n";
+      } else if (jp.contains("error")) {
+        ++n.errors;
+        const std::string e = jp["error"].is_string() ? jp["error"].get<std::string>() : "error";
+        body += ">\n      <error message=\"" + xmlEscape(e) + "\" type=\"error\">" +
+                xmlEscape(renderErrors(renders)) + "</error>\n    </testcase>\n";
+      } else if (jp.contains("pass") && jp["pass"] == true) {
+        body += "/>\n";
+      } else if (jp.contains("pass") && jp["pass"] == false && jp.contains("metrics")) {
+        ++n.failures;
+        body += ">\n      <failure message=\"" + xmlEscape("outside the tolerance: " + describeMetrics(jp["metrics"])) +
+                "\" type=\"outside_tolerance\"/>\n    </testcase>\n";
+      } else {
+        throw std::runtime_error(pw + ": neither \"pass\" (with \"metrics\"), \"error\" nor \"not_expressible\"");
+      }
+    }
+  }
+  const std::string counts = " tests=\"" + std::to_string(n.tests) + "\" failures=\"" +
+                             std::to_string(n.failures) + "\" errors=\"" + std::to_string(n.errors) +
+                             "\" skipped=\"" + std::to_string(n.skipped) + "\" time=\"" + secondsText(n.time) + "\"";
+  return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"xval\"" + counts + ">\n  <testsuite name=\"" +
+         xmlEscape(suite_name) + "\"" + counts + ">\n" + body + "  </testsuite>\n</testsuites>\n";
+}
+
+}  // namespace xval

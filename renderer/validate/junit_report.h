@@ -1,0 +1,32 @@
+// JUnit XML from a results.json of `xval validate` or `xval crosscheck`,
+// the test-report format every CI system reads.
+//
+// One <testsuite> per run (name = the run's name), one <testcase> per scene
+// and pair: classname = the scene's name, name = the pair ("reference-povray").
+//   passed            an empty <testcase/>
+//   outside tolerance <failure message="..."> with the pair's metrics and
+//                     tolerance (p99.9, max, fraction within, mask
+//                     disagreements off silhouettes, the tolerance and, when
+//                     declared, its reason)
+//   error             <error message="..."> (a render failed, a job has no
+//                     usable record, ...), the renderers' errors in the text
+//   not expressible   <skipped message="..."> with the renderer's reason
+// time = the seconds of the two renders compared (their records). Every
+// string is XML-escaped; control characters other than tab and newline,
+// which XML 1.0 cannot carry, become U+FFFD.
+// tests/junit/junit.xsd is the schema the output is checked against.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace xval {
+
+// Throws std::runtime_error naming the field when `results` is not a
+// results.json (no "cases" array, a case without "scene" or "pairs").
+std::string junitXml(const nlohmann::json& results, const std::string& suite_name);
+
+std::string xmlEscape(const std::string& s);
+
+}  // namespace xval

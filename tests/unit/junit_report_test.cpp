@@ -1,0 +1,93 @@
+// JUnit XML from results.json: one testcase per scene and pair, the outcome
+// elements CI systems read, valid against tests/junit/junit.xsd (checked
+// with xmllint; a missing xmllint fails the test).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "process/run_process.h"
+#include "validate/junit_report.h"
+
+using namespace xval;
+using J = nlohmann::json;
+
+namespace {
+
+J results() {
+  J metrics_fail = {{"p999_abs_16bit", 9.5},       {"max_abs_16bit", 300.0},
+                    {"fraction_within", 0.95},     {"mask_disagree", 3},
+                    {"mask_disagree_silhouette", 1}, {"tolerance", {{"max_abs_16bit", 2.0}, {"fraction", 0.999}}},
+                    {"tolerance_reason", ""}};
+  J metrics_pass = metrics_fail;
+  metrics_pass["fraction_within"] = 1.0;
+  return {{"format", "xval-results/1"},
+          {"cases",
+           {{{"scene", "knot <&\"'\x01>"},
+             {"renders", {{"reference", {{"seconds", 0.25}}}, {"povray", {{"seconds", 1.5}}}, {"blender", {{"seconds", 2.0}, {"error", "exit code 1 <tail>"}}}}},
+             {"pairs",
+              {{{"pair", "reference-povray"}, {"pass", true}, {"metrics", metrics_pass}},
+               {{"pair", "reference-blender"}, {"error", "not compared: a render failed"}},
+               {{"pair", "povray-blender"}, {"error", "not compared: a render failed"}}}}},
+            {{"scene", "sphere"},
+             {"renders", {{"reference", {{"seconds", 0.00001}}}, {"povray", {{"seconds", 1.0}}}}},
+             {"pairs",
+              {{{"pair", "reference-povray"}, {"pass", false}, {"metrics", metrics_fail}},
+               {{"pair", "reference-blender"}, {"not_expressible", "blender: spp 9 not supported"}}}}}}}};
+}
+
+std::filesystem::path dir() {
+  auto d = std::filesystem::temp_directory_path() / "xval_junit_test";
+  std::filesystem::create_directories(d);
+  return d;
+}
+
+ProcessResult xmllint(const std::string& xml, const char* name) {
+  std::ofstream(dir() / name) << xml;
+  return runProcess({"xmllint", "--noout", "--schema", XVAL_JUNIT_XSD, (dir() / name).string()}, dir(),
+                    dir() / (std::string(name) + ".log"), 60);
+}
+
+}  // namespace
+
+TEST(JunitReport, OneTestcasePerScenePairWithItsOutcome) {
+  const std::string x = junitXml(results(), "reference set");
+  EXPECT_NE(x.find("<testsuite name=\"reference set\" tests=\"5\" failures=\"1\" errors=\"2\" skipped=\"1\""),
+            std::string::npos) << x;
+  EXPECT_NE(x.find("<testcase classname=\"sphere\" name=\"reference-povray\""), std::string::npos) << x;
+  EXPECT_NE(x.find("<failure message=\"outside the tolerance: p99.9 9.5/65535, max 300/65535, 95% within "
+                   "2/65535 (needs 99.9%), 2 mask disagreements off silhouettes\""),
+            std::string::npos) << x;
+  EXPECT_NE(x.find("<skipped message=\"not expressible: blender: spp 9 not supported\"/>"), std::string::npos) << x;
+  EXPECT_NE(x.find("<error message=\"not compared: a render failed\" type=\"error\">blender: exit code 1 &lt;tail&gt;"),
+            std::string::npos) << x;
+  // The scene name is escaped, its control character replaced.
+  EXPECT_NE(x.find("classname=\"knot &lt;&amp;&quot;&apos;\xEF\xBF\xBD&gt;\""), std::string::npos) << x;
+  // time: the two renders' seconds, as a decimal without exponent.
+  EXPECT_NE(x.find("name=\"reference-povray\" time=\"1.750\""), std::string::npos) << x;
+  EXPECT_NE(x.find("name=\"reference-povray\" time=\"1.000\""), std::string::npos) << x;
+}
+
+TEST(JunitReport, ValidAgainstTheSchema) {
+  ProcessResult r = xmllint(junitXml(results(), "reference set"), "ok.xml");
+  EXPECT_TRUE(r.ok()) << r.describe() << "\n" << tailOfFile(r.log);
+}
+
+TEST(JunitReport, TheSchemaCheckCanFail) {
+  // A testcase without classname, a count that is not a number.
+  ProcessResult r = xmllint(
+      "<?xml version=\"1.0\"?><testsuites><testsuite name=\"s\" tests=\"x\"><testcase name=\"a\"/>"
+      "</testsuite></testsuites>",
+      "bad.xml");
+  ASSERT_TRUE(r.started) << r.describe();
+  EXPECT_FALSE(r.ok()) << tailOfFile(r.log);
+}
+
+TEST(JunitReport, NotAResultsFileIsAnErrorNamingTheField) {
+  try {
+    junitXml(J{{"cases", {{{"scene", "a"}}}}}, "s");
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "results: cases[0]: no \"pairs\" field");
+  }
+}
