@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -185,6 +186,31 @@ void checkPlyHeader(const fs::path& file, long long file_size, const ModelLimits
                          " after the header (truncated, or the counts are wrong)");
 }
 
+// An OFF header's counts ("OFF", then vertices, faces, edges) against the
+// file: Assimp reserves for them before reading. Each vertex takes at
+// least 6 bytes ("0 0 0\n"), each face 8 ("3 0 1 2\n").
+void checkOffHeader(const fs::path& file, long long file_size, const ModelLimits& limits) {
+  std::istringstream in(readPrefix(file, 4096));
+  std::string tok;
+  while (in >> tok && tok[0] == '#') std::getline(in, tok);
+  if (tok.find("OFF") == std::string::npos) return;
+  unsigned long long nv = 0, nf = 0;
+  std::string a, b;
+  if (!(in >> a >> b)) return;
+  for (const std::string* t : {&a, &b})
+    if (t->find_first_not_of("0123456789") != std::string::npos) return;
+  errno = 0;
+  nv = std::strtoull(a.c_str(), nullptr, 10);
+  nf = std::strtoull(b.c_str(), nullptr, 10);
+  if (errno == ERANGE) nv = nf = ~0ull >> 1;
+  if (nv > (unsigned long long)limits.max_vertices || nf > (unsigned long long)limits.max_triangles)
+    throw ModelFileError(file.string() + ": OFF header: " + a + " vertices, " + b + " faces exceed the limits " +
+                         std::to_string(limits.max_vertices) + ", " + std::to_string(limits.max_triangles));
+  if ((long double)nv * 6 + (long double)nf * 8 > (long double)file_size)
+    throw ModelFileError(file.string() + ": OFF header: " + a + " vertices and " + b + " faces need more than the " +
+                         std::to_string(file_size) + " bytes the file has");
+}
+
 // glTF JSON: nesting depth (Assimp's JSON parser recurses per level) and
 // every buffer's declared byteLength (Assimp allocates it before reading).
 struct DepthLimit : nlohmann::json_sax<nlohmann::json> {
@@ -214,7 +240,15 @@ void checkGltfJson(const fs::path& file, const std::string& text, long long bin_
     throw ModelFileError(file.string() + ": glTF JSON does not parse");
   }
   const auto j = nlohmann::json::parse(text);
-  if (!j.is_object() || !j.contains("buffers")) return;
+  if (!j.is_object()) throw ModelFileError(file.string() + ": glTF JSON is not an object");
+  const auto asset = j.find("asset");
+  const std::string version = asset != j.end() && asset->is_object() && asset->contains("version") &&
+                                      (*asset)["version"].is_string()
+                                  ? (*asset)["version"].get<std::string>()
+                                  : "";
+  if (version.rfind("2.", 0) != 0)
+    throw ModelFileError(file.string() + ": asset.version: '" + version + "' (only glTF 2.0 is read)");
+  if (!j.contains("buffers")) return;
   const auto& buffers = j["buffers"];
   if (!buffers.is_array()) throw ModelFileError(file.string() + ": buffers: expected an array");
   for (size_t b = 0; b < buffers.size(); ++b) {
@@ -449,6 +483,7 @@ Model loadModelFile(const fs::path& file_in, const ModelLoadOptions& options) {
   auto io_owner = std::make_unique<GuardedIO>(real.parent_path(), lim);
   GuardedIO* io = io_owner.get();
   if (ext == ".ply") checkPlyHeader(real, size, lim);
+  if (ext == ".off") checkOffHeader(real, size, lim);
   if (ext == ".gltf") checkGltf(real, size, lim, *io);
   if (ext == ".glb") checkGlb(real, size, lim, *io);
 

@@ -229,6 +229,11 @@ TEST_F(ModelFile, OffQuadIsTriangulated) {
   const Model m = loadModelFile(write("q.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n"));
   EXPECT_EQ(m.triangleCount(), 2);
   for (const auto& n : m.primitives[0].mesh.normals) expectNear(n, {0, 0, 1}, 1e-15, "normal");
+  // Counts the file cannot hold (Assimp would reserve for them first).
+  expectError(write("big.off", "OFF\n4 2000000000 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n"),
+              "2000000000 faces exceed the limits");
+  expectError(write("short.off", "OFF\n4000 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n"),
+              "need more than the");
 }
 
 // --- glTF, GLB --------------------------------------------------------------
@@ -362,6 +367,7 @@ TEST_F(ModelFile, GltfIndexOutOfRangeAndDeepJson) {
   write("wood.png", "x");
   expectError(write("idx.gltf", gltfJson(b, "tri.bin", "wood.png", 0)), "idx.gltf");
   expectError(write("deep.gltf", std::string(100000, '[') + std::string(100000, ']')), "nests deeper");
+  expectError(write("v1.gltf", R"({"asset": {"version": "1.0"}, "buffers": {}})"), "asset.version: '1.0'");
 }
 
 // --- every other error class -------------------------------------------------
