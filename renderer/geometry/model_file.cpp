@@ -171,7 +171,14 @@ void checkPlyHeader(const fs::path& file, long long file_size, const ModelLimits
     }
   }
   if (!ended) return;
-  const long long body = file_size - (long long)in.tellg();
+  const auto data_at = (size_t)in.tellg();
+  // Assimp 5.2 skips a 0x0A byte right after "end_header\n" as one more line
+  // end, and then reads every value of a binary file one byte late (a float
+  // x = 1.28 begins with it): refused rather than read wrong.
+  if (binary && data_at < head.size() && head[data_at] == '\n')
+    throw ModelFileError(file.string() + ": PLY binary data begins with byte 0x0A, which Assimp 5.2 takes for a "
+                         "line end (every value after it would be read shifted by one byte); refused");
+  const long long body = file_size - (long long)data_at;
   long double need = 0;
   const long long max_count = std::max(limits.max_vertices, limits.max_triangles);
   for (const auto& e : elements) {

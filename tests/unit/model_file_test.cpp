@@ -201,6 +201,12 @@ TEST_F(ModelFile, BinaryPlyErrors) {
   std::string big = binaryPyramid();
   big.replace(big.find("element vertex 5"), 16, "element vertex 4000000000");
   expectError(write("count.ply", big), "element 'vertex' count 4000000000");
+  // The data's first byte 0x0A (x = 1.0000038: bytes 0a 00 80 3f), which
+  // Assimp 5.2 would skip as a line end and read everything shifted.
+  std::string shifted = binaryPyramid();
+  const size_t data = shifted.find("end_header\n") + 11;
+  shifted.replace(data, 4, std::string("\x0a\x00\x80\x3f", 4));
+  expectError(write("shifted.ply", shifted), "begins with byte 0x0A");
   std::string cut = binaryPyramid();
   cut.replace(cut.find("element vertex 5"), 16, "element vertex 9");
   expectError(write("cut.ply", cut), "element counts need at least");
