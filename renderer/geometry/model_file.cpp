@@ -238,8 +238,12 @@ struct DepthLimit : nlohmann::json_sax<nlohmann::json> {
   bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
 };
 
-void checkGltfJson(const fs::path& file, const std::string& text, long long bin_chunk, const ModelLimits& limits,
-                   const GuardedIO& io) {
+// Returns the triangles the file's primitives declare (mode 4: count / 3,
+// strips and fans 5, 6: count - 2, of the indices accessor or else of
+// POSITION): Assimp's glTF reader drops a triangle whose index is out of
+// range with only a warning, so the loader compares its count with this.
+long long checkGltfJson(const fs::path& file, const std::string& text, long long bin_chunk, const ModelLimits& limits,
+                        const GuardedIO& io) {
   DepthLimit sax;
   if (!nlohmann::json::sax_parse(text, &sax)) {
     if (sax.depth > sax.limit)
@@ -255,8 +259,7 @@ void checkGltfJson(const fs::path& file, const std::string& text, long long bin_
                                   : "";
   if (version.rfind("2.", 0) != 0)
     throw ModelFileError(file.string() + ": asset.version: '" + version + "' (only glTF 2.0 is read)");
-  if (!j.contains("buffers")) return;
-  const auto& buffers = j["buffers"];
+  const auto& buffers = j.contains("buffers") ? j["buffers"] : nlohmann::json::array();
   if (!buffers.is_array()) throw ModelFileError(file.string() + ": buffers: expected an array");
   for (size_t b = 0; b < buffers.size(); ++b) {
     const auto& buf = buffers[b];
@@ -284,13 +287,38 @@ void checkGltfJson(const fs::path& file, const std::string& text, long long bin_
       throw ModelFileError(at + ".byteLength: " + std::to_string(len) + " exceeds " + what + " (" +
                            std::to_string(have) + " bytes)");
   }
+  long long declared = 0;
+  const auto count = [&](const nlohmann::json& index) -> long long {
+    if (!index.is_number_unsigned() || !j.contains("accessors") || !j["accessors"].is_array()) return 0;
+    const auto a = index.get<unsigned long long>();
+    if (a >= j["accessors"].size()) return 0;
+    const auto& acc = j["accessors"][a];
+    return acc.is_object() && acc.contains("count") && acc["count"].is_number_unsigned()
+               ? (long long)std::min<unsigned long long>(acc["count"].get<unsigned long long>(), 1ull << 40)
+               : 0;
+  };
+  if (j.contains("meshes") && j["meshes"].is_array())
+    for (const auto& mesh : j["meshes"]) {
+      if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
+      for (const auto& prim : mesh["primitives"]) {
+        if (!prim.is_object()) continue;
+        const long long mode = prim.contains("mode") && prim["mode"].is_number_unsigned() ? prim["mode"].get<long long>() : 4;
+        long long n = prim.contains("indices") ? count(prim["indices"])
+                      : prim.contains("attributes") && prim["attributes"].is_object() &&
+                              prim["attributes"].contains("POSITION")
+                          ? count(prim["attributes"]["POSITION"])
+                          : 0;
+        declared += mode == 4 ? n / 3 : mode == 5 || mode == 6 ? std::max(0ll, n - 2) : 0;
+      }
+    }
+  return declared;
 }
 
-void checkGltf(const fs::path& file, long long size, const ModelLimits& limits, const GuardedIO& io) {
+long long checkGltf(const fs::path& file, long long size, const ModelLimits& limits, const GuardedIO& io) {
   std::ifstream in(file, std::ios::binary);
   std::string text((size_t)size, '\0');
   in.read(text.data(), size);
-  checkGltfJson(file, text, -1, limits, io);
+  return checkGltfJson(file, text, -1, limits, io);
 }
 
 uint32_t le32(const std::string& s, size_t at) {
@@ -300,7 +328,7 @@ uint32_t le32(const std::string& s, size_t at) {
 
 // GLB: 12-byte header (magic "glTF", version 2, total length), then chunks
 // of (length, type, data): JSON first, BIN optional.
-void checkGlb(const fs::path& file, long long size, const ModelLimits& limits, const GuardedIO& io) {
+long long checkGlb(const fs::path& file, long long size, const ModelLimits& limits, const GuardedIO& io) {
   const std::string head = readPrefix(file, 20);
   const std::string at = file.string() + ": GLB header: ";
   if (head.size() < 20 || head.compare(0, 4, "glTF") != 0) throw ModelFileError(at + "no 'glTF' magic");
@@ -321,7 +349,7 @@ void checkGlb(const fs::path& file, long long size, const ModelLimits& limits, c
     std::string ch = readPrefix(file, size_t(next + 8)).substr(size_t(next));
     if (ch.size() == 8 && le32(ch, 4) == 0x004E4942u) bin = std::min<long long>(le32(ch, 0), size - next - 8);
   }
-  checkGltfJson(file, text, bin, limits, io);
+  return checkGltfJson(file, text, bin, limits, io);
 }
 
 // --- Assimp -------------------------------------------------------------
@@ -491,8 +519,9 @@ Model loadModelFile(const fs::path& file_in, const ModelLoadOptions& options) {
   GuardedIO* io = io_owner.get();
   if (ext == ".ply") checkPlyHeader(real, size, lim);
   if (ext == ".off") checkOffHeader(real, size, lim);
-  if (ext == ".gltf") checkGltf(real, size, lim, *io);
-  if (ext == ".glb") checkGlb(real, size, lim, *io);
+  long long gltf_triangles = -1;
+  if (ext == ".gltf") gltf_triangles = checkGltf(real, size, lim, *io);
+  if (ext == ".glb") gltf_triangles = checkGlb(real, size, lim, *io);
 
   RestrictedImporter ri;
   Assimp::Importer& imp = ri.importer;
@@ -510,6 +539,17 @@ Model loadModelFile(const fs::path& file_in, const ModelLoadOptions& options) {
   }
   if (!scene->mRootNode || scene->mNumMeshes == 0 || !scene->mMeshes)
     throw ModelFileError(file + ": no triangles (the file has no surface meshes)");
+
+  if (gltf_triangles >= 0) {
+    long long read = 0;
+    for (unsigned k = 0; k < scene->mNumMeshes; ++k)
+      if (scene->mMeshes[k] && (scene->mMeshes[k]->mPrimitiveTypes & aiPrimitiveType_TRIANGLE))
+        read += scene->mMeshes[k]->mNumFaces;
+    if (read < gltf_triangles)
+      throw ModelFileError(file + ": meshes: the primitives declare " + std::to_string(gltf_triangles) +
+                           " triangles, Assimp read " + std::to_string(read) +
+                           " (it drops a triangle with an index out of range)");
+  }
 
   Model model;
   model.file = real;

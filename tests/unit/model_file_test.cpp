@@ -372,6 +372,23 @@ TEST_F(ModelFile, GltfIndexOutOfRangeAndDeepJson) {
   write("tri.bin", b.bin);
   write("wood.png", "x");
   expectError(write("idx.gltf", gltfJson(b, "tri.bin", "wood.png", 0)), "idx.gltf");
+  // Two triangles declared, the second with index 9 of 3 vertices: Assimp
+  // drops it with only a warning; the loader counts and refuses.
+  GltfBuffers two;
+  const std::vector<uint16_t> six{0, 1, 2, 0, 2, 9};
+  two.bin.insert(two.idx, std::string(reinterpret_cast<const char*>(six.data()), 12));
+  two.img += 12;
+  write("two.bin", two.bin);
+  std::string json = gltfJson(two, "two.bin", "wood.png", 0);
+  auto replaceOnce = [&](const std::string& from, const std::string& to) {
+    const size_t at = json.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    json.replace(at, from.size(), to);
+  };
+  replaceOnce("\"byteOffset\": " + std::to_string(two.idx) + ", \"byteLength\": 6",
+              "\"byteOffset\": " + std::to_string(two.idx) + ", \"byteLength\": 12");
+  replaceOnce("\"componentType\": 5123, \"count\": 3", "\"componentType\": 5123, \"count\": 6");
+  expectError(write("dropped.gltf", json), "declare 2 triangles, Assimp read 1");
   expectError(write("deep.gltf", std::string(100000, '[') + std::string(100000, ']')), "nests deeper");
   expectError(write("v1.gltf", R"({"asset": {"version": "1.0"}, "buffers": {}})"), "asset.version: '1.0'");
 }
