@@ -235,6 +235,10 @@ TEST_F(ModelFile, OffQuadIsTriangulated) {
   const Model m = loadModelFile(write("q.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n"));
   EXPECT_EQ(m.triangleCount(), 2);
   for (const auto& n : m.primitives[0].mesh.normals) expectNear(n, {0, 0, 1}, 1e-15, "normal");
+  // OFF shares vertices as indexed: two triangles on four vertices.
+  const Model two = loadModelFile(write("s.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n"));
+  EXPECT_EQ(two.vertexCount(), 4);
+  EXPECT_EQ(two.triangleCount(), 2);
   // Counts the file cannot hold (Assimp would reserve for them first).
   expectError(write("big.off", "OFF\n4 2000000000 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n"),
               "2000000000 faces exceed the limits");
