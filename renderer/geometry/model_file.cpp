@@ -253,12 +253,13 @@ long long checkGltfJson(const fs::path& file, const std::string& text, long long
   const auto j = nlohmann::json::parse(text);
   if (!j.is_object()) throw ModelFileError(file.string() + ": glTF JSON is not an object");
   const auto asset = j.find("asset");
-  const std::string version = asset != j.end() && asset->is_object() && asset->contains("version") &&
-                                      (*asset)["version"].is_string()
-                                  ? (*asset)["version"].get<std::string>()
-                                  : "";
+  const bool has = asset != j.end() && asset->is_object() && asset->contains("version");
+  const bool text_version = has && (*asset)["version"].is_string();
+  const std::string version = text_version ? (*asset)["version"].get<std::string>() : "";
   if (version.rfind("2.", 0) != 0)
-    throw ModelFileError(file.string() + ": asset.version: '" + version + "' (only glTF 2.0 is read)");
+    throw ModelFileError(file.string() + ": asset.version: " +
+                         (text_version ? "'" + version + "'" : has ? (*asset)["version"].dump(-1, ' ', true) : "missing") +
+                         " (only glTF 2.0 is read)");
   const auto& buffers = j.contains("buffers") ? j["buffers"] : nlohmann::json::array();
   if (!buffers.is_array()) throw ModelFileError(file.string() + ": buffers: expected an array");
   for (size_t b = 0; b < buffers.size(); ++b) {
