@@ -4,6 +4,7 @@
 #include <assimp/BaseImporter.h>
 #include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
+#include <assimp/ai_assert.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <nlohmann/json.hpp>
@@ -18,6 +19,22 @@
 #include <sstream>
 
 #include "geometry/transform.h"
+
+// Debian's Assimp 5.2.5 is built with its internal assertions on, and a
+// failed one calls this hook, whose library definition prints and calls
+// abort(): a malformed file (a PLY face with 0 indices fails an assertion
+// of aiProcess_Triangulate) would end the program. The library exports the
+// hook and calls it through the dynamic symbol table, so this definition in
+// the program takes precedence: it throws instead, and Importer::ReadFile
+// (which catches std::exception around reading and post-processing) turns
+// that into a failed read with this message. tests/unit/model_file_test.cpp
+// (ModelFile.AssimpAssertionIsAnError) aborts without it.
+namespace Assimp {
+void aiAssertViolation(const char* expression, const char* file, int line) {
+  throw std::runtime_error(std::string("Assimp internal check failed: ") + expression + " (" + file + ":" +
+                           std::to_string(line) + ")");
+}
+}  // namespace Assimp
 
 namespace xval {
 
@@ -528,8 +545,12 @@ Model loadModelFile(const fs::path& file_in, const ModelLoadOptions& options) {
   Assimp::Importer& imp = ri.importer;
   imp.SetIOHandler(io_owner.release());  // the Importer owns it now
   imp.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const aiScene* scene = imp.ReadFile(real.string(), aiProcess_ValidateDataStructure | aiProcess_Triangulate |
-                                                         aiProcess_SortByPType);
+  const aiScene* scene = nullptr;
+  try {
+    scene = imp.ReadFile(real.string(), aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_SortByPType);
+  } catch (const std::exception& e) {  // should ReadFile let one through
+    throw ModelFileError(file + ": cannot read: " + e.what());
+  }
   const auto& refused = io->refusals();
   if (!refused.empty()) throw ModelFileError(file + ": refers to a file that cannot be read: " + refused.front());
   if (!scene) {

@@ -212,6 +212,16 @@ TEST_F(ModelFile, BinaryPlyErrors) {
   expectError(write("cut.ply", cut), "element counts need at least");
 }
 
+TEST_F(ModelFile, AssimpAssertionIsAnError) {
+  // A face with no indices fails an internal assertion of Assimp's
+  // triangulation, whose default handler calls abort().
+  const auto f = write("zero.ply",
+                       "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                       "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n"
+                       "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0\n3 0 1 2\n");
+  expectError(f, "Assimp internal check failed");
+}
+
 // --- STL, OFF -------------------------------------------------------------
 
 TEST_F(ModelFile, StlCarriesFaceNormals) {
