@@ -185,9 +185,16 @@ void checkPlyHeader(const fs::path& file, long long file_size, const ModelLimits
     } else if (key == "end_header") {
       ended = true;
       break;
+    } else if (!key.empty() && key != "comment" && key != "obj_info" && key != "property") {
+      // Assimp 5.2.5 loops for ever on some malformed headers (an
+      // end_header that is not on a line of its own): only well-formed
+      // headers are passed on.
+      throw ModelFileError(file.string() + ": PLY header: unknown line '" + line.substr(0, 40) + "'");
     }
   }
-  if (!ended) return;
+  if (!ended)
+    throw ModelFileError(file.string() + ": PLY header: no 'end_header' line in the first " +
+                         std::to_string(head.size()) + " bytes");
   const auto data_at = (size_t)in.tellg();
   // Assimp 5.2 skips a 0x0A byte right after "end_header\n" as one more line
   // end, and then reads every value of a binary file one byte late (a float
