@@ -148,7 +148,7 @@ void checkPlyHeader(const fs::path& file, long long file_size, const ModelLimits
   const std::string head = readPrefix(file, 1 << 16);
   std::istringstream in(head);
   std::string line;
-  if (!std::getline(in, line) || line.rfind("ply", 0) != 0) return;
+  if (!std::getline(in, line) || line.rfind("ply", 0) != 0) return;  // Assimp refuses it: no magic
   bool binary = false;
   struct Element { std::string name; unsigned long long count; unsigned long long min_bytes; };
   std::vector<Element> elements;
@@ -172,7 +172,9 @@ void checkPlyHeader(const fs::path& file, long long file_size, const ModelLimits
     } else if (key == "element") {
       std::string name, count;
       w >> name >> count;
-      if (count.empty() || count.find_first_not_of("0123456789") != std::string::npos) return;
+      if (count.empty() || count.find_first_not_of("0123456789") != std::string::npos)
+        throw ModelFileError(file.string() + ": PLY header: element '" + name + "' count '" + count +
+                             "' is not a number");
       errno = 0;
       unsigned long long c = std::strtoull(count.c_str(), nullptr, 10);
       if (errno == ERANGE) c = ~0ull;
@@ -180,12 +182,18 @@ void checkPlyHeader(const fs::path& file, long long file_size, const ModelLimits
     } else if (key == "property" && !elements.empty()) {
       std::string t;
       w >> t;
-      if (t == "list") w >> t;  // the count's type: at least that many bytes
+      if (t == "list") {  // the count's type (at least that many bytes), then the items'
+        std::string item;
+        w >> t >> item;
+        if (!size_of(item))
+          throw ModelFileError(file.string() + ": PLY header: unknown property type '" + item + "'");
+      }
+      if (!size_of(t)) throw ModelFileError(file.string() + ": PLY header: unknown property type '" + t + "'");
       elements.back().min_bytes += binary ? size_of(t) : 2;
     } else if (key == "end_header") {
       ended = true;
       break;
-    } else if (!key.empty() && key != "comment" && key != "obj_info" && key != "property") {
+    } else if (!key.empty() && key != "comment" && key != "obj_info") {
       // Assimp 5.2.5 loops for ever on some malformed headers (an
       // end_header that is not on a line of its own): only well-formed
       // headers are passed on.
