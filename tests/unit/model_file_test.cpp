@@ -419,7 +419,7 @@ TEST_F(ModelFile, Refusals) {
   expectError(write("model.fbx", "x"), "unsupported model format '.fbx'");
   expectError(write("lines.obj", "v 0 0 0\nv 1 0 0\nl 1 2\n"), "no triangles");
   expectError(write("empty.stl", ""), "cannot read");
-  expectError(write("junk.ply", "ply\nformat ascii 1.0\nelement vertex x\nend_header\n"), "cannot read");
+  expectError(write("junk.ply", "ply\nformat ascii 1.0\nelement vertex x\nend_header\n"), "count 'x' is not a number");
   const auto two = write("two.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n");
   ModelLoadOptions o;
   o.limits.max_triangles = 1;
