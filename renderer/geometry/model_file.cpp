@@ -195,9 +195,15 @@ void checkPlyHeader(const fs::path& file, long long file_size, const ModelLimits
       break;
     } else if (!key.empty() && key != "comment" && key != "obj_info") {
       // Assimp 5.2.5 loops for ever on some malformed headers (an
-      // end_header that is not on a line of its own): only well-formed
-      // headers are passed on.
-      throw ModelFileError(file.string() + ": PLY header: unknown line '" + line.substr(0, 40) + "'");
+      // end_header that is not on a line of its own). A line of other
+      // printable text is skipped, as Assimp does (Blender 2.47 wrote its
+      // comment without the keyword: the corpus's Wuson.ply); one with a
+      // control byte or a buried end_header is refused.
+      const bool control = std::any_of(line.begin(), line.end(), [](char c) {
+        return (unsigned char)c < 0x20 && c != '\t';
+      });
+      if (control || line.find("end_header") != std::string::npos)
+        throw ModelFileError(file.string() + ": PLY header: malformed line '" + line.substr(0, 40) + "'");
     }
   }
   if (!ended)

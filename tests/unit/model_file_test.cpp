@@ -211,7 +211,7 @@ TEST_F(ModelFile, BinaryPlyErrors) {
   // ever on this (found by fuzz.model.smoke); refused from the header.
   std::string run_on = binaryPyramid();
   run_on.replace(run_on.find("\nend_header"), 1, std::string("\x01\x00", 2));
-  expectError(write("runon.ply", run_on), "PLY header: unknown line");
+  expectError(write("runon.ply", run_on), "PLY header: malformed line");
   std::string cut = binaryPyramid();
   cut.replace(cut.find("element vertex 5"), 16, "element vertex 9");
   expectError(write("cut.ply", cut), "element counts need at least");
