@@ -11,8 +11,10 @@ packages=(
   clang libclang-rt-14-dev
   # libraries
   libopenimageio-dev openimageio-tools libglm-dev nlohmann-json3-dev libcli11-dev
-  libtinygltf-dev libembree-dev libhwy-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libtinygltf-dev libassimp-dev libembree-dev libhwy-dev libgtest-dev libgmock-dev libbenchmark-dev
   liblcms2-dev
+  # Assimp's test corpus: the model loader's robustness test (tests/corpus)
+  assimp-testmodels
   # external renderers and what Blender's glTF add-on needs
   povray blender python3-numpy
   # the report: plots, and the headless browser its test opens it in

@@ -33,5 +33,9 @@ TriangleMesh tessellatePlane(const Plane& p);
 // glTF buffers and POV-Ray's mesh2), so that all renderers trace the very
 // same triangles. Normals stay unit length to float32 precision.
 TriangleMesh tessellate(const Shape& shape);
+// Every attribute of `m` rounded to the nearest float32, in place (the last
+// step before any renderer sees a mesh: after a model file's node and
+// object transforms too).
+void roundToFloat(TriangleMesh& m);
 
 }  // namespace xval

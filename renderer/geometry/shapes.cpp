@@ -57,7 +57,6 @@ TriangleMesh tessellatePlane(const Plane& p) {
   return m;
 }
 
-namespace {
 // Rounds every attribute to the nearest float32. glTF buffers and POV-Ray's
 // mesh2 store float32; rounding here makes the reference renderer trace
 // exactly the triangles the other renderers receive (float_rounding.h: a
@@ -67,7 +66,6 @@ void roundToFloat(TriangleMesh& m) {
   for (auto& n : m.normals) n = roundedToFloat(n);
   for (auto& uv : m.uvs) uv = roundedToFloat(uv);
 }
-}  // namespace
 
 TriangleMesh tessellate(const Shape& shape) {
   TriangleMesh m = std::visit(

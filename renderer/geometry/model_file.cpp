@@ -1,0 +1,723 @@
+// Model files through Assimp (model_file.h states the rules).
+#include "geometry/model_file.h"
+
+#include <assimp/BaseImporter.h>
+#include <assimp/DefaultIOSystem.h>
+#include <assimp/Importer.hpp>
+#include <assimp/ai_assert.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <set>
+#include <sstream>
+
+#include "geometry/transform.h"
+
+// Debian's Assimp 5.2.5 is built with its internal assertions on, and a
+// failed one calls this hook, whose library definition prints and calls
+// abort(): a malformed file (a PLY face with 0 indices fails an assertion
+// of aiProcess_Triangulate) would end the program. The library exports the
+// hook and calls it through the dynamic symbol table, so this definition in
+// the program takes precedence: it throws instead, and Importer::ReadFile
+// (which catches std::exception around reading and post-processing) turns
+// that into a failed read with this message. tests/unit/model_file_test.cpp
+// (ModelFile.AssimpAssertionIsAnError) aborts without it.
+namespace Assimp {
+void aiAssertViolation(const char* expression, const char* file, int line) {
+  throw std::runtime_error(std::string("Assimp internal check failed: ") + expression + " (" + file + ":" +
+                           std::to_string(line) + ")");
+}
+}  // namespace Assimp
+
+namespace xval {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string num(double v) {
+  std::ostringstream o;
+  o.precision(9);
+  o << v;
+  return o.str();
+}
+std::string vec(double x, double y, double z) { return "(" + num(x) + ", " + num(y) + ", " + num(z) + ")"; }
+
+std::string lower(std::string s) {
+  for (auto& c : s) c = char(std::tolower((unsigned char)c));
+  return s;
+}
+
+// The model's folder and the files it may read: inside it, regular, within
+// the size limits. Assimp opens every file through this, the model itself
+// included; each refusal is kept for the error message.
+class GuardedIO : public Assimp::DefaultIOSystem {
+ public:
+  GuardedIO(fs::path folder, const ModelLimits& limits) : folder_(std::move(folder)), limits_(limits) {}
+
+  bool Exists(const char* file) const override { return allowed(file, nullptr).has_value(); }
+
+  Assimp::IOStream* Open(const char* file, const char* mode) override {
+    if (std::strchr(mode, 'w') || std::strchr(mode, 'a') || std::strchr(mode, '+')) {
+      refusals_.push_back(std::string(file) + ": opened for writing (refused)");
+      return nullptr;
+    }
+    std::string why;
+    auto path = allowed(file, &why);
+    if (!path) {
+      refusals_.push_back(why);
+      return nullptr;
+    }
+    std::error_code ec;
+    const auto size = (long long)fs::file_size(*path, ec);
+    if (ec) {
+      refusals_.push_back(std::string(file) + ": " + ec.message());
+      return nullptr;
+    }
+    if (size > limits_.max_file_bytes) {
+      refusals_.push_back(std::string(file) + ": " + std::to_string(size) + " bytes; the limit is " +
+                          std::to_string(limits_.max_file_bytes));
+      return nullptr;
+    }
+    if (total_ + size > limits_.max_total_bytes) {
+      refusals_.push_back(std::string(file) + ": the files read for this model exceed " +
+                          std::to_string(limits_.max_total_bytes) + " bytes in all");
+      return nullptr;
+    }
+    total_ += size;
+    return DefaultIOSystem::Open(path->c_str(), "rb");
+  }
+
+  const std::vector<std::string>& refusals() const { return refusals_; }
+
+  // The file `name` names, when it may be read: inside the folder after
+  // following symlinks, a regular file. Else nullopt and why.
+  std::optional<fs::path> allowed(const std::string& name, std::string* why) const {
+    std::string fixed = name;
+    std::replace(fixed.begin(), fixed.end(), '\\', '/');
+    fs::path p(fixed);
+    if (p.is_relative()) p = folder_ / p;
+    std::error_code ec;
+    fs::path real = fs::weakly_canonical(p, ec);
+    if (ec) {
+      if (why) *why = name + ": " + ec.message();
+      return std::nullopt;
+    }
+    auto [end, _] = std::mismatch(folder_.begin(), folder_.end(), real.begin(), real.end());
+    if (end != folder_.end()) {
+      if (why) *why = name + ": resolves to " + real.string() + ", outside the model's folder " + folder_.string();
+      return std::nullopt;
+    }
+    if (!fs::is_regular_file(real, ec)) {
+      if (why) *why = name + ": " + (fs::exists(real, ec) ? "not a regular file" : "no such file");
+      return std::nullopt;
+    }
+    return real;
+  }
+
+ private:
+  fs::path folder_;
+  ModelLimits limits_;
+  long long total_ = 0;
+  mutable std::vector<std::string> refusals_;
+};
+
+// --- checks before Assimp reads -----------------------------------------
+
+std::string readPrefix(const fs::path& file, size_t n) {
+  std::ifstream in(file, std::ios::binary);
+  std::string s(n, '\0');
+  in.read(s.data(), std::streamsize(n));
+  s.resize(size_t(in.gcount()));
+  return s;
+}
+
+// A PLY header's element counts against the bytes the file has: Assimp
+// reserves per element before reading it. Each element instance takes at
+// least: binary, the sum of its scalar sizes and list-count sizes; ASCII, two
+// bytes per property ("0 "). A header that does not parse is left to
+// Assimp, which refuses it.
+void checkPlyHeader(const fs::path& file, long long file_size, const ModelLimits& limits) {
+  const std::string head = readPrefix(file, 1 << 16);
+  std::istringstream in(head);
+  std::string line;
+  if (!std::getline(in, line) || line.rfind("ply", 0) != 0) return;  // Assimp refuses it: no magic
+  bool binary = false;
+  struct Element { std::string name; unsigned long long count; unsigned long long min_bytes; };
+  std::vector<Element> elements;
+  auto size_of = [](const std::string& t) -> int {
+    if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
+    if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
+    if (t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" || t == "float32") return 4;
+    if (t == "double" || t == "float64") return 8;
+    return 0;
+  };
+  bool ended = false;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    std::istringstream w(line);
+    std::string key;
+    w >> key;
+    if (key == "format") {
+      std::string f;
+      w >> f;
+      binary = f.rfind("binary", 0) == 0;
+    } else if (key == "element") {
+      std::string name, count;
+      w >> name >> count;
+      if (count.empty() || count.find_first_not_of("0123456789") != std::string::npos)
+        throw ModelFileError(file.string() + ": PLY header: element '" + name + "' count '" + count +
+                             "' is not a number");
+      errno = 0;
+      unsigned long long c = std::strtoull(count.c_str(), nullptr, 10);
+      if (errno == ERANGE) c = ~0ull;
+      elements.push_back({name, c, 0});
+    } else if (key == "property" && !elements.empty()) {
+      std::string t;
+      w >> t;
+      if (t == "list") {  // the count's type (at least that many bytes), then the items'
+        std::string item;
+        w >> t >> item;
+        if (!size_of(item))
+          throw ModelFileError(file.string() + ": PLY header: unknown property type '" + item + "'");
+      }
+      if (!size_of(t)) throw ModelFileError(file.string() + ": PLY header: unknown property type '" + t + "'");
+      elements.back().min_bytes += binary ? size_of(t) : 2;
+    } else if (key == "end_header") {
+      ended = true;
+      break;
+    } else if (!key.empty() && key != "comment" && key != "obj_info") {
+      // Assimp 5.2.5 loops for ever on some malformed headers (an
+      // end_header that is not on a line of its own). A line of other
+      // printable text is skipped, as Assimp does (Blender 2.47 wrote its
+      // comment without the keyword: the corpus's Wuson.ply); one with a
+      // control byte or a buried end_header is refused.
+      const bool control = std::any_of(line.begin(), line.end(), [](char c) {
+        return (unsigned char)c < 0x20 && c != '\t';
+      });
+      if (control || line.find("end_header") != std::string::npos)
+        throw ModelFileError(file.string() + ": PLY header: malformed line '" + line.substr(0, 40) + "'");
+    }
+  }
+  if (!ended)
+    throw ModelFileError(file.string() + ": PLY header: no 'end_header' line in the first " +
+                         std::to_string(head.size()) + " bytes");
+  const auto data_at = (size_t)in.tellg();
+  // Assimp 5.2 skips a 0x0A byte right after "end_header\n" as one more line
+  // end, and then reads every value of a binary file one byte late (a float
+  // x = 1.28 begins with it): refused rather than read wrong.
+  if (binary && data_at < head.size() && head[data_at] == '\n')
+    throw ModelFileError(file.string() + ": PLY binary data begins with byte 0x0A, which Assimp 5.2 takes for a "
+                         "line end (every value after it would be read shifted by one byte); refused");
+  const long long body = file_size - (long long)data_at;
+  long double need = 0;
+  const long long max_count = std::max(limits.max_vertices, limits.max_triangles);
+  for (const auto& e : elements) {
+    if ((long long)std::min<unsigned long long>(e.count, ~0ull >> 1) > max_count)
+      throw ModelFileError(file.string() + ": PLY header: element '" + e.name + "' count " +
+                           std::to_string(e.count) + " exceeds the limit " + std::to_string(max_count));
+    need += (long double)e.count * (long double)e.min_bytes;
+  }
+  if (need > (long double)body)
+    throw ModelFileError(file.string() + ": PLY header: its element counts need at least " +
+                         std::to_string((long long)need) + " bytes, the file has " + std::to_string(body) +
+                         " after the header (truncated, or the counts are wrong)");
+}
+
+// An OFF header's counts ("OFF", then vertices, faces, edges) against the
+// file: Assimp reserves for them before reading. Each vertex takes at
+// least 6 bytes ("0 0 0\n"), each face 8 ("3 0 1 2\n").
+void checkOffHeader(const fs::path& file, long long file_size, const ModelLimits& limits) {
+  std::istringstream in(readPrefix(file, 4096));
+  std::string tok;
+  while (in >> tok && tok[0] == '#') std::getline(in, tok);
+  if (tok.find("OFF") == std::string::npos) return;
+  unsigned long long nv = 0, nf = 0;
+  std::string a, b;
+  if (!(in >> a >> b)) return;
+  for (const std::string* t : {&a, &b})
+    if (t->find_first_not_of("0123456789") != std::string::npos) return;
+  errno = 0;
+  nv = std::strtoull(a.c_str(), nullptr, 10);
+  nf = std::strtoull(b.c_str(), nullptr, 10);
+  if (errno == ERANGE) nv = nf = ~0ull >> 1;
+  if (nv > (unsigned long long)limits.max_vertices || nf > (unsigned long long)limits.max_triangles)
+    throw ModelFileError(file.string() + ": OFF header: " + a + " vertices, " + b + " faces exceed the limits " +
+                         std::to_string(limits.max_vertices) + ", " + std::to_string(limits.max_triangles));
+  if ((long double)nv * 6 + (long double)nf * 8 > (long double)file_size)
+    throw ModelFileError(file.string() + ": OFF header: " + a + " vertices and " + b + " faces need more than the " +
+                         std::to_string(file_size) + " bytes the file has");
+}
+
+// glTF JSON: nesting depth (Assimp's JSON parser recurses per level) and
+// every buffer's declared byteLength (Assimp allocates it before reading).
+struct DepthLimit : nlohmann::json_sax<nlohmann::json> {
+  int depth = 0, limit = 64;
+  bool push() { return ++depth <= limit; }
+  bool null() override { return true; }
+  bool boolean(bool) override { return true; }
+  bool number_integer(number_integer_t) override { return true; }
+  bool number_unsigned(number_unsigned_t) override { return true; }
+  bool number_float(number_float_t, const string_t&) override { return true; }
+  bool string(string_t&) override { return true; }
+  bool binary(binary_t&) override { return true; }
+  bool start_object(std::size_t) override { return push(); }
+  bool key(string_t&) override { return true; }
+  bool end_object() override { return --depth, true; }
+  bool start_array(std::size_t) override { return push(); }
+  bool end_array() override { return --depth, true; }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+};
+
+// Returns the triangles the file's primitives declare (mode 4: count / 3,
+// strips and fans 5, 6: count - 2, of the indices accessor or else of
+// POSITION): Assimp's glTF reader drops a triangle whose index is out of
+// range with only a warning, so the loader compares its count with this.
+long long checkGltfJson(const fs::path& file, const std::string& text, long long bin_chunk, const ModelLimits& limits,
+                        const GuardedIO& io) {
+  DepthLimit sax;
+  if (!nlohmann::json::sax_parse(text, &sax)) {
+    if (sax.depth > sax.limit)
+      throw ModelFileError(file.string() + ": glTF JSON nests deeper than " + std::to_string(sax.limit) + " levels");
+    throw ModelFileError(file.string() + ": glTF JSON does not parse");
+  }
+  const auto j = nlohmann::json::parse(text);
+  if (!j.is_object()) throw ModelFileError(file.string() + ": glTF JSON is not an object");
+  const auto asset = j.find("asset");
+  const bool has = asset != j.end() && asset->is_object() && asset->contains("version");
+  const bool text_version = has && (*asset)["version"].is_string();
+  const std::string version = text_version ? (*asset)["version"].get<std::string>() : "";
+  if (version.rfind("2.", 0) != 0)
+    throw ModelFileError(file.string() + ": asset.version: " +
+                         (text_version ? "'" + version + "'" : has ? (*asset)["version"].dump(-1, ' ', true) : "missing") +
+                         " (only glTF 2.0 is read)");
+  const auto& buffers = j.contains("buffers") ? j["buffers"] : nlohmann::json::array();
+  if (!buffers.is_array()) throw ModelFileError(file.string() + ": buffers: expected an array");
+  for (size_t b = 0; b < buffers.size(); ++b) {
+    const auto& buf = buffers[b];
+    const std::string at = file.string() + ": buffers[" + std::to_string(b) + "]";
+    if (!buf.is_object() || !buf.contains("byteLength") || !buf["byteLength"].is_number_unsigned())
+      throw ModelFileError(at + ".byteLength: expected a non-negative integer");
+    const auto len = buf["byteLength"].get<unsigned long long>();
+    long long have = limits.max_file_bytes;
+    std::string what = "the file size limit";
+    if (buf.contains("uri") && buf["uri"].is_string()) {
+      const auto uri = buf["uri"].get<std::string>();
+      if (uri.rfind("data:", 0) == 0) {
+        have = (long long)(uri.size() / 4 * 3 + 3), what = "its data uri's decoded size";
+      } else {
+        std::string why;
+        auto path = io.allowed(uri, &why);
+        if (!path) throw ModelFileError(at + ".uri: " + why);
+        std::error_code ec;
+        have = (long long)fs::file_size(*path, ec), what = "the size of " + uri;
+      }
+    } else if (bin_chunk >= 0) {
+      have = bin_chunk, what = "the GLB's binary chunk";
+    }
+    if (len > (unsigned long long)have)
+      throw ModelFileError(at + ".byteLength: " + std::to_string(len) + " exceeds " + what + " (" +
+                           std::to_string(have) + " bytes)");
+  }
+  long long declared = 0;
+  const auto count = [&](const nlohmann::json& index) -> long long {
+    if (!index.is_number_unsigned() || !j.contains("accessors") || !j["accessors"].is_array()) return 0;
+    const auto a = index.get<unsigned long long>();
+    if (a >= j["accessors"].size()) return 0;
+    const auto& acc = j["accessors"][a];
+    return acc.is_object() && acc.contains("count") && acc["count"].is_number_unsigned()
+               ? (long long)std::min<unsigned long long>(acc["count"].get<unsigned long long>(), 1ull << 40)
+               : 0;
+  };
+  if (j.contains("meshes") && j["meshes"].is_array())
+    for (const auto& mesh : j["meshes"]) {
+      if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
+      for (const auto& prim : mesh["primitives"]) {
+        if (!prim.is_object()) continue;
+        const long long mode = prim.contains("mode") && prim["mode"].is_number_unsigned() ? prim["mode"].get<long long>() : 4;
+        long long n = prim.contains("indices") ? count(prim["indices"])
+                      : prim.contains("attributes") && prim["attributes"].is_object() &&
+                              prim["attributes"].contains("POSITION")
+                          ? count(prim["attributes"]["POSITION"])
+                          : 0;
+        declared += mode == 4 ? n / 3 : mode == 5 || mode == 6 ? std::max(0ll, n - 2) : 0;
+      }
+    }
+  return declared;
+}
+
+long long checkGltf(const fs::path& file, long long size, const ModelLimits& limits, const GuardedIO& io) {
+  std::ifstream in(file, std::ios::binary);
+  std::string text((size_t)size, '\0');
+  in.read(text.data(), size);
+  return checkGltfJson(file, text, -1, limits, io);
+}
+
+uint32_t le32(const std::string& s, size_t at) {
+  return uint32_t((unsigned char)s[at]) | uint32_t((unsigned char)s[at + 1]) << 8 |
+         uint32_t((unsigned char)s[at + 2]) << 16 | uint32_t((unsigned char)s[at + 3]) << 24;
+}
+
+// GLB: 12-byte header (magic "glTF", version 2, total length), then chunks
+// of (length, type, data): JSON first, BIN optional.
+long long checkGlb(const fs::path& file, long long size, const ModelLimits& limits, const GuardedIO& io) {
+  const std::string head = readPrefix(file, 20);
+  const std::string at = file.string() + ": GLB header: ";
+  if (head.size() < 20 || head.compare(0, 4, "glTF") != 0) throw ModelFileError(at + "no 'glTF' magic");
+  if (le32(head, 4) != 2) throw ModelFileError(at + "version " + std::to_string(le32(head, 4)) + " (expected 2)");
+  if ((long long)le32(head, 8) > size)
+    throw ModelFileError(at + "length " + std::to_string(le32(head, 8)) + " exceeds the file's " +
+                         std::to_string(size) + " bytes");
+  const long long json_len = le32(head, 12);
+  if (20 + json_len > size || le32(head, 16) != 0x4E4F534Au)
+    throw ModelFileError(at + "the first chunk is not a JSON chunk within the file");
+  std::ifstream in(file, std::ios::binary);
+  in.seekg(20);
+  std::string text((size_t)json_len, '\0');
+  in.read(text.data(), json_len);
+  long long bin = -1;
+  const long long next = 20 + ((json_len + 3) & ~3ll);
+  if (next + 8 <= size) {
+    std::string ch = readPrefix(file, size_t(next + 8)).substr(size_t(next));
+    if (ch.size() == 8 && le32(ch, 4) == 0x004E4942u) bin = std::min<long long>(le32(ch, 0), size - next - 8);
+  }
+  return checkGltfJson(file, text, bin, limits, io);
+}
+
+// --- Assimp -------------------------------------------------------------
+
+// The Importer with only the readers of modelFileExtensions() (glTF 2.0's,
+// not glTF 1.0's): a file is never handed to another format's reader, even
+// by Assimp's content sniffing. The unregistered readers are ours to delete.
+struct RestrictedImporter {
+  Assimp::Importer importer;
+  std::vector<std::unique_ptr<Assimp::BaseImporter>> removed;
+  RestrictedImporter() {
+    std::vector<Assimp::BaseImporter*> others;
+    for (size_t i = 0; i < importer.GetImporterCount(); ++i) {
+      Assimp::BaseImporter* r = importer.GetImporter(i);
+      std::set<std::string> exts;
+      r->GetExtensionList(exts);
+      const std::string name = r->GetInfo()->mName ? r->GetInfo()->mName : "";
+      bool keep = name.find("glTF Importer") == std::string::npos;  // glTF 1.0
+      bool ours = false;
+      for (const auto& e : modelFileExtensions()) ours = ours || exts.count(e.substr(1));
+      if (!(keep && ours)) others.push_back(r);
+    }
+    for (auto* r : others)
+      if (importer.UnregisterLoader(r) == aiReturn_SUCCESS) removed.emplace_back(r);
+  }
+};
+
+glm::dvec3 d3(const aiVector3D& v) { return {v.x, v.y, v.z}; }
+bool finite3(const aiVector3D& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+std::string nodeName(const aiNode* n) { return n->mName.length ? std::string(n->mName.C_Str()) : "(unnamed)"; }
+
+struct Placed {
+  const aiNode* node;
+  std::string path;
+  Affine to_file;  // the node's matrix times its ancestors'
+};
+
+// Every node, depth first with an explicit stack, and its accumulated
+// transform. aiMatrix4x4 is row-major: row r = (a_r1 .. a_r4).
+std::vector<Placed> placeNodes(const aiScene* scene, const std::string& file, const ModelLimits& limits) {
+  std::vector<Placed> out;
+  struct Item { const aiNode* node; Affine parent; std::string parent_path; int depth; };
+  std::vector<Item> stack{{scene->mRootNode, Affine{}, "", 0}};
+  while (!stack.empty()) {
+    Item it = std::move(stack.back());
+    stack.pop_back();
+    if ((long long)out.size() >= limits.max_nodes)
+      throw ModelFileError(file + ": more than " + std::to_string(limits.max_nodes) + " nodes");
+    if (it.depth > limits.max_node_depth)
+      throw ModelFileError(file + ": node '" + nodeName(it.node) + "': deeper than " +
+                           std::to_string(limits.max_node_depth) + " levels");
+    const std::string path = it.parent_path.empty() ? nodeName(it.node) : it.parent_path + "/" + nodeName(it.node);
+    const aiMatrix4x4& m = it.node->mTransformation;
+    const float all[16] = {m.a1, m.a2, m.a3, m.a4, m.b1, m.b2, m.b3, m.b4,
+                           m.c1, m.c2, m.c3, m.c4, m.d1, m.d2, m.d3, m.d4};
+    for (int k = 0; k < 16; ++k)
+      if (!std::isfinite(all[k]))
+        throw ModelFileError(file + ": node '" + path + "': transform element [" + std::to_string(k / 4) + "][" +
+                             std::to_string(k % 4) + "] is " + num(all[k]));
+    if (m.d1 != 0.0f || m.d2 != 0.0f || m.d3 != 0.0f || m.d4 != 1.0f)
+      throw ModelFileError(file + ": node '" + path + "': transform's last row is " + vec(m.d1, m.d2, m.d3) +
+                           ", " + num(m.d4) + " (expected 0, 0, 0, 1: not an affine map)");
+    Affine local;
+    local.linear = glm::dmat3(m.a1, m.b1, m.c1, m.a2, m.b2, m.c2, m.a3, m.b3, m.c3);  // columns
+    local.offset = {m.a4, m.b4, m.c4};
+    Affine to_file = then(local, it.parent);
+    out.push_back({it.node, path, to_file});
+    if (it.node->mNumChildren && !it.node->mChildren)
+      throw ModelFileError(file + ": node '" + path + "': children missing");
+    for (unsigned c = it.node->mNumChildren; c-- > 0;)
+      stack.push_back({it.node->mChildren[c], to_file, path, it.depth + 1});
+  }
+  return out;
+}
+
+// Area-weighted vertex normals (model_file.h).
+std::vector<glm::dvec3> computedNormals(const TriangleMesh& m) {
+  std::vector<glm::dvec3> n(m.positions.size(), glm::dvec3(0.0));
+  for (const auto& t : m.triangles) {
+    const glm::dvec3 g = glm::cross(m.positions[t.y] - m.positions[t.x], m.positions[t.z] - m.positions[t.x]);
+    n[t.x] += g, n[t.y] += g, n[t.z] += g;
+  }
+  for (auto& v : n) {
+    const double len = glm::length(v);
+    v = len > 0.0 && std::isfinite(len) ? v / len : glm::dvec3(0.0, 0.0, 1.0);
+  }
+  return n;
+}
+
+std::optional<ModelTexture> baseColorTexture(const aiScene* scene, const aiMesh* mesh, const std::string& where,
+                                             const ModelLimits& limits) {
+  if (mesh->mMaterialIndex >= scene->mNumMaterials || !scene->mMaterials) return std::nullopt;
+  const aiMaterial* mat = scene->mMaterials[mesh->mMaterialIndex];
+  if (!mat) return std::nullopt;
+  for (aiTextureType type : {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE}) {
+    if (mat->GetTextureCount(type) == 0) continue;
+    aiString path;
+    unsigned uv_index = 0;
+    if (mat->GetTexture(type, 0, &path, nullptr, &uv_index) != aiReturn_SUCCESS) continue;
+    if (uv_index != 0)
+      throw ModelFileError(where + ": material " + std::to_string(mesh->mMaterialIndex) +
+                           ": the base-colour texture uses uv set " + std::to_string(uv_index) +
+                           " (only the first uv set is read)");
+    ModelTexture t;
+    t.name = path.C_Str();
+    if (const aiTexture* e = scene->GetEmbeddedTexture(path.C_Str())) {
+      if (e->mHeight != 0)
+        throw ModelFileError(where + ": embedded texture '" + t.name +
+                             "' is stored as raw texels (only encoded images such as PNG or JPEG are read)");
+      if ((long long)e->mWidth > limits.max_texture_bytes)
+        throw ModelFileError(where + ": embedded texture '" + t.name + "': " + std::to_string(e->mWidth) +
+                             " bytes; the limit is " + std::to_string(limits.max_texture_bytes));
+      const auto* bytes = reinterpret_cast<const std::uint8_t*>(e->pcData);
+      t.bytes.assign(bytes, bytes + e->mWidth);
+      t.format_hint = std::string(e->achFormatHint, strnlen(e->achFormatHint, sizeof e->achFormatHint));
+    } else if (!t.name.empty() && t.name[0] == '*') {
+      throw ModelFileError(where + ": texture '" + t.name + "' names an embedded image the file does not have");
+    } else {
+      t.file = t.name;  // resolved by the caller
+    }
+    return t;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+const std::vector<std::string>& modelFileExtensions() {
+  static const std::vector<std::string> e{".obj", ".ply", ".stl", ".off", ".gltf", ".glb"};
+  return e;
+}
+
+long long Model::triangleCount() const {
+  long long n = 0;
+  for (const auto& p : primitives) n += (long long)p.mesh.triangleCount();
+  return n;
+}
+long long Model::vertexCount() const {
+  long long n = 0;
+  for (const auto& p : primitives) n += (long long)p.mesh.vertexCount();
+  return n;
+}
+
+Model loadModelFile(const fs::path& file_in, const ModelLoadOptions& options) {
+  const ModelLimits& lim = options.limits;
+  const std::string file = file_in.string();
+  const std::string ext = lower(file_in.extension().string());
+  const auto& exts = modelFileExtensions();
+  if (std::find(exts.begin(), exts.end(), ext) == exts.end()) {
+    std::string list;
+    for (const auto& e : exts) list += (list.empty() ? "" : ", ") + e;
+    throw ModelFileError(file + ": unsupported model format '" + ext + "' (expected one of " + list + ")");
+  }
+  std::error_code ec;
+  if (!fs::is_regular_file(file_in, ec))
+    throw ModelFileError(file + ": " + (fs::exists(file_in, ec) ? "not a regular file" : "no such file"));
+  const long long size = (long long)fs::file_size(file_in, ec);
+  if (ec) throw ModelFileError(file + ": " + ec.message());
+  if (size > lim.max_file_bytes)
+    throw ModelFileError(file + ": " + std::to_string(size) + " bytes; the limit is " +
+                         std::to_string(lim.max_file_bytes));
+  const fs::path real = fs::canonical(file_in, ec);
+  if (ec) throw ModelFileError(file + ": " + ec.message());
+
+  auto io_owner = std::make_unique<GuardedIO>(real.parent_path(), lim);
+  GuardedIO* io = io_owner.get();
+  if (ext == ".ply") checkPlyHeader(real, size, lim);
+  if (ext == ".off") checkOffHeader(real, size, lim);
+  long long gltf_triangles = -1;
+  if (ext == ".gltf") gltf_triangles = checkGltf(real, size, lim, *io);
+  if (ext == ".glb") gltf_triangles = checkGlb(real, size, lim, *io);
+
+  RestrictedImporter ri;
+  Assimp::Importer& imp = ri.importer;
+  imp.SetIOHandler(io_owner.release());  // the Importer owns it now
+  imp.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  const aiScene* scene = nullptr;
+  try {
+    scene = imp.ReadFile(real.string(), aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_SortByPType);
+  } catch (const std::exception& e) {  // should ReadFile let one through
+    throw ModelFileError(file + ": cannot read: " + e.what());
+  }
+  const auto& refused = io->refusals();
+  if (!refused.empty()) throw ModelFileError(file + ": refers to a file that cannot be read: " + refused.front());
+  if (!scene) {
+    const std::string why = imp.GetErrorString();
+    if (why.find("No meshes remaining") != std::string::npos)  // aiProcess_SortByPType removed them all
+      throw ModelFileError(file + ": no triangles (the file has only points or lines)");
+    throw ModelFileError(file + ": cannot read: " + why);
+  }
+  if (!scene->mRootNode || scene->mNumMeshes == 0 || !scene->mMeshes)
+    throw ModelFileError(file + ": no triangles (the file has no surface meshes)");
+
+  if (gltf_triangles >= 0) {
+    long long read = 0;
+    for (unsigned k = 0; k < scene->mNumMeshes; ++k)
+      if (scene->mMeshes[k] && (scene->mMeshes[k]->mPrimitiveTypes & aiPrimitiveType_TRIANGLE))
+        read += scene->mMeshes[k]->mNumFaces;
+    if (read < gltf_triangles)
+      throw ModelFileError(file + ": meshes: the primitives declare " + std::to_string(gltf_triangles) +
+                           " triangles, Assimp read " + std::to_string(read) +
+                           " (it drops a triangle with an index out of range)");
+  }
+
+  Model model;
+  model.file = real;
+  model.format = ext.substr(1);
+  const std::vector<Placed> nodes = placeNodes(scene, file, lim);
+
+  // Counts first, before any mesh array is filled.
+  long long tris = 0, verts = 0, prims = 0;
+  for (const auto& pl : nodes) {
+    for (unsigned k = 0; k < pl.node->mNumMeshes; ++k) {
+      const unsigned mi = pl.node->mMeshes[k];
+      if (mi >= scene->mNumMeshes || !scene->mMeshes[mi])
+        throw ModelFileError(file + ": node '" + pl.path + "': mesh index " + std::to_string(mi) +
+                             " out of range (the file has " + std::to_string(scene->mNumMeshes) + " meshes)");
+      const aiMesh* m = scene->mMeshes[mi];
+      if (!(m->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
+      tris += m->mNumFaces, verts += m->mNumVertices, ++prims;
+    }
+  }
+  if (prims > lim.max_primitives)
+    throw ModelFileError(file + ": " + std::to_string(prims) + " placed meshes; the limit is " +
+                         std::to_string(lim.max_primitives));
+  if (tris > lim.max_triangles)
+    throw ModelFileError(file + ": " + std::to_string(tris) + " triangles (with every node's meshes); the limit is " +
+                         std::to_string(lim.max_triangles));
+  if (verts > lim.max_vertices)
+    throw ModelFileError(file + ": " + std::to_string(verts) + " vertices (with every node's meshes); the limit is " +
+                         std::to_string(lim.max_vertices));
+
+  for (const auto& pl : nodes) {
+    for (unsigned k = 0; k < pl.node->mNumMeshes; ++k) {
+      const unsigned mi = pl.node->mMeshes[k];
+      const aiMesh* m = scene->mMeshes[mi];
+      if (!(m->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
+      ModelPrimitive p;
+      p.mesh_index = mi;
+      p.mesh_name = m->mName.C_Str();
+      p.node_path = pl.path;
+      p.label = "mesh " + std::to_string(mi) + " '" + p.mesh_name + "' (node '" + pl.path + "')";
+      const std::string where = file + ": " + p.label;
+      if (!m->mVertices) throw ModelFileError(where + ": has no positions");
+      const unsigned nv = m->mNumVertices;
+      TriangleMesh tm;
+      tm.positions.reserve(nv);
+      for (unsigned v = 0; v < nv; ++v) {
+        if (!finite3(m->mVertices[v]))
+          throw ModelFileError(where + ": vertex " + std::to_string(v) + ": position " +
+                               vec(m->mVertices[v].x, m->mVertices[v].y, m->mVertices[v].z) + " is not finite");
+        tm.positions.push_back(d3(m->mVertices[v]));
+      }
+      p.file_normals = m->mNormals != nullptr;
+      if (p.file_normals) {
+        tm.normals.reserve(nv);
+        for (unsigned v = 0; v < nv; ++v) {
+          if (!finite3(m->mNormals[v]))
+            throw ModelFileError(where + ": vertex " + std::to_string(v) + ": normal " +
+                                 vec(m->mNormals[v].x, m->mNormals[v].y, m->mNormals[v].z) + " is not finite");
+          tm.normals.push_back(d3(m->mNormals[v]));
+        }
+      }
+      p.has_uvs = m->mTextureCoords[0] != nullptr && m->mNumUVComponents[0] >= 2;
+      tm.uvs.assign(nv, glm::dvec2(0.0));
+      if (p.has_uvs) {
+        for (unsigned v = 0; v < nv; ++v) {
+          const aiVector3D& t = m->mTextureCoords[0][v];
+          if (!std::isfinite(t.x) || !std::isfinite(t.y))
+            throw ModelFileError(where + ": vertex " + std::to_string(v) + ": uv (" + num(t.x) + ", " + num(t.y) +
+                                 ") is not finite");
+          tm.uvs[v] = {double(t.x), 1.0 - double(t.y)};
+        }
+      }
+      if (m->mNumFaces && !m->mFaces) throw ModelFileError(where + ": has no faces");
+      tm.triangles.reserve(m->mNumFaces);
+      for (unsigned f = 0; f < m->mNumFaces; ++f) {
+        const aiFace& face = m->mFaces[f];
+        if (face.mNumIndices != 3) continue;  // a point or line left in a mixed mesh
+        for (unsigned c = 0; c < 3; ++c)
+          if (face.mIndices[c] >= nv)
+            throw ModelFileError(where + ": face " + std::to_string(f) + ": index " + std::to_string(face.mIndices[c]) +
+                                 " out of range (the mesh has " + std::to_string(nv) + " vertices)");
+        tm.triangles.push_back({face.mIndices[0], face.mIndices[1], face.mIndices[2]});
+      }
+      if (tm.triangles.empty()) continue;
+      if (!p.file_normals) tm.normals.assign(nv, glm::dvec3(0.0, 0.0, 1.0));
+      try {
+        tm = transformed(tm, pl.to_file);
+      } catch (const TransformError& e) {
+        throw ModelFileError(file + ": node '" + pl.path + "': " + e.what());
+      }
+      // Normals last, on the placed triangles: computed ones, and file ones
+      // of zero length (transformed() made those NaN).
+      std::vector<glm::dvec3> computed;
+      for (unsigned v = 0; v < nv; ++v) {
+        const glm::dvec3& n = tm.normals[v];
+        if (!p.file_normals || !std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z)) {
+          if (computed.empty()) computed = computedNormals(tm);
+          tm.normals[v] = computed[v];
+        }
+      }
+      for (unsigned v = 0; v < nv; ++v)
+        if (!std::isfinite(tm.positions[v].x) || !std::isfinite(tm.positions[v].y) ||
+            !std::isfinite(tm.positions[v].z))
+          throw ModelFileError(where + ": vertex " + std::to_string(v) + ": position is not finite after node '" +
+                               pl.path + "''s transform");
+      p.texture = baseColorTexture(scene, m, where, lim);
+      if (p.texture && !p.texture->embedded() && options.uvs == UvRequirement::ModelTextures) {
+        std::string why;
+        auto path = io->allowed(p.texture->name, &why);
+        if (!path) throw ModelFileError(where + ": base-colour texture " + why);
+        p.texture->file = *path;
+      } else if (p.texture && !p.texture->embedded()) {
+        std::string fixed = p.texture->name;
+        std::replace(fixed.begin(), fixed.end(), '\\', '/');
+        p.texture->file = fs::path(fixed).is_absolute() ? fs::path(fixed) : real.parent_path() / fixed;
+      }
+      const bool needs_uvs = options.uvs == UvRequirement::All ||
+                             (options.uvs == UvRequirement::ModelTextures && p.texture.has_value());
+      if (needs_uvs && !p.has_uvs)
+        throw ModelFileError(where + ": a texture is applied to it, but the mesh has no uv coordinates");
+      p.mesh = std::move(tm);
+      model.primitives.push_back(std::move(p));
+    }
+  }
+  if (model.primitives.empty()) throw ModelFileError(file + ": no triangles (every mesh has only points or lines)");
+  return model;
+}
+
+}  // namespace xval
