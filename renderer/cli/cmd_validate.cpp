@@ -33,6 +33,10 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "files/atomic_write.h"
+#include "scene/json_reader.h"
+#include "scene/scene_loader.h"
+#include "validate/junit_report.h"
 #include "common/export_common.h"
 #include "validate/tolerances.h"
 #include "validate/validation_jobs.h"
@@ -41,12 +45,24 @@ namespace xval::cli {
 
 namespace {
 namespace v = xval::validation;
+
+// After the compare step: the JUnit XML of its results.json, when asked
+// for. The compare step's exit status stands; a JUnit file that cannot be
+// written is an error (2).
+int withJunit(const v::Plan& plan, int status, const std::string& junit) {
+  if (junit.empty()) return status;
+  const std::filesystem::path results = plan.dir / "results.json";
+  const auto r = parseOrderedJsonText(readJsonFile(results, "results file"), results.string());
+  writeFileAtomically(junit, junitXml(nlohmann::json(r), plan.dir.lexically_normal().filename().empty() ? std::string("xval validate") : plan.dir.lexically_normal().filename().string()));
+  std::fprintf(stderr, "xval validate: wrote %s\n", junit.c_str());
+  return status;
+}
 }  // namespace
 
 void addValidateCommand(CLI::App& app, std::function<int()>& run) {
   struct Args {
     std::vector<std::string> inputs;
-    std::string dir, tolerances, plan, extremes, tradeoff;
+    std::string dir, tolerances, plan, extremes, tradeoff, junit;
     int jobs = 0;
     long run_job = -1;
     bool resume = false, plan_only = false, compare_only = false;
@@ -87,6 +103,10 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--tradeoff", args->tradeoff,
                   "The folder of `xval tradeoff SCENE -o DIR` whose section the report shows (recorded in "
                   "results.json, relative to it; default: no trade-off section)");
+  cmd->add_option("--junit", args->junit,
+                  "Also write JUnit XML to this file after the compare step: one testcase per scene "
+                  "and pair (classname = scene, name = pair), <failure> with the metrics and the "
+                  "tolerance, <error> for a failed render (validate/junit_report.h)");
   auto* resume = cmd->add_flag(
       "--resume", args->resume,
       "Keep the renders of an earlier run into the same folder whose record says ok, whose "
@@ -132,7 +152,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
           const FolderLock folder_lock(plan.dir,
                                        args->compare_only ? FolderLock::Mode::Exclusive : FolderLock::Mode::Shared,
                                        "xval validate");
-          if (args->compare_only) return v::compareAndReport(plan, sections(*args));
+          if (args->compare_only) return withJunit(plan, v::compareAndReport(plan, sections(*args)), args->junit);
           if (!args->extremes.empty() || !args->tradeoff.empty())
             throw std::runtime_error("--extremes and --tradeoff are for the compare step (a plain run or "
                                      "--compare-only), not --run-job");
@@ -176,7 +196,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
         const int workers =
             args->jobs > 0 ? args->jobs : int(std::max(1u, std::thread::hardware_concurrency()));
         v::runJobs(plan, todo, workers);
-        return v::compareAndReport(plan, sections(*args));
+        return withJunit(plan, v::compareAndReport(plan, sections(*args)), args->junit);
       } catch (const std::exception& e) {
         std::fprintf(stderr, "xval validate: error: %s\n", e.what());
         return 2;

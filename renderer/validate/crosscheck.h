@@ -20,8 +20,8 @@ struct CrosscheckRequest {
   std::string scene_file;  // the scene, loaded with `budget`
   std::string renderer;    // a registry id other than the reference's
   std::string dir;         // the output folder
-  // The tolerance file; empty: reference/tolerances.json beside the
-  // scene's folder when it exists, else the built-in default.
+  // The tolerance file; empty: found by the one rule (validate/tolerances.h:
+  // the nearest tolerances.json at or above the scene, else the toolkit's).
   std::string tolerances;
   double timeout_seconds = kDefaultToolTimeoutSeconds;
   Budget budget;

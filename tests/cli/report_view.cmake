@@ -2,7 +2,8 @@
 # (validate/report.h):
 #   - `xval validate` on a small scene, with stand-in POV-Ray and Blender
 #     that write the reference render (Blender's darkened by 2%), writes a
-#     heat map per pair and names it in results.json;
+#     heat map per pair and names it in results.json; with --junit, a JUnit
+#     XML file valid against tests/junit/junit.xsd (2 failures of 3 pairs);
 #   - `xval report` on a copy of the output folder without any EXR (as a
 #     fresh clone has it) keeps every heat map byte for byte, references
 #     each one, and shows the paper-claim verdicts stored in results.json
@@ -10,7 +11,7 @@
 #     said to be missing, not regenerated.
 # Arguments: XVAL, SCENE, WORK.
 include(${CMAKE_CURRENT_LIST_DIR}/cli_run.cmake)
-require_defined(report_view.cmake XVAL SCENE WORK)
+require_defined(report_view.cmake XVAL SCENE XSD WORK)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK}/bin)
 find_program(_oiiotool oiiotool REQUIRED)
@@ -30,13 +31,24 @@ stand_in(blender "while [ $# -gt 0 ]; do if [ \"$1\" = --out ]; then out=$2; fi;
          "'${_oiiotool}' '${WORK}/ref.exr' --mulc 0.98,0.98,0.98,1 -d float -o \"$out.exr\" && /bin/mv \"$out.exr\" \"$out\"")
 
 execute_process(COMMAND ${CMAKE_COMMAND} -E env "PATH=${WORK}/bin:/usr/bin:/bin"
-                        ${XVAL} validate ${SCENE} -o ${WORK}/out --jobs 2 --timeout 60
+                        ${XVAL} validate ${SCENE} -o ${WORK}/out --jobs 2 --timeout 60 --junit ${WORK}/junit.xml
                 RESULT_VARIABLE rc ERROR_VARIABLE err TIMEOUT 300)
 message("xval validate: exit ${rc}\n${err}")
 if(NOT rc EQUAL 0 AND NOT rc EQUAL 1)
   message(FATAL_ERROR "xval validate exited ${rc}, expected a verdict (0 or 1)")
 endif()
 expect_in("${err}" "tolerances: ")  # the tolerance file used is said
+
+# --junit: one testcase per pair, valid against tests/junit/junit.xsd; the
+# Blender stand-in (colour x 0.98) fails its pairs, POV-Ray's passes.
+execute_process(COMMAND xmllint --noout --schema ${XSD} ${WORK}/junit.xml RESULT_VARIABLE _rc ERROR_VARIABLE _lint)
+if(NOT _rc EQUAL 0)
+  message(FATAL_ERROR "junit.xml is not valid against ${XSD} (xmllint exit ${_rc}):\n${_lint}")
+endif()
+file(READ ${WORK}/junit.xml _junit)
+expect_in("${_junit}" "tests=\"3\" failures=\"2\" errors=\"0\"")
+expect_in("${_junit}" "name=\"reference-blender\"")
+expect_in("${_junit}" "<failure message=\"outside the tolerance: ")
 
 # The published form: no EXR, no work folders, no plan or job records.
 file(COPY ${WORK}/out/ DESTINATION ${WORK}/copy
