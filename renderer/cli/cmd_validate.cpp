@@ -34,6 +34,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "files/atomic_write.h"
+#include "process/job_pool.h"
 #include "scene/json_reader.h"
 #include "scene/scene_loader.h"
 #include "validate/junit_report.h"
@@ -194,7 +195,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
           std::fprintf(stderr, "xval validate: --resume: %zu of %zu jobs done before, %zu to run\n",
                        plan.jobs.size() - todo.size(), plan.jobs.size(), todo.size());
         const int workers =
-            args->jobs > 0 ? args->jobs : int(std::max(1u, std::thread::hardware_concurrency()));
+            args->jobs > 0 ? args->jobs : defaultWorkers();
         v::runJobs(plan, todo, workers);
         return withJunit(plan, v::compareAndReport(plan, sections(*args)), args->junit);
       } catch (const std::exception& e) {

@@ -19,6 +19,7 @@
 #include "process/run_process.h"
 #include "scene/json_reader.h"
 #include "scene/scene_loader.h"
+#include "validate/common/number_text.h"
 #include "validate/extremes/report_section.h"
 #include "validate/tradeoff/report_section.h"
 
@@ -45,13 +46,6 @@ std::string htmlEscape(const std::string& s) {
 namespace {
 
 constexpr int kHeatMapSide = 360;  // heat map previews: at most 360 px
-
-std::string fmt(double v, int prec = 3) {
-  if (!std::isfinite(v)) return "inf";
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*f", prec, v);
-  return b;
-}
 
 // gnuplot string: only [A-Za-z0-9_.-] of a name, the rest '_'.
 std::string gnuplotSafe(const std::string& n) {
@@ -162,9 +156,9 @@ std::string paperClaimsSection(const J& results, const J& cases) {
       h << "<td class=\"err\" colspan=\"5\">no colour statistics in results.json</td></tr>\n";
       continue;
     }
-    h << "<td>" << (*st)["lit_pixels"].get<long long>() << "</td><td>" << fmt((*st)["mean_chroma"], 2)
-      << "</td><td>" << fmt((*st)["mean_albedo_chroma"], 2) << "</td><td>"
-      << fmt(100 * (*st)["grey_fraction"].get<double>(), 1) << "%</td><td>" << fmt((*st)["hue_error_deg"], 2)
+    h << "<td>" << (*st)["lit_pixels"].get<long long>() << "</td><td>" << fixed((*st)["mean_chroma"], 2)
+      << "</td><td>" << fixed((*st)["mean_albedo_chroma"], 2) << "</td><td>"
+      << fixed(100 * (*st)["grey_fraction"].get<double>(), 1) << "%</td><td>" << fixed((*st)["hue_error_deg"], 2)
       << "</td></tr>\n";
   }
   h << "</table>\n<table><tr><th class=\"l\">claim (paper, section 4)</th><th class=\"l\">condition</th>"
@@ -266,7 +260,7 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   h << "<h1>xval cross-validation report</h1>\n";
   h << "<p>" << cases.size() << " scenes: <span class=\"pass\">" << pass << " pass</span>, "
     << "<span class=\"fail\">" << fail << " fail</span>, <span class=\"err\">" << err
-    << " errors</span>. Wall time " << fmt(r.value("wall_seconds", 0.0), 1)
+    << " errors</span>. Wall time " << fixed(r.value("wall_seconds", 0.0), 1)
     << " s. Failures are listed first. Errors are in 1/65535 of the full scale.</p>\n";
   h << "<table><tr><th class=\"l\">provenance</th><th class=\"l\"></th></tr>";
   for (auto it = r["provenance"].begin(); it != r["provenance"].end(); ++it)
@@ -295,7 +289,7 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
       }
       const J& m = p["metrics"];
       h << "<td class=\"" << (p["pass"].get<bool>() ? "pass" : "fail") << "\">"
-        << fmt(m["p999_abs_16bit"], 2) << " / " << fmt(m["max_abs_16bit"], 1) << "</td>";
+        << fixed(m["p999_abs_16bit"], 2) << " / " << fixed(m["max_abs_16bit"], 1) << "</td>";
     }
     h << "</tr>\n";
   }
@@ -319,8 +313,8 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
       const J& rr = it.value();
       h << "<figure><img src=\"" << htmlEscape(rr["image"].get<std::string>()) << "\" alt=\""
         << renderer << "\"><figcaption>" << renderer << ", "
-        << fmt(rr["seconds"], 2) << " s";
-      if (rr.contains("render_seconds")) h << " (render " << fmt(rr["render_seconds"], 2) << " s)";
+        << fixed(rr["seconds"], 2) << " s";
+      if (rr.contains("render_seconds")) h << " (render " << fixed(rr["render_seconds"], 2) << " s)";
       if (rr.contains("error")) h << "<br><span class=\"err\">" << htmlEscape(rr["error"].get<std::string>()) << "</span>";
       h << "</figcaption></figure>";
     }
@@ -350,17 +344,17 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
       const J& m = p["metrics"];
       const J& o = m["over_tolerance"];
       h << "<td class=\"" << (p["pass"].get<bool>() ? "pass\">PASS" : "fail\">FAIL") << "</td><td>"
-        << fmt(m["max_abs_16bit"], 2) << "</td><td>" << fmt(m["p999_abs_16bit"], 2) << "</td><td>"
-        << fmt(m["rmse_16bit"], 3) << "</td><td>"
-        << (m["psnr_db"].is_null() ? std::string("inf") : fmt(m["psnr_db"], 1)) << "</td><td>"
-        << fmt(100.0 * m["fraction_within"].get<double>(), 3) << "%</td><td>"
-        << fmt(m["tolerance"]["max_abs_16bit"], 0) << " on " << fmt(100.0 * m["tolerance"]["fraction"].get<double>(), 1)
+        << fixed(m["max_abs_16bit"], 2) << "</td><td>" << fixed(m["p999_abs_16bit"], 2) << "</td><td>"
+        << fixed(m["rmse_16bit"], 3) << "</td><td>"
+        << (m["psnr_db"].is_null() ? std::string("inf") : fixed(m["psnr_db"], 1)) << "</td><td>"
+        << fixed(100.0 * m["fraction_within"].get<double>(), 3) << "%</td><td>"
+        << fixed(m["tolerance"]["max_abs_16bit"], 0) << " on " << fixed(100.0 * m["tolerance"]["fraction"].get<double>(), 1)
         << "%</td><td>" << m["mask_disagree"].get<long long>() << " (" << m["mask_disagree_silhouette"].get<long long>()
         << ")</td><td>" << o["occlusion_edge"].get<long long>() << " / " << o["backfacing_normal"].get<long long>()
         << " / " << o["grazing"].get<long long>() << " / " << o["unexplained"].get<long long>() << "</td><td>"
-        << fmt(m["ssim"], 6) << "</td><td>" << fmt(m["ciede2000"]["mean"], 4) << " / "
-        << fmt(m["ciede2000"]["max"], 3) << "</td><td>" << fmt(m["yiq_delta"]["mean"].get<double>() * 1e3, 4)
-        << "e-3 / " << fmt(m["yiq_delta"]["max"].get<double>() * 1e3, 3) << "e-3</td></tr>\n";
+        << fixed(m["ssim"], 6) << "</td><td>" << fixed(m["ciede2000"]["mean"], 4) << " / "
+        << fixed(m["ciede2000"]["max"], 3) << "</td><td>" << fixed(m["yiq_delta"]["mean"].get<double>() * 1e3, 4)
+        << "e-3 / " << fixed(m["yiq_delta"]["max"].get<double>() * 1e3, 3) << "e-3</td></tr>\n";
     }
     h << "</table>\n";
     for (const auto& p : c["pairs"])

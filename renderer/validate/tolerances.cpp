@@ -1,4 +1,5 @@
 #include "validate/tolerances.h"
+#include "renderers/registry.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -46,8 +47,9 @@ Tolerance ToleranceTable::lookup(const Scene& scene, const std::string& renderer
 
 Tolerance ToleranceTable::lookupPair(const Scene& scene, const std::string& a, const std::string& b,
                                      std::string* reason) const {
-  if (a == kReferenceRendererId) return lookup(scene, b, reason);
-  if (b == kReferenceRendererId) return lookup(scene, a, reason);
+  const std::string& reference = renderers::registry().reference().id;
+  if (a == reference) return lookup(scene, b, reason);
+  if (b == reference) return lookup(scene, a, reason);
   const Tolerance t1 = lookup(scene, a), t2 = lookup(scene, b);
   Tolerance t;
   t.max_abs = t1.max_abs + t2.max_abs;

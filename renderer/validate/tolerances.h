@@ -27,10 +27,6 @@
 
 namespace xval {
 
-// The renderer every other one is compared with; a pair that includes it
-// uses the other renderer's declared tolerance.
-inline constexpr const char* kReferenceRendererId = "reference";
-
 struct ToleranceTable {
   Tolerance default_tolerance;  // from the file's "default"
   std::filesystem::path source;
@@ -43,9 +39,9 @@ struct ToleranceTable {
                    std::string* reason = nullptr) const;
 
   // The tolerance of the pair (a, b). With the reference renderer in the
-  // pair: lookup() of the other one. Two external renderers a and b, each
-  // within (e1 on f1) and (e2 on f2) of the reference: on the pixels where
-  // both are within, |a - b| <= |a - ref| + |ref - b| <= e1 + e2 (triangle
+  // pair (the registry's, renderers/registry.h): lookup() of the other
+  // one. Two external renderers a and b, each within (e1 on f1) and (e2 on
+  // f2) of the reference: on the pixels where both are within, |a - b| <= |a - ref| + |ref - b| <= e1 + e2 (triangle
   // inequality), and at most (1 - f1) + (1 - f2) of the pixels are outside
   // either (union bound), so the pair is held to e1 + e2 on
   // max(0, f1 + f2 - 1); back faces are left out if either leaves them out.

@@ -1,5 +1,7 @@
 // The jobs of `xval validate`: plan, run one job, compare (validation_jobs.h).
 #include "validate/validation_jobs.h"
+#include "process/job_pool.h"
+#include "validate/common/provenance.h"
 
 #include <unistd.h>
 
@@ -440,38 +442,33 @@ std::vector<size_t> jobsToRun(const Plan& plan, bool resume) {
   return todo;
 }
 
-// Runs the given jobs, `workers` at a time, with a progress line each.
+// Runs the given jobs, `workers` at a time (process/job_pool.h), with a
+// progress line each.
 void runJobs(const Plan& plan, const std::vector<size_t>& todo, int workers) {
   const auto t_start = Clock::now();
-  std::atomic<size_t> next{0}, done{0};
+  size_t done = 0;
   std::mutex lock;
-  auto worker = [&]() {
-    for (size_t k = next++; k < todo.size(); k = next++) {
-      const RenderJob& job = plan.jobs[todo[k]];
-      // An exception must not leave this thread (std::terminate): it is
-      // this job's error, and the compare step finds the job not done.
-      JobRecord rec;
-      try {
-        rec = runJob(plan, job);
-      } catch (const std::exception& e) {
-        rec.error = e.what();
-      } catch (...) {
-        rec.error = "unknown exception";
-      }
-      std::lock_guard<std::mutex> g(lock);
-      const size_t n = ++done;
-      const double el = std::chrono::duration<double>(Clock::now() - t_start).count();
-      std::fprintf(stderr, "[%zu/%zu] %-32s %-9s %s %6.2f s   elapsed %.0f s, ~%.0f s left\n", n,
-                   todo.size(), job.scene.c_str(), job.renderer.c_str(),
-                   rec.error.empty() ? "ok   " : "ERROR", rec.seconds, el,
-                   el * double(todo.size() - n) / double(n));
-      if (!rec.error.empty()) std::fprintf(stderr, "  %s\n", rec.error.c_str());
+  runJobPool(todo.size(), workers, [&](size_t k) {
+    const RenderJob& job = plan.jobs[todo[k]];
+    // A job's exception is this job's error, and the compare step finds
+    // the job not done; the other jobs go on.
+    JobRecord rec;
+    try {
+      rec = runJob(plan, job);
+    } catch (const std::exception& e) {
+      rec.error = e.what();
+    } catch (...) {
+      rec.error = "unknown exception";
     }
-  };
-  std::vector<std::thread> pool;
-  for (int w = 0; w < std::min<int>(workers, int(std::max<size_t>(1, todo.size()))); ++w)
-    pool.emplace_back(worker);
-  for (auto& t : pool) t.join();
+    std::lock_guard<std::mutex> g(lock);
+    const size_t n = ++done;
+    const double el = std::chrono::duration<double>(Clock::now() - t_start).count();
+    std::fprintf(stderr, "[%zu/%zu] %-32s %-9s %s %6.2f s   elapsed %.0f s, ~%.0f s left\n", n,
+                 todo.size(), job.scene.c_str(), job.renderer.c_str(),
+                 rec.error.empty() ? "ok   " : "ERROR", rec.seconds, el,
+                 el * double(todo.size() - n) / double(n));
+    if (!rec.error.empty()) std::fprintf(stderr, "  %s\n", rec.error.c_str());
+  });
 }
 
 int compareAndReport(const Plan& plan, const ReportSections& sections) {
@@ -587,11 +584,13 @@ int compareAndReport(const Plan& plan, const ReportSections& sections) {
   results["provenance"] = J::object();
   for (const renderers::Renderer* r : rs)
     if (r->external()) results["provenance"][r->id] = renderers::registry().version(r->id);
-  results["provenance"]["openimageio"] = OIIO_VERSION_STRING;
-  results["provenance"]["compiler"] = std::string("g++ ") + __VERSION__;
+  // The one provenance record (validate/common/provenance.h): the compiler
+  // that built this xval, the commit (with -dirty) it ran in.
+  const Provenance prov = collectProvenance(plan.dir / "version.log");
+  results["provenance"]["openimageio"] = prov.openimageio;
+  results["provenance"]["compiler"] = prov.compiler;
   results["provenance"]["tolerances"] = plan.tolerances;
-  results["provenance"]["git_commit"] =
-      renderers::probeToolVersion({"git", "rev-parse", "HEAD"}, "", std::min(60.0, plan.timeout_seconds));
+  results["provenance"]["git_commit"] = prov.git_commit;
   results["provenance"]["settings_hash"] = settingsHash(setting_files);
   // From the plan's making to now: on a cluster this includes the time the
   // jobs waited in the queue.
