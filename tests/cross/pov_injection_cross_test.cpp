@@ -3,6 +3,8 @@
 // changed nothing).
 #include <gtest/gtest.h>
 
+#include "validate/tolerances.h"
+
 #include <filesystem>
 
 #include "image/compare.h"
@@ -37,7 +39,8 @@ TEST(PovrayCross, HostileTexturePathAndNameRenderCorrectly) {
   Scene s = hostileScene(fs::temp_directory_path() / "xval_cross_inject_pov");
   Image ref = renderScene(s, RenderOptions{});
   Image pov = renderWithPovray(s, fs::temp_directory_path() / "xval_cross_inject_pov" / "work", 600.0);
-  Tolerance t;
+  // The default tolerance (reference/tolerances.json, the toolkit's own).
+  const Tolerance t = loadTolerances(toolkitToleranceFile()).default_tolerance;
   CompareMetrics m = compareImages(ref, pov, t);
   EXPECT_TRUE(t.passes(m)) << toJson(m, t);
   EXPECT_GT(m.covered_both, 1000);
@@ -47,7 +50,8 @@ TEST(BlenderCross, HostileTexturePathAndNameRenderCorrectly) {
   Scene s = hostileScene(fs::temp_directory_path() / "xval_cross_inject_blender");
   Image ref = renderScene(s, RenderOptions{});
   Image bl = renderWithBlender(s, fs::temp_directory_path() / "xval_cross_inject_blender" / "work", 600.0);
-  Tolerance t;
+  // The default tolerance (reference/tolerances.json, the toolkit's own).
+  const Tolerance t = loadTolerances(toolkitToleranceFile()).default_tolerance;
   CompareMetrics m = compareImages(ref, bl, t);
   EXPECT_TRUE(t.passes(m)) << toJson(m, t);
   EXPECT_GT(m.covered_both, 1000);
