@@ -10,6 +10,7 @@
 #include <thread>
 #include <vector>
 
+#include "support/temp_files.h"
 #include "files/atomic_write.h"
 #include "files/output_folder.h"
 
@@ -17,12 +18,7 @@ namespace fs = std::filesystem;
 using namespace xval;
 
 namespace {
-fs::path freshDir(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("xval_output_files_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path freshDir(const std::string& name) { return test::freshTempDir("xval_output_files_" + name + "_" + std::to_string(getpid())); }
 std::string contents(const fs::path& f) {
   std::ifstream in(f);
   std::stringstream ss;

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "support/temp_files.h"
 #include "povray/pov_exporter.h"
 #include "blender/blender_render.h"
 #include "povray/pov_render.h"
@@ -19,19 +20,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path freshDir(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("xval_pov_" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path freshDir(const std::string& name) { return test::freshTempDir("xval_pov_" + name); }
 
-std::string slurp(const fs::path& f) {
-  std::ifstream in(f);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string slurp(const fs::path& f) { return test::fileText(f); }
 
 Scene smallScene() {
   Scene s;

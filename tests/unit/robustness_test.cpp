@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string>
 
+#include "support/temp_files.h"
 #include "scene/scene_generator.h"
 #include "scene/scene_loader.h"
 #include "texture/brick.h"
@@ -43,12 +44,7 @@ std::string errorOf(const std::string& text, const fs::path& file = "d/s.json") 
   return "(loaded)";
 }
 
-fs::path freshDir(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("xval_robust_" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path freshDir(const std::string& name) { return test::freshTempDir("xval_robust_" + name); }
 
 #define EXPECT_HAS(msg, part) EXPECT_NE((msg).find(part), std::string::npos) << (msg)
 

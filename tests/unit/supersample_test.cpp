@@ -13,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "support/temp_files.h"
 #include "common/supersample.h"
 #include "gltf/gltf_exporter.h"
 #include "povray/pov_exporter.h"
@@ -25,19 +26,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path freshDir(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("xval_ss_" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path freshDir(const std::string& name) { return test::freshTempDir("xval_ss_" + name); }
 
-std::string slurp(const fs::path& f) {
-  std::ifstream in(f);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string slurp(const fs::path& f) { return test::fileText(f); }
 
 Scene sphereScene(int side, int spp) {
   Scene s;

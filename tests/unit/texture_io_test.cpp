@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "support/temp_files.h"
 #include "common/export_common.h"
 #include "texture/texture.h"
 
@@ -18,12 +19,7 @@ namespace OIIO = OIIO_NAMESPACE;
 
 namespace {
 
-fs::path freshDir(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("xval_texture_io_" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path freshDir(const std::string& name) { return test::freshTempDir("xval_texture_io_" + name); }
 
 // A 5x3 RGBA image (codes out of `max`): opaque, fully transparent and
 // partly transparent texels with colours far from their premultiplied
