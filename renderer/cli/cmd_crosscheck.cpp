@@ -1,9 +1,11 @@
-// xval crosscheck SCENE.json --renderer povray -o DIR [--tolerances FILE]: argument
+// xval crosscheck SCENE.json --renderer povray -o DIR [--tolerances FILE] [--junit FILE]: argument
 // parsing; the work is validation::crosscheck (validate/crosscheck.h).
 //
 // Renders the scene with the reference renderer and with an external
 // renderer, compares them with the declared tolerance, and writes
-// DIR/reference.exr, DIR/<renderer>.exr, DIR/diff.exr, DIR/metrics.json.
+// DIR/reference.exr, DIR/<renderer>.exr, DIR/diff.exr, DIR/metrics.json;
+// with --junit, the verdict as JUnit XML (validate/junit_report.h), an
+// error as <error>.
 // Exit 0: within tolerance; 1: not; 2: an error (bad scene, renderer
 // missing, failing or timing out: never a pass).
 #include <cstdio>
@@ -11,15 +13,17 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "files/atomic_write.h"
 #include "renderers/registry.h"
 #include "validate/crosscheck.h"
+#include "validate/junit_report.h"
 #include "validate/tolerances.h"
 
 namespace xval::cli {
 
 void addCrosscheckCommand(CLI::App& app, std::function<int()>& run) {
   struct Args {
-    std::string scene, renderer, dir, tolerances;
+    std::string scene, renderer, dir, tolerances, junit;
     double timeout = kDefaultToolTimeoutSeconds;
     BudgetOptions budget;
   };
@@ -41,18 +45,34 @@ void addCrosscheckCommand(CLI::App& app, std::function<int()>& run) {
       ->check(CLI::IsMember(compared));
   cmd->add_option("-o,--output", args->dir, "Output folder")->required();
   cmd->add_option("--tolerances", args->tolerances, kToleranceFileHelp);
+  cmd->add_option("--junit", args->junit,
+                  "Also write the verdict as JUnit XML to this file (one testcase: classname = the "
+                  "scene, name = the pair; outside the tolerance a <failure>, an error an <error>)");
   cmd->add_option("--timeout", args->timeout, "Seconds before the external renderer is killed")
       ->check(Seconds);
   addBudgetOptions(cmd, args->budget);
   cmd->callback([args, &run]() {
     run = [args]() -> int {
+      const validation::CrosscheckRequest request{args->scene, args->renderer, args->dir, args->tolerances,
+                                                  args->timeout, args->budget.get()};
+      int status = 2;
+      std::string error;
       try {
-        return validation::crosscheck({args->scene, args->renderer, args->dir, args->tolerances,
-                                       args->timeout, args->budget.get()});
+        status = validation::crosscheck(request);
       } catch (const std::exception& e) {
+        error = e.what();
         std::fprintf(stderr, "xval crosscheck: error: %s\n", e.what());
-        return 2;
       }
+      if (!args->junit.empty()) {
+        try {
+          writeFileAtomically(args->junit,
+                              junitXml(validation::crosscheckAsResults(request, error), "xval crosscheck"));
+        } catch (const std::exception& e) {
+          std::fprintf(stderr, "xval crosscheck: error: --junit %s: %s\n", args->junit.c_str(), e.what());
+          return 2;
+        }
+      }
+      return status;
     };
   });
 }

@@ -33,10 +33,11 @@ void addGenerateCommand(CLI::App& app, std::function<int()>& run) {
       for (size_t i = 0; i < scenes.size(); ++i) {
         const auto& g = scenes[i];
         const std::filesystem::path file = dir / (g.name + ".json");
-        writeFileAtomically(file, g.json.dump(2) + "\n");
+        writeFileAtomically(file, sceneForFolder(g, args->spec, dir).dump(2) + "\n");
         std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, scenes.size(), file.c_str());
+        // Loaded back from where it now lives: its paths must resolve there.
+        Scene s = loadScene(file);
         if (args->render) {
-          Scene s = loadScene(file);
           writeImage(renderScene(s, defaultOptions(s)), dir / (g.name + ".exr"));
         }
       }

@@ -1,10 +1,11 @@
 // xval: the toolkit's command-line tool. One subcommand per file
 // (cli/cmd_*.cpp); this file only wires them together.
 //
-// Exit status: 0 success; 2 bad command line; otherwise 1 when the command
-// failed (bad scene, I/O error, ...), except for the comparing commands
-// (compare, crosscheck, validate), where 1 means "outside the tolerance" and
-// 2 means an error.
+// Exit status, the same for every subcommand (the --help footer says it):
+// 0 success (for the comparing commands: within the tolerance);
+// 1 a check failed (compare, crosscheck, validate: outside the tolerance;
+// extremes: a NaN/Inf in the reference renderer); 2 an error (bad command
+// line, bad scene, I/O error, a tool that failed).
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -20,6 +21,11 @@ int main(int argc, char** argv) {
   CLI::App app{
       "xval: cross-validates lighting models between a reference renderer, POV-Ray and "
       "Blender.\nScene files are JSON (docs/scene-format.md)."};
+  const std::string exit_status =
+      "Exit status (every subcommand): 0 success, or within the tolerance; 1 a check failed "
+      "(compare, crosscheck, validate: outside the tolerance; extremes: a NaN/Inf in the reference "
+      "renderer); 2 an error (bad command line, bad input, a tool that failed).";
+  app.footer(exit_status);
   app.require_subcommand(1);
   app.set_version_flag("--version", xval::renderers::kXvalVersion);
   std::function<int()> run;
@@ -34,6 +40,7 @@ int main(int argc, char** argv) {
   xval::cli::addExtremesCommand(app, run);
   xval::cli::addTradeoffCommand(app, run);
   xval::cli::addRenderersCommand(app, run);
+  for (CLI::App* sub : app.get_subcommands({})) sub->footer(exit_status);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -50,6 +57,6 @@ int main(int argc, char** argv) {
     return run();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "xval: error: %s\n", e.what());
-    return 1;
+    return 2;
   }
 }

@@ -160,6 +160,23 @@ std::vector<RendererPair> unorderedPairs(size_t n) {
 
 std::string pairKey(const Renderer& a, const Renderer& b) { return a.id + "-" + b.id; }
 
+namespace {
+// No majority: say which pairs fail. "POV-Ray and Blender disagree (the
+// other pairs agree)" for one failing pair; "no two renderers agree" when
+// every pair fails; otherwise the failing pairs, "A and B disagree; ...".
+std::string failingPairsText(const std::vector<const Renderer*>& rs, const std::vector<RendererPair>& pairs,
+                             const std::vector<int>& verdicts) {
+  std::vector<std::string> failing;
+  for (size_t k = 0; k < pairs.size(); ++k)
+    if (verdicts[k] == 0)
+      failing.push_back(rs[pairs[k].a]->sentenceSubject() + " and " + rs[pairs[k].b]->display_name + " disagree");
+  if (failing.size() == pairs.size()) return pairs.size() == 1 ? failing[0] : "no two renderers agree";
+  std::string out;
+  for (size_t k = 0; k < failing.size(); ++k) out += (k == 0 ? "" : "; ") + failing[k];
+  return failing.size() == 1 ? out + " (the other pairs agree)" : out;
+}
+}  // namespace
+
 std::string attribute(const std::vector<const Renderer*>& rs, const std::vector<int>& verdicts) {
   const size_t n = rs.size();
   const std::vector<RendererPair> pairs = unorderedPairs(n);
@@ -179,8 +196,7 @@ std::string attribute(const std::vector<const Renderer*>& rs, const std::vector<
   // renderer failing against each of M. Two such sets would share a member
   // (both are over half) and then one's outsider would agree with it: M is
   // unique, so the first found is the one.
-  if (n > 20) return "no two renderers agree on everything";  // 2^n subsets: not for that many
-  for (uint32_t m = 1; m < (uint32_t(1) << n); ++m) {
+  for (uint32_t m = 1; n <= 20 && m < (uint32_t(1) << n); ++m) {  // 2^n subsets: not for more
     const size_t size = size_t(std::popcount(m));
     if (2 * size <= n || size == n) continue;
     auto in = [m](size_t k) { return (m >> k) & 1u; };
@@ -196,7 +212,7 @@ std::string attribute(const std::vector<const Renderer*>& rs, const std::vector<
     return joinNames(deviating) + (deviating.size() == 1 ? " deviates (" : " deviate (") + joinNames(agreeing) +
            " agree)";
   }
-  return "no two renderers agree on everything";
+  return failingPairsText(rs, pairs, verdicts);
 }
 
 std::string probeToolVersion(const std::vector<std::string>& argv, const std::string& marker,

@@ -100,7 +100,10 @@ std::string pairKey(const Renderer& a, const Renderer& b);
 //   - a majority M (more than half of them) agree pairwise and every
 //     renderer outside M fails against every member of M (such an M is
 //     unique): "X deviates (A and B agree)", "X and Y deviate (...)";
-//   - otherwise: "no two renderers agree on everything".
+//   - otherwise the failing pairs: "POV-Ray and Blender disagree (the other
+//     pairs agree)" when one pair fails, "A and B disagree; C and D
+//     disagree" for several, "no two renderers agree" when every pair fails
+//     ("A and B disagree" for two renderers).
 // For three renderers this is the one deviating from the other two.
 std::string attribute(const std::vector<const Renderer*>& renderers, const std::vector<int>& verdicts);
 

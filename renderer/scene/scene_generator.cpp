@@ -174,4 +174,37 @@ std::vector<GeneratedScene> generateScenesFromText(const std::string& text,
   return out;
 }
 
+namespace {
+
+void rebasePaths(J& node, const std::filesystem::path& from_dir, const std::filesystem::path& to_dir) {
+  namespace fs = std::filesystem;
+  if (node.is_array()) {
+    for (auto& e : node) rebasePaths(e, from_dir, to_dir);
+    return;
+  }
+  if (!node.is_object()) return;
+  for (auto it = node.begin(); it != node.end(); ++it) {
+    if (it.key() == "path" && it.value().is_string()) {
+      const fs::path p(it.value().get<std::string>());
+      if (p.empty() || p.is_absolute()) continue;
+      // Canonical (symlinks resolved) on both sides, so ".." steps in the
+      // result walk the real folders.
+      const fs::path target = fs::weakly_canonical(fs::absolute(from_dir / p));
+      const fs::path rel = target.lexically_relative(fs::weakly_canonical(fs::absolute(to_dir)));
+      it.value() = (rel.empty() ? target : rel).generic_string();
+    } else {
+      rebasePaths(it.value(), from_dir, to_dir);
+    }
+  }
+}
+
+}  // namespace
+
+nlohmann::ordered_json sceneForFolder(const GeneratedScene& g, const std::filesystem::path& spec_file,
+                                      const std::filesystem::path& out_dir) {
+  J scene = g.json;
+  rebasePaths(scene, spec_file.parent_path(), out_dir);
+  return scene;
+}
+
 }  // namespace xval

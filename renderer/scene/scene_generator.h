@@ -45,4 +45,11 @@ std::vector<GeneratedScene> generateScenes(const std::filesystem::path& spec_fil
 std::vector<GeneratedScene> generateScenesFromText(const std::string& text,
                                                    const std::filesystem::path& spec_file);
 
+// The scene file `g` written into `out_dir`: its relative file paths (every
+// string field named "path": textures, model files) rewritten from the
+// spec's folder to `out_dir`, so they name the same files from there
+// (relative when both lie under one root, else absolute).
+nlohmann::ordered_json sceneForFolder(const GeneratedScene& g, const std::filesystem::path& spec_file,
+                                      const std::filesystem::path& out_dir);
+
 }  // namespace xval

@@ -363,6 +363,22 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file, con
 
 ImageLimits textureLimits() { return {kMaxTextureSide, kMaxTexturePixels, "texels"}; }
 
+std::string nonSceneReason(const std::filesystem::path& file) {
+  if (file.filename() == "tolerances.json") return "a tolerance file";
+  std::string text;
+  try {
+    text = readJsonFile(file, "scene file");
+  } catch (const SceneError&) {
+    return "";
+  }
+  const json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (!j.is_object() || !j.contains("format") || !j["format"].is_string()) return "";
+  const std::string format = j["format"].get<std::string>();
+  if (format.rfind("xval-", 0) == 0 && format.rfind("xval-scene/", 0) != 0)
+    return "a file of format " + describeJson(j["format"]) + ", not a scene";
+  return "";
+}
+
 std::string readJsonFile(const std::filesystem::path& file, const std::string& what) {
   std::error_code ec;
   // Not a FIFO, device or folder: opening one blocks or reads without end.

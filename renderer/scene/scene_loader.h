@@ -26,6 +26,14 @@ Scene loadScene(const std::filesystem::path& file, const Budget& budget = Budget
 // `what` names it in messages ("scene file").
 std::string readJsonFile(const std::filesystem::path& file, const std::string& what);
 
+// Why a JSON file found in a scene folder is not a scene, or "" when it is
+// one (or cannot be told: then loading it reports the problem). Not a scene:
+// a file whose top-level "format" names another xval format
+// ("xval-generate/1", "xval-renderer/1", ...), and a tolerance file (named
+// tolerances.json, see validate/tolerances.h). Unreadable or malformed files
+// count as scenes, so their errors are not lost.
+std::string nonSceneReason(const std::filesystem::path& file);
+
 // The renderers a scene's `tolerances` may name: the renderer registry
 // (renderers/registry.h) installs its ids here (every renderer compared
 // against the reference). In a program without the registry a scene

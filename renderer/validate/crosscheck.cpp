@@ -55,8 +55,8 @@ int crosscheck(const CrosscheckRequest& request) {
   writeFileAtomically(dir / "metrics.json", j.dump(2) + "\n");
   const bool pass = tol.passes(m);
   std::printf(
-      "%s vs %s: %s  max %.2f  p99.9 %.2f  RMSE %.3f (x/65535)  within %.0f: %.4f%% (need "
-      "%.2f%%)  masks: %lld off (%lld on silhouettes)  over tolerance: %lld (occlusion edge "
+      "%s vs %s: %s  max %.2f  p99.9 %.2f  RMSE %.3f (x/65535)  within %.6g: %.4f%% (need "
+      "%.6g%%)  masks: %lld off (%lld on silhouettes)  over tolerance: %lld (occlusion edge "
       "%lld, backfacing normal %lld, grazing %lld, unexplained %lld)  time: reference %.2f s, %s %.2f s\n",
       scene.name.c_str(), request.renderer.c_str(), pass ? "PASS" : "FAIL",
       m.max_abs * 65535, m.p999_abs * 65535, m.rmse * 65535, tol.max_abs * 65535,
@@ -65,6 +65,36 @@ int crosscheck(const CrosscheckRequest& request) {
       m.over_grazing, m.over_unexplained, ref_s, request.renderer.c_str(), info.seconds);
   if (!reason.empty()) std::printf("  declared tolerance: %s\n", reason.c_str());
   return pass ? 0 : 1;
+}
+
+nlohmann::json crosscheckAsResults(const CrosscheckRequest& request, const std::string& error) {
+  using J = nlohmann::json;
+  const std::string reference = renderers::registry().reference().id;
+  const std::string pair = reference + "-" + request.renderer;
+  J c = {{"scene", std::filesystem::path(request.scene_file).stem().string()},
+         {"file", request.scene_file},
+         {"renders", J::object()}};
+  J p = {{"pair", pair}};
+  std::string problem = error;
+  const std::filesystem::path metrics_file = std::filesystem::path(request.dir) / "metrics.json";
+  if (problem.empty()) {
+    try {
+      const J m = J::parse(readJsonFile(metrics_file, "crosscheck metrics"));
+      c["scene"] = m.at("scene");
+      for (const auto& [who, seconds] : m.at("seconds").items())
+        if (who == reference || who == request.renderer) c["renders"][who] = {{"seconds", seconds}};
+      p["pass"] = m.at("pass");
+      p["metrics"] = m;
+    } catch (const std::exception& e) {
+      problem = metrics_file.string() + ": no usable metrics (" + e.what() + ")";
+    }
+  }
+  if (!problem.empty()) {
+    p = {{"pair", pair}, {"error", problem}};
+    c["renders"][request.renderer] = {{"error", problem}};
+  }
+  c["pairs"] = J::array({p});
+  return {{"cases", J::array({c})}};
 }
 
 }  // namespace xval::validation

@@ -11,6 +11,8 @@
 
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "common/export_common.h"
 #include "scene/scene_budget.h"
 
@@ -31,5 +33,13 @@ struct CrosscheckRequest {
 // bad scene or tolerance file, a renderer missing, failing or timing out:
 // never a pass).
 int crosscheck(const CrosscheckRequest& request);
+
+// One crosscheck run in the form of a results.json (one case, one pair
+// "reference-<renderer>"), for the JUnit writer (validate/junit_report.h):
+// with `error` empty, the verdict and metrics of DIR/metrics.json (which
+// crosscheck writes last, so a run that did not finish has none); else a
+// pair that is that error. The case is named by the scene's name, or by
+// the scene file's stem when the scene could not be loaded.
+nlohmann::json crosscheckAsResults(const CrosscheckRequest& request, const std::string& error);
 
 }  // namespace xval::validation

@@ -348,7 +348,7 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
         << fixed(m["rmse_16bit"], 3) << "</td><td>"
         << (m["psnr_db"].is_null() ? std::string("inf") : fixed(m["psnr_db"], 1)) << "</td><td>"
         << fixed(100.0 * m["fraction_within"].get<double>(), 3) << "%</td><td>"
-        << fixed(m["tolerance"]["max_abs_16bit"], 0) << " on " << fixed(100.0 * m["tolerance"]["fraction"].get<double>(), 1)
+        << significant(m["tolerance"]["max_abs_16bit"]) << " on " << significant(100.0 * m["tolerance"]["fraction"].get<double>())
         << "%</td><td>" << m["mask_disagree"].get<long long>() << " (" << m["mask_disagree_silhouette"].get<long long>()
         << ")</td><td>" << o["occlusion_edge"].get<long long>() << " / " << o["backfacing_normal"].get<long long>()
         << " / " << o["grazing"].get<long long>() << " / " << o["unexplained"].get<long long>() << "</td><td>"

@@ -104,7 +104,12 @@ std::vector<fs::path> collectScenes(const std::vector<std::string>& inputs) {
     if (fs::is_directory(p)) {
       std::vector<fs::path> files;
       for (const auto& e : fs::directory_iterator(p))
-        if (e.path().extension() == ".json") files.push_back(e.path());
+        if (e.path().extension() == ".json") {
+          if (const std::string why = nonSceneReason(e.path()); !why.empty())
+            std::fprintf(stderr, "xval validate: skipping %s: %s\n", e.path().c_str(), why.c_str());
+          else
+            files.push_back(e.path());
+        }
       std::sort(files.begin(), files.end());
       out.insert(out.end(), files.begin(), files.end());
     } else if (fs::is_regular_file(p)) {

@@ -77,7 +77,7 @@ endif()
 
 if(CMD STREQUAL "render")
   set(_cmd ${XVAL} render ${SCENE} -o ${WORK}/out.exr --renderer ${TOOL} --timeout 2 -q)
-  set(_exit 1)
+  set(_exit 2)
 else()
   set(_cmd ${XVAL} validate ${SCENE} -o ${WORK}/out --jobs 3 --timeout 2
            --tolerances ${CMAKE_CURRENT_LIST_DIR}/../../reference/tolerances.json)

@@ -25,6 +25,17 @@ TEST(NumberText, Fixed) {
   EXPECT_EQ(fixed(nlohmann::ordered_json(7), 2), "7.00");
 }
 
+// Tolerances keep their declared digits: 0.1/65535 on 99.99% is not "0 on 100.0%".
+TEST(NumberText, Significant) {
+  EXPECT_EQ(significant(0.1 / 65535.0 * 65535.0), "0.1");
+  EXPECT_EQ(significant(100.0 * 0.9999), "99.99");
+  EXPECT_EQ(significant(2.0), "2");
+  EXPECT_EQ(significant(100.0 * 0.999), "99.9");
+  EXPECT_EQ(significant(std::nan("")), "nan");
+  EXPECT_EQ(significant(nlohmann::json(nullptr)), "n/a");
+  EXPECT_EQ(significant(nlohmann::json(0.25)), "0.25");
+}
+
 // The compiler that built this test is the one named, by its own macros.
 TEST(Provenance, NamesTheRealCompiler) {
   const std::string c = compilerDescription();

@@ -22,4 +22,18 @@ std::string fixed(const nlohmann::ordered_json& j, int digits) {
   return j.is_number() ? fixed(j.get<double>(), digits) : "n/a";
 }
 
+std::string significant(double v) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char b[64];
+  std::snprintf(b, sizeof b, "%.6g", v);
+  return b;
+}
+
+std::string significant(const nlohmann::json& j) { return j.is_number() ? significant(j.get<double>()) : "n/a"; }
+
+std::string significant(const nlohmann::ordered_json& j) {
+  return j.is_number() ? significant(j.get<double>()) : "n/a";
+}
+
 }  // namespace xval
