@@ -2,7 +2,7 @@
 # the case an error quoting the tool's log, never a pass.
 # Arguments: XVAL, SCENE, WORK, TOOL (povray or blender), FAULT (missing,
 # crash, error, no_image, hang, nan, inf or huge_line), CMD (render: `xval render --renderer
-# TOOL`, must exit 1 and write no image; validate: `xval validate`, must
+# TOOL`, must exit 2 and write no image; validate: `xval validate`, must
 # exit 2 with the error recorded for TOOL in results.json).
 foreach(_v XVAL SCENE WORK TOOL FAULT CMD)
   if(NOT DEFINED ${_v})
@@ -32,8 +32,15 @@ elseif(FAULT STREQUAL "nan" OR FAULT STREQUAL "inf")
   # path the real tool would write: POV-Ray's from scene.ini (an EXR under
   # the .png name: OpenImageIO reads it by its content), Blender's from
   # --out. Saturating would turn it into a black (or white) image.
+  # The image is made here, before xval runs: the stand-in only copies it,
+  # so it finishes well inside the 2 s time-out on a loaded machine.
   find_program(_oiiotool oiiotool REQUIRED)
-  set(_make "'${_oiiotool}' --pattern constant:color=${FAULT},${FAULT},${FAULT},1 16x16 4 -d float -o \"$out.exr\" && /bin/mv \"$out.exr\" \"$out\"")
+  execute_process(COMMAND ${_oiiotool} --pattern constant:color=${FAULT},${FAULT},${FAULT},1 16x16 4 -d float
+                          -o ${WORK}/${FAULT}.exr RESULT_VARIABLE _rc)
+  if(NOT _rc EQUAL 0)
+    message(FATAL_ERROR "oiiotool could not write ${WORK}/${FAULT}.exr (exit ${_rc})")
+  endif()
+  set(_make "/bin/cp '${WORK}/${FAULT}.exr' \"$out\"")
   if(TOOL STREQUAL "povray")
     set(_find "out=$(/bin/sed -n 's/^Output_File_Name=//p' scene.ini)")
   else()
