@@ -3,13 +3,18 @@
 # whose POV-Ray export succeeds (a refused scene is replaced by the next
 # one), copied into one folder and validated there with every renderer.
 # Fails unless `xval validate` exits 0 and at least MIN scenes were checked.
-# Args: XVAL, SPEC, TOLERANCES, WORK, STEP, MIN.
+# Args: XVAL, SPEC, TOLERANCES, TEXTURES (reference/textures), WORK, STEP, MIN.
+#
+# The generated scenes keep the spec's relative texture path
+# (../../reference/textures/...): they are written two levels below WORK,
+# beside a copy of the textures at WORK/reference/textures.
 file(REMOVE_RECURSE ${WORK})
-execute_process(COMMAND ${XVAL} generate ${SPEC} -o ${WORK}/all RESULT_VARIABLE rc)
+file(COPY ${TEXTURES} DESTINATION ${WORK}/reference)
+execute_process(COMMAND ${XVAL} generate ${SPEC} -o ${WORK}/scenes/all RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "xval generate ${SPEC}: exit ${rc}")
 endif()
-file(GLOB scenes ${WORK}/all/*.json)
+file(GLOB scenes ${WORK}/scenes/all/*.json)
 list(SORT scenes)
 list(LENGTH scenes n)
 set(picked 0)
@@ -21,7 +26,7 @@ foreach(scene IN LISTS scenes)
     execute_process(COMMAND ${XVAL} export pov ${scene} -o ${WORK}/export/${name}
                     RESULT_VARIABLE rc OUTPUT_QUIET ERROR_QUIET)
     if(rc EQUAL 0)
-      file(COPY ${scene} DESTINATION ${WORK}/subset)
+      file(COPY ${scene} DESTINATION ${WORK}/scenes/subset)
       math(EXPR picked "${picked} + 1")
       math(EXPR next "${next} + ${STEP}")
     else()
@@ -34,7 +39,7 @@ message(STATUS "${picked} of ${n} scenes picked")
 if(picked LESS MIN)
   message(FATAL_ERROR "only ${picked} scenes picked, expected at least ${MIN}")
 endif()
-execute_process(COMMAND ${XVAL} validate ${WORK}/subset --tolerances ${TOLERANCES} -o ${WORK}/validate
+execute_process(COMMAND ${XVAL} validate ${WORK}/scenes/subset --tolerances ${TOLERANCES} -o ${WORK}/validate
                 RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "xval validate of the ${picked} sampled scenes: exit ${rc} (see ${WORK}/validate/report.html)")
