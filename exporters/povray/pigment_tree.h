@@ -7,6 +7,9 @@
 //          interpolates linearly between adjacent entries (pigment_map)
 //   Sum:   sum of children (POV-Ray's `average` pigment_map, each child
 //          scaled by the number of children)
+// A Map over a Grey pattern (pigment_pattern) has a tree of its own inside
+// the pattern: it is not a leaf of the map, and mapLeaves / scaled leave it
+// as it is (the pattern value must not change when the map is scaled).
 // toSdl() writes the tree as one POV-Ray pigment. The texture colour C is
 // read through `XvalTexture(x, y, z)` (a function of an image_map) inside a
 // uv_mapping pigment at the leaves only, so position patterns above them

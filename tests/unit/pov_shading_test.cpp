@@ -314,6 +314,20 @@ TEST(PovShading, EvaluatesToTheReferenceShaderForEveryModelAndLight) {
             << " samples, largest relative error " << worst << "\n";
 }
 
+// A grey pattern's inner tree is the pattern, not a leaf: scaling the map
+// scales its entries and leaves the pattern value alone.
+TEST(PovShading, ScalingAMapOverAGreyPatternKeepsItsPatternValue) {
+  const Pigment inner = sum({constant(dvec3(0.25)), constant(dvec3(0.125))});
+  const Pigment m = map(grey(inner), {{0.0, constant(dvec3(0.0))}, {1.0, constant(dvec3(1.0, 2.0, 4.0))}});
+  const Pigment s = scaled(m, 3.0);
+  Point q{dvec3(0.0), dvec3(0, 0, 1), dvec3(0, 0, 5), dvec3(0.5)};
+  ASSERT_EQ(s->pattern.kind, Pattern::Kind::Grey);
+  EXPECT_EQ(patternValue(s->pattern, q), patternValue(m->pattern, q));
+  EXPECT_NEAR(patternValue(m->pattern, q), 0.375 * (kGreyRed + kGreyGreen + kGreyBlue), 1e-15);
+  const dvec3 a = evaluate(m, q), b = evaluate(s, q);
+  for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(b[ch], 3.0 * a[ch], 1e-12) << ch;
+}
+
 // POV-Ray's `interpolate 2` lookup at uv (v bottom-up) of a W x H image
 // whose channel c of texel (x, y) (rows top-down) is texel(x, y, c).
 template <class F> dvec3 bilinearAt(int w, int h, glm::dvec2 uv, F texel) {
