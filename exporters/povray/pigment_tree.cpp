@@ -27,7 +27,15 @@ Pattern cone(glm::dvec3 point, glm::dvec3 axis, double cos_cutoff) {
   return p;
 }
 
+Pattern grey(std::shared_ptr<const PigmentNode> inner) {
+  Pattern p;
+  p.kind = Pattern::Kind::Grey, p.inner = std::move(inner);
+  return p;
+}
+
 namespace {
+
+std::string bodySdl(const Pigment& p, int ind);
 
 std::string distanceExpr(glm::dvec3 p) {
   return "sqrt((x - " + num(p.x) + ")*(x - " + num(p.x) + ") + (y - " + num(p.y) + ")*(y - " +
@@ -52,6 +60,7 @@ std::string patternSdl(const Pattern& p) {
              ") * " + num(a.y) + " + (z - " + num(x.z) + ") * " + num(a.z) + " - " +
              num(p.cos_cutoff) + " * " + distanceExpr(x) + ", 0, 1, 1) }";
     }
+    case Pattern::Kind::Grey: return "pigment_pattern {\n" + bodySdl(p.inner, 1) + "\n}";
   }
   return "";
 }
@@ -128,20 +137,24 @@ std::string pad(int n) { return std::string(size_t(n) * 2, ' '); }
 
 // out = sum_ch C.ch m[ch] + b: an average of n parts, each carrying n
 // times its term, so that the average is the sum.
-std::string leafSdl(const PigmentNode& l, int ind) {
+// With `filter`, every colour is rgbf with filter 1 (the average keeps it 1).
+std::string leafSdl(const PigmentNode& l, int ind, bool filter = false) {
   static const char* channel[3] = {"red", "green", "blue"};
+  auto colour = [filter](glm::dvec3 c) {
+    return filter ? "rgbf <" + num(c.x) + ", " + num(c.y) + ", " + num(c.z) + ", 1>" : "rgb " + vec(c);
+  };
   int n = l.b != glm::dvec3(0.0) ? 1 : 0;
   for (int ch = 0; ch < 3; ++ch) n += l.m[ch] != glm::dvec3(0.0) ? 1 : 0;
-  if (n == 0 || (n == 1 && l.b != glm::dvec3(0.0))) return pad(ind) + "rgb " + vec(l.b);
+  if (n == 0 || (n == 1 && l.b != glm::dvec3(0.0))) return pad(ind) + colour(l.b);
   std::vector<std::string> parts;
   for (int ch = 0; ch < 3; ++ch) {
     glm::dvec3 col = l.m[ch];
     if (col == glm::dvec3(0.0)) continue;
     // C.ch in [0,1] is the pattern value; the colour_map scales it.
     parts.push_back("uv_mapping function { XvalTexture(x, y, z)." + std::string(channel[ch]) +
-                    " } colour_map { [0 rgb 0] [1 rgb " + vec(col * double(n)) + "] }");
+                    " } colour_map { [0 " + colour(glm::dvec3(0.0)) + "] [1 " + colour(col * double(n)) + "] }");
   }
-  if (l.b != glm::dvec3(0.0)) parts.push_back("rgb " + vec(l.b * double(n)));
+  if (l.b != glm::dvec3(0.0)) parts.push_back(colour(l.b * double(n)));
   if (n == 1) return pad(ind) + parts[0];
   std::string s = pad(ind) + "average pigment_map {\n";
   for (const auto& part : parts) s += pad(ind + 1) + "[1 " + part + "]\n";
@@ -173,6 +186,10 @@ std::string bodySdl(const Pigment& p, int ind) {
 
 std::string toSdl(const Pigment& p, int ind) {
   return pad(ind) + "pigment {\n" + bodySdl(p, ind + 1) + "\n" + pad(ind) + "}";
+}
+
+std::string filterLayerSdl(const PigmentNode& leaf, int ind) {
+  return pad(ind) + "pigment {\n" + leafSdl(leaf, ind + 1, true) + "\n" + pad(ind) + "}";
 }
 
 }  // namespace xval::pov

@@ -7,6 +7,9 @@
 //          interpolates linearly between adjacent entries (pigment_map)
 //   Sum:   sum of children (POV-Ray's `average` pigment_map, each child
 //          scaled by the number of children)
+// A Map over a Grey pattern (pigment_pattern) has a tree of its own inside
+// the pattern: it is not a leaf of the map, and mapLeaves / scaled leave it
+// as it is (the pattern value must not change when the map is scaled).
 // toSdl() writes the tree as one POV-Ray pigment. The texture colour C is
 // read through `XvalTexture(x, y, z)` (a function of an image_map) inside a
 // uv_mapping pigment at the leaves only, so position patterns above them
@@ -29,14 +32,23 @@ namespace xval::pov {
 //   Attenuation  function c / (c + l d + q d^2), d = |x - P|, in (0, 1]
 //   Cone         function select(dot(x - P, axis) - cos_cutoff d, 0, 1, 1):
 //                1 where dot(x - P, axis) >= cos_cutoff d, else 0
+//   Grey         `pigment_pattern { P }`: the grey value 0.297 r + 0.589 g +
+//                0.114 b of the pigment tree P evaluated at the hit (with its
+//                normal, so slope patterns inside P work), wrapped into
+//                [0, 1) like a function's value (measured: 1.5 -> 0.5). The
+//                trees built here keep it grey (r = g = b) and in [0, 1).
+struct PigmentNode;
 struct Pattern {
-  enum class Kind { Slope, Attenuation, Cone };
+  enum class Kind { Slope, Attenuation, Cone, Grey };
   Kind kind = Kind::Slope;
   bool point_at = true;  // Slope: towards `point` (else along `direction`)
   glm::dvec3 point{0.0}, direction{0.0};  // the light's position; axis or D
   double c = 1, l = 0, q = 0;  // Attenuation
   double cos_cutoff = -1;      // Cone
+  std::shared_ptr<const PigmentNode> inner;  // Grey
 };
+// POV-Ray's grey value of a colour (the weights of `pigment_pattern`).
+inline constexpr double kGreyRed = 0.297, kGreyGreen = 0.589, kGreyBlue = 0.114;
 // The wave modifier that makes POV-Ray's slope value 0.5 + asin(N.L)/pi
 // exactly (1 + N.L)/2: `sine_wave frequency kSlopeFrequency phase kSlopePhase`.
 inline constexpr double kSlopeFrequency = -0.5, kSlopePhase = 0.75;
@@ -44,9 +56,10 @@ Pattern slopeTowards(glm::dvec3 point);
 Pattern slopeAlong(glm::dvec3 direction);
 Pattern attenuation(glm::dvec3 point, double c, double l, double q);
 Pattern cone(glm::dvec3 point, glm::dvec3 axis, double cos_cutoff);
+// The grey value of `inner` (a tree whose leaves are grey constants).
+Pattern grey(std::shared_ptr<const PigmentNode> inner);
 std::string patternSdl(const Pattern& p);
 
-struct PigmentNode;
 using Pigment = std::shared_ptr<const PigmentNode>;
 
 struct PigmentNode {
@@ -74,5 +87,10 @@ Pigment mapLeaves(const Pigment& p, const std::function<Pigment(const PigmentNod
 
 bool usesTexture(const Pigment& p);
 std::string toSdl(const Pigment& p, int indent = 0);
+// A leaf m C (b = 0) as a pigment with filter 1 everywhere: a layer of a
+// layered texture whose layers below show through multiplied by m C per
+// channel (POV-Ray multiplies them by filter x colour + transmit; measured
+// exact, highlights included). Used for the texture colour C (m = I).
+std::string filterLayerSdl(const PigmentNode& leaf, int indent = 0);
 
 }  // namespace xval::pov

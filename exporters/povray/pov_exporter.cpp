@@ -116,14 +116,22 @@ PovExport exportPov(const Scene& scene, const std::filesystem::path& dir, const 
     sp = shading.specular;
     for (const auto& ls : sp.light_sources) o << lightSourceSdl(ls) << "\n";
     o << "#declare XvalEmission =\n" << toSdl(shading.emission, 1) << "\n";
+    // The texture colour as a filter layer on top (pov_shading.h), if any.
+    std::string top;
+    if (shading.texture_filter_layer) {
+      o << "#declare XvalFilter = texture {\n" << filterLayerSdl(*affine(glm::dmat3(1.0), dvec3(0.0)), 1)
+        << "\n  finish { ambient 0 diffuse 0 emission 0 }\n}\n";
+      top = " texture { XvalFilter }";
+    }
     if (sp.att_texture_map) {
-      o << "#declare XvalMaterial = texture { " << patternSdl(*sp.att_texture_map)
-        << "\n  texture_map {\n"
-        << "    [0 pigment { XvalEmission } " << finish(0, 0) << "]\n"
-        << "    [1 pigment { XvalEmission } " << finish(sp.ks, sp.shininess) << "]\n  }\n}\n";
+      // texture_map entries cannot be layered in place: declared layers.
+      o << "#declare XvalLayer0 = texture { pigment { XvalEmission } " << finish(0, 0) << " }" << top
+        << "\n#declare XvalLayer1 = texture { pigment { XvalEmission } " << finish(sp.ks, sp.shininess)
+        << " }" << top << "\n#declare XvalMaterial = texture { " << patternSdl(*sp.att_texture_map)
+        << "\n  texture_map { [0 XvalLayer0] [1 XvalLayer1] }\n}\n";
     } else {
       o << "#declare XvalMaterial = texture { pigment { XvalEmission } "
-        << finish(sp.ks, sp.shininess) << " }\n";
+        << finish(sp.ks, sp.shininess) << " }" << top << "\n";
     }
   }
   for (size_t k = 0; k < meshes.size(); ++k) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <optional>
 
 #include "common/export_common.h"
 #include "povray/sdl.h"
@@ -16,7 +17,8 @@ using glm::dvec3;
 std::string lightSourceSdl(const LightSource& l) {
   std::string s = "light_source { " + vec(l.location) + " rgb " + vec(l.colour);
   if (l.parallel) s += " parallel point_at <0, 0, 0>";
-  if (l.fade_distance > 0) s += " fade_distance " + num(l.fade_distance) + " fade_power 2";
+  if (l.fade_distance > 0)
+    s += " fade_distance " + num(l.fade_distance) + " fade_power " + std::to_string(l.fade_power);
   if (l.spotlight)
     s += " spotlight point_at " + vec(l.point_at) + " radius " + num(l.cone_deg) + " falloff " +
          num(l.cone_deg) + " tightness 0";
@@ -104,7 +106,8 @@ dvec3 ambientSum(const Scene& s) {
 
 // Emission for classic Phong's ambient + diffuse and the Forsyth family:
 // C (x) K with K = A' + sum_l [lit] att Lc (x) g(N.L) (+ course's per-light ka).
-Pigment emissionLinear(const Scene& s, const std::vector<LightInfo>& lights) {
+// With `filter_layer` the surface colour is left to the filter layer (C = 1 here).
+Pigment emissionLinear(const Scene& s, const std::vector<LightInfo>& lights, bool filter_layer) {
   const LightingModel& model = s.material.model;
   dvec3 ambient = ambientSum(s);
   const auto* phong = std::get_if<ClassicPhong>(&model);
@@ -120,12 +123,39 @@ Pigment emissionLinear(const Scene& s, const std::vector<LightInfo>& lights) {
   }
   Pigment k = sum(std::move(terms));
   // Multiply by the surface colour C at the leaves.
-  const bool textured = s.material.texture.has_value();
-  const dvec3 base = s.material.base_color;
+  const bool textured = s.material.texture.has_value() && !filter_layer;
+  const dvec3 base = filter_layer ? dvec3(1.0) : s.material.base_color;
   return mapLeaves(k, [&](const PigmentNode& leaf) {
     return textured ? affine(glm::dmat3(leaf.b.x, 0, 0, 0, leaf.b.y, 0, 0, 0, leaf.b.z), dvec3(0.0))
                     : constant(base * leaf.b);
   });
+}
+
+// The YIQ emission where Dl = saturate(s), s = A_Y + kd sum_l [lit] att_l
+// Y(Lc_l) sat(N.L_l), can reach 1 with several or attenuated lights: s is
+// a sum of per-light terms, computed as a grey pigment scaled by 1/M
+// (M = 1.001 smax > smax = A_Y + kd sum_l Y(Lc_l)/c_l >= s, so the grey
+// value s/M stays in [0, 1), where pigment_pattern does not wrap), and a
+// pigment_map over that value with a knee at 1/M is leaf(Dl - 1):
+//   v = 0: leaf(-1),  v = 1/M: leaf(0) (Dl = M v reaches 1),  v = 1: leaf(0).
+template <class Leaf>
+Pigment emissionYiqSaturated(const Scene& s, const std::vector<LightInfo>& lights, double a,
+                             double wsum, const Leaf& leaf) {
+  const auto& m = std::get<YiqLuma>(s.material.model);
+  if (a < 0.0 || m.kd < 0.0)
+    throw ExportError("yiq_luma: a negative ambient luma or kd makes the sum under Dl's saturate "
+                      "negative, which POV-Ray's pigment_pattern would wrap");
+  for (const auto& l : lights)
+    if (models::lightLuma(l.colour) < 0.0)
+      throw ExportError("yiq_luma: a light of negative luma makes the sum under Dl's saturate "
+                        "negative, which POV-Ray's pigment_pattern would wrap");
+  const double big_m = 1.001 * (a + wsum);
+  std::vector<Pigment> terms{constant(dvec3(a / big_m))};
+  for (const auto& l : lights) {
+    const double wl = m.kd * models::lightLuma(l.colour) / big_m;
+    terms.push_back(perLight(l, slopeMap(*l.light, {{-1, dvec3(0)}, {0, dvec3(0)}, {1, dvec3(wl)}}), true));
+  }
+  return map(grey(sum(std::move(terms))), {{0.0, leaf(-1.0)}, {1.0 / big_m, leaf(0.0)}, {1.0, leaf(0.0)}});
 }
 
 // Emission for the YIQ model without its specular term:
@@ -162,12 +192,7 @@ Pigment emissionYiq(const Scene& s, const std::vector<LightInfo>& lights) {
     }
     return sum(std::move(terms));
   }
-  if (lights.size() != 1 || lights[0].has_att)
-    throw ExportError(
-        "yiq_luma: Dl = saturate(A + kd sum_l att Y(Lc) saturate(N.L)) can reach 1 here (A + kd sum "
-        "Y(Lc)/c = " + num(a + wsum) + " > 1) and then is not a sum of per-light terms; POV-Ray can "
-        "compute it exactly in one render only for a single light without attenuation (or when "
-        "the sum cannot reach 1)");
+  if (lights.size() != 1 || lights[0].has_att) return emissionYiqSaturated(s, lights, a, wsum, leaf);
   const LightInfo& l = lights[0];
   const double wl = m.kd * models::lightLuma(l.colour);
   auto dl = [&](double x) { return std::min(1.0, a + wl * std::clamp(x, 0.0, 1.0)); };
@@ -182,19 +207,31 @@ Pigment emissionYiq(const Scene& s, const std::vector<LightInfo>& lights) {
   return map(conePattern(l), {{0.0, leaf(std::min(1.0, a) - 1.0)}, {1.0, lit}});
 }
 
-Specular specular(const Scene& s, const std::vector<LightInfo>& lights) {
+// Real roots 0 < r1 < r2 of c + l d + q d^2 = q (d + r1)(d + r2), when the
+// two differ by at least a quarter of r2 (else the two terms below cancel:
+// each is (d + r2)/(r2 - r1) times their difference, and POV-Ray sums them
+// in single precision).
+std::optional<std::pair<double, double>> realRoots(const Attenuation& a) {
+  const double disc = a.linear * a.linear - 4.0 * a.quadratic * a.constant;
+  if (!(disc > 0.0) || a.quadratic <= 0.0) return std::nullopt;
+  const double root = std::sqrt(disc);
+  const double r1 = (a.linear - root) / (2.0 * a.quadratic), r2 = (a.linear + root) / (2.0 * a.quadratic);
+  if (!(r1 > 0.0) || r2 - r1 < 0.25 * r2) return std::nullopt;
+  return std::pair{r1, r2};
+}
+
+Specular specular(const Scene& s, const std::vector<LightInfo>& lights, bool filter_layer) {
   Specular sp;
   const LightingModel& model = s.material.model;
   std::function<dvec3(const LightInfo&)> colour;
   if (auto* m = std::get_if<ClassicPhong>(&model)) {
     sp.ks = m->ks, sp.shininess = m->shininess;
     if (m->variant == ClassicPhong::Variant::Course) {
-      if (s.material.texture && m->ks != 0.0)
-        throw ExportError(
-            "classic_phong variant course with a texture and ks > 0: its highlight is the texture "
-            "colour times POV-Ray's phong term, a per-channel product POV-Ray cannot form in one "
-            "render (its `metallic` tint adds a Fresnel factor)");
-      colour = [&s](const LightInfo& l) { return l.colour * s.material.base_color; };
+      // C (x) Lc ks S: the base colour in the light colour, or the texture
+      // colour from the filter layer above.
+      colour = [&s, filter_layer](const LightInfo& l) {
+        return filter_layer ? l.colour : l.colour * s.material.base_color;
+      };
     } else {
       colour = [](const LightInfo& l) { return l.colour; };
     }
@@ -203,13 +240,18 @@ Specular specular(const Scene& s, const std::vector<LightInfo>& lights) {
     colour = [](const LightInfo& l) { return dvec3(models::lightLuma(l.colour)); };
   }
   if (sp.ks == 0.0) return sp;
+  // 1/(c + l d + q d^2) with l > 0 and q > 0 and no real roots apart: only
+  // a texture_map over its position function, which scales every highlight.
   int general = 0;
-  for (const auto& l : lights) general += l.has_att && l.att.linear != 0.0;
+  for (const auto& l : lights)
+    general += l.has_att && l.att.linear != 0.0 && l.att.quadratic != 0.0 && !realRoots(l.att);
   if (general > 0 && lights.size() > 1)
     throw ExportError(
-        "attenuation with a linear term on a light with a specular highlight, among several "
-        "lights: POV-Ray's fade can only express 1/(c + q d^2), and the texture_map that applies "
-        "a general attenuation to the highlight would scale every light's highlight");
+        "attenuation 1/(c + l d + q d^2) with l > 0, q > 0 and l^2 < 4 q c (or nearly equal roots) on "
+        "a light with a specular highlight, among several lights: POV-Ray's per-light fade "
+        "2/(1 + (d/fd)^p) has its poles on the imaginary axis (p = 2) or on the negative real "
+        "axis (p = 1), so no sum of fades has these complex poles, and the texture_map that "
+        "applies a general attenuation to a highlight would scale every light's highlight");
   for (const auto& l : lights) {
     LightSource src;
     src.colour = colour(l);
@@ -218,28 +260,47 @@ Specular specular(const Scene& s, const std::vector<LightInfo>& lights) {
       src.parallel = true;
     } else {
       src.location = l.position;
-      if (l.has_att) {
-        src.colour /= l.att.constant;
-        if (l.att.linear != 0.0) {
-          sp.att_texture_map = attPattern(l);
-        } else if (l.att.quadratic != 0.0) {
-          // 2/(1 + (d/fd)^2) with fd = sqrt(c/q) is 2c/(c + q d^2).
-          src.colour /= 2.0;
-          src.fade_distance = std::sqrt(l.att.constant / l.att.quadratic);
-        }
-      }
       if (l.spot) {
         src.spotlight = true;
         src.point_at = l.position + l.axis;
         src.cone_deg = l.cutoff_deg;
+      }
+      if (l.has_att) {
+        const double c = l.att.constant, lin = l.att.linear, q = l.att.quadratic;
+        if (lin != 0.0 && q != 0.0) {
+          if (lights.size() == 1) {
+            src.colour /= c;
+            sp.att_texture_map = attPattern(l);
+          } else {
+            // 1/(q (d + r1)(d + r2)) = (1/(d + r1) - 1/(d + r2)) / (q (r2 - r1)),
+            // 1/(d + r) = (2/(1 + d/r)) / (2 r): two lights of fade_power 1,
+            // the second of negative colour.
+            const auto [r1, r2] = *realRoots(l.att);
+            const double k = 1.0 / (q * (r2 - r1));
+            LightSource far = src;
+            src.colour *= k / (2.0 * r1), src.fade_distance = r1, src.fade_power = 1;
+            far.colour *= -k / (2.0 * r2), far.fade_distance = r2, far.fade_power = 1;
+            sp.light_sources.push_back(src);
+            sp.light_sources.push_back(far);
+            continue;
+          }
+        } else if (lin != 0.0) {
+          // 2/(1 + d/fd) with fd = c/l is 2c/(c + l d).
+          src.colour /= 2.0 * c;
+          src.fade_distance = c / lin, src.fade_power = 1;
+        } else if (q != 0.0) {
+          // 2/(1 + (d/fd)^2) with fd = sqrt(c/q) is 2c/(c + q d^2).
+          src.colour /= 2.0 * c;
+          src.fade_distance = std::sqrt(c / q), src.fade_power = 2;
+        } else {
+          src.colour /= c;
+        }
       }
     }
     sp.light_sources.push_back(src);
   }
   return sp;
 }
-
-
 
 }  // namespace
 
@@ -248,9 +309,15 @@ PovShading povShading(const Scene& scene) {
   for (const auto& l : scene.lights)
     if (!std::holds_alternative<AmbientLight>(l)) lights.push_back(info(l));
   PovShading p;
-  p.emission = std::holds_alternative<YiqLuma>(scene.material.model) ? emissionYiq(scene, lights)
-                                                                     : emissionLinear(scene, lights);
-  p.specular = specular(scene, lights);
+  // Classic Phong's course variant multiplies its highlight by C too: with a
+  // texture and ks > 0 that per-channel product is the filter layer's.
+  const auto* phong = std::get_if<ClassicPhong>(&scene.material.model);
+  p.texture_filter_layer = phong && phong->variant == ClassicPhong::Variant::Course &&
+                           phong->ks != 0.0 && scene.material.texture.has_value();
+  p.emission = std::holds_alternative<YiqLuma>(scene.material.model)
+                   ? emissionYiq(scene, lights)
+                   : emissionLinear(scene, lights, p.texture_filter_layer);
+  p.specular = specular(scene, lights, p.texture_filter_layer);
   return p;
 }
 

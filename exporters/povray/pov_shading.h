@@ -18,12 +18,13 @@
 namespace xval::pov {
 
 // light_source { location rgb colour [parallel point_at <0,0,0>]
-//   [fade_distance fd fade_power 2]
+//   [fade_distance fd fade_power p]
 //   [spotlight point_at p radius r falloff r tightness 0] }
 struct LightSource {
   glm::dvec3 location{0.0}, colour{0.0};
   bool parallel = false;     // L = normalize(location - <0,0,0>) everywhere
-  double fade_distance = 0;  // > 0: att = 2 / (1 + (d / fade_distance)^2)
+  double fade_distance = 0;  // > 0: att = 2 / (1 + (d / fade_distance)^fade_power)
+  int fade_power = 2;        // 2 or 1
   bool spotlight = false;    // a hard cone: radius = falloff, tightness 0
   glm::dvec3 point_at{0.0};
   double cone_deg = 0;       // radius = falloff
@@ -44,6 +45,11 @@ struct Specular {
 struct PovShading {
   Pigment emission;  // finish { ambient 0 diffuse 0 emission 1 }
   Specular specular;
+  // When set, the material is a layered texture: the emission and phong
+  // layer under a layer of filter 1 whose colour is the texture colour C
+  // (filterLayerSdl), so the whole result, highlight included, is C (x)
+  // (emission + phong). Emission and light colours are then those of C = 1.
+  bool texture_filter_layer = false;
 };
 
 // Throws ExportError for what POV-Ray cannot compute exactly in one render.
