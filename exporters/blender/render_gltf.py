@@ -46,6 +46,9 @@ Mesa's surfaceless EGL, no X server). What makes its output exact:
     and, with default preferences, filters anisotropically; Mesa's
     llvmpipe filters 8-bit textures in 8-bit fixed point); anisotropic
     filtering is turned off in the preferences all the same;
+  - a 16-bit texture uploaded as float32, not half float (the image's
+    use_half_precision off: half's 11-bit mantissa moves a 16-bit code by
+    up to ~31/65535);
   - bloom, ambient occlusion, screen-space reflections, soft shadows and
     motion blur off; 64-pixel shadow maps and light probes (speed only: the
     emission has no shadows and no probes);
@@ -594,6 +597,8 @@ def main():
         image = bpy.data.images.load(os.path.join(folder, "texture.png"), check_existing=True)
         image.colorspace_settings.name = "Non-Color"
         image.alpha_mode = "NONE"
+        if args.engine == "eevee":
+            image.use_half_precision = False  # a 16-bit texture as float32 on the GPU, not half
 
     for o in meshes:
         me = o.data

@@ -29,9 +29,11 @@ EGLDisplay surfacelessDisplay() {
   if (!failure.empty()) throw GlUnavailable(failure);
   const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
   if (!client || !std::strstr(client, "EGL_MESA_platform_surfaceless")) {
-    failure = std::string("EGL: no surfaceless platform (EGL_MESA_platform_surfaceless) among the client "
-                          "extensions: ") +
-              (client ? client : eglError("eglQueryString(EGL_EXTENSIONS)"));
+    const std::string listed = !client ? eglError("eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS)")
+                               : *client ? std::string(client)
+                                         : std::string("none: no EGL vendor library was loaded");
+    failure = "EGL: no surfaceless platform (EGL_MESA_platform_surfaceless) among the client extensions (" +
+              listed + ")";
     throw GlUnavailable(failure);
   }
   auto get_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));

@@ -12,10 +12,13 @@
 // Parameters (RenderRequest): none are used (no outside tool, no work
 // folder, no time-out; a frame takes milliseconds). Version: xval's (the
 // device, GL_RENDERER and GL_VERSION, is printed by `xval bench`).
+// prepare_frames: the scene uploaded once (GlScene); a frame is clear,
+// draw, glFinish at n W x n H (render.spp = n^2), nothing read back.
 // Unavailable, with EGL's reason, when no OpenGL 4.5 core context can be
 // made (no EGL vendor library, no surfaceless platform, no 4.5 core
 // driver): then every gl render fails with that reason, never a pass.
 #include <chrono>
+#include <memory>
 
 #include "gl/egl_context.h"
 #include "gl/gl_frame.h"
@@ -40,6 +43,15 @@ Renderer glRenderer() {
     }
     if (info) info->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return image;
+  };
+  r.prepare_frames = [](const Scene& scene) {
+    std::shared_ptr<gl::GlScene> prepared;
+    try {
+      prepared = std::make_shared<gl::GlScene>(scene);
+    } catch (const gl::GlUnavailable& e) {
+      throw ExternalToolError(std::string("gl: unavailable: ") + e.what());
+    }
+    return FrameLoop{[prepared] { prepared->draw(); }, prepared->device(), prepared->setupSeconds()};
   };
   return r;
 }
