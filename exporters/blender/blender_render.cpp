@@ -76,7 +76,10 @@ void checkBlenderScene(const Scene& scene) {
 }
 
 Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_dir,
-                        double timeout_seconds, ExternalRenderInfo* info, BlenderMode mode) {
+                        double timeout_seconds, ExternalRenderInfo* info, BlenderMode mode,
+                        BlenderEngine engine) {
+  if (engine == BlenderEngine::Eevee && mode != BlenderMode::Model)
+    throw std::invalid_argument("renderWithBlender: EEVEE renders the model mode only");
   // Checked before anything is written.
   const SubpixelGrid g = subpixelGrid(scene);
   const std::filesystem::path script = blenderScript();
@@ -93,23 +96,25 @@ Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_di
   GltfExport ex = exportGltf(scene, work_dir);
   // The image's name is this attempt's own: a Blender left from an earlier
   // attempt cannot supply it.
-  const std::filesystem::path out = abs_work / ("blender-" + attemptToken() + ".exr");
-  const std::filesystem::path log = work_dir / "blender.log";
+  const std::string tool = engine == BlenderEngine::Eevee ? "eevee" : "blender";
+  const std::filesystem::path out = abs_work / (tool + "-" + attemptToken() + ".exr");
+  const std::filesystem::path log = work_dir / (tool + ".log");
   ProcessResult r = runProcess(
       {"blender", "-b", "--factory-startup", "-noaudio", "-P", std::filesystem::absolute(script).string(),
        "--", "--gltf", std::filesystem::absolute(ex.gltf).string(), "--out", out.string(),
-       "--mode", mode == BlenderMode::Model ? "model" : "native-lambert"},
+       "--mode", mode == BlenderMode::Model ? "model" : "native-lambert",
+       "--engine", engine == BlenderEngine::Eevee ? "eevee" : "cycles"},
       work_dir, log, timeout_seconds);
   if (info) *info = {r.seconds, log, renderTimeFromLog(log)};
-  requireToolOutput("blender", ex.gltf, r, out);
+  requireToolOutput(tool, ex.gltf, r, out);
   Image fine;
   try {
     fine = mode == BlenderMode::Model ? readImage(out, g.width, g.height) : readDiffDir(out, g.width, g.height);
   } catch (const std::exception& e) {
-    throw ExternalToolError(std::string("blender wrote an unusable image: ") + e.what());
+    throw ExternalToolError(tool + " wrote an unusable image: " + e.what());
   }
-  requireImageSize("blender", fine, g.width, g.height);
-  requireFinite("blender", fine);
+  requireImageSize(tool, fine, g.width, g.height);
+  requireFinite(tool, fine);
   // The EXR holds each sample unsaturated: keep it as raw for the box
   // filter's unsaturated mean.
   fine.raw.resize(size_t(fine.width) * fine.height * 3);

@@ -1,4 +1,5 @@
-// Rendering a scene with Blender 3.4: export glTF, run
+// Rendering a scene with Blender 3.4 (Cycles, or EEVEE: the same node
+// tree through Blender's real-time rasteriser): export glTF, run
 //   blender -b --factory-startup -P exporters/blender/render_gltf.py -- ...
 // with a time-out, and read its float EXR back as an Image. At render.spp =
 // n^2 Blender renders n W x n H pixels, one sample through each centre,
@@ -21,6 +22,11 @@ enum class BlenderMode {
   NativeLambert,  // Blender's own Diffuse BSDF, diffuse-direct pass
 };
 
+enum class BlenderEngine {
+  Cycles,  // the path tracer, one sample per pixel centre
+  Eevee,   // the rasteriser, headless on surfaceless EGL (Model mode only)
+};
+
 // The render_gltf.py script: $XVAL_BLENDER_SCRIPT, else the copy beside the
 // xval executable's source tree (compiled in), which must exist.
 std::filesystem::path blenderScript();
@@ -31,6 +37,7 @@ void checkBlenderScene(const Scene& scene);
 
 Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_dir,
                         double timeout_seconds, ExternalRenderInfo* info = nullptr,
-                        BlenderMode mode = BlenderMode::Model);
+                        BlenderMode mode = BlenderMode::Model,
+                        BlenderEngine engine = BlenderEngine::Cycles);
 
 }  // namespace xval

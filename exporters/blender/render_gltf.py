@@ -1,8 +1,9 @@
-"""Render an xval glTF export in Blender 3.4 (Cycles) with the scene's
+"""Render an xval glTF export in Blender 3.4 (Cycles, or EEVEE) with the scene's
 lighting model evaluated as shader-node math.
 
     blender -b --factory-startup -P render_gltf.py -- \
         --gltf DIR/scene.gltf --out OUT.exr [--mode model|native-lambert]
+        [--engine cycles|eevee]
 
 mode model (default): every mesh gets an Emission shader (strength 1) whose
 colour is the model of docs/models.md built from Math / Vector Math nodes
@@ -32,6 +33,28 @@ centre: 1 sample, no adaptive sampling, no denoising, 0 bounces, Box filter
 of width 0.01, transparent film (alpha = hit mask), no clamping, Standard
 view transform, no dither; output 32-bit float OpenEXR, unsaturated.
 
+engine eevee (model mode only): the same node tree rendered by EEVEE,
+Blender's real-time rasteriser (headless: Blender falls back by itself to
+Mesa's surfaceless EGL, no X server). What makes its output exact:
+  - one sample per pixel (taa_render_samples = 1, filter size 0): EEVEE's
+    one sample lies exactly on the pixel centre, so no camera shift;
+  - the camera's clip range fitted to the meshes' bounds (the glTF export's
+    4.2e-6 .. 4.2e9 leaves EEVEE's 24-bit depth buffer unable to resolve
+    the scene: most pixels then show the wrong surface);
+  - a Linear texture lookup rebuilt from four Closest lookups at the texel
+    centres and the reference's bilinear weights (EEVEE's Linear mip-maps
+    and, with default preferences, filters anisotropically; Mesa's
+    llvmpipe filters 8-bit textures in 8-bit fixed point); anisotropic
+    filtering is turned off in the preferences all the same;
+  - a 16-bit texture uploaded as float32, not half float (the image's
+    use_half_precision off: half's 11-bit mantissa moves a 16-bit code by
+    up to ~31/65535);
+  - bloom, ambient occlusion, screen-space reflections, soft shadows and
+    motion blur off; 64-pixel shadow maps and light probes (speed only: the
+    emission has no shadows and no probes);
+  - nothing asks the GPU module anything before the first render (in -b
+    mode Blender 3.4 crashes when gpu.platform is queried that early).
+
 mode native-lambert: Blender's own Lambert, for checking geometry, camera
 and light conversion against Blender's shading: a white Diffuse BSDF lit by
 the imported point light (radius 0), direct light only; writes the
@@ -50,6 +73,10 @@ import os
 import sys
 
 import bpy  # noqa: E402  (in the unit test: a numeric stand-in, tests/unit/blender_graph)
+try:
+    import mathutils  # Blender's; absent from the unit test's stand-in (only eevee uses it)
+except ImportError:
+    mathutils = None
 
 
 def fail(msg):
@@ -63,7 +90,11 @@ def parse_args():
     p.add_argument("--gltf", required=True)
     p.add_argument("--out", required=True)
     p.add_argument("--mode", choices=["model", "native-lambert"], default="model")
-    return p.parse_args(argv)
+    p.add_argument("--engine", choices=["cycles", "eevee"], default="cycles")
+    args = p.parse_args(argv)
+    if args.engine == "eevee" and args.mode != "model":
+        fail("--engine eevee renders only --mode model")
+    return args
 
 
 # ---------------------------------------------------------------- glTF data
@@ -313,9 +344,52 @@ def model_colour(g, k, P, N, V, C):
     return g.vmul(C, acc)
 
 
-def build_model_material(nt, k, image):
+def closest_lookup(nt, image, uv):
+    """The texel under uv (a vector socket): Image Texture, Closest, Repeat."""
+    it = nt.nodes.new("ShaderNodeTexImage")
+    it.image = image
+    it.interpolation = "Closest"
+    it.extension = "REPEAT"
+    nt.links.new(uv, it.inputs["Vector"])
+    return it.outputs["Color"]
+
+
+def texel_bilinear(g, nt, image, uv):
+    """The bilinear lookup of texture.h, from four Closest lookups (EEVEE's
+    Linear mip-maps). In Blender's uv (v up, row 0 at the bottom; the glTF
+    importer flips v), per axis: x = frac(u) W - 0.5, x0 = floor(x),
+    w = x - x0; the texels x0 and x0 + 1 are looked up at their centres
+    (x0 + 0.5) / W and (x0 + 1.5) / W, Repeat wrapping -1 and W; then
+    lerp(lerp(c00, c10, wx), lerp(c01, c11, wx), wy). Flipping v mirrors the
+    rows and their weights together: the same four texels and weights."""
+    w, h = image.size[0], image.size[1]
+    sep = nt.nodes.new("ShaderNodeSeparateXYZ")
+    nt.links.new(uv, sep.inputs[0])
+
+    def axis(coord, size):
+        x = g.math("SUBTRACT", g.mul(g.math("FRACT", coord), float(size)), 0.5)
+        x0 = g.math("FLOOR", x)
+        wt = g.math("SUBTRACT", x, x0)
+        c0 = g.math("DIVIDE", g.add(x0, 0.5), float(size))
+        c1 = g.math("DIVIDE", g.add(x0, 1.5), float(size))
+        return wt, c0, c1
+
+    wx, x0, x1 = axis(sep.outputs[0], w)
+    wy, y0, y1 = axis(sep.outputs[1], h)
+    c = {(i, j): closest_lookup(nt, image, g.vec(xc, yc, 0.0))
+         for i, xc in enumerate((x0, x1)) for j, yc in enumerate((y0, y1))}
+
+    def lerp(a, b, t):
+        return g.vadd(g.scale(a, g.math("SUBTRACT", 1.0, t)), g.scale(b, t))
+
+    return lerp(lerp(c[0, 0], c[1, 0], wx), lerp(c[0, 1], c[1, 1], wx), wy)
+
+
+def build_model_material(nt, k, image, bilinear_from_closest=False):
     """Fills the node tree nt with the model's Emission shader (strength 1)
-    from the constants k; image: the texture (or None: the base colour)."""
+    from the constants k; image: the texture (or None: the base colour).
+    bilinear_from_closest: a bilinear lookup as texel_bilinear (EEVEE)
+    instead of the Image Texture node's Linear."""
     nt.nodes.clear()
     g = Nodes(nt)
     if k["shading"] == "gouraud":
@@ -332,7 +406,10 @@ def build_model_material(nt, k, image):
         a.attribute_type = "GEOMETRY"
         a.attribute_name = "xval_face_normal" if k["shading"] == "flat" else "xval_normal"
         N = g.vmath("NORMALIZE", a.outputs["Vector"])
-        if image is not None:
+        if image is not None and bilinear_from_closest and k["texture_filter"] != "nearest":
+            uv = nt.nodes.new("ShaderNodeTexCoord")
+            C = texel_bilinear(g, nt, image, uv.outputs["UV"])
+        elif image is not None:
             uv = nt.nodes.new("ShaderNodeTexCoord")
             it = nt.nodes.new("ShaderNodeTexImage")
             it.image = image
@@ -368,23 +445,10 @@ def centre_samples(camera, width, height):
     camera.data.shift_y = -SAMPLE_OFFSET_PX / max(width, height)
 
 
-def setup_render(scene, width, height, out, multilayer):
+def setup_output(scene, width, height, out, multilayer):
+    """What both engines share: resolution, transparent film (alpha = hit
+    mask), Standard view transform, no dither, 32-bit float EXR."""
     r = scene.render
-    r.engine = "CYCLES"
-    c = scene.cycles
-    c.device = "CPU"
-    c.samples = 1
-    c.use_adaptive_sampling = False
-    c.use_denoising = False
-    c.max_bounces = 0
-    c.diffuse_bounces = c.glossy_bounces = c.transmission_bounces = 0
-    c.volume_bounces = c.transparent_max_bounces = 0
-    c.pixel_filter_type = "BOX"
-    c.filter_width = 0.01
-    c.sample_clamp_direct = 0.0
-    c.sample_clamp_indirect = 0.0
-    c.seed = 0
-    c.light_sampling_threshold = 0.0  # no stochastic culling of weak lights
     r.film_transparent = True
     r.resolution_x, r.resolution_y = width, height
     r.resolution_percentage = 100
@@ -404,6 +468,70 @@ def setup_render(scene, width, height, out, multilayer):
     s.exr_codec = "ZIP"
     r.filepath = out
     r.use_file_extension = False
+
+
+def fit_clip_range(camera, meshes):
+    """The camera's clip range fitted to the meshes' world bounding boxes:
+    from the nearest to the farthest box corner along the view axis
+    (camera -z), widened by 1% each way; where a box reaches behind or onto
+    the camera the near plane is 1e-4 of the far one."""
+    bpy.context.view_layer.update()
+    inv = camera.matrix_world.inverted()
+    depths = []
+    for o in meshes:
+        for corner in o.bound_box:
+            p = inv @ (o.matrix_world @ mathutils.Vector(corner))
+            depths.append(-p.z)
+    if not depths:
+        return
+    far = max(depths) * 1.01
+    if not far > 0.0:
+        fail("every mesh lies behind the camera")
+    near = min(depths) * 0.99
+    camera.data.clip_start = near if near > far * 1e-4 else far * 1e-4
+    camera.data.clip_end = far
+
+
+def setup_eevee(scene):
+    """EEVEE: one sample on each pixel centre, no effect of its own; small
+    shadow and probe buffers (speed only)."""
+    scene.render.engine = "BLENDER_EEVEE"
+    scene.render.filter_size = 0.0
+    e = scene.eevee
+    e.taa_render_samples = 1
+    e.taa_samples = 1
+    e.use_bloom = False
+    e.use_gtao = False
+    e.use_ssr = False
+    e.use_motion_blur = False
+    e.use_soft_shadows = False
+    e.use_volumetric_lights = False
+    e.shadow_cube_size = "64"
+    e.shadow_cascade_size = "64"
+    e.gi_cubemap_resolution = "64"
+    e.gi_visibility_resolution = "8"
+    e.gi_diffuse_bounces = 0
+    bpy.context.preferences.system.anisotropic_filter = "FILTER_0"
+
+
+def setup_render(scene, width, height, out, multilayer):
+    setup_output(scene, width, height, out, multilayer)
+    r = scene.render
+    r.engine = "CYCLES"
+    c = scene.cycles
+    c.device = "CPU"
+    c.samples = 1
+    c.use_adaptive_sampling = False
+    c.use_denoising = False
+    c.max_bounces = 0
+    c.diffuse_bounces = c.glossy_bounces = c.transmission_bounces = 0
+    c.volume_bounces = c.transparent_max_bounces = 0
+    c.pixel_filter_type = "BOX"
+    c.filter_width = 0.01
+    c.sample_clamp_direct = 0.0
+    c.sample_clamp_indirect = 0.0
+    c.seed = 0
+    c.light_sampling_threshold = 0.0  # no stochastic culling of weak lights
 
 
 def main():
@@ -430,7 +558,8 @@ def main():
     width, height = int(size["width"]), int(size["height"])
     if width < 1 or height < 1:
         fail("xval_render resolution %dx%d" % (width, height))
-    centre_samples(cams[0], width, height)
+    if args.engine == "cycles":
+        centre_samples(cams[0], width, height)
 
     meshes = [o for o in scene.objects if o.type == "MESH"]
     if args.mode == "native-lambert":
@@ -468,6 +597,8 @@ def main():
         image = bpy.data.images.load(os.path.join(folder, "texture.png"), check_existing=True)
         image.colorspace_settings.name = "Non-Color"
         image.alpha_mode = "NONE"
+        if args.engine == "eevee":
+            image.use_half_precision = False  # a 16-bit texture as float32 on the GPU, not half
 
     for o in meshes:
         me = o.data
@@ -481,11 +612,16 @@ def main():
 
     mat = bpy.data.materials.new("xval_model")
     mat.use_nodes = True
-    build_model_material(mat.node_tree, k, image)
+    build_model_material(mat.node_tree, k, image, bilinear_from_closest=args.engine == "eevee")
     for o in meshes:
         o.data.materials.clear()
         o.data.materials.append(mat)
-    setup_render(scene, width, height, args.out, False)
+    if args.engine == "eevee":
+        fit_clip_range(cams[0], meshes)
+        setup_output(scene, width, height, args.out, False)
+        setup_eevee(scene)
+    else:
+        setup_render(scene, width, height, args.out, False)
     bpy.ops.render.render(write_still=True)
 
 

@@ -32,7 +32,7 @@ void addBenchCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--renderers", args->renderers,
                   "Comma-separated subset of " + renderers::joinNames(registry.ids()) + " (default: " +
                       args->renderers + ")");
-  cmd->add_option("--frames", args->frames, "Reference frames per precision after one warm-up (default 20)")
+  cmd->add_option("--frames", args->frames, "Reference frames per precision, and a real-time renderer's (gl) frames, after one warm-up (default 20)")
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--runs", args->runs, "Runs of each external renderer (default 3)")
       ->check(CLI::Range(1, 1000));

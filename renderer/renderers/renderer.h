@@ -4,8 +4,8 @@
 //
 // The renderers are listed in one place, the registry (renderers/registry.h);
 // each built-in renderer is one file beside it (reference.cpp, povray.cpp,
-// blender.cpp, blender_native.cpp) whose doc block says what it is and its
-// parameters and defaults.
+// blender.cpp, blender_native.cpp, eevee.cpp, gl.cpp) whose doc block says
+// what it is and its parameters and defaults.
 #pragma once
 
 #include <filesystem>
@@ -47,6 +47,16 @@ struct RenderInfo {
   RenderStats stats;             // the reference renderer's figures (default for the others)
 };
 
+// One scene prepared for drawing many frames (a real-time renderer's):
+// draw() renders one whole frame and waits for it; the scene stays
+// prepared while the FrameLoop lives. Call draw() and destroy the loop on
+// the thread that prepared it.
+struct FrameLoop {
+  std::function<void()> draw;
+  std::string device;          // what draws (for a GPU API: GL_RENDERER, GL_VERSION)
+  double setup_seconds = 0.0;  // the preparation, once (context, shaders, uploads)
+};
+
 struct Renderer {
   // How commands, file names and scene files name it: lower-case letters,
   // digits and '-' (it names files such as OUT/<scene>/<id>.exr).
@@ -83,6 +93,10 @@ struct Renderer {
   // writes garbage, std::runtime_error otherwise; never returns a partial
   // image. `info` may be null.
   std::function<Image(const Scene&, const RenderRequest&, RenderInfo* info)> render;
+  // A real-time renderer's frame loop for `xval bench` (frames per second
+  // of the frame alone, as the paper's Table 2). Optional (absent: bench
+  // times whole renders). Throws as render does.
+  std::function<FrameLoop(const Scene&)> prepare_frames;
 
   const std::string& sentenceSubject() const { return subject.empty() ? display_name : subject; }
   bool external() const { return !version_command.empty(); }

@@ -150,7 +150,7 @@ struct RenderSettings {
 };
 
 // A cross-renderer tolerance this scene declares for one external renderer
-// ("povray", "blender", "blender-native"), over the default of
+// ("povray", "blender", "eevee", "gl", ...: any renderer but the reference), over the default of
 // reference/tolerances.json. An entry exists to deviate, so it must say why.
 struct DeclaredTolerance {
   std::string renderer;

@@ -78,7 +78,22 @@ int runBench(const BenchRequest& request) {
     }
   }
   for (const renderers::Renderer& renderer : registry.all()) {
-    if (renderer.reference || !wants(renderer.id)) continue;
+    if (renderer.reference || !wants(renderer.id) || !renderer.prepare_frames) continue;
+    // A real-time renderer: frames of one prepared scene, as the reference's.
+    const std::string& r = renderer.id;
+    const renderers::FrameLoop loop = renderer.prepare_frames(scene);
+    const FrameTimes ft = timeFrames(loop.draw, FrameBudget{request.frames}, WarmUp::Render);
+    Spread s = spread(ft.wall_s), sc = spread(ft.cpu_s);
+    medians[r + "_frame"] = s.median;
+    std::printf("  %-18s frame %s   CPU time %s\n", r.c_str(), ms(s).c_str(), ms(sc).c_str());
+    std::printf("  %-18s %.1f frames per second (median frame), setup %.1f ms once, on %s\n", "",
+                s.median > 0 ? 1.0 / s.median : 0.0, loop.setup_seconds * 1e3, loop.device.c_str());
+    out[r] = {{"frame_median_s", s.median}, {"frame_min_s", s.min}, {"frame_max_s", s.max},
+              {"cpu_median_s", sc.median}, {"frames_per_second", s.median > 0 ? 1.0 / s.median : 0.0},
+              {"frames", s.n}, {"setup_s", loop.setup_seconds}, {"device", loop.device}};
+  }
+  for (const renderers::Renderer& renderer : registry.all()) {
+    if (renderer.reference || !wants(renderer.id) || renderer.prepare_frames) continue;
     const std::string& r = renderer.id;
     std::vector<double> whole, own;
     const std::filesystem::path work =

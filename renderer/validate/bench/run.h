@@ -3,6 +3,10 @@
 //   reference float:  the fast path (Embree 16-ray packets or the raster,
 //                     float shading);
 //   reference double: the exact reference path;
+//   a real-time one:  (a renderer with prepare_frames, e.g. gl) the scene
+//                     prepared once, then `frames` frames after one warm-up
+//                     frame, each drawn and waited for, nothing read back;
+//                     printed also as frames per second (1 / median frame);
 //   the others:       the external renderer's own render time as it reports
 //                     it, and its whole process (export, start-up, parse,
 //                     render, read back).
@@ -18,7 +22,8 @@
 //
 // Parameters (BenchRequest) and their defaults:
 //   renderers  ids, any of the registry's (default: its every-scene ones)
-//   frames     20   reference frames per precision after the warm-up
+//   frames     20   reference frames per precision (and real-time frames)
+//                   after the warm-up
 //   runs       3    runs of each external renderer
 //   spp        0    the scene's render.spp (else a perfect square, checked
 //                   by the caller, and against the budget here)

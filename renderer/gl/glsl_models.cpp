@@ -1,0 +1,271 @@
+#include "gl/glsl_models.h"
+
+#include <string>
+
+namespace xval::gl {
+
+namespace {
+
+// What both stages share: the inputs' uniforms, the lights, the texture
+// lookups and the models. Kinds: shading 0 flat, 1 gouraud, 2 phong;
+// model 0 classic_phong, 1 yiq_luma, 2 lambert, 3 wrap_around,
+// 4 hemispherical, 5 bidirectional, 6 trilight; light 0 point,
+// 1 directional, 2 spot; texture 0 none (u_base), 1 nearest, 2 bilinear.
+const char* kCommon = R"GLSL(
+#version 450 core
+
+uniform mat3 u_view;       // rows: right, up', forward (camera/camera.h)
+uniform vec2 u_scale;      // 1 / (tan(fov/2) aspect), 1 / tan(fov/2)
+uniform float u_near;      // the fitted near plane (reversed Z: depth = near / z)
+uniform int u_shading;
+uniform int u_model;
+uniform bool u_course;     // classic_phong's course variant
+uniform bool u_specular;   // ks != 0
+uniform float u_ka, u_kd, u_ks, u_n, u_offset, u_factor;
+uniform vec3 u_c0, u_c1, u_c2;
+uniform vec3 u_ambient;    // A: the ambient lights' summed colour
+uniform float u_ambient_luma;  // A_Y = lightLuma(A)
+uniform vec3 u_base;
+uniform int u_texture;
+uniform int u_light_count;
+layout(binding = 0) uniform sampler2D u_tex;  // RGBA32F, row 0 = the image's top, read by texelFetch
+
+struct Light {
+  vec4 position_kind;    // xyz: position relative to the eye; w: kind
+  vec4 direction_cos;    // xyz: unit direction the light travels; w: cos(cutoff)
+  vec4 colour_luma;      // rgb: colour; w: lightLuma(colour)
+  vec4 attenuation;      // constant, linear, quadratic; w: 1 when attenuated
+};
+layout(std430, binding = 0) readonly buffer Lights { Light u_lights[]; };
+
+// clamp(x) and saturate(x), NaN -> 0 (shading/models.h)
+float clamp0(float x) { return x > 0.0 ? x : 0.0; }
+float saturate1(float x) { return x > 0.0 ? (x < 1.0 ? x : 1.0) : 0.0; }
+
+// ---- lights (shading/lights.h) ---------------------------------------
+// towardsLight: L and d of D = p_light - p, rescaled by the largest
+// |component| where D.D is not a normal float.
+const float kFloatMin = 1.17549435e-38;
+const float kFloatMax = 3.40282347e38;
+void towardsLight(vec3 D, out vec3 L, out float d) {
+  float dd = dot(D, D);
+  if (dd >= kFloatMin && dd <= kFloatMax) {
+    d = sqrt(dd);
+    L = D / d;
+    return;
+  }
+  float s = max(abs(D.x), max(abs(D.y), abs(D.z)));
+  if (!(s > 0.0) || !(s <= kFloatMax)) {
+    d = s;
+    L = vec3(0.0);
+    return;
+  }
+  vec3 u = D / s;
+  float lu = sqrt(dot(u, u));
+  d = s * lu;
+  L = u / lu;
+}
+
+// L towards the light, att = 1 / (c + l d + q d^2), lit: inside a spot's cone.
+void sampleLight(Light l, vec3 p, out vec3 L, out float att, out bool lit) {
+  att = 1.0;
+  lit = true;
+  int kind = int(l.position_kind.w);
+  if (kind == 1) {
+    L = -l.direction_cos.xyz;
+    return;
+  }
+  float dist;
+  towardsLight(l.position_kind.xyz - p, L, dist);
+  if (l.attenuation.w != 0.0)
+    att = 1.0 / (l.attenuation.x + l.attenuation.y * dist + l.attenuation.z * dist * dist);
+  if (kind == 2) lit = dot(-L, l.direction_cos.xyz) >= l.direction_cos.w;
+}
+
+// ---- the listing's specular -----------------------------------------
+// Reflection = normalize(2 N (N.L) - L); Specular = pow(saturate(R.V), n).
+// n = 0 gives 1 (pow(0, 0) = 1, the reference's choice); a zero R gives 0.
+float listingSpecular(vec3 N, vec3 L, float x, vec3 V) {
+  if (u_n == 0.0) return 1.0;
+  vec3 R = 2.0 * N * x - L;
+  float len = length(R);
+  if (!(len > 0.0)) return 0.0;
+  float rv = saturate1(dot(R / len, V));
+  return rv > 0.0 ? pow(rv, u_n) : 0.0;
+}
+
+// ---- YIQ (the listing's RGBtoYIQ / YIQtoRGB, coefficients verbatim) ----
+vec3 rgbToYiq(vec3 c) {
+  return vec3(0.29889531 * c.r + 0.58662247 * c.g + 0.11448223 * c.b,
+              0.59597799 * c.r + -0.27417610 * c.g + -0.32180189 * c.b,
+              0.21147017 * c.r + -0.52261711 * c.g + 0.31114694 * c.b);
+}
+vec3 yiqToRgb(vec3 yiq) {  // without the listing's saturate: the frame saturates once
+  return vec3(yiq.x + 0.95608445 * yiq.y + 0.62088850 * yiq.z,
+              yiq.x - 0.27137664 * yiq.y - 0.64860590 * yiq.z,
+              yiq.x - 1.10561724 * yiq.y + 1.70250126 * yiq.z);
+}
+
+// ---- Forsyth's family, per unit light colour ---------------------------
+vec3 forsyth(float x) {
+  if (u_model == 2) return u_c0 * clamp0(x);
+  if (u_model == 3) return u_c0 * (clamp0(x + u_factor) / (1.0 + u_factor));
+  if (u_model == 4) return u_c2 + (u_c0 - u_c2) * ((x + 1.0) * 0.5);
+  if (u_model == 5) return u_c0 * clamp0(x) + u_c2 * clamp0(-x);
+  return u_c0 * clamp0(x) + u_c1 * (1.0 - abs(x)) + u_c2 * clamp0(-x);
+}
+
+// ---- the model at one point (shading/shader.h), unsaturated -------------
+// p: relative to the eye, n: unit normal, v: unit towards the eye, c: C.
+vec3 shade(vec3 p, vec3 n, vec3 v, vec3 c) {
+  if (u_model == 0) {
+    if (u_course) {
+      vec3 acc = u_ka * u_ambient;
+      for (int i = 0; i < u_light_count; ++i) {
+        vec3 L; float att; bool lit;
+        sampleLight(u_lights[i], p, L, att, lit);
+        vec3 w = att * u_lights[i].colour_luma.rgb;
+        float term = u_ka;
+        if (lit) {
+          float x = dot(n, L);
+          term += u_kd * clamp0(x);
+          if (u_specular) term += u_ks * listingSpecular(n, L, x, v);
+        }
+        acc += w * term;
+      }
+      return c * acc;
+    }
+    vec3 diff = vec3(0.0), spec = vec3(0.0);
+    for (int i = 0; i < u_light_count; ++i) {
+      vec3 L; float att; bool lit;
+      sampleLight(u_lights[i], p, L, att, lit);
+      if (!lit) continue;
+      vec3 w = att * u_lights[i].colour_luma.rgb;
+      float x = dot(n, L);
+      diff += w * clamp0(x);
+      if (u_specular) spec += w * listingSpecular(n, L, x, v);
+    }
+    return c * (u_ka * u_ambient + u_kd * diff) + u_ks * spec;
+  }
+  if (u_model == 1) {
+    // Diffuse = saturate(A_Y + kd sum att Y(Lc) saturate(N.L)),
+    // Specular = ks sum att Y(Lc) pow(saturate(R.V), n).
+    float dsum = 0.0, ssum = 0.0;
+    for (int i = 0; i < u_light_count; ++i) {
+      vec3 L; float att; bool lit;
+      sampleLight(u_lights[i], p, L, att, lit);
+      if (!lit) continue;
+      float w = att * u_lights[i].colour_luma.w;
+      float x = dot(n, L);
+      dsum += w * saturate1(x);
+      if (u_specular) ssum += w * listingSpecular(n, L, x, v);
+    }
+    float dl = saturate1(u_ambient_luma + u_kd * dsum);
+    vec3 yiq = rgbToYiq(c);
+    yiq.x = yiq.x * dl + u_ks * ssum - u_offset;  // WorkCol.y = WorkCol.y * Diffuse + Specular - 0.1
+    return yiqToRgb(yiq);
+  }
+  vec3 acc = u_ambient;
+  for (int i = 0; i < u_light_count; ++i) {
+    vec3 L; float att; bool lit;
+    sampleLight(u_lights[i], p, L, att, lit);
+    if (!lit) continue;
+    acc += att * u_lights[i].colour_luma.rgb * forsyth(dot(n, L));
+  }
+  return c * acc;
+}
+
+// ---- the texture (texture/texture.h): wrap, nearest or bilinear ---------
+vec3 texel(int x, int y) { return texelFetch(u_tex, ivec2(x, y), 0).rgb; }
+vec3 surfaceColour(vec2 uv) {
+  if (u_texture == 0) return u_base;
+  ivec2 size = textureSize(u_tex, 0);
+  float fu = uv.x - floor(uv.x), fv = uv.y - floor(uv.y);
+  if (!(fu >= 0.0 && fu <= 1.0)) fu = 0.0;  // NaN: a non-finite u
+  if (!(fv >= 0.0 && fv <= 1.0)) fv = 0.0;
+  if (u_texture == 1)
+    return texel(min(int(fu * float(size.x)), size.x - 1), min(int(fv * float(size.y)), size.y - 1));
+  float x = fu * float(size.x) - 0.5, y = fv * float(size.y) - 0.5;
+  float x0f = floor(x), y0f = floor(y);
+  float wx = x - x0f, wy = y - y0f;
+  int x0 = int(x0f), y0 = int(y0f);
+  int x1 = x0 + 1, y1 = y0 + 1;
+  if (x0 < 0) x0 += size.x;
+  if (y0 < 0) y0 += size.y;
+  if (x1 >= size.x) x1 -= size.x;
+  if (y1 >= size.y) y1 -= size.y;
+  vec3 top = texel(x0, y0) * (1.0 - wx) + texel(x1, y0) * wx;
+  vec3 bottom = texel(x0, y1) * (1.0 - wx) + texel(x1, y1) * wx;
+  return top * (1.0 - wy) + bottom * wy;
+}
+
+vec3 unitOrZero(vec3 a) {
+  float len = length(a);
+  return len > 0.0 ? a / len : vec3(0.0);
+}
+)GLSL";
+
+// Camera-relative position to clip space, reversed Z with an infinite far
+// plane: x_ndc = x / (z tan aspect), y_ndc = y / (z tan), depth = near / z
+// (glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE), depth test GREATER).
+// Gouraud: the model at the vertex (its texture colour at its uv).
+const char* kVertex = R"GLSL(
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_uv;
+layout(location = 3) in vec3 a_face_normal;
+out vec3 v_position;
+out vec3 v_normal;
+out vec2 v_uv;
+flat out vec3 v_face_normal;
+out vec3 v_colour;
+
+void main() {
+  vec3 e = u_view * a_position;
+  gl_Position = vec4(e.x * u_scale.x, e.y * u_scale.y, u_near, e.z);
+  v_position = a_position;
+  v_normal = a_normal;
+  v_uv = a_uv;
+  v_face_normal = a_face_normal;
+  v_colour = vec3(0.0);
+  if (u_shading == 1)
+    v_colour = shade(a_position, a_normal, normalize(-a_position), surfaceColour(a_uv));
+}
+)GLSL";
+
+// Per fragment: flat uses the triangle's normal, phong the interpolated one
+// re-normalised; V = normalize(eye - p) with the eye at the origin. The
+// colour is written unsaturated (the box filter saturates each sample);
+// alpha 1 marks a hit.
+const char* kFragment = R"GLSL(
+in vec3 v_position;
+in vec3 v_normal;
+in vec2 v_uv;
+flat in vec3 v_face_normal;
+in vec3 v_colour;
+layout(location = 0) out vec4 o_colour;
+
+void main() {
+  if (u_shading == 1) {
+    o_colour = vec4(v_colour, 1.0);
+    return;
+  }
+  vec3 n = u_shading == 0 ? v_face_normal : unitOrZero(v_normal);
+  vec3 v = normalize(-v_position);
+  o_colour = vec4(shade(v_position, n, v, surfaceColour(v_uv)), 1.0);
+}
+)GLSL";
+
+}  // namespace
+
+const char* vertexShaderSource() {
+  static const std::string s = std::string(kCommon) + kVertex;
+  return s.c_str();
+}
+
+const char* fragmentShaderSource() {
+  static const std::string s = std::string(kCommon) + kFragment;
+  return s.c_str();
+}
+
+}  // namespace xval::gl

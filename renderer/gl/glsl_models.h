@@ -1,0 +1,31 @@
+// The GLSL (4.50 core) port of the lighting models, lights, texture lookups
+// and shading modes: the vertex and fragment shader of the gl renderer
+// (gl/gl_frame.h). The formulas are those of shading/models.h,
+// shading/lights.h, shading/shader.h and texture/texture.h (docs/models.md);
+// where the paper's HLSL listing (docs/gl-renderer.md quotes the lines)
+// defines a step, the port writes it as the listing does:
+//   R  = normalize(2 N (N.L) - L)
+//   S  = pow(saturate(R.V), n)          (the reference: from |R - V|)
+//   YIQ: RGB -> YIQ, Y' = Y Dl + S - off, YIQ -> RGB with the listing's two
+//        matrices (the reference: the one-dot-product reduction)
+// and otherwise as the reference renderer does: the interpolated normal
+// re-normalised (zero stays zero), uv wrapped per triangle, n = 0 gives
+// S = 1, clamps map NaN to 0, towardsLight's rescaling of far and near
+// lights, and the texture read texel by texel (texelFetch) with the
+// reference's nearest and bilinear rules, never by the sampler.
+#pragma once
+
+namespace xval::gl {
+
+// The shaders' inputs, fixed here once (gl_frame.cpp binds them).
+inline constexpr int kAttribPosition = 0;    // vec3: vertex - eye (camera-relative, from double)
+inline constexpr int kAttribNormal = 1;      // vec3: the vertex normal
+inline constexpr int kAttribUv = 2;          // vec2: frac(uv0) + (uv_k - uv0) of its triangle
+inline constexpr int kAttribFaceNormal = 3;  // vec3: flat shading's normal (shading/flat_normals.h)
+inline constexpr int kLightsBinding = 0;     // the lights' shader storage block
+inline constexpr int kTextureUnit = 0;       // the RGBA32F texture
+
+const char* vertexShaderSource();
+const char* fragmentShaderSource();
+
+}  // namespace xval::gl

@@ -1,0 +1,45 @@
+// eevee: Blender 3.4's real-time engine EEVEE, run as an outside tool
+// (blender/blender_render.h, BlenderEngine::Eevee).
+//
+// The same glTF export and the same shader-node rebuild of the model as
+// the blender renderer (Cycles), rendered by EEVEE's rasteriser headless on
+// Mesa's surfaceless EGL (no X server). The harness sets what makes EEVEE's
+// output exact (exporters/blender/render_gltf.py, docs/blender-export.md):
+// one sample on each pixel centre, Standard view transform and a raw float
+// EXR, a clip range fitted to the scene, bilinear lookups rebuilt from
+// Closest ones, anisotropic filtering off. Supersampling and saturation as
+// the blender renderer's. It refuses what the blender renderer refuses.
+//
+// Parameters (RenderRequest):
+//   work_dir         the export, the log (eevee.log) and the raw EXR
+//   timeout_seconds  default kDefaultToolTimeoutSeconds (600)
+// Needs what the blender renderer needs (blender on PATH, the harness
+// script); same version line. render_seconds: the log's render Time.
+#include "blender/blender_render.h"
+#include "renderers/renderer.h"
+
+namespace xval::renderers {
+
+std::string blenderScriptMissing();              // renderers/blender.cpp
+std::string blenderRefusal(const Scene& scene);  // renderers/blender.cpp
+
+Renderer eeveeRenderer() {
+  Renderer r;
+  r.id = "eevee";
+  r.display_name = "EEVEE";
+  r.summary = "Blender 3.4 EEVEE: the blender renderer's node trees, rasterised on OpenGL (Mesa, headless)";
+  r.version_command = {"blender", "--version"};
+  r.version_marker = "Blender";
+  r.missing = blenderScriptMissing;
+  r.cannot_express = blenderRefusal;
+  r.render = [](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
+    ExternalRenderInfo tool;
+    Image image = renderWithBlender(scene, request.work_dir, request.timeout_seconds, &tool, BlenderMode::Model,
+                                    BlenderEngine::Eevee);
+    setInfo(info, tool);
+    return image;
+  };
+  return r;
+}
+
+}  // namespace xval::renderers
