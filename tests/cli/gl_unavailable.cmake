@@ -46,7 +46,7 @@ expect_in("${_why}" "EGL")
 
 # A render with it fails (exit 1, as for any renderer that cannot run),
 # says why, and leaves no image.
-run(1 ${CMAKE_COMMAND} -E env ${no_egl} ${XVAL} render ${SCENE} --renderer gl -o ${WORK}/gl.exr)
+run(2 ${CMAKE_COMMAND} -E env ${no_egl} ${XVAL} render ${SCENE} --renderer gl -o ${WORK}/gl.exr)
 expect_in("${err}" "EGL")
 if(EXISTS ${WORK}/gl.exr)
   message(FATAL_ERROR "a gl render without EGL wrote ${WORK}/gl.exr")
