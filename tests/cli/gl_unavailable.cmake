@@ -44,7 +44,7 @@ if(_a)
 endif()
 expect_in("${_why}" "EGL")
 
-# A render with it fails (exit 1, as for any renderer that cannot run),
+# A render with it fails (exit 2, an error, as for any renderer that cannot run),
 # says why, and leaves no image.
 run(2 ${CMAKE_COMMAND} -E env ${no_egl} ${XVAL} render ${SCENE} --renderer gl -o ${WORK}/gl.exr)
 expect_in("${err}" "EGL")
