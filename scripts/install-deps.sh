@@ -12,7 +12,7 @@ packages=(
   # libraries
   libopenimageio-dev openimageio-tools libglm-dev nlohmann-json3-dev libcli11-dev
   libtinygltf-dev libassimp-dev libembree-dev libhwy-dev libgtest-dev libgmock-dev libbenchmark-dev
-  liblcms2-dev
+  liblcms2-dev libssl-dev
   # Assimp's test corpus: the model loader's robustness test (tests/corpus)
   assimp-testmodels
   # external renderers and what Blender's glTF add-on needs

@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   xval::cli::addExtremesCommand(app, run);
   xval::cli::addTradeoffCommand(app, run);
   xval::cli::addRenderersCommand(app, run);
+  xval::cli::addGoldenCommand(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
