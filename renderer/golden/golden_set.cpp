@@ -62,6 +62,12 @@ fs::path goldenFolder(const fs::path& scene_file, const std::string& renderer) {
       .lexically_normal();
 }
 
+Image storedChannels(Image img) {
+  img.raw.clear();
+  img.albedo.clear();
+  return img;
+}
+
 nlohmann::json settingsOf(const std::string& renderer, int spp, const std::string& precision) {
   nlohmann::json s = {{"renderer", renderer}};
   if (spp > 0) {

@@ -60,6 +60,13 @@ std::string programPath(const std::string& program, const fs::path& definition) 
   return (p.is_absolute() ? p : fs::absolute(definition).parent_path() / p).lexically_normal().string();
 }
 
+// Why `program` cannot run ("" when it can).
+std::string programProblem(const std::string& program, const fs::path& definition) {
+  if (!findOnPath(program).empty()) return "";
+  return "the program '" + program + "' of " + definition.string() + " is not " +
+         (program.find('/') == std::string::npos ? "on PATH" : "an executable file");
+}
+
 struct Definition {
   std::string name, input;
   std::vector<std::string> command;
@@ -88,6 +95,8 @@ Image renderDefined(const Definition& d, const Scene& scene, const RenderRequest
   std::vector<std::string> argv;
   for (const std::string& word : d.command) argv.push_back(substitute(word, values));
   argv.front() = programPath(argv.front(), d.file);
+  if (const std::string problem = programProblem(argv.front(), d.file); !problem.empty())
+    throw ExternalToolError(d.name + ": " + problem);
   const fs::path log = work / (d.name + ".log");
   const double timeout = d.timeout_s > 0 ? d.timeout_s : request.timeout_seconds;
   const ProcessResult r = runProcess(argv, work, log, timeout);
@@ -141,11 +150,7 @@ Renderer loadRendererFile(const fs::path& file) {
   out.version_command = version;
   out.version_marker = d.name;
   const std::string program = programPath(d.command.front(), d.file);
-  out.missing = [program, file = d.file]() -> std::string {
-    if (!findOnPath(program).empty()) return "";
-    return "the program '" + program + "' of " + file.string() + " is not " +
-           (program.find('/') == std::string::npos ? "on PATH" : "an executable file");
-  };
+  out.missing = [program, file = d.file] { return programProblem(program, file); };
   if (d.input == "gltf")
     out.cannot_express = [](const Scene& s) { return exportRefusal([&](const fs::path& dir) { exportGltf(s, dir); }); };
   if (d.input == "pov")

@@ -116,7 +116,7 @@ int goldenUpdate(const GoldenRequest& request) {
     Render fresh = renderForGolden(r, scene, work, request.timeout_seconds);
     const std::string stem = file.stem().string();
     const fs::path image = folder / (stem + ".exr");
-    writeImage(fresh.image, image);
+    writeImage(golden::storedChannels(std::move(fresh.image)), image);
     golden::Entry& e = it->second.entries[stem];
     e.scene_file = fs::absolute(file).lexically_normal().lexically_relative(folder).generic_string();
     e.scene_sha256 = scene_hash;
@@ -128,8 +128,7 @@ int goldenUpdate(const GoldenRequest& request) {
     e.git_commit = prov.git_commit;
     e.date_utc = prov.date_utc;
     golden::writeManifest(folder, it->second);
-    std::printf("stored %s (%dx%d, %s) -> %s\n", file.string().c_str(), fresh.image.width, fresh.image.height,
-                r.id.c_str(), image.string().c_str());
+    std::printf("stored %s (%s) -> %s\n", file.string().c_str(), r.id.c_str(), image.string().c_str());
   }
   return 0;
 }
