@@ -1,7 +1,10 @@
 // Golden images: paths, hashes and the manifest (golden/golden_set.h).
 #include "golden/golden_set.h"
 
+#include <OpenImageIO/imageio.h>
 #include <openssl/evp.h>
+
+#include <algorithm>
 
 #include <fstream>
 #include <memory>
@@ -62,10 +65,42 @@ fs::path goldenFolder(const fs::path& scene_file, const std::string& renderer) {
       .lexically_normal();
 }
 
-Image storedChannels(Image img) {
-  img.raw.clear();
-  img.albedo.clear();
-  return img;
+void writeGoldenImage(const Image& img, const fs::path& file) {
+  namespace OIIO = OIIO_NAMESPACE;
+  const size_t n = size_t(img.width) * size_t(img.height);
+  const bool diag = img.depth.size() == n && img.backfacing.size() == n && img.incidence.size() == n;
+  if (file.has_parent_path()) fs::create_directories(file.parent_path());
+  writeFileAtomically(file, [&](const fs::path& tmp) {
+    auto out = OIIO::ImageOutput::create(tmp.string());
+    if (!out) throw std::runtime_error(file.string() + ": cannot create image writer: " + OIIO::geterror());
+    const int nc = diag ? 7 : 4;
+    OIIO::ImageSpec spec(img.width, img.height, nc, OIIO::TypeDesc::FLOAT);
+    spec.channelnames = {"R", "G", "B", "A"};
+    spec.channelformats.assign(size_t(nc), OIIO::TypeDesc::FLOAT);
+    if (diag) {
+      spec.channelnames.insert(spec.channelnames.end(), {"Z", "backfacing", "incidence"});
+      for (int c = 4; c < 7; ++c) spec.channelformats[size_t(c)] = OIIO::TypeDesc::HALF;
+      spec.z_channel = 4;
+    }
+    spec.alpha_channel = 3;
+    spec.attribute("compression", "zip");
+    spec.attribute("oiio:ColorSpace", "sRGB");  // as every image xval writes (image/image.h)
+    spec.attribute("xval:encoding", kColourEncoding);
+    std::vector<float> buf(n * size_t(nc));
+    for (size_t i = 0; i < n; ++i) {
+      std::copy_n(&img.rgba[i * 4], 4, &buf[i * nc]);
+      if (diag) {
+        buf[i * nc + 4] = img.depth[i];
+        buf[i * nc + 5] = img.backfacing[i];
+        buf[i * nc + 6] = img.incidence[i];
+      }
+    }
+    bool ok = out->open(tmp.string(), spec) && out->write_image(OIIO::TypeDesc::FLOAT, buf.data());
+    ok = out->close() && ok;
+    if (!ok) throw std::runtime_error(file.string() + ": cannot write image: " + out->geterror());
+    requireDecodable(tmp, img.width, img.height);
+    return true;
+  });
 }
 
 nlohmann::json settingsOf(const std::string& renderer, int spp, const std::string& precision) {

@@ -116,7 +116,7 @@ int goldenUpdate(const GoldenRequest& request) {
     Render fresh = renderForGolden(r, scene, work, request.timeout_seconds);
     const std::string stem = file.stem().string();
     const fs::path image = folder / (stem + ".exr");
-    writeImage(golden::storedChannels(std::move(fresh.image)), image);
+    golden::writeGoldenImage(fresh.image, image);
     golden::Entry& e = it->second.entries[stem];
     e.scene_file = fs::absolute(file).lexically_normal().lexically_relative(folder).generic_string();
     e.scene_sha256 = scene_hash;
