@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The test command, from a fresh Debian 12 machine: install what is missing,
-# build, and run the default test set: CTest labels `unit` and `cross`
+# build, and run the default test set: CTest labels `unit`, `cross`
 # (the cross-renderer tests need POV-Ray and Blender, which the install
-# step provides; a missing renderer fails them).
+# step provides; a missing renderer fails them) and `golden` (the reference
+# renderer against the committed golden images, neither tool needed).
 #
 # Then the robustness checks (docs/robustness.md): the unit tests again,
 # built with clang under AddressSanitizer and UndefinedBehaviorSanitizer
@@ -14,7 +15,7 @@ cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/build.sh
 status=0
-(cd build && ctest -L "unit|cross" --output-on-failure -j"$(nproc)") || status=1
+(cd build && ctest -L "unit|cross|golden" --output-on-failure -j"$(nproc)") || status=1
 
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
   -DXVAL_SANITIZE=ON -DXVAL_FUZZ=ON

@@ -7,6 +7,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/renderer_file_option.h"
 #include "renderers/registry.h"
 #include "validate/bench/run.h"
 
@@ -48,8 +49,10 @@ void addBenchCommand(CLI::App& app, std::function<int()>& run) {
       ->check(CLI::IsMember({"float", "double", "both"}));
   cmd->add_option("--json", args->json, "Also write the figures to this JSON file");
   addBudgetOptions(cmd, args->budget);
-  cmd->callback([args, &run]() {
-    run = [args]() -> int {
+  auto renderer_files = addRendererFileOption(cmd);
+  cmd->callback([args, renderer_files, &run]() {
+    run = [args, renderer_files]() -> int {
+      renderers::registerRendererFiles(*renderer_files);
       bench::BenchRequest r;
       r.scene_file = args->scene;
       std::stringstream ss(args->renderers);

@@ -14,6 +14,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "files/atomic_write.h"
+#include "cli/renderer_file_option.h"
 #include "renderers/registry.h"
 #include "validate/crosscheck.h"
 #include "validate/junit_report.h"
@@ -41,8 +42,8 @@ void addCrosscheckCommand(CLI::App& app, std::function<int()>& run) {
   for (const std::string& id : compared) choices += "\n  " + id + ": " + registry.at(id).summary;
   cmd->add_option("--renderer", args->renderer,
                   "The renderer compared with the reference (default " + compared.front() +
-                      "; xval renderers lists them):" + choices)
-      ->check(CLI::IsMember(compared));
+                      "; xval renderers lists them):" + choices);
+  auto renderer_files = addRendererFileOption(cmd);
   cmd->add_option("-o,--output", args->dir, "Output folder")->required();
   cmd->add_option("--tolerances", args->tolerances, kToleranceFileHelp);
   cmd->add_option("--junit", args->junit,
@@ -51,13 +52,16 @@ void addCrosscheckCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--timeout", args->timeout, "Seconds before the external renderer is killed")
       ->check(Seconds);
   addBudgetOptions(cmd, args->budget);
-  cmd->callback([args, &run]() {
-    run = [args]() -> int {
+  cmd->callback([args, renderer_files, &run]() {
+    run = [args, renderer_files]() -> int {
       const validation::CrosscheckRequest request{args->scene, args->renderer, args->dir, args->tolerances,
                                                   args->timeout, args->budget.get()};
       int status = 2;
       std::string error;
       try {
+        renderers::registerRendererFiles(*renderer_files);
+        if (renderers::registry().at(args->renderer).reference)
+          throw std::runtime_error("--renderer " + args->renderer + ": the reference renderer is compared with itself");
         status = validation::crosscheck(request);
       } catch (const std::exception& e) {
         error = e.what();

@@ -5,6 +5,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/renderer_file_option.h"
 #include "render/renderer.h"
 #include "renderers/registry.h"
 #include "scene/scene_loader.h"
@@ -66,8 +67,8 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--renderer", args->renderer,
                   "One of " + renderers::joinNames(registry.ids()) + " (default " + registry.reference().id +
                       "; xval renderers lists them): an external renderer is exported to, run with a "
-                      "time-out, and its image returned as linear float (alpha = hit mask)")
-      ->check(CLI::IsMember(registry.ids()));
+                      "time-out, and its image returned as linear float (alpha = hit mask)");
+  auto renderer_files = addRendererFileOption(cmd);
   cmd->add_option("--work-dir", args->work_dir,
                   "Folder for an external renderer's export, log and raw output (default: "
                   "OUT's folder/OUT-stem.RENDERER)");
@@ -79,8 +80,9 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
                   "Seconds before an external renderer is killed and the render fails (default 600)")
       ->check(Seconds);
   addBudgetOptions(cmd, args->budget);
-  cmd->callback([args, &run]() {
-    run = [args]() {
+  cmd->callback([args, renderer_files, &run]() {
+    run = [args, renderer_files]() {
+      renderers::registerRendererFiles(*renderer_files);
       Scene scene = loadScene(args->scene, args->budget.get());
       RenderOptions opt = defaultOptions(scene);
       if (args->spp) {

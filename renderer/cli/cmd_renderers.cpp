@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
+#include "cli/renderer_file_option.h"
 #include "renderers/registry.h"
 
 namespace xval::cli {
@@ -24,8 +25,10 @@ void addRenderersCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_flag("--json", *json,
                 "Print JSON instead: {\"renderers\": [{id, display_name, summary, reference, every_scene, "
                 "version, available, reason}]}");
-  cmd->callback([json, &run]() {
-    run = [json]() -> int {
+  auto renderer_files = addRendererFileOption(cmd);
+  cmd->callback([json, renderer_files, &run]() {
+    run = [json, renderer_files]() -> int {
+      renderers::registerRendererFiles(*renderer_files);
       const renderers::Registry& registry = renderers::registry();
       nlohmann::ordered_json out;
       out["renderers"] = nlohmann::ordered_json::array();

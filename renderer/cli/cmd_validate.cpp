@@ -33,6 +33,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/renderer_file_option.h"
 #include "files/atomic_write.h"
 #include "process/job_pool.h"
 #include "scene/json_reader.h"
@@ -132,12 +133,14 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
   compare_only->needs(plan);
   run_job->excludes(compare_only);
   plan->excludes(plan_only)->excludes(resume);
-  cmd->callback([args, &run, cmd, sections]() {
+  auto renderer_files = addRendererFileOption(cmd);
+  cmd->callback([args, &run, cmd, sections, renderer_files]() {
     const bool local_options_given = cmd->count("--jobs") + cmd->count("--timeout") + cmd->count("--max-triangles") +
                                          cmd->count("--max-samples") + cmd->count("--max-memory-mb") +
                                          cmd->count("--allow-large") > 0;
-    run = [args, local_options_given, sections]() -> int {
+    run = [args, local_options_given, sections, renderer_files]() -> int {
       try {
+        renderers::registerRendererFiles(*renderer_files);
         if (!args->plan.empty()) {
           if (args->run_job < 0 && !args->compare_only)
             throw std::runtime_error("--plan " + args->plan + ": say what to do: --run-job K or --compare-only");

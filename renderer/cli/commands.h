@@ -19,5 +19,6 @@ void addBenchCommand(CLI::App& app, std::function<int()>& run);
 void addExtremesCommand(CLI::App& app, std::function<int()>& run);
 void addTradeoffCommand(CLI::App& app, std::function<int()>& run);
 void addRenderersCommand(CLI::App& app, std::function<int()>& run);
+void addGoldenCommand(CLI::App& app, std::function<int()>& run);
 
 }  // namespace xval::cli

@@ -27,7 +27,9 @@ struct Image {
   // the triangle it hit (small = grazing: float rounding of a hit moves it
   // by ~1/incidence).
   // albedo: the surface colour C (texture or base colour) at the first
-  // sample that hit, 3 floats per pixel (0 where nothing is hit).
+  // sample that hit, 3 floats per pixel (0 where nothing is hit); may be
+  // empty when the others are not (a golden image keeps only the channels
+  // the comparison's classification reads: golden/golden_set.h).
   std::vector<float> depth, backfacing, incidence, albedo;
   // False for an image read from a file without an alpha channel (an RGB
   // PNG from elsewhere): readImage then sets alpha = 1 everywhere, so every
@@ -52,7 +54,8 @@ inline constexpr const char* kColourEncoding =
     "display-referred code values: no transfer function applied (docs/scene-format.md)";
 
 // OpenEXR (32-bit float; channels R,G,B,A and, when present, raw.R, raw.G,
-// raw.B, Z, backfacing, incidence and albedo.R/G/B; tagged oiio:ColorSpace
+// raw.B, Z, backfacing, incidence and albedo.R/G/B (albedo only when
+// present); tagged oiio:ColorSpace
 // "sRGB", since the values are display-referred codes) or, by extension
 // .png, a 16-bit RGBA PNG: alpha = coverage, colour unassociated as PNG
 // defines it (premultiplied colour / alpha), round(v * 65535) of the

@@ -49,13 +49,14 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
   if (ext == ".exr") {
     const bool raw = !img.raw.empty();
     const bool diag = !img.depth.empty();
-    OIIO::ImageSpec spec(img.width, img.height, 4 + (raw ? 3 : 0) + (diag ? 6 : 0),
+    const bool albedo = diag && !img.albedo.empty();
+    OIIO::ImageSpec spec(img.width, img.height, 4 + (raw ? 3 : 0) + (diag ? 3 : 0) + (albedo ? 3 : 0),
                          OIIO::TypeDesc::FLOAT);
     spec.channelnames = {"R", "G", "B", "A"};
     if (raw) spec.channelnames.insert(spec.channelnames.end(), {"raw.R", "raw.G", "raw.B"});
     if (diag) {
-      spec.channelnames.insert(spec.channelnames.end(),
-                               {"Z", "backfacing", "incidence", "albedo.R", "albedo.G", "albedo.B"});
+      spec.channelnames.insert(spec.channelnames.end(), {"Z", "backfacing", "incidence"});
+      if (albedo) spec.channelnames.insert(spec.channelnames.end(), {"albedo.R", "albedo.G", "albedo.B"});
       spec.z_channel = 4 + (raw ? 3 : 0);
     }
     spec.alpha_channel = 3;
@@ -76,7 +77,8 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
         buf[i * spec.nchannels + spec.z_channel] = img.depth[i];
         buf[i * spec.nchannels + spec.z_channel + 1] = img.backfacing[i];
         buf[i * spec.nchannels + spec.z_channel + 2] = img.incidence[i];
-        for (int c = 0; c < 3; ++c) buf[i * spec.nchannels + spec.z_channel + 3 + c] = img.albedo[i * 3 + c];
+        if (albedo)
+          for (int c = 0; c < 3; ++c) buf[i * spec.nchannels + spec.z_channel + 3 + c] = img.albedo[i * 3 + c];
       }
     }
     ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::FLOAT, buf.data());
@@ -181,17 +183,19 @@ Image readImage(const std::filesystem::path& file, int expect_width, int expect_
   const bool unassociated = img.has_alpha && spec.get_int_attribute("oiio:UnassociatedAlpha", 0) != 0;
   int zc = channel("Z"), bc = channel("backfacing"), ic = channel("incidence");
   int ac[3] = {channel("albedo.R"), channel("albedo.G"), channel("albedo.B")};
-  const bool diag = zc >= 0 && bc >= 0 && ic >= 0 && ac[0] >= 0 && ac[1] >= 0 && ac[2] >= 0;
+  const bool diag = zc >= 0 && bc >= 0 && ic >= 0;
+  const bool albedo = diag && ac[0] >= 0 && ac[1] >= 0 && ac[2] >= 0;
   img.depth.assign(diag ? size_t(spec.width) * spec.height : 0, 0.0f);
   img.backfacing.assign(img.depth.size(), 0.0f);
   img.incidence.assign(img.depth.size(), 0.0f);
-  img.albedo.assign(img.depth.size() * 3, 0.0f);
+  img.albedo.assign(albedo ? img.depth.size() * 3 : 0, 0.0f);
   for (size_t i = 0; i < size_t(spec.width) * spec.height; ++i) {
     if (diag) {
       img.depth[i] = buf[i * nc + zc];
       img.backfacing[i] = buf[i * nc + bc];
       img.incidence[i] = buf[i * nc + ic];
-      for (int c = 0; c < 3; ++c) img.albedo[i * 3 + c] = buf[i * nc + ac[c]];
+      if (albedo)
+        for (int c = 0; c < 3; ++c) img.albedo[i * 3 + c] = buf[i * nc + ac[c]];
     }
     for (int c = 0; c < 4; ++c)
       img.rgba[i * 4 + c] = ch[c] >= 0 ? buf[i * nc + ch[c]] : 1.0f;

@@ -14,7 +14,7 @@
 // of the pairs and of every listing). Adding a renderer: its file
 // renderers/<name>.cpp defining `Renderer <name>Renderer()`, and its name
 // on this line.
-#define XVAL_BUILTIN_RENDERERS(X) X(reference) X(povray) X(blender) X(blenderNative) X(eevee) X(gl)
+#define XVAL_BUILTIN_RENDERERS(X) X(reference) X(povray) X(blender) X(blenderNative) X(eevee) X(gl) X(golden)
 
 namespace xval::renderers {
 
@@ -51,6 +51,7 @@ void Registry::add(Renderer r) {
 }
 
 const Renderer* Registry::find(std::string_view id) const {
+  if (const std::string alias = goldenAlias(id); !alias.empty()) return find(alias);
   for (const auto& e : entries_)
     if (e.id == id) return &e;
   return nullptr;
@@ -139,6 +140,7 @@ Registry& registry() {
 #define XVAL_ADD_RENDERER(name) reg->add(name##Renderer());
     XVAL_BUILTIN_RENDERERS(XVAL_ADD_RENDERER)
 #undef XVAL_ADD_RENDERER
+    addGoldenSets(*reg);
     return reg;
   }();
   return *r;

@@ -12,6 +12,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "common/export_common.h"
@@ -107,6 +108,16 @@ struct Renderer {
 // the ExportError's message, "" when `write_export` succeeds. Other errors
 // (a full disk) propagate.
 std::string exportRefusal(const std::function<void(const std::filesystem::path& dir)>& write_export);
+// The golden-image renderers (renderers/golden.cpp): the stored set of
+// the renderer `made_by` (id "golden" for the reference's, else
+// "golden-<made_by>"); goldenAlias("golden:NAME") is that id ("" for an id
+// not of that form); addGoldenSets adds golden-<id> for every registered
+// renderer that is neither the reference nor a golden set.
+class Registry;
+Renderer goldenRendererOf(const std::string& made_by, const std::string& made_by_name);
+std::string goldenAlias(std::string_view id);
+void addGoldenSets(Registry& registry);
+
 // An outside tool's figures as a RenderInfo (nothing when `info` is null).
 void setInfo(RenderInfo* info, const ExternalRenderInfo& tool);
 

@@ -1,0 +1,197 @@
+// Golden images: paths, hashes and the manifest (golden/golden_set.h).
+#include "golden/golden_set.h"
+
+#include <OpenImageIO/imageio.h>
+#include <openssl/evp.h>
+
+#include <algorithm>
+
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+#include "files/atomic_write.h"
+#include "scene/scene_loader.h"
+
+namespace xval::golden {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// SHA-256 over whatever `feed` passes to its argument, in pieces.
+template <class Feed>
+std::string sha256Of(Feed feed) {
+  std::unique_ptr<EVP_MD_CTX, decltype(&EVP_MD_CTX_free)> ctx(EVP_MD_CTX_new(), &EVP_MD_CTX_free);
+  if (!ctx || EVP_DigestInit_ex(ctx.get(), EVP_sha256(), nullptr) != 1)
+    throw std::runtime_error("SHA-256: cannot initialise OpenSSL's digest");
+  feed([&](const char* data, size_t n) {
+    if (EVP_DigestUpdate(ctx.get(), data, n) != 1) throw std::runtime_error("SHA-256: digest update failed");
+  });
+  unsigned char md[EVP_MAX_MD_SIZE];
+  unsigned int len = 0;
+  if (EVP_DigestFinal_ex(ctx.get(), md, &len) != 1) throw std::runtime_error("SHA-256: digest failed");
+  static const char* hex = "0123456789abcdef";
+  std::string out;
+  for (unsigned int i = 0; i < len; ++i) out += {hex[md[i] >> 4], hex[md[i] & 15]};
+  return out;
+}
+
+std::string field(const nlohmann::json& j, const char* key, const fs::path& file, const std::string& where) {
+  if (!j.contains(key) || !j.at(key).is_string())
+    throw std::runtime_error(file.string() + ": " + where + key + ": expected a string");
+  return j.at(key).get<std::string>();
+}
+
+}  // namespace
+
+std::string sha256File(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw std::runtime_error(file.string() + ": cannot read (for its SHA-256)");
+  return sha256Of([&](auto update) {
+    std::vector<char> buf(1 << 16);
+    while (in.read(buf.data(), std::streamsize(buf.size())) || in.gcount() > 0) update(buf.data(), size_t(in.gcount()));
+    if (in.bad()) throw std::runtime_error(file.string() + ": read error (for its SHA-256)");
+  });
+}
+
+std::string sha256Text(const std::string& text) {
+  return sha256Of([&](auto update) { update(text.data(), text.size()); });
+}
+
+fs::path goldenFolder(const fs::path& scene_file, const std::string& renderer) {
+  return (fs::absolute(scene_file).lexically_normal().parent_path().parent_path() / "golden" / renderer)
+      .lexically_normal();
+}
+
+void writeGoldenImage(const Image& img, const fs::path& file) {
+  namespace OIIO = OIIO_NAMESPACE;
+  const size_t n = size_t(img.width) * size_t(img.height);
+  const bool diag = img.depth.size() == n && img.backfacing.size() == n && img.incidence.size() == n;
+  if (file.has_parent_path()) fs::create_directories(file.parent_path());
+  writeFileAtomically(file, [&](const fs::path& tmp) {
+    auto out = OIIO::ImageOutput::create(tmp.string());
+    if (!out) throw std::runtime_error(file.string() + ": cannot create image writer: " + OIIO::geterror());
+    const int nc = diag ? 7 : 4;
+    OIIO::ImageSpec spec(img.width, img.height, nc, OIIO::TypeDesc::FLOAT);
+    spec.channelnames = {"R", "G", "B", "A"};
+    spec.channelformats.assign(size_t(nc), OIIO::TypeDesc::FLOAT);
+    if (diag) {
+      spec.channelnames.insert(spec.channelnames.end(), {"Z", "backfacing", "incidence"});
+      for (int c = 4; c < 7; ++c) spec.channelformats[size_t(c)] = OIIO::TypeDesc::HALF;
+      spec.z_channel = 4;
+    }
+    spec.alpha_channel = 3;
+    spec.attribute("compression", "zip");
+    spec.attribute("oiio:ColorSpace", "sRGB");  // as every image xval writes (image/image.h)
+    spec.attribute("xval:encoding", kColourEncoding);
+    std::vector<float> buf(n * size_t(nc));
+    for (size_t i = 0; i < n; ++i) {
+      std::copy_n(&img.rgba[i * 4], 4, &buf[i * nc]);
+      if (diag) {
+        buf[i * nc + 4] = img.depth[i];
+        buf[i * nc + 5] = img.backfacing[i];
+        buf[i * nc + 6] = img.incidence[i];
+      }
+    }
+    bool ok = out->open(tmp.string(), spec) && out->write_image(OIIO::TypeDesc::FLOAT, buf.data());
+    ok = out->close() && ok;
+    if (!ok) throw std::runtime_error(file.string() + ": cannot write image: " + out->geterror());
+    requireDecodable(tmp, img.width, img.height);
+    return true;
+  });
+}
+
+nlohmann::json settingsOf(const std::string& renderer, int spp, const std::string& precision) {
+  nlohmann::json s = {{"renderer", renderer}};
+  if (spp > 0) {
+    s["spp"] = spp;
+    s["precision"] = precision;
+    s["cull_back_faces"] = true;
+    s["diagnostics"] = true;
+  }
+  return s;
+}
+
+std::string settingsHash(const nlohmann::json& settings) { return sha256Text(settings.dump()); }
+
+Manifest readManifest(const fs::path& folder, const std::string& renderer) {
+  Manifest m;
+  m.renderer = renderer;
+  const fs::path file = folder / "manifest.json";
+  if (!fs::exists(file)) return m;
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(readJsonFile(file, "golden manifest"));
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(file.string() + ": not JSON: " + e.what());
+  }
+  if (!j.is_object()) throw std::runtime_error(file.string() + ": expected a JSON object");
+  if (field(j, "format", file, "") != kManifestFormat)
+    throw std::runtime_error(file.string() + ": format: expected \"" + kManifestFormat + "\"");
+  if (const std::string r = field(j, "renderer", file, ""); r != renderer)
+    throw std::runtime_error(file.string() + ": renderer: \"" + r + "\", expected \"" + renderer + "\"");
+  if (!j.contains("entries") || !j.at("entries").is_object())
+    throw std::runtime_error(file.string() + ": entries: expected an object");
+  for (const auto& [stem, e] : j.at("entries").items()) {
+    const std::string where = "entries." + stem + ".";
+    if (!e.is_object()) throw std::runtime_error(file.string() + ": " + where + ": expected an object");
+    Entry x;
+    x.scene_file = field(e, "scene_file", file, where);
+    x.scene_sha256 = field(e, "scene_sha256", file, where);
+    if (!e.contains("settings") || !e.at("settings").is_object())
+      throw std::runtime_error(file.string() + ": " + where + "settings: expected an object");
+    x.settings = e.at("settings");
+    x.settings_sha256 = field(e, "settings_sha256", file, where);
+    x.image = field(e, "image", file, where);
+    // The image is a plain file name in the manifest's folder: nothing else
+    // is ever opened through a manifest.
+    if (x.image.empty() || x.image.find('/') != std::string::npos || x.image.find('\\') != std::string::npos ||
+        x.image == "." || x.image == "..")
+      throw std::runtime_error(file.string() + ": " + where + "image: \"" + x.image +
+                               "\": expected a file name in the manifest's folder");
+    x.image_sha256 = field(e, "image_sha256", file, where);
+    x.renderer_version = field(e, "renderer_version", file, where);
+    x.git_commit = field(e, "git_commit", file, where);
+    x.date_utc = field(e, "date_utc", file, where);
+    m.entries.emplace(stem, std::move(x));
+  }
+  return m;
+}
+
+void writeManifest(const fs::path& folder, const Manifest& m) {
+  nlohmann::ordered_json j;
+  j["format"] = kManifestFormat;
+  j["renderer"] = m.renderer;
+  j["entries"] = nlohmann::ordered_json::object();
+  for (const auto& [stem, e] : m.entries)
+    j["entries"][stem] = {{"scene_file", e.scene_file},     {"scene_sha256", e.scene_sha256},
+                          {"settings", e.settings},         {"settings_sha256", e.settings_sha256},
+                          {"image", e.image},               {"image_sha256", e.image_sha256},
+                          {"renderer_version", e.renderer_version}, {"git_commit", e.git_commit},
+                          {"date_utc", e.date_utc}};
+  writeFileAtomically(folder / "manifest.json", j.dump(2) + "\n");
+}
+
+std::string goldenProblem(const fs::path& folder, const Manifest& m, const fs::path& scene_file) {
+  const std::string stem = scene_file.stem().string();
+  const fs::path manifest = folder / "manifest.json";
+  const auto it = m.entries.find(stem);
+  if (it == m.entries.end())
+    return "no golden image of " + stem + " in " + manifest.string() + " (xval golden update " +
+           scene_file.string() + " --renderer " + m.renderer + " stores one)";
+  const Entry& e = it->second;
+  const std::string now = sha256File(scene_file);
+  if (now != e.scene_sha256)
+    return "the scene file " + scene_file.string() + " changed since its golden image was stored (SHA-256 " +
+           now + ", stored for " + e.scene_sha256 + " in " + manifest.string() + ")";
+  const fs::path image = folder / e.image;
+  if (!fs::is_regular_file(image)) return "the golden image " + image.string() + " is missing";
+  if (const std::string h = sha256File(image); h != e.image_sha256)
+    return "the golden image " + image.string() + " changed since it was stored (SHA-256 " + h + ", manifest " +
+           e.image_sha256 + ")";
+  return "";
+}
+
+}  // namespace xval::golden

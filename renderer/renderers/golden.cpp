@@ -1,0 +1,70 @@
+// golden, golden-NAME: a stored set of golden images as a renderer
+// (golden/golden_set.h). `golden` is the reference renderer's set;
+// `golden-NAME` (also spelled golden:NAME) the set another renderer NAME
+// stored with `xval golden update --renderer NAME`.
+//
+// "Rendering" a scene reads its stored image from the folder `golden/NAME`
+// beside the scene file's folder. It refuses, with the reason, a scene
+// without a stored image, a scene file whose SHA-256 differs from the one
+// stored with the image (the scene changed: the image no longer shows it),
+// an image file that changed, one of another size than the scene's, or one
+// holding NaN or infinite values. Runs no outside tool (no work folder, no
+// time-out); its version is xval's, the stored renderer's version is in the
+// manifest.
+//
+// Not an every-scene renderer: `xval validate` renders it only when named
+// (a scene set may have no golden images); crosscheck and render take it
+// like any other.
+#include "golden/golden_set.h"
+#include "renderers/renderer.h"
+
+#include <chrono>
+#include <utility>
+#include <vector>
+
+#include "renderers/registry.h"
+
+namespace xval::renderers {
+
+Renderer goldenRendererOf(const std::string& made_by, const std::string& made_by_name) {
+  Renderer r;
+  const bool reference = made_by == "reference";
+  r.id = reference ? "golden" : "golden-" + made_by;
+  r.display_name = reference ? "golden" : "golden (" + made_by_name + ")";
+  r.subject = reference ? "the golden images" : "the golden images of " + made_by_name;
+  r.summary = "the images " + made_by_name + " stored beside the scene set (golden/" + made_by +
+              "/, xval golden update); refuses a scene file changed since";
+  r.every_scene = false;
+  r.render = [made_by](const Scene& scene, const RenderRequest&, RenderInfo* info) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::filesystem::path folder = golden::goldenFolder(scene.source_file, made_by);
+    const golden::Manifest m = golden::readManifest(folder, made_by);
+    if (const std::string problem = golden::goldenProblem(folder, m, scene.source_file); !problem.empty())
+      throw std::runtime_error("golden images of " + made_by + ": " + problem);
+    const golden::Entry& e = m.entries.at(scene.source_file.stem().string());
+    Image image = readImage(folder / e.image, scene.camera.width, scene.camera.height);
+    requireFinite("golden image " + (folder / e.image).string(), image);
+    if (info) info->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return image;
+  };
+  return r;
+}
+
+Renderer goldenRenderer() { return goldenRendererOf("reference", "the reference renderer"); }
+
+std::string goldenAlias(std::string_view id) {
+  constexpr std::string_view prefix = "golden:";
+  if (id.substr(0, prefix.size()) != prefix) return "";
+  const std::string_view made_by = id.substr(prefix.size());
+  return made_by == "reference" ? std::string("golden") : "golden-" + std::string(made_by);
+}
+
+void addGoldenSets(Registry& registry) {
+  std::vector<std::pair<std::string, std::string>> sources;
+  for (const Renderer& r : registry.all())
+    if (!r.reference && r.id != "golden" && r.id.rfind("golden-", 0) != 0) sources.emplace_back(r.id, r.display_name);
+  for (const auto& [id, name] : sources)
+    if (!registry.find("golden-" + id)) registry.add(goldenRendererOf(id, name));
+}
+
+}  // namespace xval::renderers

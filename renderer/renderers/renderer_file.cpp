@@ -1,0 +1,177 @@
+// A renderer defined by a file (renderers/renderer_file.h).
+#include "renderers/renderer_file.h"
+
+#include <chrono>
+#include <cmath>
+#include <map>
+
+#include "files/atomic_write.h"
+#include "gltf/gltf_exporter.h"
+#include "image/image_header.h"
+#include "povray/pov_exporter.h"
+#include "process/run_process.h"
+#include "renderers/registry.h"
+#include "scene/json_reader.h"
+#include "scene/scene_loader.h"
+#include "scene/scene_writer.h"
+
+namespace xval::renderers {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kPlaceholders[] = {"input", "scene", "output", "work", "width", "height", "spp"};
+
+// Throws unless every {...} in `word` is a known placeholder.
+void checkPlaceholders(const JsonReader& r, const char* key, const std::string& word) {
+  for (size_t open = word.find('{'); open != std::string::npos; open = word.find('{', open + 1)) {
+    const size_t close = word.find('}', open);
+    const std::string name = close == std::string::npos ? "" : word.substr(open + 1, close - open - 1);
+    if (std::find(std::begin(kPlaceholders), std::end(kPlaceholders), name) == std::end(kPlaceholders))
+      r.fail(key, "\"" + word + "\": unknown placeholder \"" + word.substr(open, close == std::string::npos
+                                                                                  ? std::string::npos
+                                                                                  : close - open + 1) +
+                      "\" (expected {input}, {scene}, {output}, {work}, {width}, {height} or {spp})");
+  }
+}
+
+std::string substitute(const std::string& word, const std::map<std::string, std::string>& values) {
+  std::string out;
+  for (size_t k = 0; k < word.size();) {
+    if (word[k] == '{') {
+      const size_t close = word.find('}', k);
+      if (close != std::string::npos)
+        if (auto it = values.find(word.substr(k + 1, close - k - 1)); it != values.end()) {
+          out += it->second;
+          k = close + 1;
+          continue;
+        }
+    }
+    out += word[k++];
+  }
+  return out;
+}
+
+// A program with a '/' is relative to the definition file's folder.
+std::string programPath(const std::string& program, const fs::path& definition) {
+  if (program.find('/') == std::string::npos) return program;
+  const fs::path p(program);
+  return (p.is_absolute() ? p : fs::absolute(definition).parent_path() / p).lexically_normal().string();
+}
+
+// Why `program` cannot run ("" when it can).
+std::string programProblem(const std::string& program, const fs::path& definition) {
+  if (!findOnPath(program).empty()) return "";
+  return "the program '" + program + "' of " + definition.string() + " is not " +
+         (program.find('/') == std::string::npos ? "on PATH" : "an executable file");
+}
+
+struct Definition {
+  std::string name, input;
+  std::vector<std::string> command;
+  double timeout_s = 0.0;  // 0: the request's
+  fs::path file;
+};
+
+Image renderDefined(const Definition& d, const Scene& scene, const RenderRequest& request, RenderInfo* info) {
+  if (request.work_dir.empty()) throw std::runtime_error(d.name + ": no work folder given");
+  const fs::path work = fs::absolute(request.work_dir).lexically_normal();
+  fs::create_directories(work / "scratch");
+  const std::string token = attemptToken();
+  // The resolved scene (paths absolute) for {scene} and input "scene".
+  const fs::path scene_json = work / "scene.json";
+  writeFileAtomically(scene_json, sceneToJson(scene).dump(2) + "\n");
+  fs::path input = scene_json;
+  if (d.input == "gltf") input = exportGltf(scene, work / "gltf").gltf;
+  if (d.input == "pov") input = exportPov(scene, work / "pov").dir;
+  // A name no earlier attempt used: an image left by one is never taken.
+  const fs::path output = work / ("output-" + token + ".exr");
+  const int w = scene.camera.width, h = scene.camera.height;
+  const std::map<std::string, std::string> values = {
+      {"input", input.string()},     {"scene", scene_json.string()},   {"output", output.string()},
+      {"work", (work / "scratch").string()}, {"width", std::to_string(w)}, {"height", std::to_string(h)},
+      {"spp", std::to_string(scene.render.spp)}};
+  std::vector<std::string> argv;
+  for (const std::string& word : d.command) argv.push_back(substitute(word, values));
+  argv.front() = programPath(argv.front(), d.file);
+  if (const std::string problem = programProblem(argv.front(), d.file); !problem.empty())
+    throw ExternalToolError(d.name + ": " + problem);
+  const fs::path log = work / (d.name + ".log");
+  const double timeout = d.timeout_s > 0 ? d.timeout_s : request.timeout_seconds;
+  const ProcessResult r = runProcess(argv, work, log, timeout);
+  if (info) {
+    info->seconds = r.seconds;
+    info->log = log;
+  }
+  const std::string tool = d.name + " (defined by " + d.file.string() + ")";
+  requireToolOutput(tool, input, r, output);
+  const std::string tail = "\nlast lines of " + log.string() + ":\n" + tailOfFile(log);
+  try {
+    const ImageHeader header = readImageHeader(output);
+    if (header.channels < 3)
+      throw ExternalToolError(output.string() + " has " + std::to_string(header.channels) +
+                              " channel(s), expected at least 3 (R, G, B and, optionally, A)");
+    Image img = readImage(output, w, h);
+    requireFinite(tool, img);
+    return img;
+  } catch (const std::exception& e) {
+    throw ExternalToolError(tool + ": " + e.what() + tail);
+  }
+}
+
+}  // namespace
+
+Renderer loadRendererFile(const fs::path& file) {
+  const nlohmann::json doc = parseJsonText(readJsonFile(file, "renderer file"), file.string());
+  JsonReader r(doc, "", file.string());
+  if (r.requireString("format") != kRendererFileFormat)
+    r.failValue("format", std::string("\"") + kRendererFileFormat + "\"");
+  Definition d;
+  d.file = fs::absolute(file).lexically_normal();
+  d.name = r.requireString("name");
+  d.input = r.requireChoice("input", {"scene", "gltf", "pov"});
+  d.command = r.stringArray("command", true);
+  std::vector<std::string> version = r.stringArray("version_command", true);
+  if (r.has("timeout_s")) d.timeout_s = r.requireNumber("timeout_s", Range::openClosed(0.0, 7 * 24 * 3600.0));
+  r.finish();
+  if (d.command.empty() || d.command.front().empty()) r.fail("command", "expected the program and its arguments");
+  if (version.empty() || version.front().empty())
+    r.fail("version_command", "expected the program and its arguments");
+  for (const std::string& w : d.command) checkPlaceholders(r, "command", w);
+  for (const std::string& w : version)
+    if (w.find('{') != std::string::npos) r.fail("version_command", "\"" + w + "\": no placeholders here");
+  version.front() = programPath(version.front(), d.file);
+
+  Renderer out;
+  out.id = d.name;
+  out.display_name = d.name;
+  out.summary = "defined by " + d.file.string() + " (input " + d.input + ")";
+  out.version_command = version;
+  out.version_marker = d.name;
+  const std::string program = programPath(d.command.front(), d.file);
+  out.missing = [program, file = d.file] { return programProblem(program, file); };
+  if (d.input == "gltf")
+    out.cannot_express = [](const Scene& s) { return exportRefusal([&](const fs::path& dir) { exportGltf(s, dir); }); };
+  if (d.input == "pov")
+    out.cannot_express = [](const Scene& s) { return exportRefusal([&](const fs::path& dir) { exportPov(s, dir); }); };
+  out.render = [d](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
+    return renderDefined(d, scene, request, info);
+  };
+  return out;
+}
+
+void registerRendererFiles(const std::vector<std::string>& files) {
+  Registry& reg = registry();
+  for (const std::string& f : files) {
+    Renderer r = loadRendererFile(f);
+    try {
+      reg.add(std::move(r));
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error(f + ": name: " + e.what());
+    }
+  }
+  addGoldenSets(reg);
+}
+
+}  // namespace xval::renderers

@@ -1,0 +1,206 @@
+// xval golden update / check (validate/golden/golden_run.h).
+#include "validate/golden/golden_run.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <stdexcept>
+
+#include "golden/golden_set.h"
+#include "image/compare.h"
+#include "process/run_process.h"
+#include "render/renderer.h"
+#include "renderers/registry.h"
+#include "scene/scene_loader.h"
+#include "validate/common/provenance.h"
+#include "validate/tolerances.h"
+
+namespace xval::validation {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A fresh scratch folder, removed with everything in it when done.
+struct Scratch {
+  fs::path dir = fs::temp_directory_path() / ("xval-golden-" + attemptToken());
+  Scratch() { fs::create_directories(dir); }
+  ~Scratch() {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+};
+
+const renderers::Renderer& sourceRenderer(const std::string& id) {
+  const renderers::Renderer& r = renderers::registry().at(id);
+  if (r.id == "golden" || r.id.rfind("golden-", 0) == 0)
+    throw std::runtime_error("--renderer " + id + ": a golden set cannot store golden images of itself");
+  return r;
+}
+
+std::string goldenSetId(const renderers::Renderer& r) { return r.reference ? "golden" : "golden-" + r.id; }
+
+// The render golden images are made of, and the settings it used.
+struct Render {
+  Image image;
+  nlohmann::json settings;
+};
+
+Render renderForGolden(const renderers::Renderer& r, const Scene& scene, const fs::path& work, double timeout,
+                      Precision precision = Precision::Double) {
+  if (r.reference) {
+    RenderOptions o = defaultOptions(scene);
+    o.precision = precision;
+    o.diagnostics = true;
+    o.cull_back_faces = true;
+    o.progress = false;
+    return {r.render(scene, {work, timeout, o}, nullptr), golden::settingsOf(r.id, o.spp, toString(o.precision))};
+  }
+  return {r.render(scene, {work, timeout, {}}, nullptr), golden::settingsOf(r.id, 0, "")};
+}
+
+// A word of a command line as a POSIX shell reads it back.
+std::string shellWord(const std::string& w) {
+  if (!w.empty() && std::all_of(w.begin(), w.end(), [](unsigned char c) {
+        return std::isalnum(c) || std::string_view("/._-+:=,@").find(char(c)) != std::string_view::npos;
+      }))
+    return w;
+  std::string out = "'";
+  for (char c : w) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+std::string acceptCommand(const fs::path& scene_file, const std::string& renderer) {
+  return "xval golden update " + shellWord(fs::absolute(scene_file).lexically_normal().string()) +
+         " --renderer " + shellWord(renderer);
+}
+
+}  // namespace
+
+std::vector<fs::path> goldenSceneFiles(const std::vector<std::string>& inputs) {
+  std::vector<fs::path> out;
+  for (const std::string& in : inputs) {
+    const fs::path p(in);
+    if (fs::is_directory(p)) {
+      std::vector<fs::path> files;
+      for (const auto& e : fs::directory_iterator(p))
+        if (e.path().extension() == ".json" && e.is_regular_file()) files.push_back(e.path());
+      std::sort(files.begin(), files.end());
+      out.insert(out.end(), files.begin(), files.end());
+    } else if (fs::is_regular_file(p)) {
+      out.push_back(p);
+    } else {
+      throw std::runtime_error(in + ": no such scene file or folder");
+    }
+  }
+  if (out.empty()) throw std::runtime_error("no scene files found in " + renderers::joinNames(inputs));
+  return out;
+}
+
+int goldenUpdate(const GoldenRequest& request) {
+  const renderers::Renderer& r = sourceRenderer(request.renderer);
+  const std::vector<fs::path> files = goldenSceneFiles(request.inputs);
+  const renderers::Availability a = renderers::registry().availability(r.id);
+  if (!a.available) throw std::runtime_error(r.display_name + " is not available: " + a.reason);
+  Scratch scratch;
+  const Provenance prov = collectProvenance(scratch.dir / "git.log");
+  const std::string version = renderers::registry().version(r.id);
+  std::map<fs::path, golden::Manifest> manifests;
+  for (const fs::path& file : files) {
+    const Scene scene = loadScene(file, request.budget);
+    const fs::path folder = golden::goldenFolder(file, r.id);
+    auto it = manifests.find(folder);
+    if (it == manifests.end()) it = manifests.emplace(folder, golden::readManifest(folder, r.id)).first;
+    const std::string scene_hash = golden::sha256File(file);
+    const fs::path work = scratch.dir / ("work-" + attemptToken());
+    fs::create_directories(work);
+    Render fresh = renderForGolden(r, scene, work, request.timeout_seconds);
+    const std::string stem = file.stem().string();
+    const fs::path image = folder / (stem + ".exr");
+    golden::writeGoldenImage(fresh.image, image);
+    golden::Entry& e = it->second.entries[stem];
+    e.scene_file = fs::absolute(file).lexically_normal().lexically_relative(folder).generic_string();
+    e.scene_sha256 = scene_hash;
+    e.settings = fresh.settings;
+    e.settings_sha256 = golden::settingsHash(fresh.settings);
+    e.image = image.filename().string();
+    e.image_sha256 = golden::sha256File(image);
+    e.renderer_version = version;
+    e.git_commit = prov.git_commit;
+    e.date_utc = prov.date_utc;
+    golden::writeManifest(folder, it->second);
+    std::printf("stored %s (%s) -> %s\n", file.string().c_str(), r.id.c_str(), image.string().c_str());
+  }
+  return 0;
+}
+
+int goldenCheck(const GoldenRequest& request) {
+  const renderers::Renderer& r = sourceRenderer(request.renderer);
+  const std::string set_id = goldenSetId(r);
+  if (request.precision != "double" && request.precision != "float")
+    throw std::runtime_error("--precision " + request.precision + ": expected double or float");
+  const Precision precision = request.precision == "float" ? Precision::Float : Precision::Double;
+  if (precision == Precision::Float && !r.reference)
+    throw std::runtime_error("--precision float: applies to the reference renderer only");
+  const std::vector<fs::path> files = goldenSceneFiles(request.inputs);
+  const renderers::Availability a = renderers::registry().availability(r.id);
+  if (!a.available) throw std::runtime_error(r.display_name + " is not available: " + a.reason);
+  const ToleranceFile tf = findToleranceFile(request.tolerances, files);
+  const ToleranceTable table = loadTolerances(tf.path);
+  std::printf("tolerances: %s\n", tf.describe().c_str());
+  Scratch scratch;
+  int failed = 0;
+  for (const fs::path& file : files) {
+    const Scene scene = loadScene(file, request.budget);
+    const fs::path folder = golden::goldenFolder(file, r.id);
+    const golden::Manifest m = golden::readManifest(folder, r.id);
+    auto fail = [&](const std::string& why) {
+      ++failed;
+      std::printf("FAIL %s (%s): %s\n", file.string().c_str(), request.precision.c_str(), why.c_str());
+      // The golden images are of the exact path: only its render can be
+      // accepted as one.
+      if (precision == Precision::Double)
+        std::printf("  accept the fresh render: %s\n", acceptCommand(file, r.id).c_str());
+      else
+        std::printf("  (the fast path against the exact path's golden image: `xval golden check %s` first)\n",
+                    file.string().c_str());
+    };
+    if (const std::string problem = golden::goldenProblem(folder, m, file); !problem.empty()) {
+      fail(problem);
+      continue;
+    }
+    const golden::Entry& e = m.entries.at(file.stem().string());
+    const fs::path work = scratch.dir / ("work-" + attemptToken());
+    fs::create_directories(work);
+    Render fresh = renderForGolden(r, scene, work, request.timeout_seconds, precision);
+    // The fast path is compared with the exact path's image: the settings
+    // must agree on everything else.
+    nlohmann::json compared = fresh.settings;
+    if (precision == Precision::Float && e.settings.contains("precision")) compared["precision"] = e.settings["precision"];
+    if (const std::string h = golden::settingsHash(compared); h != e.settings_sha256) {
+      fail("rendered with other settings (" + fresh.settings.dump() + ") than the golden image (" +
+           e.settings.dump() + ")");
+      continue;
+    }
+    const Image stored = readImage(folder / e.image, scene.camera.width, scene.camera.height);
+    std::string reason;
+    const Tolerance tol = table.lookup(scene, set_id, &reason);
+    const CompareMetrics cm = compareImages(stored, fresh.image, tol);
+    const bool pass = tol.passes(cm);
+    const std::string figures =
+        "max " + std::to_string(cm.max_abs * 65535.0) + "/65535 at (" + std::to_string(cm.worst_x) + "," +
+        std::to_string(cm.worst_y) + "), " + std::to_string(cm.fraction_within * 100.0) + "% within " +
+        std::to_string(tol.max_abs * 65535.0) + "/65535 (need " + std::to_string(tol.fraction * 100.0) +
+        "%), mask disagreements off silhouettes " + std::to_string(cm.mask_disagree - cm.mask_disagree_silhouette) +
+        (reason.empty() ? "" : "; declared: " + reason);
+    if (pass)
+      std::printf("pass %s (%s): %s\n", file.string().c_str(), request.precision.c_str(), figures.c_str());
+    else
+      fail("outside the tolerance against " + (folder / e.image).string() + " (stored " + e.date_utc + ", " +
+           e.git_commit + "): " + figures);
+  }
+  std::printf("%zu of %zu scenes match their golden images of %s\n", files.size() - size_t(failed), files.size(),
+              r.display_name.c_str());
+  return failed ? 1 : 0;
+}
+
+}  // namespace xval::validation

@@ -1,0 +1,27 @@
+#!/bin/sh
+# A stand-in for a user's renderer (docs/renderer-file.md), driven by
+# tests/cli/renderer_file.cmake: MODE SCENE OUTPUT WIDTH HEIGHT.
+# Each mode is one way a renderer can go wrong, and `pass` one way it can
+# go right (it hands the scene to the reference renderer: XVAL names it).
+#   --version        prints "standin 1.0"
+#   pass             the reference renderer's image of SCENE
+#   fail             complains and exits 3
+#   hang             never finishes (the time-out must stop it)
+#   no-image         exits 0 without writing OUTPUT
+#   wrong-size       a (WIDTH+1) x HEIGHT image
+#   two-channels     a 2-channel image
+#   nan              an RGBA image whose red channel is NaN
+set -eu
+if [ "${1:-}" = "--version" ]; then echo "standin 1.0"; exit 0; fi
+mode=$1 scene=$2 output=$3 width=$4 height=$5
+echo "standin: mode $mode, scene $scene"
+case "$mode" in
+  pass) exec "$XVAL" render "$scene" -o "$output" -q ;;
+  fail) echo "standin: the engine crashed (simulated)"; exit 3 ;;
+  hang) exec sleep 600 ;;
+  no-image) exit 0 ;;
+  wrong-size) exec oiiotool --create "$((width + 1))x$height" 4 -d float -o "$output" ;;
+  two-channels) exec oiiotool --create "${width}x$height" 2 -d float -o "$output" ;;
+  nan) exec oiiotool --pattern constant:color=nan,0,0,1 "${width}x$height" 4 -d float -o "$output" ;;
+  *) echo "standin: unknown mode $mode"; exit 2 ;;
+esac
