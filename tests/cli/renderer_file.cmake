@@ -1,7 +1,7 @@
 # A renderer defined by a file (docs/renderer-file.md), the stand-in
 # standin_renderer.sh copied into a scratch folder beside its definition
 # (the relative program path is resolved against the definition's folder).
-# Each fault must be an error (exit 1 from `xval render`, exit 2 from
+# Each fault must be an error (exit 2 from `xval render`, exit 2 from
 # `xval crosscheck`) naming the fault and quoting the stand-in's output,
 # with no image written; `pass` must render and pass the crosscheck
 # against the reference renderer.
@@ -35,7 +35,7 @@ if(MODE STREQUAL "pass")
   set(_expect_cross 0)
   set(_message "")
 else()
-  set(_expect_render 1)
+  set(_expect_render 2)
   set(_expect_cross 2)
   if(MODE STREQUAL "missing")
     set(_message "no_such_renderer.sh' of .*standin.json is not an executable file")
