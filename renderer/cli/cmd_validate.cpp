@@ -10,7 +10,7 @@
 // with the declared tolerances, attributes each disagreement, and writes
 // results.json and, from it alone, report.html (validate/report.h).
 //
-// The work is split into jobs (validate/validation_jobs.h): a plan
+// The work is split into jobs (validate/validation/plan.h): a plan
 // (OUT/jobs.json, one render job per scene and renderer, every output path
 // fixed), render jobs, and the compare/report step. A plain run does all
 // three in this process (the render jobs in a thread pool); --plan-only,
@@ -40,7 +40,9 @@
 #include "validate/junit_report.h"
 #include "common/export_common.h"
 #include "validate/tolerances.h"
-#include "validate/validation_jobs.h"
+#include "validate/validation/compare_step.h"
+#include "validate/validation/plan.h"
+#include "validate/validation/run_job.h"
 
 namespace xval::cli {
 

@@ -2,16 +2,16 @@
 // run and a cluster run (Slurm job arrays, scripts/slurm/, docs/cluster.md)
 // execute the same code:
 //
-//   plan     the render jobs (one scene x one renderer each: every
+//   plan     (plan.h) the render jobs (one scene x one renderer each: every
 //            every-scene renderer of the registry, renderers/registry.h,
 //            in its order), written to OUT/jobs.json; every output path
 //            is fixed by the plan: OUT/<scene>/<renderer>.exr, .png and
 //            the job's record OUT/<scene>/<renderer>.job.json
-//   run job  renders one job and writes its EXR (the reference keeps its
+//   run job  (run_job.h, job_record.h) renders one job and writes its EXR (the reference keeps its
 //            diagnostics channels), its preview PNG and, last, its record
 //            (seconds, render_seconds, error), each under a temporary name
 //            and renamed: a record that says ok means the images are whole
-//   compare  reads the plan, the records and the EXRs, compares every pair
+//   compare  (compare_step.h, results_file.h, next_steps.h) reads the plan, the records and the EXRs, compares every pair
 //            (every unordered pair of those renderers, in registry order),
 //            attributes each disagreement (renderers::attribute), and
 //            writes results.json and report.html
@@ -33,7 +33,6 @@
 
 #include "files/output_folder.h"
 #include "scene/scene_budget.h"
-#include "validate/report.h"
 #include "scene/scene_loader.h"
 
 namespace xval::validation {
@@ -86,38 +85,9 @@ void writePlan(const Plan& plan);  // to planFile(plan.dir), atomically
 // Throws std::runtime_error naming the file, the field and what was expected.
 Plan readPlan(const std::filesystem::path& file);
 
-struct JobRecord {
-  bool present = false;    // a readable record exists
-  std::string input_hash;  // what it was rendered from
-  double seconds = 0.0, render_seconds = -1.0;
-  std::string error;       // empty when the render succeeded
-  std::string problem;     // why the record cannot be used (missing, unreadable); empty when present
-};
-
-JobRecord readRecord(const Plan& plan, const RenderJob& job);
-// True when the job need not run again; otherwise `why` says what is missing.
-bool isDone(const Plan& plan, const RenderJob& job, std::string* why = nullptr);
-
-// Renders the job and writes its EXR, PNG and record. Never throws: a
-// failed render is in the returned (and written) record's error; when the
-// record itself cannot be written, the returned record is not `present`
-// and its error says why.
-JobRecord runJob(const Plan& plan, const RenderJob& job);
-
-// The jobs not yet done (all of them unless resuming), in plan order.
-std::vector<size_t> jobsToRun(const Plan& plan, bool resume);
-
-// Runs the given jobs (indices into plan.jobs), `workers` at a time, with a
-// progress line each on stderr. A job's exception is its record's error.
-void runJobs(const Plan& plan, const std::vector<size_t>& todo, int workers);
-
-// Compares every pair of every scene from the EXRs and records, writes
-// each pair's difference EXR and heat map PNG, results.json (with the
-// paper's Figure 1 verdicts, validate/paper_claims.h, and the `sections`
-// folders) and report.html, prints the failing cases' next steps.
-// Returns the exit status of `xval validate`: 0 all pass, 1 some case
-// outside its tolerance, 2 an error (a render failed or a job has no
-// usable record).
-int compareAndReport(const Plan& plan, const ReportSections& sections = {});
+// What a render depends on, as a hash: the renderer, the scene file's bytes
+// and, for an image texture, the image's bytes (the plan's and a record's
+// input_hash).
+std::string inputHash(const Scene& scene, const std::filesystem::path& scene_file, const std::string& renderer);
 
 }  // namespace xval::validation
