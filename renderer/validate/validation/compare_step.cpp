@@ -42,11 +42,10 @@ using Renders = std::map<std::string, Render>;  // by renderer id
 struct CompareContext {
   const Plan& plan;
   const ToleranceTable table;
-  const std::vector<const renderers::Renderer*> renderers;  // the every-scene ones, in registry order
-  const std::vector<renderers::RendererPair> pairs;         // unorderedPairs(renderers.size())
 };
 
-// The job's render: its record checked against the plan, then its EXR.
+// The job's render: its record checked against the plan, then its EXR
+// (none when the renderer declared the scene not expressible).
 Render loadRender(const Plan& plan, const RenderJob& job) {
   Render r;
   r.rec = readRecord(plan, job);
@@ -57,7 +56,7 @@ Render loadRender(const Plan& plan, const RenderJob& job) {
   } else if (r.rec.input_hash != job.input_hash) {
     r.error = (plan.dir / job.record()).string() + ": rendered from other inputs (input_hash " +
               r.rec.input_hash + ", the plan's is " + job.input_hash + "): run the job again";
-  } else {
+  } else if (r.rec.not_expressible.empty()) {
     try {
       r.image = readImage(plan.dir / job.exr());
     } catch (const std::exception& e) {
@@ -67,43 +66,57 @@ Render loadRender(const Plan& plan, const RenderJob& job) {
   return r;
 }
 
+bool notExpressible(const Render& r) { return r.error.empty() && !r.rec.not_expressible.empty(); }
+
 // results.json's cases[].renders.<id>.
 J renderJson(const RenderJob& job, const Render& r) {
-  J jr = {{"seconds", r.rec.seconds}, {"image", job.png()}};
+  J jr = {{"seconds", r.rec.seconds}};
+  if (notExpressible(r)) jr["not_expressible"] = r.rec.not_expressible;
+  else jr["image"] = job.png();
   if (r.rec.render_seconds >= 0) jr["render_seconds"] = r.rec.render_seconds;
   if (!r.error.empty()) jr["error"] = r.error;
   return jr;
 }
 
+// Pair verdicts (renderers::attribute's, and -2 for a pair that one of its
+// renderers cannot express: not compared, and no error).
+constexpr int kPass = 1, kFail = 0, kNotCompared = -1, kNotExpressible = -2;
+
 // One pair of one case: compared with its tolerance, its difference EXR
-// and heat map written. verdict: 1 pass, 0 fail, -1 not compared.
-J comparePair(const CompareContext& cx, const Scene& scene, const RenderJob& j0, const renderers::RendererPair& pair,
-              Renders& renders, int& verdict) {
-  const renderers::Renderer& ra = *cx.renderers[pair.a];
-  const renderers::Renderer& rb = *cx.renderers[pair.b];
+// and heat map written.
+J comparePair(const CompareContext& cx, const Scene& scene, const renderers::Renderer& ra,
+              const renderers::Renderer& rb, Renders& renders, int& verdict) {
   Render& A = renders[ra.id];
   Render& B = renders[rb.id];
   const std::string key = renderers::pairKey(ra, rb);
   J jp = {{"pair", key}};
   if (!A.error.empty() || !B.error.empty()) {
-    verdict = -1;
+    verdict = kNotCompared;
     jp["error"] = "not compared: a render failed";
+    return jp;
+  }
+  if (notExpressible(A) || notExpressible(B)) {
+    verdict = kNotExpressible;
+    std::string why;
+    for (const auto* r : {&ra, &rb})
+      if (notExpressible(renders[r->id])) why += (why.empty() ? "" : "; ") + r->id + ": " + renders[r->id].rec.not_expressible;
+    jp["not_expressible"] = why;
     return jp;
   }
   std::string reason;
   const Tolerance tol = cx.table.lookupPair(scene, ra.id, rb.id, &reason);
-  if (!ra.reference && !rb.reference) {
+  const auto ref = renders.find(renderers::registry().reference().id);
+  if (!ra.reference && !rb.reference && ref != renders.end()) {
     // The reference's diagnostics describe the same pixels.
-    const Image& ref = renders[renderers::registry().reference().id].image;
-    A.image.depth = ref.depth;
-    A.image.backfacing = ref.backfacing;
-    A.image.incidence = ref.incidence;
+    A.image.depth = ref->second.image.depth;
+    A.image.backfacing = ref->second.image.backfacing;
+    A.image.incidence = ref->second.image.incidence;
   }
   CompareMetrics m = compareImages(A.image, B.image, tol);
   PerceptualMetrics pm = perceptualMetrics(A.image, B.image);
   const Image diff = differenceImage(A.image, B.image);
-  writeImage(diff, cx.plan.dir / j0.scene / ("diff_" + key + ".exr"));
-  jp["heat_map"] = writeHeatMapPng(diff, cx.plan.dir, j0.scene, key);  // the report only shows it
+  writeImage(diff, cx.plan.dir / scene.name / ("diff_" + key + ".exr"));
+  jp["heat_map"] = writeHeatMapPng(diff, cx.plan.dir, scene.name, key);  // the report only shows it
   J jm = J::parse(toJson(m, tol, &pm));
   jm["tolerance_reason"] = reason;
   jp["metrics"] = jm;
@@ -112,7 +125,7 @@ J comparePair(const CompareContext& cx, const Scene& scene, const RenderJob& j0,
   jp["classification"] = {{"known", m.over_occlusion_edge + m.over_backfacing + m.over_grazing},
                           {"unexplained", m.over_unexplained},
                           {"declared", !reason.empty()}};
-  verdict = tol.passes(m) ? 1 : 0;
+  verdict = tol.passes(m) ? kPass : kFail;
   return jp;
 }
 
@@ -126,38 +139,72 @@ J colourStatsJson(const Image& reference) {
           {"hue_error_deg", st.hue_error_deg}};
 }
 
-// The case of the scene whose jobs start at plan.jobs[first] (one per
-// renderer, in registry order).
-J compareCase(const CompareContext& cx, size_t first) {
+// Who deviates, among the renderers that can express the scene (their
+// pairs' verdicts), and which cannot.
+std::string attribution(const std::vector<const renderers::Renderer*>& rs, const std::vector<int>& verdict,
+                        const Renders& renders) {
+  std::vector<const renderers::Renderer*> can;
+  std::vector<std::string> cannot;
+  for (const auto* r : rs) {
+    if (notExpressible(renders.at(r->id))) cannot.push_back(r->display_name);
+    else can.push_back(r);
+  }
+  const std::string not_expr = cannot.empty() ? "" : renderers::joinNames(cannot) + " cannot express it";
+  if (can.size() < 2) return "nothing to compare" + (not_expr.empty() ? std::string() : ": " + not_expr);
+  // The pairs of `can`, in unorderedPairs(can.size()) order: the pairs of
+  // rs without a renderer that cannot express the scene, in their order.
+  std::vector<int> can_verdict;
+  const std::vector<renderers::RendererPair> pairs = renderers::unorderedPairs(rs.size());
+  for (size_t p = 0; p < pairs.size(); ++p)
+    if (!notExpressible(renders.at(rs[pairs[p].a]->id)) && !notExpressible(renders.at(rs[pairs[p].b]->id)))
+      can_verdict.push_back(verdict[p]);
+  const std::string who = renderers::attribute(can, can_verdict);
+  return not_expr.empty() ? who : who + "; " + not_expr;
+}
+
+// The case of plan.scenes[k]: its renders, every pair of them, who deviates.
+J compareCase(const CompareContext& cx, size_t k) {
   const Plan& plan = cx.plan;
-  const RenderJob& j0 = plan.jobs[first];
-  const Scene scene = loadScene(j0.path, plan.budget);
-  if (scene.name != j0.scene)
-    throw std::runtime_error(j0.path.string() + ": name: \"" + scene.name + "\": the plan (" +
-                             planFile(plan.dir).string() + ") says \"" + j0.scene + "\": plan again");
-  makeRealFolder(plan.dir, plan.dir / j0.scene);  // the diff images go there: never through a link
-  J jc = {{"scene", j0.scene}, {"file", j0.file}};
+  const PlannedScene& ps = plan.scenes[k];
+  const Scene scene = loadScene(ps.path, plan.budget);
+  if (scene.name != ps.name)
+    throw std::runtime_error(ps.path.string() + ": name: \"" + scene.name + "\": the plan (" +
+                             planFile(plan.dir).string() + ") says \"" + ps.name + "\": plan again");
+  makeRealFolder(plan.dir, plan.dir / ps.name);  // the diff images go there: never through a link
+  J jc = {{"scene", ps.name}, {"file", ps.file}};
   Renders renders;
-  for (size_t r = 0; r < cx.renderers.size(); ++r) {
-    const RenderJob& job = plan.jobs[first + r];
+  std::vector<const renderers::Renderer*> rs;  // the case's renderers, in job (registry) order
+  jc["renders"] = J::object();
+  for (size_t j : sceneJobs(plan, k)) {
+    const RenderJob& job = plan.jobs[j];
+    rs.push_back(&renderers::registry().at(job.renderer));
     renders[job.renderer] = loadRender(plan, job);
     jc["renders"][job.renderer] = renderJson(job, renders[job.renderer]);
   }
-  std::vector<int> verdict(cx.pairs.size());
+  if (!ps.left_out.empty()) {
+    jc["left_out"] = J::object();
+    for (const LeftOut& l : ps.left_out) jc["left_out"][l.renderer] = l.reason;
+  }
+  const std::vector<renderers::RendererPair> pairs = renderers::unorderedPairs(rs.size());
+  std::vector<int> verdict(pairs.size());
   J jpairs = J::array();
-  for (size_t p = 0; p < cx.pairs.size(); ++p) jpairs.push_back(comparePair(cx, scene, j0, cx.pairs[p], renders, verdict[p]));
+  for (size_t p = 0; p < pairs.size(); ++p)
+    jpairs.push_back(comparePair(cx, scene, *rs[pairs[p].a], *rs[pairs[p].b], renders, verdict[p]));
   jc["pairs"] = jpairs;
-  const Render& reference = renders[renderers::registry().reference().id];
-  if (reference.error.empty()) jc["colour_stats"] = colourStatsJson(reference.image);
-  jc["attribution"] = renderers::attribute(cx.renderers, verdict);
-  jc["pass"] = std::all_of(verdict.begin(), verdict.end(), [](int v) { return v == 1; });
+  const auto ref = renders.find(renderers::registry().reference().id);
+  if (ref != renders.end() && ref->second.error.empty() && !notExpressible(ref->second))
+    jc["colour_stats"] = colourStatsJson(ref->second.image);
+  jc["attribution"] = attribution(rs, verdict, renders);
+  // Decided on the pairs that could be compared: every one passes.
+  jc["pass"] = std::all_of(verdict.begin(), verdict.end(), [](int v) { return v == kPass || v == kNotExpressible; });
   return jc;
 }
 
-bool anyRenderError(const J& jc) {
-  for (const auto& [id, jr] : jc["renders"].items())
-    if (jr.contains("error")) return true;
-  return false;
+// How many of the case's renders (or pairs) have `key` ("error", "not_expressible").
+int entriesWith(const J& entries, const char* key) {
+  int n = 0;
+  for (const auto& [id, e] : entries.items()) n += e.contains(key);
+  return n;
 }
 
 }  // namespace
@@ -168,23 +215,29 @@ int compareAndReport(const Plan& plan, const ReportSections& sections) {
   // The old verdict must not outlive this run: whatever stops it from here
   // on (an error, a kill) leaves no results.json or report.html at all.
   removeVerdict(plan);
-  const std::vector<const renderers::Renderer*> rs = renderers::registry().everySceneRenderers();
-  const CompareContext cx{plan, loadTolerances(plan.tolerances_path), rs, renderers::unorderedPairs(rs.size())};
+  const CompareContext cx{plan, loadTolerances(plan.tolerances_path)};
   bool any_error = false, any_fail = false;
+  int not_expressible = 0, not_compared = 0;  // renders, and their pairs
   J jcases = J::array();
   std::vector<fs::path> setting_files{plan.tolerances_path};
-  for (size_t first = 0; first < plan.jobs.size(); first += rs.size()) {
-    setting_files.push_back(plan.jobs[first].path);
-    J jc = compareCase(cx, first);
-    any_error |= anyRenderError(jc);
+  for (size_t k = 0; k < plan.scenes.size(); ++k) {
+    setting_files.push_back(plan.scenes[k].path);
+    J jc = compareCase(cx, k);
+    any_error |= entriesWith(jc["renders"], "error") > 0;
+    not_expressible += entriesWith(jc["renders"], "not_expressible");
+    not_compared += entriesWith(jc["pairs"], "not_expressible");
     any_fail |= !jc["pass"].get<bool>();
     jcases.push_back(std::move(jc));
   }
   writeFileAtomically(dir / "results.json", resultsJson(plan, jcases, setting_files, jsections).dump(2) + "\n");
   writeReport(dir / "results.json", dir / "report.html");
   printNextSteps(plan, jcases);
-  std::fprintf(stderr, "xval validate: %zu scenes, %s; wrote %s\n", jcases.size(),
-               any_error ? "ERRORS" : any_fail ? "some cases FAIL" : "all pass", (dir / "report.html").c_str());
+  const std::string apart = not_expressible ? " (" + std::to_string(not_expressible) + " renders not expressible, " +
+                                                  std::to_string(not_compared) + " pairs not compared)"
+                                            : "";
+  std::fprintf(stderr, "xval validate: %zu scenes, %s%s; wrote %s\n", jcases.size(),
+               any_error ? "ERRORS" : any_fail ? "some cases FAIL" : "all pass", apart.c_str(),
+               (dir / "report.html").c_str());
   return any_error ? 2 : any_fail ? 1 : 0;
 }
 

@@ -45,6 +45,9 @@ JobRecord readRecord(const Plan& plan, const RenderJob& job) {
     rec.seconds = rd.num(j, "seconds");
     if (j.contains("render_seconds")) rec.render_seconds = rd.num(j, "render_seconds");
     if (j.contains("error")) rec.error = rd.str(j, "error");
+    if (j.contains("not_expressible")) rec.not_expressible = rd.str(j, "not_expressible");
+    if (!rec.error.empty() && !rec.not_expressible.empty())
+      throw std::runtime_error(file.string() + ": error and not_expressible: expected at most one of them");
     rec.present = true;
   } catch (const std::exception& e) {
     rec.problem = e.what();
@@ -63,6 +66,7 @@ bool isDone(const Plan& plan, const RenderJob& job, std::string* why) {
   if (rec.input_hash != job.input_hash)
     return no((plan.dir / job.record()).string() + ": rendered from other inputs (input_hash " +
               rec.input_hash + ", the plan's is " + job.input_hash + ")");
+  if (!rec.not_expressible.empty()) return true;  // a verdict: nothing was rendered
   for (const std::string& f : {job.exr(), job.png()})
     if (!fs::exists(plan.dir / f)) return no((plan.dir / f).string() + ": missing");
   return true;
@@ -78,6 +82,7 @@ void writeRecord(const Plan& plan, const RenderJob& job, const JobRecord& rec) {
   j["seconds"] = rec.seconds;
   if (rec.render_seconds >= 0) j["render_seconds"] = rec.render_seconds;
   if (!rec.error.empty()) j["error"] = rec.error;
+  if (!rec.not_expressible.empty()) j["not_expressible"] = rec.not_expressible;
   j["host"] = hostName();
   j["finished_unix"] = nowUnix();
   writeFileAtomically(plan.dir / job.record(), j.dump(2) + "\n");

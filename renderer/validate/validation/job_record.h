@@ -1,6 +1,7 @@
 // A render job's record, OUT/<scene>/<renderer>.job.json (plan.h): what
 // the job rendered from (input_hash), how long it took and, when the render
-// failed, why. It is written last, after the job's EXR and PNG, under a
+// failed, why, or that the renderer declared the scene not expressible
+// (no images then). It is written last, after the job's EXR and PNG, under a
 // temporary name and renamed: a record that says ok means the images are
 // whole.
 #pragma once
@@ -19,6 +20,10 @@ struct JobRecord {
   std::string input_hash;  // what it was rendered from
   double seconds = 0.0, render_seconds = -1.0;
   std::string error;       // empty when the render succeeded
+  // Why the renderer cannot express the scene, as it declared before
+  // rendering (Renderer::cannot_express): a verdict, not an error; the job
+  // rendered nothing. Empty when it can.
+  std::string not_expressible;
   std::string problem;     // why the record cannot be used (missing, unreadable); empty when present
 };
 

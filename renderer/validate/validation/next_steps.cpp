@@ -23,10 +23,11 @@ void printNextSteps(const Plan& plan, const nlohmann::ordered_json& cases) {
     if (jc["pass"].get<bool>()) continue;
     const std::string scene = jc["scene"].get<std::string>(), file = jc["file"].get<std::string>();
     std::fprintf(stderr, "FAIL %s (%s)\n", scene.c_str(), jc["attribution"].get<std::string>().c_str());
-    for (const renderers::Renderer* r : renderers::registry().everySceneRenderers())
-      if (!r->reference)
+    // Every renderer of the case that rendered it, but the reference.
+    for (const auto& [id, render] : jc["renders"].items())
+      if (id != renderers::registry().reference().id && !render.contains("not_expressible"))
         std::fprintf(stderr, "  look closer: xval crosscheck %s --renderer %s -o %s\n", shellQuote(file).c_str(),
-                     r->id.c_str(), shellQuote((plan.dir / (scene + "." + r->id)).string()).c_str());
+                     id.c_str(), shellQuote((plan.dir / (scene + "." + id)).string()).c_str());
     std::fprintf(stderr,
                  "  accept a documented difference: declare it, with its measured reason, in the\n"
                  "  `tolerances` field of %s (defaults: %s)\n"

@@ -24,7 +24,7 @@ namespace {
 namespace fs = std::filesystem;
 using J = nlohmann::ordered_json;
 
-constexpr const char* kPlanFormat = "xval-validate-plan/1";
+constexpr const char* kPlanFormat = "xval-validate-plan/2";
 
 struct Fnv {
   uint64_t h = 1469598103934665603ull;
@@ -69,6 +69,133 @@ void checkSceneName(const std::string& name, const std::string& where) {
                              ": cannot name a case folder: " + problem);
 }
 
+// A case folder, if it exists already, is a real folder (not a link
+// planted or left there): refused before anything renders.
+void checkCaseFolder(const fs::path& folder, const fs::path& scene_file) {
+  const fs::file_status st = fs::symlink_status(folder);
+  if (fs::is_symlink(st) || (fs::exists(st) && !fs::is_directory(st)))
+    throw std::runtime_error(folder.string() + ": " + scene_file.string() + "'s case folder " +
+                             (fs::is_symlink(st) ? "is a symbolic link; xval does not write through links "
+                                                   "inside its output folder (remove it)"
+                                                 : "exists and is not a folder"));
+}
+
+// The run's renderers that the scene's `renderers` field does not name.
+std::vector<LeftOut> leftOut(const Scene& scene, const std::vector<std::string>& run) {
+  std::vector<LeftOut> out;
+  if (scene.renderers.empty()) return out;
+  for (const std::string& r : run)
+    if (std::find(scene.renderers.begin(), scene.renderers.end(), r) == scene.renderers.end())
+      out.push_back({r, "the scene is meant for " + renderers::joinNames(scene.renderers) +
+                            " only (its `renderers` field)"});
+  return out;
+}
+
+bool isLeftOut(const std::vector<LeftOut>& left_out, const std::string& renderer) {
+  return std::any_of(left_out.begin(), left_out.end(), [&](const LeftOut& l) { return l.renderer == renderer; });
+}
+
+// The plan's "renderers": as runRenderers accepts them, in registry order.
+std::vector<std::string> readRunRenderers(const FieldReader& rd, const J& j) {
+  const J& v = rd.at(j, "renderers", "");
+  std::vector<std::string> names;
+  for (size_t i = 0; v.is_array() && i < v.size(); ++i) {
+    if (!v[i].is_string())
+      throw std::runtime_error(rd.file + ": renderers[" + std::to_string(i) + "]: " + v[i].dump() +
+                               ": expected a string");
+    names.push_back(v[i].get<std::string>());
+  }
+  if (!v.is_array() || names.empty())
+    throw std::runtime_error(rd.file + ": renderers: " + v.dump() + ": expected a non-empty array of renderer ids");
+  std::vector<std::string> ordered;
+  try {
+    ordered = runRenderers(names);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(rd.file + ": renderers: " + e.what());
+  }
+  if (ordered != names)
+    throw std::runtime_error(rd.file + ": renderers: " + v.dump() + ": expected registry order (" +
+                             renderers::joinNames(ordered) + ")");
+  return names;
+}
+
+// The plan's "scenes": names usable as case folders, unique; each
+// left_out names a renderer of the run with a reason.
+std::vector<PlannedScene> readScenes(const FieldReader& rd, const J& j, const std::vector<std::string>& run) {
+  const J& v = rd.at(j, "scenes", "");
+  if (!v.is_array() || v.empty())
+    throw std::runtime_error(rd.file + ": scenes: expected a non-empty array");
+  std::vector<PlannedScene> out;
+  for (size_t k = 0; k < v.size(); ++k) {
+    const std::string where = "scenes[" + std::to_string(k) + "].";
+    PlannedScene ps{rd.str(v[k], "scene", where), rd.str(v[k], "file", where), rd.str(v[k], "path", where), {}};
+    checkSceneName(ps.name, rd.file + ": " + where.substr(0, where.size() - 1));
+    for (const PlannedScene& before : out)
+      if (before.name == ps.name)
+        throw std::runtime_error(rd.file + ": " + where + "scene: \"" + ps.name + "\": named twice");
+    const J& left = rd.at(v[k], "left_out", where);
+    if (!left.is_object())
+      throw std::runtime_error(rd.file + ": " + where + "left_out: expected an object (renderer: reason)");
+    for (const auto& [renderer, reason] : left.items()) {
+      if (std::find(run.begin(), run.end(), renderer) == run.end() || !reason.is_string())
+        throw std::runtime_error(rd.file + ": " + where + "left_out." + renderer +
+                                 ": expected a reason (a string) for a renderer of `renderers`");
+      ps.left_out.push_back({renderer, reason.get<std::string>()});
+    }
+    out.push_back(std::move(ps));
+  }
+  return out;
+}
+
+// The plan's "jobs": exactly those its scenes and renderers imply, in order.
+std::vector<RenderJob> readJobs(const FieldReader& rd, const J& j, const Plan& plan) {
+  // The jobs the scenes and renderers imply, in order: (scene, renderer).
+  std::vector<std::pair<const PlannedScene*, std::string>> expected;
+  for (const PlannedScene& ps : plan.scenes)
+    for (const std::string& r : plan.renderers)
+      if (!isLeftOut(ps.left_out, r)) expected.emplace_back(&ps, r);
+  const J& jobs = rd.at(j, "jobs", "");
+  std::vector<RenderJob> out;
+  if (!jobs.is_array() || jobs.size() != expected.size())
+    throw std::runtime_error(rd.file + ": jobs: expected an array of " + std::to_string(expected.size()) +
+                             " jobs (per scene, one for each of " + renderers::joinNames(plan.renderers) +
+                             " it is not left out of), got " +
+                             (jobs.is_array() ? std::to_string(jobs.size()) + " entries" : jobs.type_name()));
+  for (size_t k = 0; k < jobs.size(); ++k) {
+    const std::string where = "jobs[" + std::to_string(k) + "].";
+    const J& e = jobs[k];
+    RenderJob job;
+    const double index = rd.num(e, "index", where);
+    if (index != double(k))
+      throw std::runtime_error(rd.file + ": " + where + "index: " + e["index"].dump() + ": expected " +
+                               std::to_string(k));
+    job.index = k;
+    const auto& [ps, renderer] = expected[k];
+    job.scene = rd.str(e, "scene", where);
+    job.renderer = rd.str(e, "renderer", where);
+    if (job.scene != ps->name || job.renderer != renderer)
+      throw std::runtime_error(rd.file + ": " + where + "scene/renderer: \"" + job.scene + "\"/\"" + job.renderer +
+                               "\": expected \"" + ps->name + "\"/\"" + renderer +
+                               "\" (jobs go scene by scene, in the order of `renderers`)");
+    job.file = rd.str(e, "file", where);
+    job.path = rd.str(e, "path", where);
+    if (job.file != ps->file || job.path != ps->path)
+      throw std::runtime_error(rd.file + ": " + where + "file/path: \"" + job.file + "\"/\"" + job.path.string() +
+                               "\": expected the scene's, \"" + ps->file + "\"/\"" + ps->path.string() + "\"");
+    job.input_hash = rd.str(e, "input_hash", where);
+    for (const auto& [key, value] : {std::pair<std::string, std::string>{"exr", job.exr()},
+                                     {"png", job.png()},
+                                     {"record", job.record()}}) {
+      const std::string got = rd.str(e, key, where);
+      if (got != value)
+        throw std::runtime_error(rd.file + ": " + where + key + ": \"" + got + "\": expected \"" + value +
+                                 "\" (output paths follow from the scene and renderer)");
+    }
+    out.push_back(job);
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string inputHash(const Scene& scene, const fs::path& scene_file, const std::string& renderer) {
@@ -83,6 +210,32 @@ std::string inputHash(const Scene& scene, const fs::path& scene_file, const std:
 
 std::vector<std::string> jobRenderers() { return renderers::registry().everySceneIds(); }
 
+std::vector<std::string> runRenderers(const std::vector<std::string>& names) {
+  const std::vector<std::string> every = jobRenderers();
+  if (names.empty()) return every;
+  for (size_t i = 0; i < names.size(); ++i) {
+    if (std::find(every.begin(), every.end(), names[i]) == every.end())
+      throw std::runtime_error("--renderers: \"" + names[i] + "\": not a renderer validate runs (expected " +
+                               renderers::joinNames(every) + "; xval renderers lists them)");
+    if (std::find(names.begin(), names.begin() + i, names[i]) != names.begin() + i)
+      throw std::runtime_error("--renderers: \"" + names[i] + "\" named twice");
+  }
+  if (names.size() < 2)
+    throw std::runtime_error("--renderers: expected at least two renderers (a comparison needs two), got " +
+                             renderers::joinNames(names));
+  std::vector<std::string> out;
+  for (const std::string& id : every)
+    if (std::find(names.begin(), names.end(), id) != names.end()) out.push_back(id);
+  return out;
+}
+
+std::vector<size_t> sceneJobs(const Plan& plan, size_t k) {
+  std::vector<size_t> out;
+  for (const RenderJob& job : plan.jobs)
+    if (job.scene == plan.scenes[k].name) out.push_back(job.index);
+  return out;
+}
+
 fs::path planFile(const fs::path& dir) { return dir / "jobs.json"; }
 
 void removeVerdict(const Plan& plan) {
@@ -94,7 +247,8 @@ void removeVerdict(const Plan& plan) {
 }
 
 Plan makePlan(const std::vector<std::string>& inputs, const std::string& tolerances,
-              const fs::path& dir, double timeout_seconds, const Budget& budget) {
+              const fs::path& dir, double timeout_seconds, const Budget& budget,
+              const std::vector<std::string>& run_renderers) {
   Plan plan;
   plan.dir = fs::absolute(dir).lexically_normal();
   if (!plan.dir.has_filename()) plan.dir = plan.dir.parent_path();  // "out/" -> "out"
@@ -107,23 +261,23 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
   std::fprintf(stderr, "xval validate: tolerances: %s\n", tol_file.describe().c_str());
   plan.timeout_seconds = timeout_seconds;
   plan.budget = budget;
+  plan.renderers = runRenderers(run_renderers);
   std::map<std::string, std::string> seen;  // scene name -> file
   for (const auto& f : scene_files) {
     Scene scene = loadScene(f, plan.budget);
     checkSceneName(scene.name, f.string());
-    // Its case folder, if it exists already, is a real folder (not a link
-    // planted or left there): refused before anything renders.
-    const fs::file_status st = fs::symlink_status(plan.dir / scene.name);
-    if (fs::is_symlink(st) || (fs::exists(st) && !fs::is_directory(st)))
-      throw std::runtime_error((plan.dir / scene.name).string() + ": " + f.string() + "'s case folder " +
-                               (fs::is_symlink(st) ? "is a symbolic link; xval does not write through links "
-                                                     "inside its output folder (remove it)"
-                                                   : "exists and is not a folder"));
+    checkCaseFolder(plan.dir / scene.name, f);
     auto [it, fresh] = seen.emplace(scene.name, f.string());
     if (!fresh)
       throw std::runtime_error(f.string() + ": name: \"" + scene.name + "\": also the name of " +
                                it->second + " (scene names name the output folders: expected unique)");
-    for (const std::string& r : jobRenderers()) {
+    PlannedScene planned{scene.name, f.string(), fs::absolute(f).lexically_normal(),
+                         leftOut(scene, plan.renderers)};
+    for (const LeftOut& l : planned.left_out)
+      std::fprintf(stderr, "xval validate: %s: %s left out: %s\n", scene.name.c_str(), l.renderer.c_str(),
+                   l.reason.c_str());
+    for (const std::string& r : plan.renderers) {
+      if (isLeftOut(planned.left_out, r)) continue;
       RenderJob job;
       job.index = plan.jobs.size();
       job.scene = scene.name;
@@ -133,6 +287,7 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
       job.input_hash = inputHash(scene, job.path, r);
       plan.jobs.push_back(job);
     }
+    plan.scenes.push_back(std::move(planned));
   }
   plan.created_unix = nowUnix();
   return plan;
@@ -151,6 +306,13 @@ void writePlan(const Plan& plan) {
   j["budget"] = {{"max_triangles", plan.budget.max_triangles},
                  {"max_samples", plan.budget.max_samples},
                  {"max_memory_mb", plan.budget.max_memory_mb}};
+  j["renderers"] = plan.renderers;
+  j["scenes"] = J::array();
+  for (const PlannedScene& s : plan.scenes) {
+    J left = J::object();
+    for (const LeftOut& l : s.left_out) left[l.renderer] = l.reason;
+    j["scenes"].push_back({{"scene", s.name}, {"file", s.file}, {"path", s.path.string()}, {"left_out", left}});
+  }
   j["jobs"] = J::array();
   for (const auto& job : plan.jobs)
     j["jobs"].push_back({{"index", job.index},
@@ -201,45 +363,9 @@ Plan readPlan(const fs::path& file) {
       *field = v.get<long long>();
     }
   }
-  const J& jobs = rd.at(j, "jobs", "");
-  const std::vector<std::string> per_scene = jobRenderers();
-  const size_t n = per_scene.size();
-  if (!jobs.is_array() || jobs.empty() || jobs.size() % n != 0)
-    throw std::runtime_error(name + ": jobs: expected a non-empty array of " + std::to_string(n) +
-                             " jobs per scene (" + renderers::joinNames(per_scene) + "), got " +
-                             (jobs.is_array() ? std::to_string(jobs.size()) + " entries" : jobs.type_name()));
-  for (size_t k = 0; k < jobs.size(); ++k) {
-    const std::string where = "jobs[" + std::to_string(k) + "].";
-    const J& e = jobs[k];
-    RenderJob job;
-    const double index = rd.num(e, "index", where);
-    if (index != double(k))
-      throw std::runtime_error(name + ": " + where + "index: " + e["index"].dump() + ": expected " +
-                               std::to_string(k));
-    job.index = k;
-    job.scene = rd.str(e, "scene", where);
-    checkSceneName(job.scene, name + ": " + where.substr(0, where.size() - 1));
-    job.renderer = rd.str(e, "renderer", where);
-    const std::string& expect = per_scene[k % n];
-    if (job.renderer != expect)
-      throw std::runtime_error(name + ": " + where + "renderer: \"" + job.renderer + "\": expected \"" +
-                               expect + "\" (jobs go " + renderers::joinNames(per_scene) + " per scene)");
-    if (k % n != 0 && job.scene != plan.jobs[k - k % n].scene)
-      throw std::runtime_error(name + ": " + where + "scene: \"" + job.scene + "\": expected \"" +
-                               plan.jobs[k - k % n].scene + "\" (the jobs of a scene are adjacent)");
-    job.file = rd.str(e, "file", where);
-    job.path = rd.str(e, "path", where);
-    job.input_hash = rd.str(e, "input_hash", where);
-    for (const auto& [key, value] : {std::pair<std::string, std::string>{"exr", job.exr()},
-                                     {"png", job.png()},
-                                     {"record", job.record()}}) {
-      const std::string got = rd.str(e, key, where);
-      if (got != value)
-        throw std::runtime_error(name + ": " + where + key + ": \"" + got + "\": expected \"" + value +
-                                 "\" (output paths follow from the scene and renderer)");
-    }
-    plan.jobs.push_back(job);
-  }
+  plan.renderers = readRunRenderers(rd, j);
+  plan.scenes = readScenes(rd, j, plan.renderers);
+  plan.jobs = readJobs(rd, j, plan);
   return plan;
 }
 

@@ -2,9 +2,11 @@
 // run and a cluster run (Slurm job arrays, scripts/slurm/, docs/cluster.md)
 // execute the same code:
 //
-//   plan     (plan.h) the render jobs (one scene x one renderer each: every
-//            every-scene renderer of the registry, renderers/registry.h,
-//            in its order), written to OUT/jobs.json; every output path
+//   plan     (plan.h) the render jobs (one scene x one renderer each: the
+//            run's renderers, validate --renderers or every every-scene
+//            renderer of the registry, renderers/registry.h, in its order,
+//            less those the scene's `renderers` field leaves out, recorded
+//            with the reason), written to OUT/jobs.json; every output path
 //            is fixed by the plan: OUT/<scene>/<renderer>.exr, .png and
 //            the job's record OUT/<scene>/<renderer>.job.json
 //   run job  (run_job.h, job_record.h) renders one job and writes its EXR (the reference keeps its
@@ -22,8 +24,9 @@
 //
 // A job is done when its record says ok, the record's input hash equals
 // the plan's (the scene file's bytes, its image texture's bytes and the
-// renderer) and its EXR and PNG exist; resuming redoes only jobs that are
-// not done.
+// renderer) and its EXR and PNG exist, or when its record says the renderer
+// declared the scene not expressible (Renderer::cannot_express: a verdict,
+// with no images); resuming redoes only jobs that are not done.
 #pragma once
 
 #include <cstddef>
@@ -50,6 +53,21 @@ struct RenderJob {
   std::string record() const { return scene + "/" + renderer + ".job.json"; }
 };
 
+// A renderer of the run that a scene is not meant for (its `renderers`
+// field), and why: no job, no pair.
+struct LeftOut {
+  std::string renderer;
+  std::string reason;
+};
+
+// One scene of the plan; its jobs are adjacent in Plan::jobs.
+struct PlannedScene {
+  std::string name;             // the scene's name: its folder under the output folder
+  std::string file;             // the scene file as given
+  std::filesystem::path path;   // the scene file, absolute
+  std::vector<LeftOut> left_out;
+};
+
 struct Plan {
   std::filesystem::path dir;              // the output folder (holds jobs.json)
   std::string tolerances;                 // the tolerance file as given
@@ -57,12 +75,23 @@ struct Plan {
   double timeout_seconds = 0.0;           // for the external renderers
   Budget budget;                          // every scene is loaded with it (planning and every job)
   double created_unix = 0.0;              // when the plan was made (wall_seconds counts from it)
-  std::vector<RenderJob> jobs;            // per scene, in scene order: one per renderer (jobRenderers())
+  std::vector<std::string> renderers;     // the run's renderers, in registry order (at least two)
+  std::vector<PlannedScene> scenes;       // in scene order
+  std::vector<RenderJob> jobs;            // per scene, in scene order: one per renderer of `renderers`
+                                          // the scene is meant for, in that order
 };
 
 // The renderers every scene goes through, in job order: the registry's
 // every-scene renderers (for the built-in ones: reference, povray, blender).
 std::vector<std::string> jobRenderers();
+
+// The run's renderers from `validate --renderers` (empty: jobRenderers()),
+// in registry order. Throws std::runtime_error for a name that is not one
+// of jobRenderers() (listing them), a name given twice, or fewer than two.
+std::vector<std::string> runRenderers(const std::vector<std::string>& names);
+
+// The jobs of plan.scenes[k], as indices into plan.jobs (adjacent).
+std::vector<size_t> sceneJobs(const Plan& plan, size_t k);
 
 // The plan's file in an output folder.
 std::filesystem::path planFile(const std::filesystem::path& dir);
@@ -77,10 +106,12 @@ void removeVerdict(const Plan& plan);
 
 // Scene files from files and folders (a folder: its *.json, sorted), loaded
 // and checked (scene names unique and usable as folder names), one job per
-// renderer of jobRenderers() each. Throws std::runtime_error / SceneError naming the file and field.
+// renderer of `renderers` (runRenderers) the scene is meant for; the others
+// are its left_out, each said on stderr. Throws std::runtime_error /
+// SceneError naming the file and field.
 Plan makePlan(const std::vector<std::string>& inputs, const std::string& tolerances,
               const std::filesystem::path& dir, double timeout_seconds,
-              const Budget& budget = Budget{});
+              const Budget& budget = Budget{}, const std::vector<std::string>& renderers = jobRenderers());
 void writePlan(const Plan& plan);  // to planFile(plan.dir), atomically
 // Throws std::runtime_error naming the file, the field and what was expected.
 Plan readPlan(const std::filesystem::path& file);

@@ -57,6 +57,7 @@ J resultsJson(const Plan& plan, const J& cases, const std::vector<fs::path>& set
   // From the plan's making to now: on a cluster this includes the time the
   // jobs waited in the queue.
   results["wall_seconds"] = std::max(0.0, nowUnix() - plan.created_unix);
+  results["renderers"] = plan.renderers;  // the run's (validate --renderers, else every every-scene one)
   results["cases"] = cases;
   if (J claims = paperClaims(cases); !claims.is_null()) results["paper_claims"] = claims;
   if (!sections.empty()) results["sections"] = sections;

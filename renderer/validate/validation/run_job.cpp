@@ -21,6 +21,30 @@ using Clock = std::chrono::steady_clock;
 
 constexpr int kPreviewSide = 360;  // report images: 8-bit, at most 360 px
 
+// Renders the job's scene and writes its EXR and preview PNG; returns the
+// render's own seconds (-1: not reported). Throws on any failure.
+double renderImages(const Plan& plan, const RenderJob& job, const Scene& scene, const renderers::Renderer& renderer) {
+  renderers::RenderRequest request;
+  request.timeout_seconds = plan.timeout_seconds;
+  if (renderer.reference) {
+    RenderOptions o = defaultOptions(scene);
+    o.precision = Precision::Double;
+    o.threads = 1;  // parallelism comes from running jobs side by side
+    request.options = o;
+  }
+  if (renderer.external()) {
+    // A fresh work folder per attempt: nothing planted or left there by
+    // an earlier attempt is read or written through.
+    request.work_dir = plan.dir / job.scene / (job.renderer + ".work");
+    makeFreshFolder(request.work_dir);
+  }
+  renderers::RenderInfo info;
+  Image image = renderer.render(scene, request, &info);
+  writeImage(image, plan.dir / job.exr());
+  writePreviewPng(image, plan.dir / job.png(), kPreviewSide);
+  return info.render_seconds;
+}
+
 }  // namespace
 
 JobRecord runJob(const Plan& plan, const RenderJob& job) {
@@ -49,25 +73,10 @@ JobRecord runJob(const Plan& plan, const RenderJob& job) {
       throw std::runtime_error(job.path.string() + ": changed since the plan was written (input_hash " +
                                now_hash + ", the plan's is " + job.input_hash + "): plan again");
     const renderers::Renderer& renderer = renderers::registry().at(job.renderer);
-    renderers::RenderRequest request;
-    request.timeout_seconds = plan.timeout_seconds;
-    if (renderer.reference) {
-      RenderOptions o = defaultOptions(scene);
-      o.precision = Precision::Double;
-      o.threads = 1;  // parallelism comes from running jobs side by side
-      request.options = o;
-    }
-    if (renderer.external()) {
-      // A fresh work folder per attempt: nothing planted or left there by
-      // an earlier attempt is read or written through.
-      request.work_dir = cdir / (job.renderer + ".work");
-      makeFreshFolder(request.work_dir);
-    }
-    renderers::RenderInfo info;
-    Image image = renderer.render(scene, request, &info);
-    rec.render_seconds = info.render_seconds;
-    writeImage(image, plan.dir / job.exr());
-    writePreviewPng(image, plan.dir / job.png(), kPreviewSide);
+    // A renderer that declares it cannot express the scene renders nothing:
+    // its record says why (a verdict; compare_step.h leaves its pairs out).
+    if (renderer.cannot_express) rec.not_expressible = renderer.cannot_express(scene);
+    if (rec.not_expressible.empty()) rec.render_seconds = renderImages(plan, job, scene, renderer);
   } catch (const std::exception& e) {
     rec.error = e.what();
   }
@@ -114,9 +123,10 @@ void runJobs(const Plan& plan, const std::vector<size_t>& todo, int workers) {
     const double el = std::chrono::duration<double>(Clock::now() - t_start).count();
     std::fprintf(stderr, "[%zu/%zu] %-32s %-9s %s %6.2f s   elapsed %.0f s, ~%.0f s left\n", n,
                  todo.size(), job.scene.c_str(), job.renderer.c_str(),
-                 rec.error.empty() ? "ok   " : "ERROR", rec.seconds, el,
-                 el * double(todo.size() - n) / double(n));
+                 !rec.error.empty() ? "ERROR" : !rec.not_expressible.empty() ? "not expressible" : "ok   ",
+                 rec.seconds, el, el * double(todo.size() - n) / double(n));
     if (!rec.error.empty()) std::fprintf(stderr, "  %s\n", rec.error.c_str());
+    if (!rec.not_expressible.empty()) std::fprintf(stderr, "  %s\n", rec.not_expressible.c_str());
   });
 }
 
