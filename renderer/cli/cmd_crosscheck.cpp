@@ -6,8 +6,9 @@
 // DIR/reference.exr, DIR/<renderer>.exr, DIR/diff.exr, DIR/metrics.json;
 // with --junit, the verdict as JUnit XML (validate/junit_report.h), an
 // error as <error>.
-// Exit 0: within tolerance; 1: not; 2: an error (bad scene, renderer
-// missing, failing or timing out: never a pass).
+// Exit 0: within tolerance, or not expressible (the renderer declares it
+// cannot express the scene; metrics.json says why); 1: outside; 2: an error
+// (bad scene, renderer missing, failing or timing out: never a pass).
 #include <cstdio>
 #include <memory>
 
@@ -32,7 +33,8 @@ void addCrosscheckCommand(CLI::App& app, std::function<int()>& run) {
   CLI::App* cmd = app.add_subcommand(
       "crosscheck",
       "Render a scene with the reference renderer and an external one, and compare them with "
-      "the tolerance declared for that case.\nExit 0 within tolerance, 1 outside, 2 on an error "
+      "the tolerance declared for that case.\nExit 0 within tolerance or when the renderer declares it cannot "
+      "express the scene (NOT EXPRESSIBLE, the reason in metrics.json), 1 outside, 2 on an error "
       "(a missing, failing or hanging renderer is an error, never a pass).");
   cmd->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
   const renderers::Registry& registry = renderers::registry();

@@ -1,5 +1,5 @@
 // xval validate [SCENES or DIRS...] -o results/<run>/ [--jobs N] [--timeout S] [--resume]
-//               [--tolerances FILE] [--extremes DIR] [--tradeoff DIR]
+//               [--renderers LIST] [--tolerances FILE] [--extremes DIR] [--tradeoff DIR]
 // xval validate [SCENES or DIRS...] -o OUT --plan-only [--resume]
 // xval validate --plan OUT/jobs.json --run-job K
 // xval validate --plan OUT/jobs.json --compare-only
@@ -10,14 +10,20 @@
 // with the declared tolerances, attributes each disagreement, and writes
 // results.json and, from it alone, report.html (validate/report.h).
 //
-// The work is split into jobs (validate/validation_jobs.h): a plan
+// The work is split into jobs (validate/validation/plan.h): a plan
 // (OUT/jobs.json, one render job per scene and renderer, every output path
 // fixed), render jobs, and the compare/report step. A plain run does all
 // three in this process (the render jobs in a thread pool); --plan-only,
 // --run-job and --compare-only do one step each, which is how a cluster
 // runs it (scripts/slurm/submit.sh, docs/cluster.md).
 //
-// Exit 0: every case within tolerance; 1: some case outside; 2: an error
+// --renderers LIST renders and compares only those renderers; a scene's
+// `renderers` field leaves out the others for that scene (each said on
+// stderr and in results.json); a renderer that declares it cannot express
+// a scene is recorded as not expressible, with its reason, and the case
+// is decided on the other pairs (validate/validation/compare_step.h).
+//
+// Exit 0: every compared pair within tolerance; 1: some case outside; 2: an error
 // (bad scene, renderer missing or broken, a job not run). --plan-only
 // exits 0 when it wrote the plan; --run-job exits 0 when the render
 // succeeded and 2 when it failed (the failure is in the job's record).
@@ -36,12 +42,15 @@
 #include "cli/renderer_file_option.h"
 #include "files/atomic_write.h"
 #include "process/job_pool.h"
+#include "renderers/registry.h"
 #include "scene/json_reader.h"
 #include "scene/scene_loader.h"
 #include "validate/junit_report.h"
 #include "common/export_common.h"
 #include "validate/tolerances.h"
-#include "validate/validation_jobs.h"
+#include "validate/validation/compare_step.h"
+#include "validate/validation/plan.h"
+#include "validate/validation/run_job.h"
 
 namespace xval::cli {
 
@@ -63,7 +72,7 @@ int withJunit(const v::Plan& plan, int status, const std::string& junit) {
 
 void addValidateCommand(CLI::App& app, std::function<int()>& run) {
   struct Args {
-    std::vector<std::string> inputs;
+    std::vector<std::string> inputs, renderers;
     std::string dir, tolerances, plan, extremes, tradeoff, junit;
     int jobs = 0;
     long run_job = -1;
@@ -87,13 +96,19 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
       "OUT/<scene>/<renderer>.exr, .png and .job.json, the job's record), then one compare step. "
       "A plain run does it all here; --plan-only, --run-job and --compare-only do one step each, "
       "which is how scripts/slurm/submit.sh runs it on a Slurm cluster (docs/cluster.md).\n"
-      "Exit 0 when every case passes, 1 when any fails, 2 on an error (bad scene, renderer "
+      "A renderer that declares it cannot express a scene is recorded as not expressible, with its "
+      "reason, and the case is decided on the other pairs.\n"
+      "Exit 0 when every compared pair passes, 1 when any fails, 2 on an error (bad scene, renderer "
       "missing or broken, a job not run). --plan-only exits 0 once the plan is written; "
       "--run-job exits 0 when its render succeeded, 2 when it failed.");
   cmd->add_option("scenes", args->inputs, "Scene files or folders (default: reference/scenes)");
   cmd->add_option("-o,--output", args->dir,
                   "Output folder, e.g. results/<run>/ (required unless --plan is given)");
   cmd->add_option("--tolerances", args->tolerances, kToleranceFileHelp);
+  cmd->add_option("--renderers", args->renderers,
+                  "Render and compare only these renderers, comma-separated, at least two (default: " +
+                      renderers::joinNames(v::jobRenderers()) + "; xval renderers lists them)")
+      ->delimiter(',');
   cmd->add_option("--jobs", args->jobs, "Renders in parallel (default: the core count)")
       ->check(CLI::Range(1, 256));
   cmd->add_option("--timeout", args->timeout, "Seconds before an external renderer is killed")
@@ -135,7 +150,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
   plan->excludes(plan_only)->excludes(resume);
   auto renderer_files = addRendererFileOption(cmd);
   cmd->callback([args, &run, cmd, sections, renderer_files]() {
-    const bool local_options_given = cmd->count("--jobs") + cmd->count("--timeout") + cmd->count("--max-triangles") +
+    const bool local_options_given = cmd->count("--jobs") + cmd->count("--renderers") + cmd->count("--timeout") + cmd->count("--max-triangles") +
                                          cmd->count("--max-samples") + cmd->count("--max-memory-mb") +
                                          cmd->count("--allow-large") > 0;
     run = [args, local_options_given, sections, renderer_files]() -> int {
@@ -147,7 +162,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
           if (!args->inputs.empty() || !args->dir.empty() || !args->tolerances.empty() ||
               local_options_given)
             throw std::runtime_error("--plan " + args->plan +
-                                     ": scenes, -o, --tolerances, --timeout and the budget options come from the plan "
+                                     ": scenes, -o, --renderers, --tolerances, --timeout and the budget options come from the plan "
                                      "(and --jobs is for a plain run); give none of them");
           const v::Plan plan = v::readPlan(args->plan);
           // Jobs of one plan run side by side (a cluster array): they share
@@ -166,9 +181,11 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
           const v::RenderJob& job = plan.jobs[size_t(args->run_job)];
           v::JobRecord rec = v::runJob(plan, job);
           std::fprintf(stderr, "xval validate: job %zu %s %s: %s in %.2f s; wrote %s\n", job.index,
-                       job.scene.c_str(), job.renderer.c_str(), rec.error.empty() ? "ok" : "ERROR",
+                       job.scene.c_str(), job.renderer.c_str(),
+                       !rec.error.empty() ? "ERROR" : !rec.not_expressible.empty() ? "not expressible" : "ok",
                        rec.seconds, (plan.dir / job.record()).c_str());
           if (!rec.error.empty()) std::fprintf(stderr, "  %s\n", rec.error.c_str());
+          if (!rec.not_expressible.empty()) std::fprintf(stderr, "  %s\n", rec.not_expressible.c_str());
           return rec.error.empty() ? 0 : 2;
         }
         if (args->dir.empty()) throw std::runtime_error("-o OUTPUT is required (or --plan with --run-job / --compare-only)");
@@ -178,7 +195,8 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
         sectionsJson(sections(*args), args->dir);  // a folder with no results fails before any render
         std::vector<std::string> inputs = args->inputs;
         if (inputs.empty()) inputs.push_back("reference/scenes");
-        const v::Plan plan = v::makePlan(inputs, args->tolerances, args->dir, args->timeout, args->budget.get());
+        const v::Plan plan = v::makePlan(inputs, args->tolerances, args->dir, args->timeout, args->budget.get(),
+                                         v::runRenderers(args->renderers));
         std::filesystem::create_directories(plan.dir);
         const FolderLock folder_lock(plan.dir, FolderLock::Mode::Exclusive, "xval validate");
         // A new run: the old verdict must not pass for this run's, even if
@@ -188,10 +206,9 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
         const std::vector<size_t> todo = v::jobsToRun(plan, args->resume);
         if (args->plan_only) {
           for (size_t k : todo) std::printf("%zu\n", k);
-          const size_t per_scene = v::jobRenderers().size();
-          std::fprintf(stderr, "xval validate: wrote %s: %zu jobs (%zu scenes x %zu renderers), %zu to run\n",
-                       v::planFile(plan.dir).c_str(), plan.jobs.size(), plan.jobs.size() / per_scene, per_scene,
-                       todo.size());
+          std::fprintf(stderr, "xval validate: wrote %s: %zu jobs (%zu scenes, renderers %s), %zu to run\n",
+                       v::planFile(plan.dir).c_str(), plan.jobs.size(), plan.scenes.size(),
+                       renderers::joinNames(plan.renderers).c_str(), todo.size());
           return 0;
         }
         if (todo.size() < plan.jobs.size())

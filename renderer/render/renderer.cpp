@@ -1,5 +1,6 @@
 #include "render/renderer.h"
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <chrono>
@@ -15,6 +16,7 @@
 #include "camera/camera.h"
 #include "geometry/front_faces.h"
 #include "geometry/mesh.h"
+#include "process/job_pool.h"
 #include "render/accel.h"
 #include "render/raster.h"
 #include "scene/precision_limits.h"
@@ -41,13 +43,14 @@ std::string describeVisibility(const RenderStats& stats) {
 
 namespace {
 
-// Runs worker on `threads` threads (this one included) and waits for all;
-// the worker takes its work items from a shared counter.
+// Runs `threads` copies of worker side by side in the job pool
+// (process/job_pool.h) and waits for all. A worker is one thread's loop,
+// not one work item: it owns its scratch buffers (a band's rows, a tile's
+// hits) for the whole frame and takes the bands or tiles, in order, from a
+// shared counter. An exception in a worker is rethrown here once every
+// thread has joined (a bare std::thread would terminate the process).
 template <class F> void runOnThreads(int threads, F& worker) {
-  std::vector<std::thread> pool;
-  for (int k = 1; k < threads; ++k) pool.emplace_back(std::ref(worker));
-  worker();
-  for (auto& t : pool) t.join();
+  runJobPool(size_t(std::max(1, threads)), threads, [&](size_t) { worker(); });
 }
 
 using Clock = std::chrono::steady_clock;

@@ -33,7 +33,8 @@ bool validId(const std::string& id) {
 // A scene file's `tolerances` may name every renderer compared against the
 // reference (scene/scene_loader.h); installed before main() runs.
 const bool kToleranceKeysInstalled =
-    (setToleranceRenderers([] { return registry().comparedIds(); }), true);
+    (setToleranceRenderers([] { return registry().comparedIds(); }),
+     setSceneRenderers([] { return registry().ids(); }), true);
 
 }  // namespace
 

@@ -170,6 +170,9 @@ struct Scene {
   ShadingMode shading = ShadingMode::Phong;
   RenderSettings render;
   std::vector<DeclaredTolerance> tolerances;  // used only by comparisons
+  // The renderers the scene is meant for (registry ids); empty: every one.
+  // `xval validate` renders it with no other (validate/validation/plan.h).
+  std::vector<std::string> renderers;
 };
 
 const char* toString(ShadingMode m);

@@ -5,6 +5,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <numeric>
@@ -290,6 +291,33 @@ std::vector<DeclaredTolerance> readTolerances(JsonReader& r) {
   return out;
 }
 
+std::function<std::vector<std::string>()>& sceneRenderers() {
+  static std::function<std::vector<std::string>()> ids;
+  return ids;
+}
+
+// `renderers`: at least two distinct registry ids (a comparison needs two).
+std::vector<std::string> readRenderers(JsonReader& r) {
+  if (!r.has("renderers")) return {};
+  const std::vector<std::string> names = r.stringArray("renderers", false);
+  if (!sceneRenderers())
+    r.fail("renderers", "cannot be checked: this program has no renderer registry (renderers/registry.h)");
+  const std::vector<std::string> known = sceneRenderers()();
+  std::string listing;
+  for (const std::string& id : known) listing += (listing.empty() ? "" : ", ") + id;
+  for (size_t i = 0; i < names.size(); ++i) {
+    const std::string where = "renderers[" + std::to_string(i) + "]";
+    if (std::find(known.begin(), known.end(), names[i]) == known.end())
+      r.fail(where, "unknown renderer " + describeJson(json(names[i])) + " (expected one of " + listing + ")");
+    if (std::find(names.begin(), names.begin() + i, names[i]) != names.begin() + i)
+      r.fail(where, describeJson(json(names[i])) + " named twice");
+  }
+  if (names.size() < 2)
+    r.fail("renderers", "expected at least two renderers (a comparison needs two), got " +
+                            std::to_string(names.size()));
+  return names;
+}
+
 void checkSceneName(JsonReader& r, const std::string& name) {
   const std::string problem = sceneNameProblem(name);
   if (!problem.empty())
@@ -300,6 +328,7 @@ void checkSceneName(JsonReader& r, const std::string& name) {
 }  // namespace
 
 void setToleranceRenderers(std::function<std::vector<std::string>()> ids) { toleranceRenderers() = std::move(ids); }
+void setSceneRenderers(std::function<std::vector<std::string>()> ids) { sceneRenderers() = std::move(ids); }
 
 // The name becomes a folder under the output folder (`xval validate`
 // writes DIR/NAME/...) and part of paths handed to OpenImageIO and the
@@ -353,6 +382,7 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file, con
                                      : ShadingMode::Phong;
   if (auto rs = r.object("render")) s.render = readRender(*rs);
   s.tolerances = readTolerances(r);
+  s.renderers = readRenderers(r);
   r.finish();
   // Numbers its own precision cannot compute with (scene/precision_limits.h).
   checkPrecision(s, s.render.precision);

@@ -39,6 +39,9 @@ std::string nonSceneReason(const std::filesystem::path& file);
 // against the reference). In a program without the registry a scene
 // declaring any tolerance is refused, saying so.
 void setToleranceRenderers(std::function<std::vector<std::string>()> ids);
+// The renderers a scene's `renderers` may name: every id of the registry,
+// installed the same way. Without it a scene naming renderers is refused.
+void setSceneRenderers(std::function<std::vector<std::string>()> ids);
 
 // Same, from text already in memory; `file` is used in messages and to
 // resolve relative paths.

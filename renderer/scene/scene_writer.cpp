@@ -104,6 +104,7 @@ J sceneToJson(const Scene& s, const std::string* texture_path) {
     }
     j["tolerances"] = t;
   }
+  if (!s.renderers.empty()) j["renderers"] = s.renderers;
   return j;
 }
 

@@ -1,7 +1,9 @@
 // xval crosscheck (crosscheck.h).
 #include "validate/crosscheck.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <stdexcept>
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
@@ -30,6 +32,23 @@ int crosscheck(const CrosscheckRequest& request) {
   std::printf("tolerances: %s\n", tol_file.describe().c_str());
   std::string reason;
   Tolerance tol = table.lookup(scene, request.renderer, &reason);
+  const renderers::Renderer& renderer = renderers::registry().at(request.renderer);
+  if (!scene.renderers.empty() &&
+      std::find(scene.renderers.begin(), scene.renderers.end(), renderer.id) == scene.renderers.end())
+    throw std::runtime_error(request.scene_file + ": renderers: the scene is meant for " +
+                             renderers::joinNames(scene.renderers) + " only, not " + renderer.id);
+  // A renderer that declares it cannot express the scene: the verdict, with
+  // its reason, and nothing rendered (no pair to compare, no failure).
+  if (const std::string why = renderer.cannot_express ? renderer.cannot_express(scene) : ""; !why.empty()) {
+    const nlohmann::json j = {{"scene", scene.name},
+                              {"renderer", request.renderer},
+                              {"not_expressible", why},
+                              {"tolerance_file", {{"path", tol_file.path.string()}, {"found_by", tol_file.found_by}}}};
+    writeFileAtomically(dir / "metrics.json", j.dump(2) + "\n");
+    std::printf("%s vs %s: NOT EXPRESSIBLE (not compared): %s\n", scene.name.c_str(), request.renderer.c_str(),
+                why.c_str());
+    return 0;
+  }
 
   // The reference on its exact double-precision path.
   const renderers::Renderer& reference = renderers::registry().reference();
@@ -40,7 +59,7 @@ int crosscheck(const CrosscheckRequest& request) {
   renderers::RenderInfo info;
   const std::filesystem::path work = dir / (request.renderer + ".work");
   makeFreshFolder(work);  // nothing from an earlier attempt, no planted link
-  Image ext = renderers::registry().at(request.renderer).render(scene, {work, request.timeout_seconds, {}}, &info);
+  Image ext = renderer.render(scene, {work, request.timeout_seconds, {}}, &info);
   writeImage(ext, dir / (request.renderer + ".exr"));
   CompareMetrics m = compareImages(ref, ext, tol);
   writeImage(differenceImage(ref, ext), dir / "diff.exr");

@@ -7,6 +7,12 @@
 // DIR/metrics.json (the comparison's metrics, the tolerance and its
 // reason, the seconds of each render); prints a one-line verdict on
 // stdout. The folder is locked for the run (files/output_folder.h).
+//
+// When the renderer declares that it cannot express the scene
+// (Renderer::cannot_express, the exporter's refusal), nothing is rendered:
+// metrics.json says "not_expressible" with the reason, the verdict line
+// says NOT EXPRESSIBLE, and the exit status is 0 (no pair to compare; not
+// a failure). A missing, failing or hanging renderer stays an error.
 #pragma once
 
 #include <string>
@@ -29,9 +35,10 @@ struct CrosscheckRequest {
   Budget budget;
 };
 
-// Returns 0 when within the tolerance, 1 when not. Throws on an error (a
-// bad scene or tolerance file, a renderer missing, failing or timing out:
-// never a pass).
+// Returns 0 when within the tolerance or not expressible, 1 when outside
+// it. Throws on an error (a bad scene or tolerance file, a scene whose
+// `renderers` does not name the renderer, a renderer missing, failing or
+// timing out: never a pass).
 int crosscheck(const CrosscheckRequest& request);
 
 // One crosscheck run in the form of a results.json (one case, one pair

@@ -65,6 +65,19 @@ std::vector<std::string> pairIds(const J& cases) {
   return ids;
 }
 
+// A case whose every pair has a renderer that cannot express the scene.
+bool nothingCompared(const J& c) {
+  for (const auto& p : c["pairs"])
+    if (!p.contains("not_expressible")) return false;
+  return true;
+}
+
+// The class and text of a case's verdict (the caller closes the tag).
+std::string caseVerdict(const J& c) {
+  if (nothingCompared(c)) return c["pairs"].empty() ? "nexp\">NOTHING TO COMPARE" : "nexp\">NOT EXPRESSIBLE";
+  return c["pass"].get<bool>() ? "pass\">PASS" : "fail\">FAIL";
+}
+
 const J* findPair(const J& c, const std::string& id) {
   for (const auto& p : c["pairs"])
     if (p["pair"] == id) return &p;
@@ -239,11 +252,11 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   writeHeatScalePng(dir / "heat_scale.png");
   writePlot(cases, pairs, dir);
 
-  int pass = 0, fail = 0, err = 0;
+  int pass = 0, fail = 0, err = 0, nexp = 0, nexp_pairs = 0;
   for (const auto& c : cases) {
     bool e = false;
-    for (const auto& p : c["pairs"]) e |= p.contains("error");
-    (e ? err : c["pass"].get<bool>() ? pass : fail)++;
+    for (const auto& p : c["pairs"]) e |= p.contains("error"), nexp_pairs += p.contains("not_expressible");
+    (e ? err : nothingCompared(c) ? nexp : c["pass"].get<bool>() ? pass : fail)++;
   }
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
@@ -251,7 +264,7 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
     << "body{font-family:sans-serif;margin:1.5em;color:#222}table{border-collapse:collapse;margin:.5em 0}"
     << "td,th{border:1px solid #bbb;padding:2px 6px;font-size:13px;text-align:right}"
     << "th{background:#eee}td.l,th.l{text-align:left}.pass{color:#070;font-weight:bold}"
-    << ".fail{color:#b00;font-weight:bold}.err{color:#b60;font-weight:bold}"
+    << ".fail{color:#b00;font-weight:bold}.err{color:#b60;font-weight:bold}.nexp{color:#666;font-style:italic}"
     << ".case{border-top:2px solid #888;margin-top:1.5em;padding-top:.5em}"
     << ".imgs{display:flex;flex-wrap:wrap;gap:10px}.imgs figure{margin:0}"
     << ".imgs img{width:256px;image-rendering:pixelated;border:1px solid #999}"
@@ -260,7 +273,8 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   h << "<h1>xval cross-validation report</h1>\n";
   h << "<p>" << cases.size() << " scenes: <span class=\"pass\">" << pass << " pass</span>, "
     << "<span class=\"fail\">" << fail << " fail</span>, <span class=\"err\">" << err
-    << " errors</span>. Wall time " << fixed(r.value("wall_seconds", 0.0), 1)
+    << " errors</span>, <span class=\"nexp\">" << nexp << " not expressible</span> (" << nexp_pairs
+    << " pairs not expressible by a renderer, not compared). Wall time " << fixed(r.value("wall_seconds", 0.0), 1)
     << " s. Failures are listed first. Errors are in 1/65535 of the full scale.</p>\n";
   h << "<table><tr><th class=\"l\">provenance</th><th class=\"l\"></th></tr>";
   for (auto it = r["provenance"].begin(); it != r["provenance"].end(); ++it)
@@ -274,7 +288,7 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   for (const auto& c : cases) {
     const std::string id = htmlEscape(c["scene"].get<std::string>());
     h << "<tr><td class=\"l\"><a href=\"#" << id << "\">" << id << "</a></td><td class=\"l "
-      << (c["pass"].get<bool>() ? "pass\">PASS" : "fail\">FAIL") << "</td><td class=\"l\">"
+      << caseVerdict(c) << "</td><td class=\"l\">"
       << htmlEscape(c["attribution"].get<std::string>()) << "</td>";
     for (const auto& id : pairs) {
       const J* pp = findPair(c, id);
@@ -283,6 +297,10 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
         continue;
       }
       const J& p = *pp;
+      if (p.contains("not_expressible")) {
+        h << "<td class=\"nexp\">not expressible</td>";
+        continue;
+      }
       if (!p.contains("metrics")) {
         h << "<td class=\"err\">error</td>";
         continue;
@@ -304,13 +322,23 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
        " from 0 through 1 (first seventh, linear) to 4096/65535 (logarithmic); grey: not covered.</p>\n";
   for (const auto& c : cases) {
     const std::string id = htmlEscape(c["scene"].get<std::string>());
-    h << "<div class=\"case\" id=\"" << id << "\"><h3>" << id << " &mdash; <span class=\""
-      << (c["pass"].get<bool>() ? "pass\">PASS" : "fail\">FAIL") << "</span></h3>\n";
+    h << "<div class=\"case\" id=\"" << id << "\"><h3>" << id << " &mdash; <span class=\"" << caseVerdict(c)
+      << "</span></h3>\n";
     h << "<p>" << htmlEscape(c["attribution"].get<std::string>()) << ". Reproduce: <code>xval validate "
-      << htmlEscape(c["file"].get<std::string>()) << " -o DIR</code></p>\n<div class=\"imgs\">";
+      << htmlEscape(c["file"].get<std::string>()) << " -o DIR</code></p>\n";
+    if (c.contains("left_out"))
+      for (auto it = c["left_out"].begin(); it != c["left_out"].end(); ++it)
+        h << "<p class=\"nexp\">" << htmlEscape(it.key()) << " left out: " << htmlEscape(it.value().get<std::string>())
+          << "</p>\n";
+    h << "<div class=\"imgs\">";
     for (auto it = c["renders"].begin(); it != c["renders"].end(); ++it) {
       const std::string renderer = htmlEscape(it.key());
       const J& rr = it.value();
+      if (rr.contains("not_expressible")) {
+        h << "<figure><figcaption>" << renderer << ": <span class=\"nexp\">not expressible: "
+          << htmlEscape(rr["not_expressible"].get<std::string>()) << "</span></figcaption></figure>";
+        continue;
+      }
       h << "<figure><img src=\"" << htmlEscape(rr["image"].get<std::string>()) << "\" alt=\""
         << renderer << "\"><figcaption>" << renderer << ", "
         << fixed(rr["seconds"], 2) << " s";
@@ -337,6 +365,11 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
          "<th>YIQ &Delta; mean / max</th></tr>\n";
     for (const auto& p : c["pairs"]) {
       h << "<tr><td class=\"l\">" << htmlEscape(p["pair"].get<std::string>()) << "</td>";
+      if (p.contains("not_expressible")) {
+        h << "<td class=\"nexp\" colspan=\"12\">not expressible, not compared: "
+          << htmlEscape(p["not_expressible"].get<std::string>()) << "</td></tr>\n";
+        continue;
+      }
       if (!p.contains("metrics")) {
         h << "<td class=\"err\" colspan=\"12\">" << htmlEscape(p.value("error", "error")) << "</td></tr>\n";
         continue;

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "fuzz_common.h"
-#include "validate/validation_jobs.h"
+#include "validate/validation/plan.h"
 
 namespace v = xval::validation;
 

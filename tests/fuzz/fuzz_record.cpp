@@ -10,7 +10,7 @@
 #include <string>
 
 #include "fuzz_common.h"
-#include "validate/validation_jobs.h"
+#include "validate/validation/job_record.h"
 
 namespace v = xval::validation;
 

@@ -265,3 +265,20 @@ TEST(SceneLoader, DeclaredTolerancesNeedAKnownRendererAndAReason) {
   EXPECT_EQ(*s.tolerances[0].max_abs_16bit, 8.0);
   EXPECT_EQ(*s.tolerances[0].fraction, 0.99);
 }
+
+TEST(SceneLoader, RenderersNameKnownRenderersOnceAtLeastTwo) {
+  expectError("\"name\": \"t\"", "\"name\": \"t\", \"renderers\": [\"reference\", \"pov\"]",
+              {"renderers[1]", "unknown renderer \"pov\"", "expected one of reference, povray"});
+  expectError("\"name\": \"t\"", "\"name\": \"t\", \"renderers\": [\"blender\", \"reference\", \"blender\"]",
+              {"renderers[2]", "\"blender\" named twice"});
+  expectError("\"name\": \"t\"", "\"name\": \"t\", \"renderers\": [\"reference\"]",
+              {"renderers", "at least two renderers", "got 1"});
+  expectError("\"name\": \"t\"", "\"name\": \"t\", \"renderers\": \"reference\"", {"renderers", "an array of strings"});
+  std::string text = kValid;
+  text.replace(text.find("\"name\": \"t\""), 11, "\"name\": \"t\", \"renderers\": [\"blender\", \"reference\"]");
+  const Scene s = parseScene(text, "scene.json");
+  EXPECT_EQ(s.renderers, (std::vector<std::string>{"blender", "reference"}));
+  EXPECT_TRUE(parseScene(kValid, "scene.json").renderers.empty());
+  // The writer keeps the field (the generator's scenes and round trips).
+  EXPECT_EQ(parseScene(sceneToJson(s).dump(), "scene.json").renderers, s.renderers);
+}

@@ -1,0 +1,244 @@
+// The compare step of `xval validate` (compare_step.h).
+#include "validate/validation/compare_step.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "files/atomic_write.h"
+#include "files/output_folder.h"
+#include "image/compare.h"
+#include "image/image.h"
+#include "image/perceptual.h"
+#include "renderers/registry.h"
+#include "scene/scene_loader.h"
+#include "validate/colour_stats.h"
+#include "validate/tolerances.h"
+#include "validate/validation/job_record.h"
+#include "validate/validation/next_steps.h"
+#include "validate/validation/results_file.h"
+
+namespace xval::validation {
+
+namespace {
+
+namespace fs = std::filesystem;
+using J = nlohmann::ordered_json;
+
+// One renderer's render of a case: its image, or why there is none.
+struct Render {
+  JobRecord rec;
+  Image image;
+  std::string error;
+};
+using Renders = std::map<std::string, Render>;  // by renderer id
+
+// What every case is compared with.
+struct CompareContext {
+  const Plan& plan;
+  const ToleranceTable table;
+};
+
+// The job's render: its record checked against the plan, then its EXR
+// (none when the renderer declared the scene not expressible).
+Render loadRender(const Plan& plan, const RenderJob& job) {
+  Render r;
+  r.rec = readRecord(plan, job);
+  if (!r.rec.present) {
+    r.error = "not rendered: " + r.rec.problem;
+  } else if (!r.rec.error.empty()) {
+    r.error = r.rec.error;
+  } else if (r.rec.input_hash != job.input_hash) {
+    r.error = (plan.dir / job.record()).string() + ": rendered from other inputs (input_hash " +
+              r.rec.input_hash + ", the plan's is " + job.input_hash + "): run the job again";
+  } else if (r.rec.not_expressible.empty()) {
+    try {
+      r.image = readImage(plan.dir / job.exr());
+    } catch (const std::exception& e) {
+      r.error = std::string("the record says ok but the image cannot be read: ") + e.what();
+    }
+  }
+  return r;
+}
+
+bool notExpressible(const Render& r) { return r.error.empty() && !r.rec.not_expressible.empty(); }
+
+// results.json's cases[].renders.<id>.
+J renderJson(const RenderJob& job, const Render& r) {
+  J jr = {{"seconds", r.rec.seconds}};
+  if (notExpressible(r)) jr["not_expressible"] = r.rec.not_expressible;
+  else jr["image"] = job.png();
+  if (r.rec.render_seconds >= 0) jr["render_seconds"] = r.rec.render_seconds;
+  if (!r.error.empty()) jr["error"] = r.error;
+  return jr;
+}
+
+// Pair verdicts (renderers::attribute's, and -2 for a pair that one of its
+// renderers cannot express: not compared, and no error).
+constexpr int kPass = 1, kFail = 0, kNotCompared = -1, kNotExpressible = -2;
+
+// One pair of one case: compared with its tolerance, its difference EXR
+// and heat map written.
+J comparePair(const CompareContext& cx, const Scene& scene, const renderers::Renderer& ra,
+              const renderers::Renderer& rb, Renders& renders, int& verdict) {
+  Render& A = renders[ra.id];
+  Render& B = renders[rb.id];
+  const std::string key = renderers::pairKey(ra, rb);
+  J jp = {{"pair", key}};
+  if (!A.error.empty() || !B.error.empty()) {
+    verdict = kNotCompared;
+    jp["error"] = "not compared: a render failed";
+    return jp;
+  }
+  if (notExpressible(A) || notExpressible(B)) {
+    verdict = kNotExpressible;
+    std::string why;
+    for (const auto* r : {&ra, &rb})
+      if (notExpressible(renders[r->id])) why += (why.empty() ? "" : "; ") + r->id + ": " + renders[r->id].rec.not_expressible;
+    jp["not_expressible"] = why;
+    return jp;
+  }
+  std::string reason;
+  const Tolerance tol = cx.table.lookupPair(scene, ra.id, rb.id, &reason);
+  const auto ref = renders.find(renderers::registry().reference().id);
+  if (!ra.reference && !rb.reference && ref != renders.end()) {
+    // The reference's diagnostics describe the same pixels.
+    A.image.depth = ref->second.image.depth;
+    A.image.backfacing = ref->second.image.backfacing;
+    A.image.incidence = ref->second.image.incidence;
+  }
+  CompareMetrics m = compareImages(A.image, B.image, tol);
+  PerceptualMetrics pm = perceptualMetrics(A.image, B.image);
+  const Image diff = differenceImage(A.image, B.image);
+  writeImage(diff, cx.plan.dir / scene.name / ("diff_" + key + ".exr"));
+  jp["heat_map"] = writeHeatMapPng(diff, cx.plan.dir, scene.name, key);  // the report only shows it
+  J jm = J::parse(toJson(m, tol, &pm));
+  jm["tolerance_reason"] = reason;
+  jp["metrics"] = jm;
+  jp["pass"] = tol.passes(m);
+  // Known differences are the classified ones and a declared reason.
+  jp["classification"] = {{"known", m.over_occlusion_edge + m.over_backfacing + m.over_grazing},
+                          {"unexplained", m.over_unexplained},
+                          {"declared", !reason.empty()}};
+  verdict = tol.passes(m) ? kPass : kFail;
+  return jp;
+}
+
+// The reference image's colour statistics (validate/colour_stats.h).
+J colourStatsJson(const Image& reference) {
+  const ColourStats st = colourStats(reference);
+  return {{"lit_pixels", st.lit_pixels},
+          {"mean_chroma", st.mean_chroma},
+          {"mean_albedo_chroma", st.mean_albedo_chroma},
+          {"grey_fraction", st.grey_fraction},
+          {"hue_error_deg", st.hue_error_deg}};
+}
+
+// Who deviates, among the renderers that can express the scene (their
+// pairs' verdicts), and which cannot.
+std::string attribution(const std::vector<const renderers::Renderer*>& rs, const std::vector<int>& verdict,
+                        const Renders& renders) {
+  std::vector<const renderers::Renderer*> can;
+  std::vector<std::string> cannot;
+  for (const auto* r : rs) {
+    if (notExpressible(renders.at(r->id))) cannot.push_back(r->display_name);
+    else can.push_back(r);
+  }
+  const std::string not_expr = cannot.empty() ? "" : renderers::joinNames(cannot) + " cannot express it";
+  if (can.size() < 2) return "nothing to compare" + (not_expr.empty() ? std::string() : ": " + not_expr);
+  // The pairs of `can`, in unorderedPairs(can.size()) order: the pairs of
+  // rs without a renderer that cannot express the scene, in their order.
+  std::vector<int> can_verdict;
+  const std::vector<renderers::RendererPair> pairs = renderers::unorderedPairs(rs.size());
+  for (size_t p = 0; p < pairs.size(); ++p)
+    if (!notExpressible(renders.at(rs[pairs[p].a]->id)) && !notExpressible(renders.at(rs[pairs[p].b]->id)))
+      can_verdict.push_back(verdict[p]);
+  const std::string who = renderers::attribute(can, can_verdict);
+  return not_expr.empty() ? who : who + "; " + not_expr;
+}
+
+// The case of plan.scenes[k]: its renders, every pair of them, who deviates.
+J compareCase(const CompareContext& cx, size_t k) {
+  const Plan& plan = cx.plan;
+  const PlannedScene& ps = plan.scenes[k];
+  const Scene scene = loadScene(ps.path, plan.budget);
+  if (scene.name != ps.name)
+    throw std::runtime_error(ps.path.string() + ": name: \"" + scene.name + "\": the plan (" +
+                             planFile(plan.dir).string() + ") says \"" + ps.name + "\": plan again");
+  makeRealFolder(plan.dir, plan.dir / ps.name);  // the diff images go there: never through a link
+  J jc = {{"scene", ps.name}, {"file", ps.file}};
+  Renders renders;
+  std::vector<const renderers::Renderer*> rs;  // the case's renderers, in job (registry) order
+  jc["renders"] = J::object();
+  for (size_t j : sceneJobs(plan, k)) {
+    const RenderJob& job = plan.jobs[j];
+    rs.push_back(&renderers::registry().at(job.renderer));
+    renders[job.renderer] = loadRender(plan, job);
+    jc["renders"][job.renderer] = renderJson(job, renders[job.renderer]);
+  }
+  if (!ps.left_out.empty()) {
+    jc["left_out"] = J::object();
+    for (const LeftOut& l : ps.left_out) jc["left_out"][l.renderer] = l.reason;
+  }
+  const std::vector<renderers::RendererPair> pairs = renderers::unorderedPairs(rs.size());
+  std::vector<int> verdict(pairs.size());
+  J jpairs = J::array();
+  for (size_t p = 0; p < pairs.size(); ++p)
+    jpairs.push_back(comparePair(cx, scene, *rs[pairs[p].a], *rs[pairs[p].b], renders, verdict[p]));
+  jc["pairs"] = jpairs;
+  const auto ref = renders.find(renderers::registry().reference().id);
+  if (ref != renders.end() && ref->second.error.empty() && !notExpressible(ref->second))
+    jc["colour_stats"] = colourStatsJson(ref->second.image);
+  jc["attribution"] = attribution(rs, verdict, renders);
+  // Decided on the pairs that could be compared: every one passes.
+  jc["pass"] = std::all_of(verdict.begin(), verdict.end(), [](int v) { return v == kPass || v == kNotExpressible; });
+  return jc;
+}
+
+// How many of the case's renders (or pairs) have `key` ("error", "not_expressible").
+int entriesWith(const J& entries, const char* key) {
+  int n = 0;
+  for (const auto& [id, e] : entries.items()) n += e.contains(key);
+  return n;
+}
+
+}  // namespace
+
+int compareAndReport(const Plan& plan, const ReportSections& sections) {
+  const fs::path& dir = plan.dir;
+  const J jsections = sectionsJson(sections, dir);  // fails early on a folder with no results
+  // The old verdict must not outlive this run: whatever stops it from here
+  // on (an error, a kill) leaves no results.json or report.html at all.
+  removeVerdict(plan);
+  const CompareContext cx{plan, loadTolerances(plan.tolerances_path)};
+  bool any_error = false, any_fail = false;
+  int not_expressible = 0, not_compared = 0;  // renders, and their pairs
+  J jcases = J::array();
+  std::vector<fs::path> setting_files{plan.tolerances_path};
+  for (size_t k = 0; k < plan.scenes.size(); ++k) {
+    setting_files.push_back(plan.scenes[k].path);
+    J jc = compareCase(cx, k);
+    any_error |= entriesWith(jc["renders"], "error") > 0;
+    not_expressible += entriesWith(jc["renders"], "not_expressible");
+    not_compared += entriesWith(jc["pairs"], "not_expressible");
+    any_fail |= !jc["pass"].get<bool>();
+    jcases.push_back(std::move(jc));
+  }
+  writeFileAtomically(dir / "results.json", resultsJson(plan, jcases, setting_files, jsections).dump(2) + "\n");
+  writeReport(dir / "results.json", dir / "report.html");
+  printNextSteps(plan, jcases);
+  const std::string apart = not_expressible ? " (" + std::to_string(not_expressible) + " renders not expressible, " +
+                                                  std::to_string(not_compared) + " pairs not compared)"
+                                            : "";
+  std::fprintf(stderr, "xval validate: %zu scenes, %s%s; wrote %s\n", jcases.size(),
+               any_error ? "ERRORS" : any_fail ? "some cases FAIL" : "all pass", apart.c_str(),
+               (dir / "report.html").c_str());
+  return any_error ? 2 : any_fail ? 1 : 0;
+}
+
+}  // namespace xval::validation

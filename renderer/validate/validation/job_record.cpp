@@ -1,0 +1,91 @@
+// The job records of `xval validate` (job_record.h).
+#include "validate/validation/job_record.h"
+
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include "files/atomic_write.h"
+#include "scene/json_reader.h"
+#include "validate/validation/file_fields.h"
+
+namespace xval::validation {
+
+namespace {
+
+namespace fs = std::filesystem;
+using J = nlohmann::ordered_json;
+
+std::string hostName() {
+  char buf[256] = {0};
+  if (gethostname(buf, sizeof buf - 1) != 0) return "unknown";
+  return buf;
+}
+
+}  // namespace
+
+JobRecord readRecord(const Plan& plan, const RenderJob& job) {
+  JobRecord rec;
+  const fs::path file = plan.dir / job.record();
+  if (!fs::exists(file)) {
+    rec.problem = file.string() + ": no record (the job has not run, or was interrupted)";
+    return rec;
+  }
+  try {
+    const J j = parseOrderedJsonText(readJsonFile(file, "job record"), file.string());
+    FieldReader rd{file.string()};
+    const std::string format = rd.str(j, "format");
+    if (format != kRecordFormat)
+      throw std::runtime_error(file.string() + ": format: \"" + format + "\": expected \"" + kRecordFormat + "\"");
+    const std::string scene = rd.str(j, "scene"), renderer = rd.str(j, "renderer");
+    if (scene != job.scene || renderer != job.renderer)
+      throw std::runtime_error(file.string() + ": scene/renderer: \"" + scene + "\"/\"" + renderer +
+                               "\": expected \"" + job.scene + "\"/\"" + job.renderer + "\"");
+    rec.input_hash = rd.str(j, "input_hash");
+    rec.seconds = rd.num(j, "seconds");
+    if (j.contains("render_seconds")) rec.render_seconds = rd.num(j, "render_seconds");
+    if (j.contains("error")) rec.error = rd.str(j, "error");
+    if (j.contains("not_expressible")) rec.not_expressible = rd.str(j, "not_expressible");
+    if (!rec.error.empty() && !rec.not_expressible.empty())
+      throw std::runtime_error(file.string() + ": error and not_expressible: expected at most one of them");
+    rec.present = true;
+  } catch (const std::exception& e) {
+    rec.problem = e.what();
+  }
+  return rec;
+}
+
+bool isDone(const Plan& plan, const RenderJob& job, std::string* why) {
+  auto no = [why](const std::string& w) {
+    if (why) *why = w;
+    return false;
+  };
+  JobRecord rec = readRecord(plan, job);
+  if (!rec.present) return no(rec.problem);
+  if (!rec.error.empty()) return no("the last render failed: " + rec.error);
+  if (rec.input_hash != job.input_hash)
+    return no((plan.dir / job.record()).string() + ": rendered from other inputs (input_hash " +
+              rec.input_hash + ", the plan's is " + job.input_hash + ")");
+  if (!rec.not_expressible.empty()) return true;  // a verdict: nothing was rendered
+  for (const std::string& f : {job.exr(), job.png()})
+    if (!fs::exists(plan.dir / f)) return no((plan.dir / f).string() + ": missing");
+  return true;
+}
+
+void writeRecord(const Plan& plan, const RenderJob& job, const JobRecord& rec) {
+  J j;
+  j["format"] = kRecordFormat;
+  j["job"] = job.index;
+  j["scene"] = job.scene;
+  j["renderer"] = job.renderer;
+  j["input_hash"] = job.input_hash;
+  j["seconds"] = rec.seconds;
+  if (rec.render_seconds >= 0) j["render_seconds"] = rec.render_seconds;
+  if (!rec.error.empty()) j["error"] = rec.error;
+  if (!rec.not_expressible.empty()) j["not_expressible"] = rec.not_expressible;
+  j["host"] = hostName();
+  j["finished_unix"] = nowUnix();
+  writeFileAtomically(plan.dir / job.record(), j.dump(2) + "\n");
+}
+
+}  // namespace xval::validation

@@ -1,0 +1,39 @@
+// A render job's record, OUT/<scene>/<renderer>.job.json (plan.h): what
+// the job rendered from (input_hash), how long it took and, when the render
+// failed, why, or that the renderer declared the scene not expressible
+// (no images then). It is written last, after the job's EXR and PNG, under a
+// temporary name and renamed: a record that says ok means the images are
+// whole.
+#pragma once
+
+#include <string>
+
+#include "validate/validation/plan.h"
+
+namespace xval::validation {
+
+// The record's "format" (also hashed into every input_hash).
+inline constexpr const char* kRecordFormat = "xval-validate-job/1";
+
+struct JobRecord {
+  bool present = false;    // a readable record exists
+  std::string input_hash;  // what it was rendered from
+  double seconds = 0.0, render_seconds = -1.0;
+  std::string error;       // empty when the render succeeded
+  // Why the renderer cannot express the scene, as it declared before
+  // rendering (Renderer::cannot_express): a verdict, not an error; the job
+  // rendered nothing. Empty when it can.
+  std::string not_expressible;
+  std::string problem;     // why the record cannot be used (missing, unreadable); empty when present
+};
+
+// Never throws: a record that cannot be used is not `present` and its
+// `problem` says why (missing, unreadable, another job's).
+JobRecord readRecord(const Plan& plan, const RenderJob& job);
+// Writes the record of `job` (with the host and the time) atomically;
+// throws std::runtime_error when it cannot.
+void writeRecord(const Plan& plan, const RenderJob& job, const JobRecord& rec);
+// True when the job need not run again; otherwise `why` says what is missing.
+bool isDone(const Plan& plan, const RenderJob& job, std::string* why = nullptr);
+
+}  // namespace xval::validation

@@ -1,0 +1,39 @@
+// The next steps of failing cases (next_steps.h).
+#include "validate/validation/next_steps.h"
+
+#include <cstdio>
+#include <string>
+
+#include "renderers/registry.h"
+
+namespace xval::validation {
+
+namespace {
+
+std::string shellQuote(const std::string& v) {
+  std::string q = "'";
+  for (char c : v) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+}  // namespace
+
+void printNextSteps(const Plan& plan, const nlohmann::ordered_json& cases) {
+  for (const auto& jc : cases) {
+    if (jc["pass"].get<bool>()) continue;
+    const std::string scene = jc["scene"].get<std::string>(), file = jc["file"].get<std::string>();
+    std::fprintf(stderr, "FAIL %s (%s)\n", scene.c_str(), jc["attribution"].get<std::string>().c_str());
+    // Every renderer of the case that rendered it, but the reference.
+    for (const auto& [id, render] : jc["renders"].items())
+      if (id != renderers::registry().reference().id && !render.contains("not_expressible"))
+        std::fprintf(stderr, "  look closer: xval crosscheck %s --renderer %s -o %s\n", shellQuote(file).c_str(),
+                     id.c_str(), shellQuote((plan.dir / (scene + "." + id)).string()).c_str());
+    std::fprintf(stderr,
+                 "  accept a documented difference: declare it, with its measured reason, in the\n"
+                 "  `tolerances` field of %s (defaults: %s)\n"
+                 "  (no golden images are kept: the reference renderer renders every run)\n",
+                 file.c_str(), plan.tolerances.c_str());
+  }
+}
+
+}  // namespace xval::validation

@@ -1,0 +1,17 @@
+// What `xval validate` prints on stderr for every failing case: the
+// crosscheck command that looks closer at each pair, and how to accept a
+// documented difference (a declared tolerance).
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "validate/validation/plan.h"
+
+namespace xval::validation {
+
+// `cases`: results.json's cases (results_file.h). The paths in the printed
+// commands are single-quoted for a POSIX shell (' becomes '\''), so a
+// pasted command cannot run anything a scene or folder name contains.
+void printNextSteps(const Plan& plan, const nlohmann::ordered_json& cases);
+
+}  // namespace xval::validation

@@ -1,0 +1,377 @@
+// The plan of `xval validate` (plan.h).
+#include "validate/validation/plan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "files/atomic_write.h"
+#include "files/output_folder.h"
+#include "renderers/registry.h"
+#include "scene/json_reader.h"
+#include "validate/tolerances.h"
+#include "validate/validation/file_fields.h"
+#include "validate/validation/job_record.h"
+
+namespace xval::validation {
+
+namespace {
+
+namespace fs = std::filesystem;
+using J = nlohmann::ordered_json;
+
+constexpr const char* kPlanFormat = "xval-validate-plan/2";
+
+struct Fnv {
+  uint64_t h = 1469598103934665603ull;
+  void add(const std::string& bytes) {
+    for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
+    h = (h ^ 0xffu) * 1099511628211ull;  // separator
+  }
+  std::string hex() const {
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+    return buf;
+  }
+};
+
+std::vector<fs::path> collectScenes(const std::vector<std::string>& inputs) {
+  std::vector<fs::path> out;
+  for (const auto& in : inputs) {
+    fs::path p(in);
+    if (fs::is_directory(p)) {
+      std::vector<fs::path> files;
+      for (const auto& e : fs::directory_iterator(p))
+        if (e.path().extension() == ".json") {
+          if (const std::string why = nonSceneReason(e.path()); !why.empty())
+            std::fprintf(stderr, "xval validate: skipping %s: %s\n", e.path().c_str(), why.c_str());
+          else
+            files.push_back(e.path());
+        }
+      std::sort(files.begin(), files.end());
+      out.insert(out.end(), files.begin(), files.end());
+    } else if (fs::is_regular_file(p)) {
+      out.push_back(p);
+    } else {
+      throw std::runtime_error(in + ": no such scene file or folder");
+    }
+  }
+  if (out.empty()) throw std::runtime_error("no scene files found");
+  return out;
+}
+
+// The scene's name names its case folder OUT/<name>/: the one scene-name
+// rule for a case folder (sceneNameProblem).
+void checkSceneName(const std::string& name, const std::string& where) {
+  const std::string problem = sceneNameProblem(name, SceneNameUse::CaseFolder);
+  if (!problem.empty())
+    throw std::runtime_error(where + ": name: " + nlohmann::json(name).dump(-1, ' ', false,
+                                                                          nlohmann::json::error_handler_t::replace) +
+                             ": cannot name a case folder: " + problem);
+}
+
+// A case folder, if it exists already, is a real folder (not a link
+// planted or left there): refused before anything renders.
+void checkCaseFolder(const fs::path& folder, const fs::path& scene_file) {
+  const fs::file_status st = fs::symlink_status(folder);
+  if (fs::is_symlink(st) || (fs::exists(st) && !fs::is_directory(st)))
+    throw std::runtime_error(folder.string() + ": " + scene_file.string() + "'s case folder " +
+                             (fs::is_symlink(st) ? "is a symbolic link; xval does not write through links "
+                                                   "inside its output folder (remove it)"
+                                                 : "exists and is not a folder"));
+}
+
+// The run's renderers that the scene's `renderers` field does not name.
+std::vector<LeftOut> leftOut(const Scene& scene, const std::vector<std::string>& run) {
+  std::vector<LeftOut> out;
+  if (scene.renderers.empty()) return out;
+  for (const std::string& r : run)
+    if (std::find(scene.renderers.begin(), scene.renderers.end(), r) == scene.renderers.end())
+      out.push_back({r, "the scene is meant for " + renderers::joinNames(scene.renderers) +
+                            " only (its `renderers` field)"});
+  return out;
+}
+
+bool isLeftOut(const std::vector<LeftOut>& left_out, const std::string& renderer) {
+  return std::any_of(left_out.begin(), left_out.end(), [&](const LeftOut& l) { return l.renderer == renderer; });
+}
+
+// The plan's "renderers": as runRenderers accepts them, in registry order.
+std::vector<std::string> readRunRenderers(const FieldReader& rd, const J& j) {
+  const J& v = rd.at(j, "renderers", "");
+  std::vector<std::string> names;
+  for (size_t i = 0; v.is_array() && i < v.size(); ++i) {
+    if (!v[i].is_string())
+      throw std::runtime_error(rd.file + ": renderers[" + std::to_string(i) + "]: " + v[i].dump() +
+                               ": expected a string");
+    names.push_back(v[i].get<std::string>());
+  }
+  if (!v.is_array() || names.empty())
+    throw std::runtime_error(rd.file + ": renderers: " + v.dump() + ": expected a non-empty array of renderer ids");
+  std::vector<std::string> ordered;
+  try {
+    ordered = runRenderers(names);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(rd.file + ": renderers: " + e.what());
+  }
+  if (ordered != names)
+    throw std::runtime_error(rd.file + ": renderers: " + v.dump() + ": expected registry order (" +
+                             renderers::joinNames(ordered) + ")");
+  return names;
+}
+
+// The plan's "scenes": names usable as case folders, unique; each
+// left_out names a renderer of the run with a reason.
+std::vector<PlannedScene> readScenes(const FieldReader& rd, const J& j, const std::vector<std::string>& run) {
+  const J& v = rd.at(j, "scenes", "");
+  if (!v.is_array() || v.empty())
+    throw std::runtime_error(rd.file + ": scenes: expected a non-empty array");
+  std::vector<PlannedScene> out;
+  for (size_t k = 0; k < v.size(); ++k) {
+    const std::string where = "scenes[" + std::to_string(k) + "].";
+    PlannedScene ps{rd.str(v[k], "scene", where), rd.str(v[k], "file", where), rd.str(v[k], "path", where), {}};
+    checkSceneName(ps.name, rd.file + ": " + where.substr(0, where.size() - 1));
+    for (const PlannedScene& before : out)
+      if (before.name == ps.name)
+        throw std::runtime_error(rd.file + ": " + where + "scene: \"" + ps.name + "\": named twice");
+    const J& left = rd.at(v[k], "left_out", where);
+    if (!left.is_object())
+      throw std::runtime_error(rd.file + ": " + where + "left_out: expected an object (renderer: reason)");
+    for (const auto& [renderer, reason] : left.items()) {
+      if (std::find(run.begin(), run.end(), renderer) == run.end() || !reason.is_string())
+        throw std::runtime_error(rd.file + ": " + where + "left_out." + renderer +
+                                 ": expected a reason (a string) for a renderer of `renderers`");
+      ps.left_out.push_back({renderer, reason.get<std::string>()});
+    }
+    out.push_back(std::move(ps));
+  }
+  return out;
+}
+
+// The plan's "jobs": exactly those its scenes and renderers imply, in order.
+std::vector<RenderJob> readJobs(const FieldReader& rd, const J& j, const Plan& plan) {
+  // The jobs the scenes and renderers imply, in order: (scene, renderer).
+  std::vector<std::pair<const PlannedScene*, std::string>> expected;
+  for (const PlannedScene& ps : plan.scenes)
+    for (const std::string& r : plan.renderers)
+      if (!isLeftOut(ps.left_out, r)) expected.emplace_back(&ps, r);
+  const J& jobs = rd.at(j, "jobs", "");
+  std::vector<RenderJob> out;
+  if (!jobs.is_array() || jobs.size() != expected.size())
+    throw std::runtime_error(rd.file + ": jobs: expected an array of " + std::to_string(expected.size()) +
+                             " jobs (per scene, one for each of " + renderers::joinNames(plan.renderers) +
+                             " it is not left out of), got " +
+                             (jobs.is_array() ? std::to_string(jobs.size()) + " entries" : jobs.type_name()));
+  for (size_t k = 0; k < jobs.size(); ++k) {
+    const std::string where = "jobs[" + std::to_string(k) + "].";
+    const J& e = jobs[k];
+    RenderJob job;
+    const double index = rd.num(e, "index", where);
+    if (index != double(k))
+      throw std::runtime_error(rd.file + ": " + where + "index: " + e["index"].dump() + ": expected " +
+                               std::to_string(k));
+    job.index = k;
+    const auto& [ps, renderer] = expected[k];
+    job.scene = rd.str(e, "scene", where);
+    job.renderer = rd.str(e, "renderer", where);
+    if (job.scene != ps->name || job.renderer != renderer)
+      throw std::runtime_error(rd.file + ": " + where + "scene/renderer: \"" + job.scene + "\"/\"" + job.renderer +
+                               "\": expected \"" + ps->name + "\"/\"" + renderer +
+                               "\" (jobs go scene by scene, in the order of `renderers`)");
+    job.file = rd.str(e, "file", where);
+    job.path = rd.str(e, "path", where);
+    if (job.file != ps->file || job.path != ps->path)
+      throw std::runtime_error(rd.file + ": " + where + "file/path: \"" + job.file + "\"/\"" + job.path.string() +
+                               "\": expected the scene's, \"" + ps->file + "\"/\"" + ps->path.string() + "\"");
+    job.input_hash = rd.str(e, "input_hash", where);
+    for (const auto& [key, value] : {std::pair<std::string, std::string>{"exr", job.exr()},
+                                     {"png", job.png()},
+                                     {"record", job.record()}}) {
+      const std::string got = rd.str(e, key, where);
+      if (got != value)
+        throw std::runtime_error(rd.file + ": " + where + key + ": \"" + got + "\": expected \"" + value +
+                                 "\" (output paths follow from the scene and renderer)");
+    }
+    out.push_back(job);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string inputHash(const Scene& scene, const fs::path& scene_file, const std::string& renderer) {
+  Fnv f;
+  f.add(kRecordFormat);
+  f.add(renderer);
+  f.add(readBytes(scene_file));
+  if (scene.material.texture && scene.material.texture->source == TextureSpec::Source::Image)
+    f.add(readBytes(scene.material.texture->path));
+  return f.hex();
+}
+
+std::vector<std::string> jobRenderers() { return renderers::registry().everySceneIds(); }
+
+std::vector<std::string> runRenderers(const std::vector<std::string>& names) {
+  const std::vector<std::string> every = jobRenderers();
+  if (names.empty()) return every;
+  for (size_t i = 0; i < names.size(); ++i) {
+    if (std::find(every.begin(), every.end(), names[i]) == every.end())
+      throw std::runtime_error("--renderers: \"" + names[i] + "\": not a renderer validate runs (expected " +
+                               renderers::joinNames(every) + "; xval renderers lists them)");
+    if (std::find(names.begin(), names.begin() + i, names[i]) != names.begin() + i)
+      throw std::runtime_error("--renderers: \"" + names[i] + "\" named twice");
+  }
+  if (names.size() < 2)
+    throw std::runtime_error("--renderers: expected at least two renderers (a comparison needs two), got " +
+                             renderers::joinNames(names));
+  std::vector<std::string> out;
+  for (const std::string& id : every)
+    if (std::find(names.begin(), names.end(), id) != names.end()) out.push_back(id);
+  return out;
+}
+
+std::vector<size_t> sceneJobs(const Plan& plan, size_t k) {
+  std::vector<size_t> out;
+  for (const RenderJob& job : plan.jobs)
+    if (job.scene == plan.scenes[k].name) out.push_back(job.index);
+  return out;
+}
+
+fs::path planFile(const fs::path& dir) { return dir / "jobs.json"; }
+
+void removeVerdict(const Plan& plan) {
+  for (const char* f : {"results.json", "report.html"}) {
+    std::error_code ec;
+    if (!fs::remove(plan.dir / f, ec) && ec)
+      throw std::runtime_error((plan.dir / f).string() + ": cannot remove the previous run's: " + ec.message());
+  }
+}
+
+Plan makePlan(const std::vector<std::string>& inputs, const std::string& tolerances,
+              const fs::path& dir, double timeout_seconds, const Budget& budget,
+              const std::vector<std::string>& run_renderers) {
+  Plan plan;
+  plan.dir = fs::absolute(dir).lexically_normal();
+  if (!plan.dir.has_filename()) plan.dir = plan.dir.parent_path();  // "out/" -> "out"
+  checkToolPath(plan.dir);
+  const std::vector<fs::path> scene_files = collectScenes(inputs);
+  const ToleranceFile tol_file = findToleranceFile(tolerances, scene_files);  // the rule: tolerances.h
+  plan.tolerances = tolerances.empty() ? tol_file.shown() : tolerances;
+  plan.tolerances_path = tol_file.path;
+  loadTolerances(plan.tolerances_path);  // fail early on a bad tolerance file
+  std::fprintf(stderr, "xval validate: tolerances: %s\n", tol_file.describe().c_str());
+  plan.timeout_seconds = timeout_seconds;
+  plan.budget = budget;
+  plan.renderers = runRenderers(run_renderers);
+  std::map<std::string, std::string> seen;  // scene name -> file
+  for (const auto& f : scene_files) {
+    Scene scene = loadScene(f, plan.budget);
+    checkSceneName(scene.name, f.string());
+    checkCaseFolder(plan.dir / scene.name, f);
+    auto [it, fresh] = seen.emplace(scene.name, f.string());
+    if (!fresh)
+      throw std::runtime_error(f.string() + ": name: \"" + scene.name + "\": also the name of " +
+                               it->second + " (scene names name the output folders: expected unique)");
+    PlannedScene planned{scene.name, f.string(), fs::absolute(f).lexically_normal(),
+                         leftOut(scene, plan.renderers)};
+    for (const LeftOut& l : planned.left_out)
+      std::fprintf(stderr, "xval validate: %s: %s left out: %s\n", scene.name.c_str(), l.renderer.c_str(),
+                   l.reason.c_str());
+    for (const std::string& r : plan.renderers) {
+      if (isLeftOut(planned.left_out, r)) continue;
+      RenderJob job;
+      job.index = plan.jobs.size();
+      job.scene = scene.name;
+      job.file = f.string();
+      job.path = fs::absolute(f).lexically_normal();
+      job.renderer = r;
+      job.input_hash = inputHash(scene, job.path, r);
+      plan.jobs.push_back(job);
+    }
+    plan.scenes.push_back(std::move(planned));
+  }
+  plan.created_unix = nowUnix();
+  return plan;
+}
+
+void writePlan(const Plan& plan) {
+  J j;
+  j["format"] = kPlanFormat;
+  j["about"] = "xval validate's render jobs: run job K with `xval validate --plan THIS_FILE --run-job K`, "
+               "compare and report with `xval validate --plan THIS_FILE --compare-only`; outputs are "
+               "relative to this file's folder";
+  j["created_unix"] = plan.created_unix;
+  j["tolerances"] = plan.tolerances;
+  j["tolerances_path"] = plan.tolerances_path.string();
+  j["timeout_seconds"] = plan.timeout_seconds;
+  j["budget"] = {{"max_triangles", plan.budget.max_triangles},
+                 {"max_samples", plan.budget.max_samples},
+                 {"max_memory_mb", plan.budget.max_memory_mb}};
+  j["renderers"] = plan.renderers;
+  j["scenes"] = J::array();
+  for (const PlannedScene& s : plan.scenes) {
+    J left = J::object();
+    for (const LeftOut& l : s.left_out) left[l.renderer] = l.reason;
+    j["scenes"].push_back({{"scene", s.name}, {"file", s.file}, {"path", s.path.string()}, {"left_out", left}});
+  }
+  j["jobs"] = J::array();
+  for (const auto& job : plan.jobs)
+    j["jobs"].push_back({{"index", job.index},
+                         {"scene", job.scene},
+                         {"renderer", job.renderer},
+                         {"file", job.file},
+                         {"path", job.path.string()},
+                         {"input_hash", job.input_hash},
+                         {"exr", job.exr()},
+                         {"png", job.png()},
+                         {"record", job.record()}});
+  fs::create_directories(plan.dir);
+  writeFileAtomically(planFile(plan.dir), j.dump(2) + "\n");
+}
+
+Plan readPlan(const fs::path& file) {
+  const std::string name = file.string();
+  // As a scene file: a duplicated key, deep nesting or a number beyond a
+  // double is an error naming the field (scene/json_reader.h).
+  const J j = parseOrderedJsonText(readJsonFile(file, "plan"), name);
+  FieldReader rd{name};
+  const std::string format = rd.str(j, "format");
+  if (format != kPlanFormat)
+    throw std::runtime_error(name + ": format: \"" + format + "\": expected \"" + kPlanFormat + "\"");
+  Plan plan;
+  plan.dir = fs::absolute(file).lexically_normal().parent_path();
+  checkToolPath(plan.dir);
+  plan.created_unix = rd.num(j, "created_unix");
+  plan.tolerances = rd.str(j, "tolerances");
+  plan.tolerances_path = rd.str(j, "tolerances_path");
+  plan.timeout_seconds = rd.num(j, "timeout_seconds");
+  if (!(plan.timeout_seconds > 0) || !std::isfinite(plan.timeout_seconds))
+    throw std::runtime_error(name + ": timeout_seconds: " + j["timeout_seconds"].dump() +
+                             ": expected a positive, finite number");
+  // The budget every scene of the plan is loaded with (validate's
+  // --max-triangles, --max-samples, --max-memory-mb, --allow-large); a plan
+  // without one uses the defaults.
+  if (j.contains("budget")) {
+    const J& b = j["budget"];
+    if (!b.is_object())
+      throw std::runtime_error(name + ": budget: expected an object, got " + std::string(b.type_name()));
+    for (auto [key, field] : {std::pair{"max_triangles", &plan.budget.max_triangles},
+                              std::pair{"max_samples", &plan.budget.max_samples},
+                              std::pair{"max_memory_mb", &plan.budget.max_memory_mb}}) {
+      const J& v = rd.at(b, key, "budget.");
+      if (!v.is_number_integer() || v.get<long long>() <= 0)
+        throw std::runtime_error(name + ": budget." + key + ": " + v.dump() + ": expected a positive integer");
+      *field = v.get<long long>();
+    }
+  }
+  plan.renderers = readRunRenderers(rd, j);
+  plan.scenes = readScenes(rd, j, plan.renderers);
+  plan.jobs = readJobs(rd, j, plan);
+  return plan;
+}
+
+}  // namespace xval::validation
