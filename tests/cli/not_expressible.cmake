@@ -2,8 +2,8 @@
 # validate/crosscheck.h), with stand-in POV-Ray and Blender that write the
 # reference render of the scene they were given (found by its case folder):
 #   - a folder mixing expressible scenes (tiny, meant_for_two), one POV-Ray
-#     refuses (course_textured: course-variant Phong with a texture and
-#     ks > 0) and one both external renderers refuse (wide_spp256: its
+#     refuses (pov_refuses: classic Phong lit by two lights whose
+#     attenuations have complex roots) and one both external renderers refuse (wide_spp256: its
 #     16 x 16 sub-pixel image would be 17600 pixels wide) exits 0: the
 #     refusals are recorded as not_expressible with the exporter's reason,
 #     their pairs are not compared, the remaining pairs are, and the case
@@ -22,12 +22,12 @@ require_defined(not_expressible.cmake XVAL SCENES BAD XSD WORK)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK}/bin ${WORK}/crash)
 
-# The premise: POV-Ray's exporter refuses course_textured (if a later
+# The premise: POV-Ray's exporter refuses pov_refuses (if a later
 # exporter expresses it, pick another refused scene for this test).
-run(1 ${XVAL} export pov ${SCENES}/course_textured.json -o ${WORK}/export)
-expect_in("${err}" "classic_phong variant course with a texture and ks > 0")
+run(2 ${XVAL} export pov ${SCENES}/pov_refuses.json -o ${WORK}/export)
+expect_in("${err}" "with l > 0, q > 0 and l^2 < 4 q c (or nearly equal roots) on a light with a specular highlight, among several lights")
 
-foreach(_s tiny meant_for_two course_textured)
+foreach(_s tiny meant_for_two pov_refuses)
   run(0 ${XVAL} render ${SCENES}/${_s}.json -o ${WORK}/ref_${_s}.exr --precision double -q)
 endforeach()
 # Each stand-in writes the reference render of its case (the case folder
@@ -88,12 +88,12 @@ validate(0 ${WORK}/bin out ${SCENES} --junit ${WORK}/junit.xml)
 expect_in("${err}" "all pass (3 renders not expressible, 5 pairs not compared)")
 expect_in("${err}" "meant_for_two: povray left out: the scene is meant for reference and blender only")
 file(READ ${WORK}/out/results.json _r)
-get_case(_c "${_r}" course_textured)
+get_case(_c "${_r}" pov_refuses)
 get_json(_why "${_c}" renders povray not_expressible)
 expect_in("${_why}" "classic_phong variant course with a texture and ks > 0")
 string(JSON _img ERROR_VARIABLE _no GET "${_c}" renders povray image)
 if(NOT _no)
-  message(FATAL_ERROR "course_textured: a not-expressible render names an image (${_img})")
+  message(FATAL_ERROR "pov_refuses: a not-expressible render names an image (${_img})")
 endif()
 get_json(_p0 "${_c}" pairs 0 pair)
 get_json(_n0 "${_c}" pairs 0 not_expressible)
@@ -101,16 +101,16 @@ get_json(_p1 "${_c}" pairs 1 pair)
 get_json(_pass1 "${_c}" pairs 1 pass)
 get_json(_p2 "${_c}" pairs 2 pair)
 get_json(_n2 "${_c}" pairs 2 not_expressible)
-expect_eq("course_textured pair 0" "${_p0}" "reference-povray")
+expect_eq("pov_refuses pair 0" "${_p0}" "reference-povray")
 expect_in("${_n0}" "povray: classic_phong variant course")
-expect_eq("course_textured pair 1" "${_p1}" "reference-blender")
-expect_eq("course_textured reference-blender pass" "${_pass1}" "ON")
-expect_eq("course_textured pair 2" "${_p2}" "povray-blender")
+expect_eq("pov_refuses pair 1" "${_p1}" "reference-blender")
+expect_eq("pov_refuses reference-blender pass" "${_pass1}" "ON")
+expect_eq("pov_refuses pair 2" "${_p2}" "povray-blender")
 expect_in("${_n2}" "povray: ")
 get_json(_pass "${_c}" pass)
-expect_eq("course_textured pass" "${_pass}" "ON")
+expect_eq("pov_refuses pass" "${_pass}" "ON")
 get_json(_who "${_c}" attribution)
-expect_eq("course_textured attribution" "${_who}" "both agree; POV-Ray cannot express it")
+expect_eq("pov_refuses attribution" "${_who}" "both agree; POV-Ray cannot express it")
 get_case(_w "${_r}" wide_spp256)
 get_json(_wp "${_w}" renders blender not_expressible)
 expect_in("${_wp}" "render.spp = 256: rendered as 16 x 16 samples per pixel, the external renderer's image is 17600x128")
@@ -142,16 +142,16 @@ expect_in("${_junit}" "tests=\"10\" failures=\"0\" errors=\"0\" skipped=\"5\"")
 expect_in("${_junit}" "<skipped message=\"not expressible: povray: classic_phong variant course")
 
 # 2. --renderers: a subset, in registry order whatever the order given.
-validate(0 ${WORK}/bin out_subset ${SCENES}/tiny.json ${SCENES}/course_textured.json --renderers blender,reference)
+validate(0 ${WORK}/bin out_subset ${SCENES}/tiny.json ${SCENES}/pov_refuses.json --renderers blender,reference)
 file(READ ${WORK}/out_subset/results.json _r)
 get_json(_rs "${_r}" renderers)
 string(REGEX REPLACE "[ \n]" "" _rs "${_rs}")
 expect_eq("renderers" "${_rs}" "[\"reference\",\"blender\"]")
-get_case(_c "${_r}" course_textured)
+get_case(_c "${_r}" pov_refuses)
 string(JSON _np LENGTH "${_c}" pairs)
-expect_eq("course_textured pairs with --renderers reference,blender" "${_np}" "1")
+expect_eq("pov_refuses pairs with --renderers reference,blender" "${_np}" "1")
 get_json(_pass "${_c}" pass)
-expect_eq("course_textured pass" "${_pass}" "ON")
+expect_eq("pov_refuses pass" "${_pass}" "ON")
 validate(2 ${WORK}/bin out_bad ${SCENES}/tiny.json --renderers reference,pov)
 expect_in("${err}" "--renderers: \"pov\": not a renderer validate runs (expected reference, povray and blender")
 validate(2 ${WORK}/bin out_bad ${SCENES}/tiny.json --renderers reference)
@@ -162,24 +162,24 @@ validate(2 ${WORK}/bin out_bad ${BAD} --plan-only)
 expect_in("${err}" "renderers[1]: unknown renderer \"pov\"")
 
 # 4. A POV-Ray that crashes stays an error; the refusal stays a verdict.
-validate(2 ${WORK}/crash out_crash ${SCENES}/tiny.json ${SCENES}/course_textured.json)
+validate(2 ${WORK}/crash out_crash ${SCENES}/tiny.json ${SCENES}/pov_refuses.json)
 file(READ ${WORK}/out_crash/results.json _r)
 get_case(_t "${_r}" tiny)
 get_json(_e "${_t}" renders povray error)
-get_case(_c "${_r}" course_textured)
+get_case(_c "${_r}" pov_refuses)
 get_json(_why "${_c}" renders povray not_expressible)
-expect_in("${_why}" "classic_phong variant course")
+expect_in("${_why}" "attenuation 1/(c + l d + q d^2)")
 
 # 5. crosscheck of the refused scene: a verdict, exit 0, nothing rendered.
 execute_process(COMMAND ${CMAKE_COMMAND} -E env "PATH=${WORK}/bin:/usr/bin:/bin"
-                        ${XVAL} crosscheck ${SCENES}/course_textured.json --renderer povray -o ${WORK}/cc
+                        ${XVAL} crosscheck ${SCENES}/pov_refuses.json --renderer povray -o ${WORK}/cc
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 60)
 message("crosscheck: exit ${rc}\n${out}${err}")
 expect_eq("crosscheck exit" "${rc}" "0")
-expect_in("${out}" "course_textured vs povray: NOT EXPRESSIBLE (not compared): classic_phong variant course")
+expect_in("${out}" "pov_refuses vs povray: NOT EXPRESSIBLE (not compared): attenuation 1/(c + l d + q d^2)")
 file(READ ${WORK}/cc/metrics.json _m)
 get_json(_why "${_m}" not_expressible)
-expect_in("${_why}" "classic_phong variant course")
+expect_in("${_why}" "attenuation 1/(c + l d + q d^2)")
 if(EXISTS ${WORK}/cc/povray.exr)
   message(FATAL_ERROR "crosscheck rendered a scene the renderer cannot express")
 endif()
