@@ -30,6 +30,8 @@
 #include "scene/scene_loader.h"
 #include "validate/colour_stats.h"
 #include "validate/paper_claims.h"
+#include "validate/pixel_crops.h"
+#include "image/heat_map.h"
 #include "validate/report.h"
 #include "validate/tolerances.h"
 
@@ -546,19 +548,23 @@ int compareAndReport(const Plan& plan, const ReportSections& sections) {
         A.image.depth = renders[reference_id].image.depth;
         A.image.backfacing = renders[reference_id].image.backfacing;
         A.image.incidence = renders[reference_id].image.incidence;
+        A.image.texel_edge = renders[reference_id].image.texel_edge;
       }
       CompareMetrics m = compareImages(A.image, B.image, tol);
       PerceptualMetrics pm = perceptualMetrics(A.image, B.image);
       const Image diff = differenceImage(A.image, B.image);
       writeImage(diff, dir / j0.scene / ("diff_" + key + ".exr"));
       jp["heat_map"] = writeHeatMapPng(diff, dir, j0.scene, key);  // the report only shows it
+      std::map<std::string, const Image*> images;
+      for (const auto& [id, rr] : renders) images[id] = rr.error.empty() ? &rr.image : nullptr;
+      jp["crops"] = writePairCrops(A.image, B.image, images, heatMap(diff), m, dir, j0.scene, key);
       J jm = J::parse(toJson(m, tol, &pm));
       jm["tolerance_reason"] = reason;
       jp["metrics"] = jm;
       jp["pass"] = tol.passes(m);
       // Known differences are the classified ones and a declared reason.
       jp["classification"] = {
-          {"known", m.over_occlusion_edge + m.over_backfacing + m.over_grazing},
+          {"known", m.over_tolerance - m.over_unexplained},
           {"unexplained", m.over_unexplained},
           {"declared", !reason.empty()}};
       verdict[p] = tol.passes(m) ? 1 : 0;
