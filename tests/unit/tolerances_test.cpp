@@ -86,6 +86,7 @@ TEST(LoadTolerances, TheToolkitsFileHoldsTheProjectDefault) {
   const ToleranceTable table = loadTolerances(toolkitToleranceFile());
   EXPECT_EQ(table.default_tolerance.max_abs, 2.0 / 65535.0);
   EXPECT_EQ(table.default_tolerance.fraction, 0.999);
+  EXPECT_EQ(table.default_tolerance.max_unexplained, 128.0 / 65535.0);  // docs/pixel-classes.md
 }
 
 void expectError(const std::string& text, std::initializer_list<std::string> said) {
