@@ -44,8 +44,8 @@ document.getElementById('f').addEventListener('load', async function () {
     await new Promise(function (ok) { shown.addEventListener('load', ok); shown.addEventListener('error', ok);
                                       if (shown.complete) ok(); });
     if (shown.naturalWidth === 0) return done('the swapped-in image did not decode: ' + shown.getAttribute('src'));
-    var crop = d.querySelector('.crops[data-pair="@PAIR@"][data-which="worst_unexplained"] img.crop.heat');
-    if (!crop) return done('no heat-map crop of the worst unexplained pixel of @PAIR@');
+    var crop = d.querySelector('.crops[data-pair="XVAL_PAIR_ID"][data-which="worst_unexplained"] img.crop.heat');
+    if (!crop) return done('no heat-map crop of the worst unexplained pixel of XVAL_PAIR_ID');
     var x = +crop.getAttribute('data-x'), y = +crop.getAttribute('data-y');
     var at = rgb(crop, x, y), near = rgb(crop, x + 2, y), near2 = rgb(crop, x, y - 2);
     var bright = function (p) { return p[0] + p[1] + p[2] > 400; };
@@ -58,7 +58,7 @@ document.getElementById('f').addEventListener('load', async function () {
 </script></body></html>
 ]=])
 file(READ ${harness} text)
-string(REPLACE "@PAIR@" "${PAIR}" text "${text}")
+string(REPLACE "XVAL_PAIR_ID" "${PAIR}" text "${text}")
 file(WRITE ${harness} "${text}")
 set(profile ${dir}/chromium-profile-pixels)
 file(REMOVE_RECURSE ${profile})
