@@ -93,8 +93,7 @@ CompareMetrics compareImages(const Image& a, const Image& b, const Tolerance& t)
         case PixelClass::TexelBoundary: ++m.over_texel_boundary; break;
         case PixelClass::Unexplained: ++m.over_unexplained; break;
       }
-      double& class_max = m.over_max[size_t(cls)];
-      class_max = std::max(class_max, e);
+      if (const size_t k = size_t(cls); k < size_t(kPixelClassCount)) m.over_max[k] = std::max(m.over_max[k], e);
       if (cls != PixelClass::Unexplained && (e > m.max_explained || m.worst_explained_x < 0))
         m.max_explained = e, m.worst_explained_x = x, m.worst_explained_y = y;
     }
