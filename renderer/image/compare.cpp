@@ -27,30 +27,6 @@ bool onSilhouette(const Image& img, int x, int y) {
   return any_hit && any_miss;
 }
 
-// A depth jump of more than 5% to a neighbour, or a neighbour missed: the
-// pixel sits where one surface occludes another.
-bool onOcclusionEdge(const Image& img, int x, int y) {
-  if (img.depth.empty()) return false;
-  const float z = img.depth[size_t(y) * img.width + x];
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx) {
-      int xx = x + dx, yy = y + dy;
-      if (xx < 0 || yy < 0 || xx >= img.width || yy >= img.height || !hit(img, xx, yy)) return true;
-      if (std::abs(img.depth[size_t(yy) * img.width + xx] - z) > 0.05f * z) return true;
-    }
-  return false;
-}
-
-// Grazing incidence: float rounding of the hit point is amplified by
-// 1/|cos|; below 0.1 that is more than ten-fold.
-constexpr float kGrazingCos = 0.1f;
-bool grazing(const Image& img, int x, int y) {
-  return !img.incidence.empty() && img.incidence[size_t(y) * img.width + x] < kGrazingCos;
-}
-
-bool backfacing(const Image& img, int x, int y) {
-  return !img.backfacing.empty() && img.backfacing[size_t(y) * img.width + x] > 0.0f;
-}
 }  // namespace
 
 CompareMetrics compareImages(const Image& a, const Image& b, const Tolerance& t) {
@@ -84,7 +60,8 @@ CompareMetrics compareImages(const Image& a, const Image& b, const Tolerance& t)
         continue;
       }
       if (!ha) continue;
-      const bool bf = backfacing(a, x, y) || backfacing(b, x, y);
+      const bool bf = (!a.backfacing.empty() && a.backfacing[size_t(y) * a.width + x] > 0.0f) ||
+                      (!b.backfacing.empty() && b.backfacing[size_t(y) * b.width + x] > 0.0f);
       m.backfacing_pixels += bf;
       if (bf && t.exclude_backfacing) continue;
       ++m.covered_both;
@@ -101,13 +78,24 @@ CompareMetrics compareImages(const Image& a, const Image& b, const Tolerance& t)
       while (bin < 6 && e * 65535.0 > CompareMetrics::kHistogramEdges16[bin]) ++bin;
       ++m.histogram[bin];
       within += e <= tolerance;
-      if (e > tolerance) {
-        ++m.over_tolerance;
-        if (bf) ++m.over_backfacing;
-        else if (onOcclusionEdge(a, x, y) || onOcclusionEdge(b, x, y)) ++m.over_occlusion_edge;
-        else if (grazing(a, x, y) || grazing(b, x, y)) ++m.over_grazing;
-        else ++m.over_unexplained;
+      // Classified when over the tolerance (counted) or when it could be
+      // the largest unexplained error.
+      if (e <= tolerance && !(e > m.max_unexplained)) continue;
+      const PixelClass cls = classifyPixel(a, b, x, y);
+      if (cls == PixelClass::Unexplained && (e > m.max_unexplained || m.worst_unexplained_x < 0))
+        m.max_unexplained = e, m.worst_unexplained_x = x, m.worst_unexplained_y = y;
+      if (e <= tolerance) continue;
+      ++m.over_tolerance;
+      switch (cls) {
+        case PixelClass::BackfacingNormal: ++m.over_backfacing; break;
+        case PixelClass::OcclusionEdge: ++m.over_occlusion_edge; break;
+        case PixelClass::Grazing: ++m.over_grazing; break;
+        case PixelClass::TexelBoundary: ++m.over_texel_boundary; break;
+        case PixelClass::Unexplained: ++m.over_unexplained; break;
       }
+      if (const size_t k = size_t(cls); k < size_t(kPixelClassCount)) m.over_max[k] = std::max(m.over_max[k], e);
+      if (cls != PixelClass::Unexplained && (e > m.max_explained || m.worst_explained_x < 0))
+        m.max_explained = e, m.worst_explained_x = x, m.worst_explained_y = y;
     }
   }
   if (!errs_either.empty()) {
@@ -148,6 +136,11 @@ Image differenceImage(const Image& a, const Image& b) {
 
 nlohmann::json metricsJson(const CompareMetrics& m) {
   auto finite = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  nlohmann::json over = {{"total", m.over_tolerance}}, over_max = nlohmann::json::object();
+  for (const PixelClassInfo& c : kPixelClasses) {
+    over[c.key] = m.overCount(c.id);
+    over_max[c.key] = finite(m.over_max[size_t(c.id)] * 65535.0);
+  }
   return {
       {"width", m.width},
       {"height", m.height},
@@ -164,11 +157,12 @@ nlohmann::json metricsJson(const CompareMetrics& m) {
       {"fraction_within", finite(m.fraction_within)},
       {"worst_pixel", {m.worst_x, m.worst_y}},
       {"backfacing_pixels", m.backfacing_pixels},
-      {"over_tolerance", {{"total", m.over_tolerance},
-                          {"occlusion_edge", m.over_occlusion_edge},
-                          {"backfacing_normal", m.over_backfacing},
-                          {"grazing", m.over_grazing},
-                          {"unexplained", m.over_unexplained}}},
+      {"over_tolerance", over},
+      {"over_tolerance_max_16bit", over_max},
+      {"max_unexplained_16bit", finite(m.max_unexplained * 65535.0)},
+      {"worst_unexplained_pixel", {m.worst_unexplained_x, m.worst_unexplained_y}},
+      {"max_explained_16bit", finite(m.max_explained * 65535.0)},
+      {"worst_explained_pixel", {m.worst_explained_x, m.worst_explained_y}},
       {"histogram_16bit", {{"edges", CompareMetrics::kHistogramEdges16},
                            {"counts", m.histogram}}},
       {"either_covered", {{"pixels", m.covered_either},
@@ -181,7 +175,8 @@ std::string toJson(const CompareMetrics& m, const Tolerance& t, const Perceptual
   nlohmann::json j = metricsJson(m);
   j["tolerance"] = {{"max_abs_16bit", t.max_abs * 65535.0},
                     {"fraction", t.fraction},
-                    {"exclude_backfacing", t.exclude_backfacing}};
+                    {"exclude_backfacing", t.exclude_backfacing},
+                    {"max_unexplained_16bit", t.max_unexplained * 65535.0}};
   j["pass"] = t.passes(m);
   if (pm) {
     j["ssim"] = pm->ssim;

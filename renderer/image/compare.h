@@ -24,6 +24,7 @@
 #include <nlohmann/json.hpp>
 
 #include "image/image.h"
+#include "image/pixel_classes.h"
 
 namespace xval {
 
@@ -39,13 +40,33 @@ struct CompareMetrics {
   double fraction_within = 1.0;    // of covered_both pixels with error <= tolerance
   double tolerance = 0.0;          // the per-pixel tolerance used for fraction_within
   int worst_x = -1, worst_y = -1;  // where max_abs is
-  // Pixels over the tolerance, by known cause (from the first image's
-  // depth and backfacing diagnostics, when it has them):
+  // Pixels over the tolerance, by known cause (image/pixel_classes.h, from
+  // the images' diagnostics, when they have them):
   long long over_tolerance = 0;
   long long over_occlusion_edge = 0;  // a depth jump (> 5%) or the mask edge in the 3x3 neighbourhood
   long long over_backfacing = 0;      // shading normal facing away from the eye (N.V < 0)
   long long over_grazing = 0;         // the ray meets its triangle at |cos| < 0.1
+  long long over_texel_boundary = 0;  // a nearest-filtered uv within float rounding of a texel edge
   long long over_unexplained = 0;     // none of these
+  double over_max[kPixelClassCount] = {};  // per class: the largest error of those pixels
+  // The largest error of a covered pixel no class explains (within the
+  // tolerance or not; 0 when there is none), and where: what the
+  // tolerance's max_unexplained caps.
+  double max_unexplained = 0.0;
+  int worst_unexplained_x = -1, worst_unexplained_y = -1;
+  // The largest error of an over-tolerance pixel a class explains, and where.
+  double max_explained = 0.0;
+  int worst_explained_x = -1, worst_explained_y = -1;
+  long long overCount(PixelClass c) const {
+    switch (c) {
+      case PixelClass::BackfacingNormal: return over_backfacing;
+      case PixelClass::OcclusionEdge: return over_occlusion_edge;
+      case PixelClass::Grazing: return over_grazing;
+      case PixelClass::TexelBoundary: return over_texel_boundary;
+      case PixelClass::Unexplained: break;
+    }
+    return over_unexplained;
+  }
   long long backfacing_pixels = 0;    // covered pixels with N.V < 0 at some sample
   // Pixels by error in 1/65535: <= 0.5, 1, 2, 4, 16, 256, and above.
   static constexpr double kHistogramEdges16[6] = {0.5, 1, 2, 4, 16, 256};
@@ -62,7 +83,9 @@ struct CompareMetrics {
 double nearestRankPercentile(std::vector<double> values, double p);
 
 // A declared tolerance: per-pixel error <= max_abs on at least `fraction`
-// of the pixels both images cover, and no mask disagreement off silhouettes.
+// of the pixels both images cover, no pixel that no known cause explains
+// (image/pixel_classes.h) over max_unexplained (the hard cap: whatever the
+// fraction), and no mask disagreement off silhouettes.
 // With exclude_backfacing, pixels whose shading normal faces away from the
 // eye are left out of the colour metrics (for a renderer that documents
 // turning such normals around); they are still counted.
@@ -72,9 +95,10 @@ struct Tolerance {
   double max_abs = 0.0;
   double fraction = 1.0;
   bool exclude_backfacing = false;
+  double max_unexplained = 0.0;
   bool passes(const CompareMetrics& m) const {
-    return m.fraction_within >= fraction && m.mask_disagree == m.mask_disagree_silhouette &&
-           m.covered_both > 0;
+    return m.fraction_within >= fraction && m.max_unexplained <= max_unexplained &&
+           m.mask_disagree == m.mask_disagree_silhouette && m.covered_both > 0;
   }
 };
 
@@ -89,15 +113,19 @@ Image differenceImage(const Image& a, const Image& b);
 // not finite is null. Keys: width, height, covered_both, mask_disagree,
 // mask_disagree_silhouette, max_abs[_16bit], p999_abs[_16bit],
 // rmse[_16bit], psnr_db, fraction_within, worst_pixel [x, y],
-// backfacing_pixels, over_tolerance {total, occlusion_edge,
-// backfacing_normal, grazing, unexplained}, histogram_16bit {edges,
+// backfacing_pixels, over_tolerance {total, and per class of
+// image/pixel_classes.h its count: backfacing_normal, occlusion_edge,
+// grazing, texel_boundary, unexplained}, over_tolerance_max_16bit {per
+// class its largest error}, max_unexplained_16bit,
+// worst_unexplained_pixel [x, y], max_explained_16bit,
+// worst_explained_pixel [x, y] ([-1, -1]: none), histogram_16bit {edges,
 // counts}, either_covered {pixels, max_abs_16bit, p999_abs_16bit,
 // rmse_16bit}.
 nlohmann::json metricsJson(const CompareMetrics& m);
 
 struct PerceptualMetrics;
 // metricsJson(m) with the verdict: tolerance {max_abs_16bit, fraction,
-// exclude_backfacing} and pass; with `pm`, also ssim, ciede2000 {mean, max}
+// exclude_backfacing, max_unexplained_16bit} and pass; with `pm`, also ssim, ciede2000 {mean, max}
 // and yiq_delta {mean, max}.
 std::string toJson(const CompareMetrics& m, const Tolerance& t,
                    const PerceptualMetrics* pm = nullptr);

@@ -56,6 +56,21 @@ Image heatMap(const Image& d) {
   return h;
 }
 
+Image maxDownscaled(const Image& d, int max_side) {
+  if (max_side < 1) throw std::invalid_argument("maxDownscaled: max_side " + std::to_string(max_side) + " < 1");
+  const int k = (std::max(d.width, d.height) + max_side - 1) / max_side;
+  if (k <= 1) return d;
+  Image out((d.width + k - 1) / k, (d.height + k - 1) / k, false);
+  for (int y = 0; y < d.height; ++y)
+    for (int x = 0; x < d.width; ++x) {
+      const float* p = d.pixel(x, y);
+      float* o = out.pixel(x / k, y / k);
+      for (int c = 0; c < 4; ++c)
+        if (p[c] > o[c] || p[c] != p[c]) o[c] = p[c];  // NaN wins: it is the top of the scale
+    }
+  return out;
+}
+
 void writeHeatScalePng(const std::filesystem::path& png) {
   const int W = 512, H = 16;
   std::vector<float> t(size_t(W) * H);

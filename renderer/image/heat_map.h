@@ -20,6 +20,13 @@ inline constexpr double kHeatMin16 = 1.0, kHeatMax16 = 4096.0;
 // channel, alpha = covered by either. Returns the RGB heat map, alpha 1.
 Image heatMap(const Image& diff);
 
+// A difference image made at most max_side pixels a side by the smallest
+// integer factor k that does it: each output pixel holds, per channel, the
+// largest value of its k x k block (alpha: covered when any is), so a
+// single bad pixel survives the preview (a box filter would divide it by
+// k^2). k = 1 returns the image as it is.
+Image maxDownscaled(const Image& diff, int max_side);
+
 // The colour scale itself, 512 x 16, left = 0, right = kHeatMax16.
 void writeHeatScalePng(const std::filesystem::path& png);
 

@@ -13,6 +13,8 @@
 #include <filesystem>
 #include <vector>
 
+#include "texture/texel_edge.h"
+
 namespace xval {
 
 struct Image {
@@ -30,7 +32,12 @@ struct Image {
   // sample that hit, 3 floats per pixel (0 where nothing is hit); may be
   // empty when the others are not (a golden image keeps only the channels
   // the comparison's classification reads: golden/golden_set.h).
-  std::vector<float> depth, backfacing, incidence, albedo;
+  // texel_edge: over the pixel's samples, the smallest distance of a
+  // nearest-filtered texture lookup from the next texel's edge, in float
+  // roundings of the uv (texture/texel_edge.h; kFarFromTexelEdge when no
+  // sample looks up a nearest-filtered texture). Empty in EXRs written
+  // before it existed.
+  std::vector<float> depth, backfacing, incidence, albedo, texel_edge;
   // False for an image read from a file without an alpha channel (an RGB
   // PNG from elsewhere): readImage then sets alpha = 1 everywhere, so every
   // pixel counts as covered.
@@ -43,7 +50,8 @@ struct Image {
         depth(with_raw ? size_t(w) * h : 0, 0.0f),
         backfacing(with_raw ? size_t(w) * h : 0, 0.0f),
         incidence(with_raw ? size_t(w) * h : 0, 0.0f),
-        albedo(with_raw ? size_t(w) * h * 3 : 0, 0.0f) {}
+        albedo(with_raw ? size_t(w) * h * 3 : 0, 0.0f),
+        texel_edge(with_raw ? size_t(w) * h : 0, kFarFromTexelEdge) {}
   float* pixel(int x, int y) { return &rgba[(size_t(y) * width + x) * 4]; }
   const float* pixel(int x, int y) const { return &rgba[(size_t(y) * width + x) * 4]; }
 };
@@ -54,8 +62,8 @@ inline constexpr const char* kColourEncoding =
     "display-referred code values: no transfer function applied (docs/scene-format.md)";
 
 // OpenEXR (32-bit float; channels R,G,B,A and, when present, raw.R, raw.G,
-// raw.B, Z, backfacing, incidence and albedo.R/G/B (albedo only when
-// present); tagged oiio:ColorSpace
+// raw.B, Z, backfacing, incidence, albedo.R/G/B (only when present) and
+// texel_edge (only when present); tagged oiio:ColorSpace
 // "sRGB", since the values are display-referred codes) or, by extension
 // .png, a 16-bit RGBA PNG: alpha = coverage, colour unassociated as PNG
 // defines it (premultiplied colour / alpha), round(v * 65535) of the
@@ -73,7 +81,7 @@ void requireDecodable(const std::filesystem::path& file, int width, int height);
 // Images read back (from the external renderers, by `xval compare` and
 // `xval validate`): at most the largest image xval renders (kMaxImageSide,
 // kMaxImagePixels: scene/scene_loader.h) and this many channels (xval's EXRs
-// have 13, a Blender multilayer EXR a few dozen); checked on the header
+// have 14, a Blender multilayer EXR a few dozen); checked on the header
 // before any pixel is allocated (image/image_header.h).
 inline constexpr int kMaxReadImageChannels = 64;
 

@@ -50,13 +50,16 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
     const bool raw = !img.raw.empty();
     const bool diag = !img.depth.empty();
     const bool albedo = diag && !img.albedo.empty();
-    OIIO::ImageSpec spec(img.width, img.height, 4 + (raw ? 3 : 0) + (diag ? 3 : 0) + (albedo ? 3 : 0),
+    const bool texel = diag && img.texel_edge.size() == img.depth.size();
+    OIIO::ImageSpec spec(img.width, img.height,
+                         4 + (raw ? 3 : 0) + (diag ? 3 : 0) + (albedo ? 3 : 0) + (texel ? 1 : 0),
                          OIIO::TypeDesc::FLOAT);
     spec.channelnames = {"R", "G", "B", "A"};
     if (raw) spec.channelnames.insert(spec.channelnames.end(), {"raw.R", "raw.G", "raw.B"});
     if (diag) {
       spec.channelnames.insert(spec.channelnames.end(), {"Z", "backfacing", "incidence"});
       if (albedo) spec.channelnames.insert(spec.channelnames.end(), {"albedo.R", "albedo.G", "albedo.B"});
+      if (texel) spec.channelnames.push_back("texel_edge");
       spec.z_channel = 4 + (raw ? 3 : 0);
     }
     spec.alpha_channel = 3;
@@ -79,6 +82,7 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
         buf[i * spec.nchannels + spec.z_channel + 2] = img.incidence[i];
         if (albedo)
           for (int c = 0; c < 3; ++c) buf[i * spec.nchannels + spec.z_channel + 3 + c] = img.albedo[i * 3 + c];
+        if (texel) buf[i * spec.nchannels + spec.z_channel + 3 + (albedo ? 3 : 0)] = img.texel_edge[i];
       }
     }
     ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::FLOAT, buf.data());
@@ -189,6 +193,8 @@ Image readImage(const std::filesystem::path& file, int expect_width, int expect_
   img.backfacing.assign(img.depth.size(), 0.0f);
   img.incidence.assign(img.depth.size(), 0.0f);
   img.albedo.assign(albedo ? img.depth.size() * 3 : 0, 0.0f);
+  const int tc = channel("texel_edge");  // absent from EXRs older than it: left empty
+  img.texel_edge.assign(diag && tc >= 0 ? img.depth.size() : 0, kFarFromTexelEdge);
   for (size_t i = 0; i < size_t(spec.width) * spec.height; ++i) {
     if (diag) {
       img.depth[i] = buf[i * nc + zc];
@@ -196,6 +202,7 @@ Image readImage(const std::filesystem::path& file, int expect_width, int expect_
       img.incidence[i] = buf[i * nc + ic];
       if (albedo)
         for (int c = 0; c < 3; ++c) img.albedo[i * 3 + c] = buf[i * nc + ac[c]];
+      if (!img.texel_edge.empty()) img.texel_edge[i] = buf[i * nc + tc];
     }
     for (int c = 0; c < 4; ++c)
       img.rgba[i * 4 + c] = ch[c] >= 0 ? buf[i * nc + ch[c]] : 1.0f;

@@ -163,7 +163,7 @@ __attribute__((flatten)) glm::vec<3, T> shadeHit(const Shading<T>& sh, const Hit
 template <class T> struct PixelSums {
   glm::vec<3, T> final_sum{0}, raw_sum{0}, albedo{0};
   int hits = 0, backfacing = 0;
-  double nearest = 0.0, incidence = 1.0;
+  double nearest = 0.0, incidence = 1.0, texel_edge = kFarFromTexelEdge;
 };
 
 // A pixel's value from its n x n samples, box-filtered:
@@ -171,7 +171,8 @@ template <class T> struct PixelSums {
 // with diagnostics also raw = sum c / n^2, depth = the nearest hit's t,
 // backfacing = the fraction of hits whose shading normal faces away,
 // incidence = the smallest |cos| between a ray and its triangle's plane,
-// albedo = the first hit's texture colour (0 where nothing is hit).
+// albedo = the first hit's texture colour (0 where nothing is hit),
+// texel_edge = the smallest texelEdge over the hits (texture/texel_edge.h).
 template <class T> struct Accumulation {
   const Shading<T>& sh;
   Image& img;
@@ -185,7 +186,10 @@ template <class T> struct Accumulation {
       const ShadedMesh<T>& m = sh.meshes[h.mesh];
       const auto& tri = m.src->triangles[h.triangle];
       px.incidence = std::min(px.incidence, geometricIncidence(*m.src, tri, dir));
-      if (px.hits == 0) px.albedo = sh.colour.at(interpolateUv(m.uv, tri, T(h.b1), T(h.b2)));
+      const glm::vec<2, T> uv = interpolateUv(m.uv, tri, T(h.b1), T(h.b2));
+      if (px.hits == 0) px.albedo = sh.colour.at(uv);
+      const glm::vec<2, T> corners[3] = {m.uv[tri[0]], m.uv[tri[1]], m.uv[tri[2]]};
+      px.texel_edge = std::min(px.texel_edge, sh.colour.texelEdge(uv, corners));
     }
     bool back = false;
     const glm::vec<3, T> c = shadeHit(sh, h, back);
@@ -207,6 +211,7 @@ template <class T> struct Accumulation {
       img.backfacing[at] = s.hits ? float(s.backfacing) / float(s.hits) : 0.0f;
       img.incidence[at] = s.hits ? float(s.incidence) : 0.0f;
       for (int q = 0; q < 3; ++q) img.albedo[at * 3 + q] = float(s.albedo[q]);
+      img.texel_edge[at] = float(s.texel_edge);
     }
   }
 

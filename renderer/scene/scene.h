@@ -156,6 +156,7 @@ struct DeclaredTolerance {
   std::string renderer;
   std::optional<double> max_abs_16bit;  // per-pixel error, in 1/65535
   std::optional<double> fraction;       // share of covered pixels within it
+  std::optional<double> max_unexplained_16bit;  // the cap on an unexplained pixel (image/compare.h)
   bool exclude_backfacing = false;
   std::string reason;
 };

@@ -279,6 +279,8 @@ std::vector<DeclaredTolerance> readTolerances(JsonReader& r) {
     d.renderer = renderer;
     if (t->has("max_abs_16bit")) d.max_abs_16bit = t->number("max_abs_16bit", 0, Range::nonNegative());
     if (t->has("fraction")) d.fraction = t->number("fraction", 0, Range::closed(0.0, 1.0));
+    if (t->has("max_unexplained_16bit"))
+      d.max_unexplained_16bit = t->number("max_unexplained_16bit", 0, Range::nonNegative());
     d.exclude_backfacing = t->boolean("exclude_backfacing", false);
     d.reason = t->requireString("reason");
     if (d.reason.size() < 20)

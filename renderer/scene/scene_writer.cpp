@@ -98,6 +98,7 @@ J sceneToJson(const Scene& s, const std::string* texture_path) {
       J e;
       if (d.max_abs_16bit) e["max_abs_16bit"] = *d.max_abs_16bit;
       if (d.fraction) e["fraction"] = *d.fraction;
+      if (d.max_unexplained_16bit) e["max_unexplained_16bit"] = *d.max_unexplained_16bit;
       if (d.exclude_backfacing) e["exclude_backfacing"] = true;
       e["reason"] = d.reason;
       t[d.renderer] = e;

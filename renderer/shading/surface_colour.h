@@ -10,6 +10,7 @@
 #include "geometry/mesh.h"
 #include "scene/scene.h"
 #include "shading/shader.h"
+#include "texture/texel_edge.h"
 #include "texture/texture.h"
 
 namespace xval {
@@ -26,6 +27,14 @@ template <class T> struct SurfaceColour {
 
   glm::vec<3, T> at(glm::vec<2, T> uv) const {
     return texture ? texture->lookup(uv, filter) : base;
+  }
+
+  // For a nearest-filtered texture, how near uv is to another texel's pick
+  // (texture/texel_edge.h; corners: the triangle's uvs); otherwise
+  // kFarFromTexelEdge.
+  double texelEdge(glm::vec<2, T> uv, const glm::vec<2, T> corners[3]) const {
+    if (!texture || filter != TextureFilter::Nearest) return kFarFromTexelEdge;
+    return texelEdgeRoundings(uv, corners, texture->width, texture->height);
   }
 };
 

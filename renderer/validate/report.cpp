@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -21,6 +22,8 @@
 #include "scene/scene_loader.h"
 #include "validate/common/number_text.h"
 #include "validate/extremes/report_section.h"
+#include "validate/report_pixels.h"
+#include "validate/tolerances.h"
 #include "validate/tradeoff/report_section.h"
 
 namespace xval {
@@ -45,7 +48,9 @@ std::string htmlEscape(const std::string& s) {
 
 namespace {
 
-constexpr int kHeatMapSide = 360;  // heat map previews: at most 360 px
+// Heat maps: at full resolution up to this size; larger ones reduced by
+// their block maximum (image/heat_map.h maxDownscaled).
+constexpr int kHeatMapSide = 1024;
 
 // gnuplot string: only [A-Za-z0-9_.-] of a name, the rest '_'.
 std::string gnuplotSafe(const std::string& n) {
@@ -70,12 +75,6 @@ bool nothingCompared(const J& c) {
   for (const auto& p : c["pairs"])
     if (!p.contains("not_expressible")) return false;
   return true;
-}
-
-// The class and text of a case's verdict (the caller closes the tag).
-std::string caseVerdict(const J& c) {
-  if (nothingCompared(c)) return c["pairs"].empty() ? "nexp\">NOTHING TO COMPARE" : "nexp\">NOT EXPRESSIBLE";
-  return c["pass"].get<bool>() ? "pass\">PASS" : "fail\">FAIL";
 }
 
 const J* findPair(const J& c, const std::string& id) {
@@ -227,7 +226,7 @@ nlohmann::ordered_json sectionsJson(const ReportSections& sections, const fs::pa
 std::string writeHeatMapPng(const Image& diff, const fs::path& results_dir, const std::string& scene,
                             const std::string& pair) {
   const std::string rel = scene + "/heat_" + pair + ".png";
-  writePreviewPng(heatMap(diff), results_dir / rel, kHeatMapSide);
+  writePreviewPng(heatMap(maxDownscaled(diff, kHeatMapSide)), results_dir / rel, kHeatMapSide);
   return rel;
 }
 
@@ -252,22 +251,44 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   writeHeatScalePng(dir / "heat_scale.png");
   writePlot(cases, pairs, dir);
 
-  int pass = 0, fail = 0, err = 0, nexp = 0, nexp_pairs = 0;
+  // A case: error when a pair is; not expressible when no pair could be
+  // compared; else the case's verdict (decided on the comparable pairs).
+  auto caseVerdict = [](const J& c) -> std::string {
+    for (const auto& p : c["pairs"])
+      if (pairVerdict(p) == "error") return "error";
+    if (nothingCompared(c)) return "not expressible";
+    return c["pass"].get<bool>() ? "pass" : "fail";
+  };
+  auto verdictCell = [](const std::string& v) {
+    const char* cls = v == "pass" ? "pass" : v == "fail" ? "fail" : v == "error" ? "err" : "nexp";
+    std::string upper;
+    for (char ch : v) upper += char(std::toupper(static_cast<unsigned char>(ch)));
+    return std::string("class=\"l ") + cls + "\">" + upper;
+  };
+  int pass = 0, fail = 0, nexp = 0, err = 0, nexp_pairs = 0;
   for (const auto& c : cases) {
-    bool e = false;
-    for (const auto& p : c["pairs"]) e |= p.contains("error"), nexp_pairs += p.contains("not_expressible");
-    (e ? err : nothingCompared(c) ? nexp : c["pass"].get<bool>() ? pass : fail)++;
+    for (const auto& p : c["pairs"]) nexp_pairs += p.contains("not_expressible");
+    const std::string v = caseVerdict(c);
+    (v == "error" ? err : v == "fail" ? fail : v == "pass" ? pass : nexp)++;
   }
+  const std::string doc_href =
+      relativeHref(toolkitToleranceFile().parent_path().parent_path() / kPixelClassDoc, html_dir);
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
     << "<title>xval report</title>\n<style>\n"
     << "body{font-family:sans-serif;margin:1.5em;color:#222}table{border-collapse:collapse;margin:.5em 0}"
     << "td,th{border:1px solid #bbb;padding:2px 6px;font-size:13px;text-align:right}"
     << "th{background:#eee}td.l,th.l{text-align:left}.pass{color:#070;font-weight:bold}"
-    << ".fail{color:#b00;font-weight:bold}.err{color:#b60;font-weight:bold}.nexp{color:#666;font-style:italic}"
+    << ".fail{color:#b00;font-weight:bold}.err{color:#b60;font-weight:bold}.nexp{color:#558;font-weight:bold}"
+    << ".marked{position:relative;display:inline-block;line-height:0}.marked img{width:100%;border:0}"
+    << ".heat,.swap,.crop{image-rendering:pixelated}.mark{position:absolute;box-sizing:border-box;"
+    << "border:2px solid #f0f;pointer-events:none}.mark.worst_unexplained{border-color:#f00}"
+    << ".mark.worst_explained{border-color:#08f}.crops .mark{border-width:1px;border-color:#f0f}"
+    << ".crops p{font-size:12px;margin:.6em 0 .2em}.viewer{margin:.5em 0}.viewer img{border:1px solid #999}"
+    << ".swapbar button{margin:0 4px 4px 0}.swapbar button.on{background:#333;color:#fff}"
     << ".case{border-top:2px solid #888;margin-top:1.5em;padding-top:.5em}"
     << ".imgs{display:flex;flex-wrap:wrap;gap:10px}.imgs figure{margin:0}"
-    << ".imgs img{width:256px;image-rendering:pixelated;border:1px solid #999}"
+    << ".imgs>figure>img{width:256px;image-rendering:pixelated;border:1px solid #999}"
     << "figcaption{font-size:12px;text-align:center}.reason{font-size:12px;color:#444;max-width:900px}"
     << "</style></head><body>\n";
   h << "<h1>xval cross-validation report</h1>\n";
@@ -275,7 +296,9 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
     << "<span class=\"fail\">" << fail << " fail</span>, <span class=\"err\">" << err
     << " errors</span>, <span class=\"nexp\">" << nexp << " not expressible</span> (" << nexp_pairs
     << " pairs not expressible by a renderer, not compared). Wall time " << fixed(r.value("wall_seconds", 0.0), 1)
-    << " s. Failures are listed first. Errors are in 1/65535 of the full scale.</p>\n";
+    << " s. Failures are listed first. Errors are in 1/65535 of the full scale. A pair passes when its "
+       "pixels are within the tolerance on the declared fraction and no pixel that no known cause explains "
+       "differs by more than the cap on unexplained error (max_unexplained_16bit).</p>\n";
   h << "<table><tr><th class=\"l\">provenance</th><th class=\"l\"></th></tr>";
   for (auto it = r["provenance"].begin(); it != r["provenance"].end(); ++it)
     h << "<tr><td class=\"l\">" << htmlEscape(it.key()) << "</td><td class=\"l\">"
@@ -283,12 +306,12 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   h << "</table>\n";
   h << "<h2>Summary</h2>\n<table><tr><th class=\"l\">scene</th><th class=\"l\">verdict</th>"
        "<th class=\"l\">who deviates</th>";
-  for (const auto& p : pairs) h << "<th>" << htmlEscape(p) << "<br>p99.9 / max</th>";
+  for (const auto& p : pairs) h << "<th>" << htmlEscape(p) << "<br>verdict, max unexplained</th>";
   h << "</tr>\n";
   for (const auto& c : cases) {
     const std::string id = htmlEscape(c["scene"].get<std::string>());
-    h << "<tr><td class=\"l\"><a href=\"#" << id << "\">" << id << "</a></td><td class=\"l "
-      << caseVerdict(c) << "</td><td class=\"l\">"
+    h << "<tr><td class=\"l\"><a href=\"#" << id << "\">" << id << "</a></td><td "
+      << verdictCell(caseVerdict(c)) << "</td><td class=\"l\">"
       << htmlEscape(c["attribution"].get<std::string>()) << "</td>";
     for (const auto& id : pairs) {
       const J* pp = findPair(c, id);
@@ -302,28 +325,28 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
         continue;
       }
       if (!p.contains("metrics")) {
-        h << "<td class=\"err\">error</td>";
+        h << "<td " << verdictCell(pairVerdict(p)) << "</td>";
         continue;
       }
       const J& m = p["metrics"];
-      h << "<td class=\"" << (p["pass"].get<bool>() ? "pass" : "fail") << "\">"
-        << fixed(m["p999_abs_16bit"], 2) << " / " << fixed(m["max_abs_16bit"], 1) << "</td>";
+      h << "<td " << verdictCell(pairVerdict(p)) << " " << fixed(m.value("max_unexplained_16bit", J()), 2) << "</td>";
     }
     h << "</tr>\n";
   }
   h << "</table>\n<figure><img src=\"p999.png\" alt=\"p99.9 error per scene and pair\">"
        "<figcaption>p99.9 error per scene and pair (log scale; gnuplot)</figcaption></figure>\n";
 
-  h << paperClaimsSection(r, cases);
-  if (extremes_dir) h << extremes::reportSection(*extremes_dir, relativeHref(*extremes_dir, html_dir));
-  if (tradeoff_dir) h << tradeoffReportSection(*tradeoff_dir, relativeHref(*tradeoff_dir, html_dir));
-  h << "<h2>Cases</h2>\n<p>Heat maps: largest channel difference per pixel, "
+  h << "<h2>Cases</h2>\n<p>Heat maps (full resolution): largest channel difference per pixel, "
        "<img src=\"heat_scale.png\" alt=\"scale\" style=\"width:300px;height:12px;vertical-align:middle\">"
-       " from 0 through 1 (first seventh, linear) to 4096/65535 (logarithmic); grey: not covered.</p>\n";
+       " from 0 through 1 (first seventh, linear) to 4096/65535 (logarithmic); grey: not covered. Red box: "
+       "the pair's worst unexplained pixel, blue box: its worst explained one; the crops below show every "
+       "render and the heat map around them, magnified nearest-neighbour. The buttons above each case "
+       "swap its renders and heat maps in one place. Over-tolerance pixels are classified by cause:</p>\n"
+    << pixelClassLegend(doc_href);
   for (const auto& c : cases) {
     const std::string id = htmlEscape(c["scene"].get<std::string>());
-    h << "<div class=\"case\" id=\"" << id << "\"><h3>" << id << " &mdash; <span class=\"" << caseVerdict(c)
-      << "</span></h3>\n";
+    h << "<div class=\"case\" id=\"" << id << "\"><h3>" << id << " &mdash; <span class=\""
+      << verdictCell(caseVerdict(c)).substr(std::string("class=\"l ").size()) << "</span></h3>\n";
     h << "<p>" << htmlEscape(c["attribution"].get<std::string>()) << ". Reproduce: <code>xval validate "
       << htmlEscape(c["file"].get<std::string>()) << " -o DIR</code></p>\n";
     if (c.contains("left_out"))
@@ -346,46 +369,42 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
       if (rr.contains("error")) h << "<br><span class=\"err\">" << htmlEscape(rr["error"].get<std::string>()) << "</span>";
       h << "</figcaption></figure>";
     }
-    h << "</div>\n<div class=\"imgs\">";
-    for (const auto& p : c["pairs"]) {
-      // The heat map the compare step wrote and named (it had the EXRs).
-      if (!p.contains("heat_map")) continue;
-      const std::string pair = p["pair"].get<std::string>();
-      const std::string heat = p["heat_map"].get<std::string>();
-      if (!fs::is_regular_file(dir / heat)) {
-        h << "<p class=\"err\">heat map " << htmlEscape(heat) << " (named in results.json) is missing</p>";
-        continue;
-      }
-      h << "<figure><img src=\"" << htmlEscape(heat) << "\" alt=\"heat map " << htmlEscape(pair)
-        << "\"><figcaption>|" << htmlEscape(pair) << "|</figcaption></figure>";
-    }
-    h << "</div>\n<table><tr><th class=\"l\">pair</th><th>verdict</th><th>max</th><th>p99.9</th>"
-         "<th>RMSE</th><th>PSNR dB</th><th>within tol.</th><th>tol.</th><th>masks off (silh.)</th>"
-         "<th>over tol.: occl. / backf. / grazing / unexpl.</th><th>SSIM</th><th>CIEDE2000 mean / max</th>"
+    h << "</div>\n" << casePixels(c, dir);
+    h << "<table><tr><th class=\"l\">pair</th><th>verdict</th><th>max unexpl. (cap)</th><th>max</th><th>p99.9</th>"
+         "<th>RMSE</th><th>PSNR dB</th><th>within tol.</th><th>tol.</th><th>masks off (silh.)</th>";
+    for (const PixelClassInfo& k : kPixelClasses) h << "<th>over tol.: " << k.name << "<br>count (max)</th>";
+    h << "<th>SSIM</th><th>CIEDE2000 mean / max</th>"
          "<th>YIQ &Delta; mean / max</th></tr>\n";
     for (const auto& p : c["pairs"]) {
       h << "<tr><td class=\"l\">" << htmlEscape(p["pair"].get<std::string>()) << "</td>";
       if (p.contains("not_expressible")) {
-        h << "<td class=\"nexp\" colspan=\"12\">not expressible, not compared: "
+        h << "<td class=\"nexp\" colspan=\"" << 12 + kPixelClassCount << "\">not expressible, not compared: "
           << htmlEscape(p["not_expressible"].get<std::string>()) << "</td></tr>\n";
         continue;
       }
       if (!p.contains("metrics")) {
-        h << "<td class=\"err\" colspan=\"12\">" << htmlEscape(p.value("error", "error")) << "</td></tr>\n";
+        h << "<td class=\"err\" colspan=\"" << 12 + kPixelClassCount << "\">" << htmlEscape(p.value("error", "error"))
+          << "</td></tr>\n";
         continue;
       }
       const J& m = p["metrics"];
       const J& o = m["over_tolerance"];
-      h << "<td class=\"" << (p["pass"].get<bool>() ? "pass\">PASS" : "fail\">FAIL") << "</td><td>"
+      h << "<td " << verdictCell(pairVerdict(p)) << "</td><td>" << fixed(m.value("max_unexplained_16bit", J()), 2)
+        << " (" << fixed(m["tolerance"].value("max_unexplained_16bit", J()), 0) << ")</td><td>"
         << fixed(m["max_abs_16bit"], 2) << "</td><td>" << fixed(m["p999_abs_16bit"], 2) << "</td><td>"
         << fixed(m["rmse_16bit"], 3) << "</td><td>"
         << (m["psnr_db"].is_null() ? std::string("inf") : fixed(m["psnr_db"], 1)) << "</td><td>"
         << fixed(100.0 * m["fraction_within"].get<double>(), 3) << "%</td><td>"
         << significant(m["tolerance"]["max_abs_16bit"]) << " on " << significant(100.0 * m["tolerance"]["fraction"].get<double>())
         << "%</td><td>" << m["mask_disagree"].get<long long>() << " (" << m["mask_disagree_silhouette"].get<long long>()
-        << ")</td><td>" << o["occlusion_edge"].get<long long>() << " / " << o["backfacing_normal"].get<long long>()
-        << " / " << o["grazing"].get<long long>() << " / " << o["unexplained"].get<long long>() << "</td><td>"
-        << fixed(m["ssim"], 6) << "</td><td>" << fixed(m["ciede2000"]["mean"], 4) << " / "
+        << ")</td>";
+      for (const PixelClassInfo& k : kPixelClasses) {
+        h << "<td>" << (o.contains(k.key) ? std::to_string(o[k.key].get<long long>()) : std::string("n/a"));
+        if (m.contains("over_tolerance_max_16bit") && o.value(k.key, 0LL) > 0)
+          h << " (" << fixed(m["over_tolerance_max_16bit"][k.key], 1) << ")";
+        h << "</td>";
+      }
+      h << "<td>" << fixed(m["ssim"], 6) << "</td><td>" << fixed(m["ciede2000"]["mean"], 4) << " / "
         << fixed(m["ciede2000"]["max"], 3) << "</td><td>" << fixed(m["yiq_delta"]["mean"].get<double>() * 1e3, 4)
         << "e-3 / " << fixed(m["yiq_delta"]["max"].get<double>() * 1e3, 3) << "e-3</td></tr>\n";
     }
@@ -396,7 +415,11 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
           << " tolerance:</b> " << htmlEscape(p["metrics"]["tolerance_reason"].get<std::string>()) << "</p>\n";
     h << "</div>\n";
   }
-  h << "<script>\nwindow.addEventListener('load', function () {\n"
+  // After the cases: the paper's claims, the extremes and the trade-off.
+  h << paperClaimsSection(r, cases);
+  if (extremes_dir) h << extremes::reportSection(*extremes_dir, relativeHref(*extremes_dir, html_dir));
+  if (tradeoff_dir) h << tradeoffReportSection(*tradeoff_dir, relativeHref(*tradeoff_dir, html_dir));
+  h << "<script>\n" << swapScript() << "window.addEventListener('load', function () {\n"
        "  var bad = [], imgs = document.images;\n"
        "  for (var i = 0; i < imgs.length; i++)\n"
        "    if (!imgs[i].complete || imgs[i].naturalWidth === 0) bad.push(imgs[i].getAttribute('src'));\n"

@@ -42,7 +42,9 @@ nlohmann::ordered_json sectionsJson(const ReportSections& sections, const std::f
 void writeReport(const std::filesystem::path& results_json, const std::filesystem::path& html,
                  const ReportSections& sections = {});
 
-// The heat map of one pair (image/heat_map.h, a preview of at most 360 px)
+// The heat map of one pair (image/heat_map.h) at full resolution up to
+// 1024 px a side (larger: reduced by the block maximum, so a single bad
+// pixel stays visible)
 // as results_dir/<scene>/heat_<pair>.png; returns that path relative to
 // results_dir, for the pair's `heat_map` in results.json.
 std::string writeHeatMapPng(const Image& diff, const std::filesystem::path& results_dir,

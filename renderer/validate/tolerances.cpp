@@ -26,6 +26,8 @@ ToleranceTable loadTolerances(const fs::path& file) {
   JsonReader d = r.requireObject("default");
   table.default_tolerance.max_abs = d.requireNumber("max_abs_16bit", Range::nonNegative()) / 65535.0;
   table.default_tolerance.fraction = d.requireNumber("fraction", Range::closed(0.0, 1.0));
+  table.default_tolerance.max_unexplained =
+      d.requireNumber("max_unexplained_16bit", Range::nonNegative()) / 65535.0;
   d.finish();
   r.finish();
   return table;
@@ -39,6 +41,7 @@ Tolerance ToleranceTable::lookup(const Scene& scene, const std::string& renderer
     if (d.renderer != renderer) continue;
     if (d.max_abs_16bit) t.max_abs = *d.max_abs_16bit / 65535.0;
     if (d.fraction) t.fraction = *d.fraction;
+    if (d.max_unexplained_16bit) t.max_unexplained = *d.max_unexplained_16bit / 65535.0;
     t.exclude_backfacing = d.exclude_backfacing;
     if (reason) *reason = d.reason;
   }
@@ -54,6 +57,7 @@ Tolerance ToleranceTable::lookupPair(const Scene& scene, const std::string& a, c
   Tolerance t;
   t.max_abs = t1.max_abs + t2.max_abs;
   t.fraction = std::max(0.0, t1.fraction + t2.fraction - 1.0);
+  t.max_unexplained = t1.max_unexplained + t2.max_unexplained;
   t.exclude_backfacing = t1.exclude_backfacing || t2.exclude_backfacing;
   if (reason)
     *reason = "derived: the sum of the " + a + " and " + b +

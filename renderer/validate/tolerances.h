@@ -45,6 +45,10 @@ struct ToleranceTable {
   // inequality), and at most (1 - f1) + (1 - f2) of the pixels are outside
   // either (union bound), so the pair is held to e1 + e2 on
   // max(0, f1 + f2 - 1); back faces are left out if either leaves them out.
+  // The caps on unexplained pixels add up the same way (c1 + c2): a pixel's
+  // class comes from the reference's diagnostics in all three pairs, so a
+  // pixel unexplained between a and b is unexplained against the reference
+  // in both.
   Tolerance lookupPair(const Scene& scene, const std::string& a, const std::string& b,
                        std::string* reason = nullptr) const;
 };

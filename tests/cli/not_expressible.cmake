@@ -139,7 +139,7 @@ if(NOT _rc EQUAL 0)
 endif()
 file(READ ${WORK}/junit.xml _junit)
 expect_in("${_junit}" "tests=\"10\" failures=\"0\" errors=\"0\" skipped=\"5\"")
-expect_in("${_junit}" "<skipped message=\"not expressible: povray: classic_phong variant course")
+expect_in("${_junit}" "<skipped message=\"not expressible: povray: attenuation 1/(c + l d + q d^2)")
 
 # 2. --renderers: a subset, in registry order whatever the order given.
 validate(0 ${WORK}/bin out_subset ${SCENES}/tiny.json ${SCENES}/pov_refuses.json --renderers blender,reference)

@@ -30,9 +30,12 @@ void uncover(Image& img, int x0, int y0, int x1, int y1) {
     for (int x = x0; x <= x1; ++x) img.pixel(x, y)[0] = img.pixel(x, y)[1] = img.pixel(x, y)[2] = img.pixel(x, y)[3] = 0.0f;
 }
 
-Tolerance tolerance(double max_abs, double fraction) {
+// No cap on unexplained pixels unless given: these tests are about the
+// fraction rule (the cap has its own tests below).
+Tolerance tolerance(double max_abs, double fraction,
+                    double max_unexplained = std::numeric_limits<double>::infinity()) {
   Tolerance t;
-  t.max_abs = max_abs, t.fraction = fraction;
+  t.max_abs = max_abs, t.fraction = fraction, t.max_unexplained = max_unexplained;
   return t;
 }
 
@@ -158,6 +161,15 @@ TEST(CompareImages, OverTolerancePixelsAreClassifiedByTheirCause) {
   EXPECT_EQ(m.backfacing_pixels, 1);
   EXPECT_EQ(m.covered_both, 49);
   EXPECT_EQ(m.fraction_within, 45.0 / 49.0);
+  // Per class, the largest error; the worst of each kind and where.
+  EXPECT_EQ(m.over_max[size_t(PixelClass::OcclusionEdge)], 0.25);
+  EXPECT_EQ(m.over_max[size_t(PixelClass::TexelBoundary)], 0.0);
+  EXPECT_EQ(m.max_unexplained, 0.25);
+  EXPECT_EQ(m.worst_unexplained_x, 3);
+  EXPECT_EQ(m.worst_unexplained_y, 5);
+  EXPECT_EQ(m.max_explained, 0.25);
+  EXPECT_EQ(m.worst_explained_x, 1);  // the first of the explained 0.25s in row order
+  EXPECT_EQ(m.worst_explained_y, 1);
   // Pixels on the image border have neighbours outside it: occlusion edges.
   Image edge = covered(7, 7);
   edge.pixel(0, 3)[0] = 0.25f;
@@ -211,6 +223,76 @@ TEST(TolerancePasses, TheEmptyToleranceAcceptsOnlyEqualImages) {
   EXPECT_TRUE(Tolerance{}.passes(compareImages(a, b, Tolerance{})));
   b.pixel(1, 1)[0] = 1.0f / 65536.0f;
   EXPECT_FALSE(Tolerance{}.passes(compareImages(a, b, Tolerance{})));
+}
+
+// A nearest-filtered lookup within kTexelEdgeRoundings float roundings of
+// the uv from a texel edge explains its pixel; one just beyond does not.
+TEST(CompareImages, TexelBoundaryPixelsAreExplainedByTheReferenceChannel) {
+  Image a = covered(7, 7, true), b = covered(7, 7);
+  ASSERT_EQ(a.texel_edge.size(), 49u);
+  a.texel_edge[3 * 7 + 3] = kTexelEdgeRoundings;         // on the limit: near
+  a.texel_edge[3 * 7 + 4] = kTexelEdgeRoundings * 1.01f;  // beyond it
+  b.pixel(3, 3)[1] = 0.5f;
+  b.pixel(4, 3)[1] = 0.25f;
+  const CompareMetrics m = compareImages(a, b, tolerance(0.0, 0.5));
+  EXPECT_EQ(m.over_texel_boundary, 1);
+  EXPECT_EQ(m.over_max[size_t(PixelClass::TexelBoundary)], 0.5);
+  EXPECT_EQ(m.over_unexplained, 1);
+  EXPECT_EQ(m.max_unexplained, 0.25);
+  EXPECT_EQ(m.worst_unexplained_x, 4);
+  // The classification reads either image's channel (a copy of the
+  // reference's given to another renderer's image counts the same).
+  EXPECT_EQ(classifyPixel(b, a, 3, 3), PixelClass::TexelBoundary);
+  EXPECT_EQ(classifyPixel(b, b, 3, 3), PixelClass::Unexplained);
+}
+
+// The hard cap: one wrong pixel in 10,000 is within a 99.9% fraction, and
+// fails the case all the same when nothing explains it.
+TEST(CompareImages, ASingleUnexplainedPixelOverTheCapFailsWhateverTheFraction) {
+  Image a = covered(100, 100, true), b = covered(100, 100);
+  const double cap = 8.0 / 65535.0;
+  b.pixel(50, 50)[2] = float(9.0 / 65535.0);
+  const Tolerance t = tolerance(2.0 / 65535.0, 0.999, cap);
+  CompareMetrics m = compareImages(a, b, t);
+  EXPECT_GE(m.fraction_within, 0.999);
+  EXPECT_NEAR(m.max_unexplained * 65535.0, 9.0, 1e-3);
+  EXPECT_EQ(m.worst_unexplained_x, 50);
+  EXPECT_EQ(m.worst_unexplained_y, 50);
+  EXPECT_FALSE(t.passes(m));
+  // At the cap it passes; the same pixel explained (a grazing ray) passes
+  // however large.
+  b.pixel(50, 50)[2] = float(cap);
+  EXPECT_TRUE(t.passes(compareImages(a, b, t)));
+  b.pixel(50, 50)[2] = 1.0f;
+  a.incidence[50 * 100 + 50] = 0.05f;
+  m = compareImages(a, b, t);
+  EXPECT_EQ(m.over_grazing, 1);
+  EXPECT_EQ(m.max_unexplained, 0.0);
+  EXPECT_EQ(m.worst_unexplained_x, -1);
+  EXPECT_TRUE(t.passes(m));
+  // A pixel within the tolerance but unexplained still counts for the
+  // largest unexplained error (the cap bounds every unexplained pixel).
+  b.pixel(10, 10)[0] = float(1.0 / 65535.0);
+  EXPECT_NEAR(compareImages(a, b, t).max_unexplained * 65535.0, 1.0, 1e-3);
+  // Tolerance{} accepts only equal images.
+  EXPECT_FALSE(Tolerance{}.passes(compareImages(a, b, Tolerance{})));
+}
+
+TEST(CompareImages, MetricsJsonGivesTheCountAndMaxOfEveryClass) {
+  Image a = covered(7, 7, true), b = covered(7, 7);
+  a.texel_edge[3 * 7 + 3] = 1.0f;
+  b.pixel(3, 3)[0] = 0.5f;
+  b.pixel(3, 4)[0] = float(3.0 / 65535.0);
+  const nlohmann::json j = metricsJson(compareImages(a, b, tolerance(1.0 / 65535.0, 0.5)));
+  for (const PixelClassInfo& c : kPixelClasses) {
+    EXPECT_TRUE(j["over_tolerance"].contains(c.key)) << c.key;
+    EXPECT_TRUE(j["over_tolerance_max_16bit"].contains(c.key)) << c.key;
+  }
+  EXPECT_EQ(j["over_tolerance"]["texel_boundary"], 1);
+  EXPECT_NEAR(j["over_tolerance_max_16bit"]["texel_boundary"].get<double>(), 0.5 * 65535.0, 1e-6);
+  EXPECT_NEAR(j["max_unexplained_16bit"].get<double>(), 3.0, 1e-3);
+  EXPECT_EQ(j["worst_unexplained_pixel"], nlohmann::json::array({3, 4}));
+  EXPECT_EQ(j["worst_explained_pixel"], nlohmann::json::array({3, 3}));
 }
 
 }  // namespace

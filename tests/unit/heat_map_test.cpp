@@ -59,3 +59,28 @@ TEST(HeatMap, LinearBetweenKnots) {
   const double e = std::pow(4096.0, (7.0 / 12.0 - 1.0 / 7.0) * 7.0 / 6.0);
   expectColour(heatColours({e})[0], {0.5f, 1, 0}, "t = 7/12");
 }
+
+// A preview reduced by the block maximum keeps a single bad pixel (a box
+// filter would divide it by k^2), at the block it falls in.
+TEST(HeatMap, MaxDownscaledKeepsASinglePixel) {
+  Image d(2000, 1000, false);
+  d.pixel(1501, 777)[1] = 0.25f, d.pixel(1501, 777)[3] = 1.0f;
+  const Image p = maxDownscaled(d, 1024);  // k = 2
+  ASSERT_EQ(p.width, 1000);
+  ASSERT_EQ(p.height, 500);
+  EXPECT_EQ(p.pixel(750, 388)[1], 0.25f);
+  EXPECT_EQ(p.pixel(750, 388)[3], 1.0f);
+  EXPECT_EQ(p.pixel(750, 388)[0], 0.0f);
+  EXPECT_EQ(p.pixel(751, 388)[1], 0.0f);
+  // No larger than max_side: the image as it is.
+  const Image same = maxDownscaled(d, 2000);
+  EXPECT_EQ(same.width, 2000);
+  EXPECT_EQ(same.pixel(1501, 777)[1], 0.25f);
+  // An odd size rounds the output up: the last partial block is kept.
+  Image odd(5, 3, false);
+  odd.pixel(4, 2)[0] = 1.0f;
+  const Image q = maxDownscaled(odd, 2);  // k = 3
+  ASSERT_EQ(q.width, 2);
+  ASSERT_EQ(q.height, 1);
+  EXPECT_EQ(q.pixel(1, 0)[0], 1.0f);
+}

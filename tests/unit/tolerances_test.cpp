@@ -47,13 +47,14 @@ struct WorkingDirectory {
 
 std::string toleranceFile(double max16, double fraction) {
   return "{\"default\": {\"max_abs_16bit\": " + std::to_string(max16) + ", \"fraction\": " + std::to_string(fraction) +
-         "}}";
+         ", \"max_unexplained_16bit\": 64}}";
 }
 
 ToleranceTable table(double max16, double fraction) {
   ToleranceTable t;
   t.default_tolerance.max_abs = max16 / 65535.0;
   t.default_tolerance.fraction = fraction;
+  t.default_tolerance.max_unexplained = 16.0 / 65535.0;
   return t;
 }
 
@@ -70,10 +71,12 @@ DeclaredTolerance declared(std::string renderer, std::optional<double> max16, st
 
 TEST(LoadTolerances, ReadsTheDefault) {
   TempTree t;
-  const fs::path f = t.write("tolerances.json", "{\"description\": \"x\", \"default\": {\"max_abs_16bit\": 3, \"fraction\": 0.99}}");
+  const fs::path f = t.write("tolerances.json", "{\"description\": \"x\", \"default\": {\"max_abs_16bit\": 3, \"fraction\": 0.99, "
+                                         "\"max_unexplained_16bit\": 40}}");
   const ToleranceTable table = loadTolerances(f);
   EXPECT_EQ(table.default_tolerance.max_abs, 3.0 / 65535.0);
   EXPECT_EQ(table.default_tolerance.fraction, 0.99);
+  EXPECT_EQ(table.default_tolerance.max_unexplained, 40.0 / 65535.0);
   EXPECT_FALSE(table.default_tolerance.exclude_backfacing);
   EXPECT_EQ(table.source, f);
 }
@@ -83,6 +86,7 @@ TEST(LoadTolerances, TheToolkitsFileHoldsTheProjectDefault) {
   const ToleranceTable table = loadTolerances(toolkitToleranceFile());
   EXPECT_EQ(table.default_tolerance.max_abs, 2.0 / 65535.0);
   EXPECT_EQ(table.default_tolerance.fraction, 0.999);
+  EXPECT_EQ(table.default_tolerance.max_unexplained, 128.0 / 65535.0);  // docs/pixel-classes.md
 }
 
 void expectError(const std::string& text, std::initializer_list<std::string> said) {
@@ -99,12 +103,15 @@ void expectError(const std::string& text, std::initializer_list<std::string> sai
 }
 
 TEST(LoadTolerances, ErrorsNameTheFileTheFieldAndTheValue) {
-  expectError("{\"default\": {\"max_abs_16bit\": 2, \"max_abs_16bit\": 3, \"fraction\": 0.9}}",
+  expectError("{\"default\": {\"max_abs_16bit\": 2, \"max_abs_16bit\": 3, \"fraction\": 0.9, \"max_unexplained_16bit\": 8}}",
               {"default.max_abs_16bit", "duplicate field"});
-  expectError("{\"default\": {\"max_abs_16bit\": 2, \"fraction\": 1.5}}", {"default.fraction", "1.5"});
-  expectError("{\"default\": {\"max_abs_16bit\": -1, \"fraction\": 0.9}}", {"default.max_abs_16bit", "-1"});
-  expectError("{\"default\": {\"max_abs_16bit\": 2, \"fraction\": 0.9, \"max\": 4}}", {"default.max", "unknown field"});
+  expectError("{\"default\": {\"max_abs_16bit\": 2, \"fraction\": 1.5, \"max_unexplained_16bit\": 8}}", {"default.fraction", "1.5"});
+  expectError("{\"default\": {\"max_abs_16bit\": -1, \"fraction\": 0.9, \"max_unexplained_16bit\": 8}}", {"default.max_abs_16bit", "-1"});
+  expectError("{\"default\": {\"max_abs_16bit\": 2, \"fraction\": 0.9, \"max\": 4, \"max_unexplained_16bit\": 8}}", {"default.max", "unknown field"});
   expectError("{\"default\": {\"fraction\": 0.9}}", {"default.max_abs_16bit", "required"});
+  expectError("{\"default\": {\"max_abs_16bit\": 2, \"fraction\": 0.9}}", {"default.max_unexplained_16bit", "required"});
+  expectError("{\"default\": {\"max_abs_16bit\": 2, \"fraction\": 0.9, \"max_unexplained_16bit\": -1}}",
+              {"default.max_unexplained_16bit", "-1"});
   expectError("{\"defaults\": {}}", {"default"});
 }
 
@@ -164,6 +171,11 @@ TEST(ToleranceLookup, TheDerivedRuleForTwoExternalRenderers) {
   EXPECT_DOUBLE_EQ(t.fraction, 0.995 + 0.998 - 1.0);
   EXPECT_TRUE(t.exclude_backfacing);  // either leaves back faces out
   EXPECT_EQ(reason.rfind("derived: ", 0), 0u) << reason;
+  // The caps on unexplained pixels add up (a declared one replaces the
+  // default's 16).
+  s.tolerances[0].max_unexplained_16bit = 100;
+  EXPECT_EQ(table(2, 0.999).lookup(s, "povray").max_unexplained, 100.0 / 65535.0);
+  EXPECT_EQ(table(2, 0.999).lookupPair(s, "povray", "blender").max_unexplained, 116.0 / 65535.0);
   // Fractions that add up to less than 1 give 0, never a negative share.
   Scene loose;
   loose.tolerances.push_back(declared("povray", std::nullopt, 0.3, false, "p"));

@@ -13,11 +13,13 @@
 #include "files/atomic_write.h"
 #include "files/output_folder.h"
 #include "image/compare.h"
+#include "image/heat_map.h"
 #include "image/image.h"
 #include "image/perceptual.h"
 #include "renderers/registry.h"
 #include "scene/scene_loader.h"
 #include "validate/colour_stats.h"
+#include "validate/pixel_crops.h"
 #include "validate/tolerances.h"
 #include "validate/validation/job_record.h"
 #include "validate/validation/next_steps.h"
@@ -105,24 +107,35 @@ J comparePair(const CompareContext& cx, const Scene& scene, const renderers::Ren
   }
   std::string reason;
   const Tolerance tol = cx.table.lookupPair(scene, ra.id, rb.id, &reason);
+  // The comparison classifies pixels by the diagnostics of its first image.
+  // Without the reference in the pair, they come from the reference's render
+  // when the run has one, else from B when only B carries them (a golden
+  // image, which follows the external renderers in registry order): they
+  // describe the same pixels.
   const auto ref = renders.find(renderers::registry().reference().id);
-  if (!ra.reference && !rb.reference && ref != renders.end()) {
-    // The reference's diagnostics describe the same pixels.
-    A.image.depth = ref->second.image.depth;
-    A.image.backfacing = ref->second.image.backfacing;
-    A.image.incidence = ref->second.image.incidence;
+  const Image* diagnostics = ref != renders.end()                         ? &ref->second.image
+                             : A.image.depth.empty() && !B.image.depth.empty() ? &B.image
+                                                                           : nullptr;
+  if (!ra.reference && !rb.reference && diagnostics != nullptr && diagnostics != &A.image) {
+    A.image.depth = diagnostics->depth;
+    A.image.backfacing = diagnostics->backfacing;
+    A.image.incidence = diagnostics->incidence;
+    A.image.texel_edge = diagnostics->texel_edge;
   }
   CompareMetrics m = compareImages(A.image, B.image, tol);
   PerceptualMetrics pm = perceptualMetrics(A.image, B.image);
   const Image diff = differenceImage(A.image, B.image);
   writeImage(diff, cx.plan.dir / scene.name / ("diff_" + key + ".exr"));
   jp["heat_map"] = writeHeatMapPng(diff, cx.plan.dir, scene.name, key);  // the report only shows it
+  std::map<std::string, const Image*> images;
+  for (const auto& [id, rr] : renders) images[id] = rr.error.empty() && !notExpressible(rr) ? &rr.image : nullptr;
+  jp["crops"] = writePairCrops(A.image, B.image, images, heatMap(diff), m, cx.plan.dir, scene.name, key);
   J jm = J::parse(toJson(m, tol, &pm));
   jm["tolerance_reason"] = reason;
   jp["metrics"] = jm;
   jp["pass"] = tol.passes(m);
   // Known differences are the classified ones and a declared reason.
-  jp["classification"] = {{"known", m.over_occlusion_edge + m.over_backfacing + m.over_grazing},
+  jp["classification"] = {{"known", m.over_tolerance - m.over_unexplained},
                           {"unexplained", m.over_unexplained},
                           {"declared", !reason.empty()}};
   verdict = tol.passes(m) ? kPass : kFail;

@@ -1,0 +1,144 @@
+#include "validate/report_pixels.h"
+
+#include <sstream>
+
+#include "image/pixel_classes.h"
+#include "validate/common/number_text.h"
+#include "validate/report.h"
+
+namespace xval {
+
+namespace fs = std::filesystem;
+using J = nlohmann::ordered_json;
+
+namespace {
+
+constexpr int kCropZoom = 8;  // crops magnified 8x, nearest-neighbour
+
+// A box around pixel (x, y) of a w x h image shown at any size: `radius`
+// pixels on each side of it, in percent of the image.
+std::string markStyle(double x, double y, double w, double h, double radius) {
+  std::ostringstream s;
+  s << "left:" << 100.0 * (x - radius) / w << "%;top:" << 100.0 * (y - radius) / h
+    << "%;width:" << 100.0 * (2 * radius + 1) / w << "%;height:" << 100.0 * (2 * radius + 1) / h << "%";
+  return s.str();
+}
+
+std::string pixelText(const J& shown) {
+  return "(" + std::to_string(shown["pixel"][0].get<int>()) + ", " + std::to_string(shown["pixel"][1].get<int>()) +
+         ")";
+}
+
+// The crops of one shown pixel: every render and the heat map, magnified.
+std::string cropRow(const J& shown, const char* title, const std::string& pair) {
+  const J& w = shown["window"];
+  const int x0 = w[0].get<int>(), y0 = w[1].get<int>(), cw = w[2].get<int>(), ch = w[3].get<int>();
+  const double px = shown["pixel"][0].get<int>() - x0, py = shown["pixel"][1].get<int>() - y0;
+  const std::string mark = markStyle(px, py, cw, ch, 0.5);
+  std::ostringstream h;
+  h << "<div class=\"crops\" data-pair=\"" << htmlEscape(pair) << "\" data-which=\"" << title << "\"><p>"
+    << htmlEscape(pair) << ", " << (std::string(title) == "worst_unexplained" ? "worst unexplained" : "worst explained")
+    << " pixel " << pixelText(shown) << ": " << fixed(shown["error_16bit"], 2) << "/65535 ("
+    << htmlEscape(shown["class"].get<std::string>()) << "), " << cw << " x " << ch << " px around it, magnified "
+    << kCropZoom << "x</p><div class=\"imgs\">";
+  auto figure = [&](const std::string& src, const std::string& caption, const char* cls) {
+    h << "<figure><div class=\"marked\" style=\"width:" << cw * kCropZoom << "px\"><img class=\"crop " << cls
+      << "\" src=\"" << htmlEscape(src) << "\" alt=\"" << htmlEscape(caption) << "\" data-x=\"" << px
+      << "\" data-y=\"" << py << "\"><span class=\"mark\" style=\"" << mark << "\"></span></div><figcaption>"
+      << htmlEscape(caption) << "</figcaption></figure>";
+  };
+  for (auto it = shown["renders"].begin(); it != shown["renders"].end(); ++it)
+    figure(it.value().get<std::string>(), it.key(), "render");
+  figure(shown["heat_map"].get<std::string>(), "|" + pair + "|", "heat");
+  h << "</div></div>\n";
+  return h.str();
+}
+
+}  // namespace
+
+std::string pairVerdict(const J& p) {
+  if (p.contains("error")) return "error";
+  if (p.contains("not_expressible")) return "not expressible";
+  return p.value("pass", false) ? "pass" : "fail";
+}
+
+std::string pixelClassLegend(const std::string& doc_href) {
+  std::ostringstream h;
+  h << "<table class=\"classes\"><tr><th class=\"l\">pixel class</th><th class=\"l\">what it is</th></tr>\n";
+  for (const PixelClassInfo& c : kPixelClasses)
+    h << "<tr><td class=\"l\"><a href=\"" << htmlEscape(doc_href) << "#" << c.doc_anchor << "\">" << c.name
+      << "</a></td><td class=\"l\">" << htmlEscape(c.explanation) << "</td></tr>\n";
+  h << "</table>\n";
+  return h.str();
+}
+
+std::string casePixels(const J& c, const fs::path& dir) {
+  std::ostringstream h;
+  int width = 0, height = 0;  // the scene's, from any pair's metrics
+  for (const auto& p : c["pairs"])
+    if (p.contains("metrics")) width = p["metrics"]["width"].get<int>(), height = p["metrics"]["height"].get<int>();
+  // The viewer: one image, a button per render and per heat map.
+  std::ostringstream buttons;
+  std::string first;
+  for (auto it = c["renders"].begin(); it != c["renders"].end(); ++it) {
+    if (it.value().contains("error")) continue;
+    const std::string src = it.value()["image"].get<std::string>();
+    if (first.empty()) first = src;
+    buttons << "<button type=\"button\" data-src=\"" << htmlEscape(src) << "\">" << htmlEscape(it.key())
+            << "</button>";
+  }
+  for (const auto& p : c["pairs"])
+    if (p.contains("heat_map"))
+      buttons << "<button type=\"button\" data-src=\"" << htmlEscape(p["heat_map"].get<std::string>()) << "\">|"
+              << htmlEscape(p["pair"].get<std::string>()) << "|</button>";
+  if (!first.empty() && width > 0)
+    h << "<div class=\"viewer\" data-viewer><div class=\"swapbar\">show: " << buttons.str()
+      << "</div><img class=\"swap\" src=\"" << htmlEscape(first) << "\" alt=\"render\" style=\"width:" << width
+      << "px\"></div>\n";
+  // The heat maps, full resolution, with the two pixels marked.
+  h << "<div class=\"imgs\">";
+  for (const auto& p : c["pairs"]) {
+    if (!p.contains("heat_map")) continue;
+    const std::string pair = p["pair"].get<std::string>();
+    const std::string heat = p["heat_map"].get<std::string>();
+    if (!fs::is_regular_file(dir / heat)) {
+      h << "<p class=\"err\">heat map " << htmlEscape(heat) << " (named in results.json) is missing</p>";
+      continue;
+    }
+    h << "<figure><div class=\"marked\" style=\"width:" << width << "px\"><img class=\"heat\" src=\""
+      << htmlEscape(heat) << "\" alt=\"heat map " << htmlEscape(pair) << "\">";
+    const J crops = p.value("crops", J::object());
+    for (const char* which : {"worst_unexplained", "worst_explained"})
+      if (crops.contains(which))
+        h << "<span class=\"mark " << which << "\" title=\"" << which << " " << pixelText(crops[which])
+          << "\" style=\""
+          << markStyle(crops[which]["pixel"][0].get<int>(), crops[which]["pixel"][1].get<int>(), width, height, 4)
+          << "\"></span>";
+    h << "</div><figcaption>|" << htmlEscape(pair) << "|";
+    if (crops.contains("worst_unexplained")) h << "; red box: worst unexplained";
+    if (crops.contains("worst_explained")) h << "; blue box: worst explained";
+    h << "</figcaption></figure>";
+  }
+  h << "</div>\n";
+  for (const auto& p : c["pairs"]) {
+    if (!p.contains("crops")) continue;
+    for (const char* which : {"worst_unexplained", "worst_explained"})
+      if (p["crops"].contains(which)) h << cropRow(p["crops"][which], which, p["pair"].get<std::string>());
+  }
+  return h.str();
+}
+
+std::string swapScript() {
+  return "document.querySelectorAll('[data-viewer]').forEach(function (v) {\n"
+         "  var img = v.querySelector('img.swap'), buttons = v.querySelectorAll('button[data-src]');\n"
+         "  buttons.forEach(function (b) {\n"
+         "    b.addEventListener('click', function () {\n"
+         "      img.src = b.getAttribute('data-src');\n"
+         "      buttons.forEach(function (o) { o.classList.toggle('on', o === b); });\n"
+         "    });\n"
+         "  });\n"
+         "  if (buttons.length) buttons[0].classList.add('on');\n"
+         "});\n";
+}
+
+}  // namespace xval

@@ -1,0 +1,35 @@
+# One wrong pixel fails a comparison (the cap on unexplained error,
+# image/compare.h), though one pixel in 65,536 is well within the default
+# fraction: the reference render of a scene against a copy of itself with
+# one pixel in the middle of the sphere painted magenta.
+# -DXVAL=... -DSCENE=... -DOUT=... ; needs oiiotool (Debian openimageio-tools).
+find_program(OIIOTOOL oiiotool REQUIRED)
+file(MAKE_DIRECTORY ${OUT})
+function(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  set(rc ${rc} PARENT_SCOPE)
+  set(out "${out}${err}" PARENT_SCOPE)
+endfunction()
+run(${XVAL} render ${SCENE} -o ${OUT}/a.exr -q)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "render failed (${rc}): ${out}")
+endif()
+# The copy: colour and coverage only (no diagnostics; compare reads a's).
+run(${OIIOTOOL} ${OUT}/a.exr --ch R,G,B,A -o ${OUT}/same.exr)
+run(${OIIOTOOL} ${OUT}/same.exr --fill:color=1,0,1,1 1x1+128+128 -o ${OUT}/one_pixel.exr)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "oiiotool failed (${rc}): ${out}")
+endif()
+# The unchanged copy passes ...
+run(${XVAL} compare ${OUT}/a.exr ${OUT}/same.exr)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the unchanged copy does not pass (exit ${rc}):\n${out}")
+endif()
+# ... the one-pixel change fails (exit 1), found at its place, within the fraction.
+run(${XVAL} compare ${OUT}/a.exr ${OUT}/one_pixel.exr)
+if(NOT rc EQUAL 1 OR NOT out MATCHES "-> FAIL" OR NOT out MATCHES "max unexplained [0-9.]+ \\(x/65535\\) at \\(128, 128\\)"
+   OR NOT out MATCHES "within [0-9.]+: 99\\.99")
+  message(FATAL_ERROR "one wrong pixel: expected exit 1, FAIL, max unexplained at (128, 128) and 99.99% within; "
+                      "got exit ${rc}:\n${out}")
+endif()
+message(STATUS "${out}")
