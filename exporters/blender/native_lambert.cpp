@@ -13,6 +13,8 @@ void checkNativeLambertScene(const Scene& s) {
   if (!l || l->c0 != glm::dvec3(1.0) || s.material.texture || s.material.base_color != glm::dvec3(1.0))
     throw std::runtime_error(s.name + ": the native-Lambert check needs an untextured white "
                              "lambert material (c0 = base_color = [1,1,1])");
+  if (hasObjectMaterials(s))
+    throw std::runtime_error(s.name + ": the native-Lambert check needs the scene's one material on every object");
   if (s.lights.size() != 1 || !std::holds_alternative<PointLight>(s.lights[0]))
     throw std::runtime_error(s.name + ": the native-Lambert check needs exactly one point light");
   const auto& p = std::get<PointLight>(s.lights[0]);

@@ -5,6 +5,14 @@
 
 namespace xval {
 
+void requireOneMaterial(const Scene& scene, const std::string& exporter) {
+  for (size_t k = 0; k < scene.objects.size(); ++k)
+    if (scene.objects[k].material)
+      throw ExportError(exporter + ": objects[" + std::to_string(k) +
+                        "].material: objects with materials of their own are not exported yet (every mesh is "
+                        "written with the scene's one material)");
+}
+
 std::optional<Texture> exportTexture(const Scene& scene, const std::filesystem::path& dir) {
   if (!scene.material.texture) return std::nullopt;
   Texture t = loadTexture(*scene.material.texture);

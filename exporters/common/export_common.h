@@ -40,6 +40,10 @@ inline constexpr double kDefaultToolTimeoutSeconds = 600.0;
 // neither (a float image).
 std::optional<Texture> exportTexture(const Scene& scene, const std::filesystem::path& dir);
 
+// Throws ExportError, the exporter's refusal, when an object has a material
+// of its own: the exporters write the scene's one material on every mesh.
+void requireOneMaterial(const Scene& scene, const std::string& exporter);
+
 // Throws ExternalToolError, with the tail of the log, unless `r` succeeded
 // and wrote `output`.
 void requireToolOutput(const std::string& tool, const std::filesystem::path& input,

@@ -15,6 +15,7 @@
 #include "common/supersample.h"
 #include "geometry/float_rounding.h"
 #include "geometry/mesh.h"
+#include "geometry/scene_meshes.h"
 #include "common/export_common.h"
 #include "files/atomic_write.h"
 #include "gltf/shading_constants.h"
@@ -124,6 +125,7 @@ GltfExport exportGltf(const Scene& scene, const std::filesystem::path& dir) {
   // The resolution Blender renders: n W x n H for render.spp = n^2, one
   // sample through each pixel centre (common/supersample.h); checked first.
   const SubpixelGrid grid = subpixelGrid(scene);
+  requireOneMaterial(scene, "glTF export");
   std::filesystem::create_directories(dir);
   GltfExport ex{dir / "scene.gltf", dir};
   tinygltf::Model m;
@@ -166,8 +168,9 @@ GltfExport exportGltf(const Scene& scene, const std::filesystem::path& dir) {
   const CameraRays cam(scene.camera);
   std::optional<Shader<double>> shader;
   if (scene.shading == ShadingMode::Gouraud) shader.emplace(scene.material, scene.lights);
-  for (size_t k = 0; k < scene.objects.size(); ++k) {
-    TriangleMesh mesh = tessellate(scene.objects[k]);
+  const std::vector<TriangleMesh> meshes = sceneMeshes(scene).meshes;
+  for (size_t k = 0; k < meshes.size(); ++k) {
+    const TriangleMesh& mesh = meshes[k];
     tinygltf::Primitive prim;
     prim.mode = TINYGLTF_MODE_TRIANGLES;
     prim.material = 0;

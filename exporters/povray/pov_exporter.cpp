@@ -10,6 +10,7 @@
 #include "common/supersample.h"
 #include "files/atomic_write.h"
 #include "geometry/mesh.h"
+#include "geometry/scene_meshes.h"
 #include "povray/gouraud_image.h"
 #include "povray/pigment_tree.h"
 #include "povray/pov_shading.h"
@@ -85,8 +86,8 @@ PovExport exportPov(const Scene& scene, const std::filesystem::path& dir, const 
   ex.output_name = output_name;
   ex.grid = grid;
 
-  std::vector<TriangleMesh> meshes;
-  for (const auto& o : scene.objects) meshes.push_back(tessellate(o));
+  requireOneMaterial(scene, "POV-Ray export");
+  const std::vector<TriangleMesh> meshes = sceneMeshes(scene).meshes;
   const std::optional<Texture> texture = exportTexture(scene, dir);
   const bool textured = texture.has_value();
 

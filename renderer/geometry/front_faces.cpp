@@ -70,6 +70,9 @@ bool eyeOutside(const TorusKnot& k, glm::dvec3 eye, double rounding) {
 }
 
 bool eyeOutside(const Plane&, glm::dvec3, double) { return false; }  // open: its back is visible
+// A model file is not known to bound a solid (it may be open, or have
+// holes or inconsistent winding): never.
+bool eyeOutside(const MeshFile&, glm::dvec3, double) { return false; }
 
 }  // namespace
 
@@ -77,6 +80,10 @@ bool backFacesNeverFirstHit(const Shape& shape, const TriangleMesh& mesh, glm::d
   const double rounding = roundingScale(mesh);
   const bool outside = std::visit([&](const auto& s) { return eyeOutside(s, eye, rounding); }, shape);
   return outside && windingAgreesWithNormals(mesh, rounding);
+}
+
+bool objectBackFacesNeverFirstHit(const SceneObject& object, const TriangleMesh& mesh, glm::dvec3 eye) {
+  return object.transform.isIdentity() && backFacesNeverFirstHit(object.shape, mesh, eye);
 }
 
 bool facesAwayFromEye(glm::dvec3 p0, glm::dvec3 p1, glm::dvec3 p2, glm::dvec3 eye) {

@@ -11,7 +11,8 @@
 // other (a knotted tube that crosses itself): the ray still enters some
 // piece first. Three conditions, all checked here:
 //   1. the shape is a closed solid: a torus knot tube or a sphere (a plane
-//      is open, and its back is visible: never);
+//      is open, and its back is visible: never; a model file's mesh is
+//      not known to be closed: never);
 //   2. every triangle's winding normal agrees with its vertex normals
 //      (g . (n0 + n1 + n2) > 0; the tessellators promise outward normals,
 //      and this checks the winding against them), and rounding the
@@ -49,6 +50,13 @@
 namespace xval {
 
 bool backFacesNeverFirstHit(const Shape& shape, const TriangleMesh& mesh, glm::dvec3 eye);
+// For a scene object: the shape's answer when its transform is the
+// identity, else false. Condition 3's tests are stated in the shape's own
+// coordinates (centre, radii); a transformed object (an ellipsoid, a
+// mirrored knot) is not yet given its own test, so its back faces are
+// kept: slower, never a different image. A mesh from a model file: false
+// (condition 1: a file is not known to bound a solid).
+bool objectBackFacesNeverFirstHit(const SceneObject& object, const TriangleMesh& mesh, glm::dvec3 eye);
 
 // The ray paths' twin of the rasteriser's back-face test: which triangles
 // of `mesh` the BVH must hold so that every camera ray from `eye` finds

@@ -32,7 +32,11 @@ TriangleMesh tessellatePlane(const Plane& p);
 // The shape's mesh with every attribute rounded to float32 (the precision of
 // glTF buffers and POV-Ray's mesh2), so that all renderers trace the very
 // same triangles. Normals stay unit length to float32 precision.
+// A model file's shape has one mesh per primitive: geometry/scene_meshes.h
+// (tessellate refuses it, std::invalid_argument).
 TriangleMesh tessellate(const Shape& shape);
+// The same, not rounded (for a transform to map first).
+TriangleMesh tessellateExact(const Shape& shape);
 // Every attribute of `m` rounded to the nearest float32, in place (the last
 // step before any renderer sees a mesh: after a model file's node and
 // object transforms too).

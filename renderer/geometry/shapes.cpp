@@ -1,6 +1,7 @@
 // Sphere and plane tessellation, and the shape dispatch.
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "geometry/float_rounding.h"
 #include "geometry/mesh.h"
@@ -67,15 +68,20 @@ void roundToFloat(TriangleMesh& m) {
   for (auto& uv : m.uvs) uv = roundedToFloat(uv);
 }
 
-TriangleMesh tessellate(const Shape& shape) {
-  TriangleMesh m = std::visit(
+TriangleMesh tessellateExact(const Shape& shape) {
+  return std::visit(
       [](const auto& s) -> TriangleMesh {
         using S = std::decay_t<decltype(s)>;
         if constexpr (std::is_same_v<S, TorusKnot>) return tessellateTorusKnot(s);
         else if constexpr (std::is_same_v<S, UvSphere>) return tessellateSphere(s);
-        else return tessellatePlane(s);
+        else if constexpr (std::is_same_v<S, Plane>) return tessellatePlane(s);
+        else throw std::invalid_argument("tessellate: a model file has one mesh per primitive (scene_meshes.h)");
       },
       shape);
+}
+
+TriangleMesh tessellate(const Shape& shape) {
+  TriangleMesh m = tessellateExact(shape);
   roundToFloat(m);
   return m;
 }

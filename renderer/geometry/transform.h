@@ -51,16 +51,7 @@ inline Affine then(const Affine& first, const Affine& second) {
   return {second.linear * first.linear, second.linear * first.offset + second.offset};
 }
 
-struct Rotation {
-  glm::dvec3 axis{0.0, 1.0, 0.0};  // any non-zero length
-  double angle_deg = 0.0;
-};
-
-struct ObjectTransform {
-  glm::dvec3 scale{1.0};
-  Rotation rotate;
-  glm::dvec3 translate{0.0};
-};
+// Rotation and ObjectTransform, the values, are defined in scene/scene.h.
 
 class TransformError : public std::runtime_error {
  public:

@@ -17,6 +17,7 @@
 #include "geometry/front_faces.h"
 #include "geometry/mesh.h"
 #include "process/job_pool.h"
+#include "geometry/scene_meshes.h"
 #include "render/accel.h"
 #include "render/raster.h"
 #include "scene/precision_limits.h"
@@ -66,6 +67,7 @@ static_assert(kTile % Accel::kPacketSide == 0);
 template <class T> struct ShadedMesh {
   using V = glm::vec<3, T>;
   const TriangleMesh* src;
+  size_t object = 0;  // the scene object: its material's shader and colour
   std::vector<V> p, n, face_n, vertex_colour;
   std::vector<glm::vec<2, T>> uv;
 };
@@ -104,11 +106,12 @@ double geometricIncidence(const TriangleMesh& m, const glm::u32vec3& t, glm::dve
   return len > 0.0 ? std::abs(glm::dot(g / len, dir)) : 0.0;
 }
 
-// Everything the per-sample work needs in precision T.
+// Everything the per-sample work needs in precision T. One shader and
+// surface colour per scene object (its material: materialOf).
 template <class T> struct Shading {
   using V = glm::vec<3, T>;
-  Shader<T> shader;
-  SurfaceColour<T> colour;
+  std::vector<Shader<T>> shaders;
+  std::vector<SurfaceColour<T>> colours;
   ShadingMode mode;
   // Shading coordinates are camera-relative: every position minus the eye,
   // subtracted in double before the rounding to T (shading/shader.h), so
@@ -118,12 +121,21 @@ template <class T> struct Shading {
   V eye{0};
   std::vector<ShadedMesh<T>> meshes;
 
-  Shading(const Scene& scene, const std::vector<TriangleMesh>& src, const Texture* texture)
-      : shader(scene.material, scene.lights, CameraRays(scene.camera).origin),
-        colour(scene.material, texture),
-        mode(scene.shading) {
+  // textures[k]: object k's texture (null: none); mesh_object[i]: the
+  // object of src[i].
+  Shading(const Scene& scene, const std::vector<TriangleMesh>& src, const std::vector<size_t>& mesh_object,
+          const std::vector<const Texture*>& textures)
+      : mode(scene.shading) {
     const glm::dvec3 eye_world = CameraRays(scene.camera).origin;
-    for (const auto& m : src) meshes.push_back(prepareMesh<T>(m, scene.shading, shader, colour, eye_world));
+    for (size_t k = 0; k < scene.objects.size(); ++k) {
+      shaders.emplace_back(materialOf(scene, k), scene.lights, eye_world);
+      colours.emplace_back(materialOf(scene, k), textures[k]);
+    }
+    for (size_t i = 0; i < src.size(); ++i) {
+      const size_t k = mesh_object[i];
+      meshes.push_back(prepareMesh<T>(src[i], scene.shading, shaders[k], colours[k], eye_world));
+      meshes.back().object = k;
+    }
   }
 };
 
@@ -156,7 +168,7 @@ __attribute__((flatten)) glm::vec<3, T> shadeHit(const Shading<T>& sh, const Hit
   const glm::vec<2, T> uv = interpolateUv(m.uv, tri, b1, b2);
   V v = glm::normalize(sh.eye - p);
   backfacing = glm::dot(nrm, v) < T(0);
-  return sh.shader.shade(p, nrm, v, sh.colour.at(uv));
+  return sh.shaders[m.object].shade(p, nrm, v, sh.colours[m.object].at(uv));
 }
 
 // One pixel's running sums over its samples.
@@ -187,9 +199,9 @@ template <class T> struct Accumulation {
       const auto& tri = m.src->triangles[h.triangle];
       px.incidence = std::min(px.incidence, geometricIncidence(*m.src, tri, dir));
       const glm::vec<2, T> uv = interpolateUv(m.uv, tri, T(h.b1), T(h.b2));
-      if (px.hits == 0) px.albedo = sh.colour.at(uv);
+      if (px.hits == 0) px.albedo = sh.colours[m.object].at(uv);
       const glm::vec<2, T> corners[3] = {m.uv[tri[0]], m.uv[tri[1]], m.uv[tri[2]]};
-      px.texel_edge = std::min(px.texel_edge, sh.colour.texelEdge(uv, corners));
+      px.texel_edge = std::min(px.texel_edge, sh.colours[m.object].texelEdge(uv, corners));
     }
     bool back = false;
     const glm::vec<3, T> c = shadeHit(sh, h, back);
@@ -437,7 +449,10 @@ int threadCount(const RenderOptions& opt) {
 struct PreparedScene::Impl {
   Scene scene;
   std::vector<TriangleMesh> meshes;
-  std::optional<Texture> texture;
+  std::vector<size_t> mesh_object;  // the scene object of each mesh (geometry/scene_meshes.h)
+  // The default material's texture, then those of objects with their own.
+  std::vector<std::unique_ptr<Texture>> textures;
+  std::vector<const Texture*> object_texture;  // per object (null: untextured)
   std::optional<Accel> accel;
   std::vector<bool> back_faces_hidden;  // per mesh: geometry/front_faces.h, from the camera
   size_t bvh_culled = 0;                // back faces left out of the BVH
@@ -467,12 +482,26 @@ PreparedScene::PreparedScene(const Scene& scene, Precision precision, bool cull_
   checkPrecision(scene, precision);
   d.scene = scene;
   d.precision = precision;
-  for (const Shape& s : scene.objects) d.meshes.push_back(tessellate(s));
+  SceneMeshes sm = sceneMeshes(scene);
+  d.meshes = std::move(sm.meshes);
+  d.mesh_object = std::move(sm.object);
   for (const auto& m : d.meshes) d.triangles += m.triangles.size();
   const glm::dvec3 eye = CameraRays(scene.camera).origin;
   for (size_t k = 0; k < d.meshes.size(); ++k)
-    d.back_faces_hidden.push_back(backFacesNeverFirstHit(scene.objects[k], d.meshes[k], eye));
-  if (scene.material.texture) d.texture = loadTexture(*scene.material.texture);
+    d.back_faces_hidden.push_back(objectBackFacesNeverFirstHit(scene.objects[d.mesh_object[k]], d.meshes[k], eye));
+  const Texture* default_texture = nullptr;
+  if (scene.material.texture) {
+    d.textures.push_back(std::make_unique<Texture>(loadTexture(*scene.material.texture)));
+    default_texture = d.textures.back().get();
+  }
+  for (const SceneObject& o : scene.objects) {
+    if (!o.material) d.object_texture.push_back(default_texture);
+    else if (!o.material->texture) d.object_texture.push_back(nullptr);
+    else {
+      d.textures.push_back(std::make_unique<Texture>(loadTexture(*o.material->texture)));
+      d.object_texture.push_back(d.textures.back().get());
+    }
+  }
   // The ray paths' BVH: without the back faces no camera ray hits first
   // (geometry/front_faces.h, trianglesNotFacingAway and its conditions).
   std::vector<std::optional<std::vector<uint32_t>>> only(d.meshes.size());
@@ -482,15 +511,15 @@ PreparedScene::PreparedScene(const Scene& scene, Precision precision, bool cull_
     d.bvh_culled += d.meshes[k].triangles.size() - only[k]->size();
   }
   d.accel.emplace(d.meshes, precision, only);
-  const Texture* tex = d.texture ? &*d.texture : nullptr;
   if (precision == Precision::Float) {
-    d.shading.emplace<Shading<float>>(d.scene, d.meshes, tex);
-    d.batch = batchShading(d.scene, tex, eye);
+    d.shading.emplace<Shading<float>>(d.scene, d.meshes, d.mesh_object, d.object_texture);
+    // The kernel shades with one material: not built for objects with their own.
+    if (!hasObjectMaterials(d.scene)) d.batch = batchShading(d.scene, default_texture, eye);
     if (d.batch)
       for (const auto& m : std::get<Shading<float>>(d.shading).meshes)
         d.batch_meshes.push_back(batchMesh(m.p, m.n, m.uv, m.src->triangles));
   } else
-    d.shading.emplace<Shading<double>>(d.scene, d.meshes, tex);
+    d.shading.emplace<Shading<double>>(d.scene, d.meshes, d.mesh_object, d.object_texture);
   d.setup_seconds = secondsSince(t0);
 }
 

@@ -91,7 +91,8 @@ class PreparedScene {
   Precision precision() const;
   double setupSeconds() const;
   size_t triangleCount() const;
-  // The meshes the renderer traces, one per scene object (tessellate()).
+  // The meshes the renderer traces (geometry/scene_meshes.h: per object, one
+  // per primitive of a model file).
   const std::vector<TriangleMesh>& meshes() const;
 
   // Renders one frame into img, which must be camera-sized; diagnostic

@@ -348,6 +348,14 @@ glm::dvec3 JsonReader::vec3(std::string_view key, glm::dvec3 fallback, Range r) 
   return out;
 }
 
+glm::dvec3 JsonReader::numberOrVec3(std::string_view key, glm::dvec3 fallback, Range r) {
+  const json* v = find(key);
+  if (!v) return fallback;
+  if (v->is_number()) return glm::dvec3(toNumber(*v, fieldPath(key), r));
+  if (!v->is_array() || v->size() != 3) failValue(key, "a number or an array of 3 numbers");
+  return vec3(key, fallback, r);
+}
+
 glm::dvec3 JsonReader::requireVec3(std::string_view key, Range r) {
   if (!has(key)) {
     find(key);

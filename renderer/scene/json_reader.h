@@ -51,6 +51,8 @@ class JsonReader {
   glm::dvec3 vec3(std::string_view key, glm::dvec3 fallback, Range r = Range::any());
   glm::dvec3 requireVec3(std::string_view key, Range r = Range::any());
   glm::dvec2 vec2(std::string_view key, glm::dvec2 fallback, Range r = Range::any());
+  // A number s, read as (s, s, s), or an array of 3 numbers.
+  glm::dvec3 numberOrVec3(std::string_view key, glm::dvec3 fallback, Range r = Range::any());
   std::string string(std::string_view key, std::string fallback);
   std::string requireString(std::string_view key);
   // One of `allowed`; the error lists them.

@@ -6,6 +6,8 @@
 #include <functional>
 #include <string>
 
+#include "geometry/model_file.h"
+#include "geometry/transform.h"
 #include "scene/json_reader.h"
 #include "scene/scene_loader.h"
 
@@ -39,31 +41,9 @@ void attenuation(const Visit& f, const std::string& at, const Attenuation& a) {
   f(at + ".attenuation.quadratic", a.quadratic, Kind::Number);
 }
 
-void forEachNumber(const Scene& s, const Visit& f) {
-  vec(f, "camera.position", s.camera.position, Kind::Coordinate);
-  vec(f, "camera.target", s.camera.target, Kind::Coordinate);
-  vec(f, "camera.up", s.camera.up, Kind::Number);
-  f("camera.fov_y_deg", s.camera.fov_y_deg, Kind::Number);
-  for (size_t k = 0; k < s.objects.size(); ++k) {
-    const std::string at = "objects[" + std::to_string(k) + "]";
-    if (const auto* t = std::get_if<TorusKnot>(&s.objects[k])) {
-      f(at + ".major_radius", t->major_radius, Kind::Coordinate);
-      f(at + ".minor_radius", t->minor_radius, Kind::Coordinate);
-      f(at + ".tube_radius", t->tube_radius, Kind::Coordinate);
-      vec(f, at + ".uv_repeat", t->uv_repeat, Kind::UvRepeat);
-      vec(f, at + ".center", t->center, Kind::Coordinate);
-    } else if (const auto* u = std::get_if<UvSphere>(&s.objects[k])) {
-      vec(f, at + ".center", u->center, Kind::Coordinate);
-      f(at + ".radius", u->radius, Kind::Coordinate);
-      vec(f, at + ".uv_repeat", u->uv_repeat, Kind::UvRepeat);
-    } else if (const auto* p = std::get_if<Plane>(&s.objects[k])) {
-      vec(f, at + ".center", p->center, Kind::Coordinate);
-      vec(f, at + ".normal", p->normal, Kind::Number);
-      vec(f, at + ".size", p->size, Kind::Coordinate);
-      vec(f, at + ".uv_repeat", p->uv_repeat, Kind::UvRepeat);
-    }
-  }
-  const std::string m = "material.model";
+// A material's numbers, under `prefix` ("material", "objects[2].material").
+void materialNumbers(const Visit& f, const std::string& prefix, const Material& mat) {
+  const std::string m = prefix + ".model";
   std::visit(
       [&](const auto& mm) {
         using M = std::decay_t<decltype(mm)>;
@@ -83,8 +63,52 @@ void forEachNumber(const Scene& s, const Visit& f) {
           vec(f, m + ".c0", mm.c0, Kind::Number), vec(f, m + ".c2", mm.c2, Kind::Number);
         }
       },
-      s.material.model);
-  if (!s.material.texture) vec(f, "material.base_color", s.material.base_color, Kind::Number);
+      mat.model);
+  if (!mat.texture) vec(f, prefix + ".base_color", mat.base_color, Kind::Number);
+}
+
+void forEachNumber(const Scene& s, const Visit& f) {
+  vec(f, "camera.position", s.camera.position, Kind::Coordinate);
+  vec(f, "camera.target", s.camera.target, Kind::Coordinate);
+  vec(f, "camera.up", s.camera.up, Kind::Number);
+  f("camera.fov_y_deg", s.camera.fov_y_deg, Kind::Number);
+  for (size_t k = 0; k < s.objects.size(); ++k) {
+    const std::string at = "objects[" + std::to_string(k) + "]";
+    if (const auto* t = std::get_if<TorusKnot>(&s.objects[k].shape)) {
+      f(at + ".major_radius", t->major_radius, Kind::Coordinate);
+      f(at + ".minor_radius", t->minor_radius, Kind::Coordinate);
+      f(at + ".tube_radius", t->tube_radius, Kind::Coordinate);
+      vec(f, at + ".uv_repeat", t->uv_repeat, Kind::UvRepeat);
+      vec(f, at + ".center", t->center, Kind::Coordinate);
+    } else if (const auto* u = std::get_if<UvSphere>(&s.objects[k].shape)) {
+      vec(f, at + ".center", u->center, Kind::Coordinate);
+      f(at + ".radius", u->radius, Kind::Coordinate);
+      vec(f, at + ".uv_repeat", u->uv_repeat, Kind::UvRepeat);
+    } else if (const auto* p = std::get_if<Plane>(&s.objects[k].shape)) {
+      vec(f, at + ".center", p->center, Kind::Coordinate);
+      vec(f, at + ".normal", p->normal, Kind::Number);
+      vec(f, at + ".size", p->size, Kind::Coordinate);
+      vec(f, at + ".uv_repeat", p->uv_repeat, Kind::UvRepeat);
+    } else if (const auto* mf = std::get_if<MeshFile>(&s.objects[k].shape)) {
+      // The file's largest coordinate once placed by the object's transform.
+      const Affine a = toAffine(s.objects[k].transform);
+      double largest = 0.0;
+      for (const auto& prim : mf->model->primitives)
+        for (const auto& v : prim.mesh.positions) {
+          const glm::dvec3 w = a.point(v);
+          largest = std::max({largest, std::abs(w.x), std::abs(w.y), std::abs(w.z)});
+        }
+      f(at + ".path", largest, Kind::Coordinate);
+    }
+    const ObjectTransform& tr = s.objects[k].transform;
+    vec(f, at + ".transform.scale", tr.scale, Kind::Coordinate);
+    vec(f, at + ".transform.rotate.axis", tr.rotate.axis, Kind::Number);
+    f(at + ".transform.rotate.angle_deg", tr.rotate.angle_deg, Kind::Number);
+    vec(f, at + ".transform.translate", tr.translate, Kind::Coordinate);
+    if (s.objects[k].material) materialNumbers(f, at + ".material", *s.objects[k].material);
+  }
+  materialNumbers(f, "material", s.material);
+
   for (size_t k = 0; k < s.lights.size(); ++k) {
     const std::string at = "lights[" + std::to_string(k) + "]";
     std::visit(
@@ -120,15 +144,16 @@ struct Bound {
   double value() const { return 4.0 * C.value * K.value * F.value * std::max(1.0, L.value); }
 };
 
-Bound shadingFactors(const Scene& s) {
+// The bound for one material (named `prefix` in messages).
+Bound shadingFactors(const Scene& s, const Material& mat, const std::string& prefix) {
   Bound b;
-  if (s.material.texture) {
-    if (s.material.texture->source == TextureSpec::Source::Image)
-      b.C = {kMaxTexelValue, "material.texture.path"};
-  } else if (maxChannel(s.material.base_color) > 1.0) {
-    b.C = {maxChannel(s.material.base_color), "material.base_color"};
+  if (mat.texture) {
+    if (mat.texture->source == TextureSpec::Source::Image)
+      b.C = {kMaxTexelValue, prefix + ".texture.path"};
+  } else if (maxChannel(mat.base_color) > 1.0) {
+    b.C = {maxChannel(mat.base_color), prefix + ".base_color"};
   }
-  const std::string m = "material.model";
+  const std::string m = prefix + ".model";
   std::visit(
       [&](const auto& mm) {
         using M = std::decay_t<decltype(mm)>;
@@ -161,7 +186,7 @@ Bound shadingFactors(const Scene& s) {
           if (maxChannel(sum) > 1.0) b.F = {maxChannel(sum), m + "." + top};
         }
       },
-      s.material.model);
+      mat.model);
   double top = -1.0;
   b.L.value = 0.0;
   for (size_t k = 0; k < s.lights.size(); ++k) {
@@ -186,6 +211,40 @@ Bound shadingFactors(const Scene& s) {
   return b;
 }
 
+// Every material the scene shades with: the default, then each object's own.
+std::vector<std::pair<const Material*, std::string>> materials(const Scene& s) {
+  std::vector<std::pair<const Material*, std::string>> out{{&s.material, "material"}};
+  for (size_t k = 0; k < s.objects.size(); ++k)
+    if (s.objects[k].material) out.push_back({&*s.objects[k].material, "objects[" + std::to_string(k) + "].material"});
+  return out;
+}
+
+// The largest of the materials' bounds.
+Bound shadingFactors(const Scene& s) {
+  Bound worst;
+  bool first = true;
+  for (const auto& [mat, prefix] : materials(s)) {
+    Bound b = shadingFactors(s, *mat, prefix);
+    if (first || b.value() > worst.value()) worst = b, first = false;
+  }
+  return worst;
+}
+
+double ksOf(const Material& m) {
+  if (const auto* c = std::get_if<ClassicPhong>(&m.model)) return c->ks;
+  if (const auto* y = std::get_if<YiqLuma>(&m.model)) return y->ks;
+  return 0.0;
+}
+
+// The field of the largest ks ("objects[1].material.model.ks").
+std::string largestKsField(const Scene& s) {
+  std::string field = "material.model.ks";
+  double ks = -1.0;
+  for (const auto& [mat, prefix] : materials(s))
+    if (ksOf(*mat) > ks) ks = ksOf(*mat), field = prefix + ".model.ks";
+  return field;
+}
+
 }  // namespace
 
 PrecisionLimits precisionLimits(Precision p) {
@@ -195,10 +254,10 @@ PrecisionLimits precisionLimits(Precision p) {
 
 double shadingBound(const Scene& scene) { return shadingFactors(scene).value(); }
 
+// The largest ks over the materials, times the lights' sum.
 double specularWeight(const Scene& scene) {
   double ks = 0.0;
-  if (const auto* c = std::get_if<ClassicPhong>(&scene.material.model)) ks = c->ks;
-  if (const auto* y = std::get_if<YiqLuma>(&scene.material.model)) ks = y->ks;
+  for (const auto& [mat, prefix] : materials(scene)) ks = std::max(ks, ksOf(*mat));
   return ks * shadingFactors(scene).L.value;
 }
 
@@ -244,7 +303,7 @@ void checkPrecision(const Scene& scene, Precision p) {
   const double W = specularWeight(scene);
   const double ks = b.L.value > 0.0 ? W / b.L.value : 0.0;
   if (!(W <= lim.max_specular_weight))
-    throw SceneError(file + ": " + (ks >= b.L.value || b.L.field.empty() ? "material.model.ks" : b.L.field) +
+    throw SceneError(file + ": " + (ks >= b.L.value || b.L.field.empty() ? largestKsField(scene) : b.L.field) +
                      ": ks x light (colour / attenuation constant, summed) = " + num(ks) + " x " +
                      num(b.L.value) + " = " + num(W) + " is beyond " + num(lim.max_specular_weight) + ", the most " + prec +
                      " shades accurately: the specular power is taken as 0 where it is below " +

@@ -12,7 +12,9 @@
 #include <glm/glm.hpp>
 
 #include <array>
+#include <concepts>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -68,7 +70,35 @@ struct Plane {
   dvec2 uv_repeat{1.0, 1.0};
 };
 
-using Shape = std::variant<TorusKnot, UvSphere, Plane>;
+struct Model;  // geometry/model_file.h
+
+// A mesh read from a model file (OBJ, PLY, STL, OFF, glTF, GLB;
+// docs/model-files.md): every primitive of the file, node transforms
+// applied, in doubles. Read once, when the scene is loaded.
+struct MeshFile {
+  std::filesystem::path path;          // resolved against the scene file
+  std::shared_ptr<const Model> model;  // never null in a loaded scene
+};
+
+using Shape = std::variant<TorusKnot, UvSphere, Plane, MeshFile>;
+
+// An object's "transform": scale, then rotate, then translate,
+//   p' = R (S p) + t   (geometry/transform.h states the math and the
+// rule for normals and mirroring).
+struct Rotation {
+  dvec3 axis{0.0, 1.0, 0.0};  // any non-zero length
+  double angle_deg = 0.0;     // right-handed about the axis
+};
+
+struct ObjectTransform {
+  dvec3 scale{1.0};
+  Rotation rotate;
+  dvec3 translate{0.0};
+  // The identity: no object mesh is mapped (so its bits stay as tessellated).
+  bool isIdentity() const {
+    return scale == dvec3(1.0) && rotate.angle_deg == 0.0 && translate == dvec3(0.0);
+  }
+};
 
 // --- texture ------------------------------------------------------------
 enum class TextureFilter { Nearest, Bilinear };
@@ -161,12 +191,26 @@ struct DeclaredTolerance {
   std::string reason;
 };
 
+// One entry of the scene's "objects": a shape, placed by its transform,
+// with its own material or (none) the scene's.
+struct SceneObject {
+  Shape shape;
+  ObjectTransform transform;
+  std::optional<Material> material;
+
+  SceneObject() = default;
+  // An untransformed object of the scene's material: `objects = {Plane{}}`.
+  template <class S>
+    requires std::constructible_from<Shape, S>
+  SceneObject(S s) : shape(std::move(s)) {}
+};
+
 struct Scene {
   std::string name;
   std::filesystem::path source_file;  // for messages and relative paths
   Camera camera;
-  std::vector<Shape> objects;
-  Material material;
+  std::vector<SceneObject> objects;
+  Material material;  // the default of every object without its own
   std::vector<Light> lights;
   ShadingMode shading = ShadingMode::Phong;
   RenderSettings render;
@@ -175,6 +219,17 @@ struct Scene {
   // `xval validate` renders it with no other (validate/validation/plan.h).
   std::vector<std::string> renderers;
 };
+
+// The material object k is shaded with: its own, else the scene's.
+inline const Material& materialOf(const Scene& s, size_t k) {
+  return s.objects[k].material ? *s.objects[k].material : s.material;
+}
+// True when some object has a material of its own.
+inline bool hasObjectMaterials(const Scene& s) {
+  for (const auto& o : s.objects)
+    if (o.material) return true;
+  return false;
+}
 
 const char* toString(ShadingMode m);
 const char* toString(Precision p);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/model_file.h"
 #include "scene/json_reader.h"
 #include "scene/scene_loader.h"
 
@@ -17,6 +18,7 @@ long long triangleCount(const Shape& s) {
   if (const auto* k = std::get_if<TorusKnot>(&s)) return 2ll * k->segments_along * k->segments_around;
   if (const auto* u = std::get_if<UvSphere>(&s))  // the poles' rows have one triangle per quad
     return 2ll * u->segments_longitude * (u->segments_latitude - 1);
+  if (const auto* m = std::get_if<MeshFile>(&s)) return m->model ? m->model->triangleCount() : 0;
   return 2;
 }
 
@@ -29,7 +31,7 @@ void checkBudget(const Scene& scene, int spp, const Budget& budget, double f) {
   long long triangles = 0, largest = -1;
   size_t largest_at = 0;
   for (size_t k = 0; k < scene.objects.size(); ++k) {
-    Shape s = scene.objects[k];
+    Shape s = scene.objects[k].shape;
     if (f != 1.0) {
       if (auto* t = std::get_if<TorusKnot>(&s))
         t->segments_along = scaled(t->segments_along, f), t->segments_around = scaled(t->segments_around, f);

@@ -1,5 +1,7 @@
 #include "scene/scene_loader.h"
 
+#include "geometry/model_file.h"
+#include "geometry/transform.h"
 #include "image/image_header.h"
 #include "scene/precision_limits.h"
 
@@ -87,16 +89,6 @@ Plane readPlane(JsonReader& r) {
   p.size = r.vec2("size", p.size, Range::positive());
   p.uv_repeat = r.vec2("uv_repeat", p.uv_repeat, Range::positive());
   return p;
-}
-
-Shape readObject(JsonReader r) {
-  std::string shape = r.requireChoice("shape", {"torus_knot", "sphere", "plane"});
-  Shape out;
-  if (shape == "torus_knot") out = readKnot(r);
-  else if (shape == "sphere") out = readSphere(r);
-  else out = readPlane(r);
-  r.finish();
-  return out;
 }
 
 Attenuation readAttenuation(JsonReader& r) {
@@ -191,6 +183,25 @@ std::string quotedPath(const std::string& p) {
   return p.size() > max ? q + "..." : q;
 }
 
+// The rule for a file a scene names (a texture image, a model file):
+// "path" is a non-empty string without NUL, absolute or relative to the
+// scene file's folder, naming a regular, readable file.
+std::filesystem::path readInputPath(JsonReader& r, const std::filesystem::path& scene_dir, const std::string& what) {
+  std::string p = r.requireString("path");
+  if (p.empty()) r.fail("path", "expected a file path, got \"\"");
+  // A NUL would end the path early in every system call.
+  if (p.find('\0') != std::string::npos)
+    r.fail("path", "a file path cannot contain a NUL character, got " + describeJson(json(p)));
+  std::filesystem::path file = std::filesystem::path(p).is_absolute() ? std::filesystem::path(p) : scene_dir / p;
+  const std::string quoted = quotedPath(file.string());
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec))
+    r.fail("path", what + " " + quoted + " does not exist or is not a regular file");
+  std::ifstream probe(file, std::ios::binary);
+  if (!probe) r.fail("path", what + " " + quoted + " is not readable");
+  return file;
+}
+
 // Opens the image's header (no pixels are read) and checks that the
 // texture reader (texture/texture_io.cpp) will accept it.
 void checkTextureImage(JsonReader& r, const std::filesystem::path& file, const std::string& quoted) {
@@ -215,21 +226,8 @@ TextureSpec readTexture(JsonReader r, const std::filesystem::path& scene_dir) {
   t.filter = filter == "nearest" ? TextureFilter::Nearest : TextureFilter::Bilinear;
   if (source == "image") {
     t.source = TextureSpec::Source::Image;
-    std::string p = r.requireString("path");
-    if (p.empty()) r.fail("path", "expected a file path, got \"\"");
-    // A NUL would end the path early in every system call.
-    if (p.find('\0') != std::string::npos)
-      r.fail("path", "a file path cannot contain a NUL character, got " + describeJson(json(p)));
-    t.path = std::filesystem::path(p).is_absolute() ? std::filesystem::path(p)
-                                                    : scene_dir / p;
-    const std::string quoted = quotedPath(t.path.string());
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(t.path, ec))
-      r.fail("path", "texture file " + quoted + " does not exist or is not a regular file");
-    std::ifstream probe(t.path, std::ios::binary);
-    if (!probe) r.fail("path", "texture file " + quoted + " is not readable");
-    probe.close();
-    checkTextureImage(r, t.path, quoted);
+    t.path = readInputPath(r, scene_dir, "texture file");
+    checkTextureImage(r, t.path, quotedPath(t.path.string()));
   } else {
     t.source = TextureSpec::Source::Brick;
   }
@@ -246,6 +244,65 @@ Material readMaterial(JsonReader r, const std::filesystem::path& scene_dir) {
   m.base_color = r.vec3("base_color", m.base_color, Range::nonNegative());
   r.finish();
   return m;
+}
+
+// "transform": scale, rotate, translate (geometry/transform.h); checked
+// by toAffine, whose message names the member ("scale[1]: 0 ...").
+ObjectTransform readTransform(JsonReader r) {
+  ObjectTransform t;
+  t.scale = r.numberOrVec3("scale", t.scale);
+  if (auto rot = r.object("rotate")) {
+    t.rotate.axis = rot->requireVec3("axis");
+    t.rotate.angle_deg = rot->requireNumber("angle_deg");
+    rot->finish();
+  }
+  t.translate = r.vec3("translate", t.translate);
+  r.finish();
+  try {
+    (void)toAffine(t);
+  } catch (const TransformError& e) {
+    const std::string m = e.what();
+    const size_t colon = m.find(": ");
+    r.fail(m.substr(0, colon), m.substr(colon + 2));
+  }
+  return t;
+}
+
+// "shape": "mesh": the model file at "path", read now (geometry/
+// model_file.h) within the scene budget's triangle limit; a textured
+// object needs uvs on every primitive. Its errors name the field.
+MeshFile readMeshFile(JsonReader& r, const std::filesystem::path& scene_dir, bool textured, const Budget& budget) {
+  MeshFile m;
+  m.path = readInputPath(r, scene_dir, "model file");
+  ModelLoadOptions options;
+  options.limits.max_triangles = std::min(options.limits.max_triangles, budget.max_triangles);
+  options.uvs = textured ? UvRequirement::All : UvRequirement::None;
+  try {
+    m.model = std::make_shared<const Model>(loadModelFile(m.path, options));
+  } catch (const ModelFileError& e) {
+    r.fail("path", e.what());
+  }
+  return m;
+}
+
+// One of "objects". Its own "material" is read first, so a mesh knows
+// whether it must carry uvs; `fallback` is the scene's material (none:
+// every object must have its own).
+SceneObject readObject(JsonReader r, const std::filesystem::path& scene_dir, const std::optional<Material>& fallback,
+                       const Budget& budget) {
+  SceneObject out;
+  std::string shape = r.requireChoice("shape", {"torus_knot", "sphere", "plane", "mesh"});
+  if (auto m = r.object("material")) out.material = readMaterial(*m, scene_dir);
+  else if (!fallback)
+    r.fail("material", "required field is missing (the scene has no top-level \"material\" to fall back on)");
+  if (auto t = r.object("transform")) out.transform = readTransform(*t);
+  const Material& mat = out.material ? *out.material : *fallback;
+  if (shape == "torus_knot") out.shape = readKnot(r);
+  else if (shape == "sphere") out.shape = readSphere(r);
+  else if (shape == "plane") out.shape = readPlane(r);
+  else out.shape = readMeshFile(r, scene_dir, mat.texture.has_value(), budget);
+  r.finish();
+  return out;
 }
 
 RenderSettings readRender(JsonReader r) {
@@ -373,10 +430,14 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file, con
   s.name = r.string("name", file.stem().string());
   checkSceneName(r, s.name);
   s.camera = readCamera(r.requireObject("camera"));
+  // The top-level material is every object's default; it may be omitted
+  // when every object has its own (then the first object's is the default).
+  std::optional<Material> fallback;
+  if (auto m = r.object("material")) fallback = readMaterial(*m, file.parent_path());
   auto objects = r.objectArray("objects", true);
   if (objects.empty()) r.fail("objects", "expected at least one object, got []");
-  for (auto& o : objects) s.objects.push_back(readObject(o));
-  s.material = readMaterial(r.requireObject("material"), file.parent_path());
+  for (auto& o : objects) s.objects.push_back(readObject(o, file.parent_path(), fallback, budget));
+  s.material = fallback ? *fallback : *s.objects[0].material;
   for (auto& l : r.objectArray("lights", true)) s.lights.push_back(readLight(l));
   std::string shading = r.choice("shading", "phong", {"flat", "gouraud", "phong"});
   s.shading = shading == "flat"      ? ShadingMode::Flat

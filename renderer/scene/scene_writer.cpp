@@ -26,6 +26,7 @@ J shape(const Shape& s) {
             {"segments_longitude", p->segments_longitude},
             {"segments_latitude", p->segments_latitude},
             {"uv_repeat", v2(p->uv_repeat)}};
+  if (auto* m = std::get_if<MeshFile>(&s)) return {{"shape", "mesh"}, {"path", m->path.string()}};
   const auto& p = std::get<Plane>(s);
   return {{"shape", "plane"},
           {"center", v3(p.center)},
@@ -53,6 +54,32 @@ J model(const LightingModel& m) {
   return {{"type", "trilight"}, {"c0", v3(t.c0)}, {"c1", v3(t.c1)}, {"c2", v3(t.c2)}};
 }
 
+J material(const Material& m, const std::string* texture_path) {
+  J mat = {{"model", model(m.model)}};
+  if (m.texture) {
+    const TextureSpec& t = *m.texture;
+    J tex = {{"source", t.source == TextureSpec::Source::Brick ? "brick" : "image"}};
+    if (t.source == TextureSpec::Source::Image) tex["path"] = texture_path ? *texture_path : t.path.string();
+    tex["filter"] = toString(t.filter);
+    mat["texture"] = tex;
+  } else {
+    mat["base_color"] = v3(m.base_color);
+  }
+  return mat;
+}
+
+J object(const SceneObject& o) {
+  J j = shape(o.shape);
+  if (!o.transform.isIdentity()) {
+    const ObjectTransform& t = o.transform;
+    j["transform"] = {{"scale", v3(t.scale)},
+                      {"rotate", {{"axis", v3(t.rotate.axis)}, {"angle_deg", t.rotate.angle_deg}}},
+                      {"translate", v3(t.translate)}};
+  }
+  if (o.material) j["material"] = material(*o.material, nullptr);
+  return j;
+}
+
 J light(const Light& l) {
   if (auto* p = std::get_if<PointLight>(&l))
     return {{"type", "point"}, {"position", v3(p->position)}, {"color", v3(p->color)},
@@ -75,19 +102,8 @@ J sceneToJson(const Scene& s, const std::string* texture_path) {
   j["camera"] = {{"position", v3(c.position)}, {"target", v3(c.target)}, {"up", v3(c.up)},
                  {"fov_y_deg", c.fov_y_deg},   {"width", c.width},      {"height", c.height}};
   j["objects"] = J::array();
-  for (const auto& o : s.objects) j["objects"].push_back(shape(o));
-  J mat = {{"model", model(s.material.model)}};
-  if (s.material.texture) {
-    const TextureSpec& t = *s.material.texture;
-    J tex = {{"source", t.source == TextureSpec::Source::Brick ? "brick" : "image"}};
-    if (t.source == TextureSpec::Source::Image)
-      tex["path"] = texture_path ? *texture_path : t.path.string();
-    tex["filter"] = toString(t.filter);
-    mat["texture"] = tex;
-  } else {
-    mat["base_color"] = v3(s.material.base_color);
-  }
-  j["material"] = mat;
+  for (const auto& o : s.objects) j["objects"].push_back(object(o));
+  j["material"] = material(s.material, texture_path);
   j["lights"] = J::array();
   for (const auto& l : s.lights) j["lights"].push_back(light(l));
   j["shading"] = toString(s.shading);

@@ -121,7 +121,7 @@ void batchShade(benchmark::State& state, bool yiq) {
   scene.material.texture = TextureSpec{};
   scene.lights = lights();
   const glm::dvec3 eye = scene.camera.position;
-  const TriangleMesh mesh = tessellate(scene.objects[0]);
+  const TriangleMesh mesh = tessellate(scene.objects[0].shape);
   std::vector<glm::vec3> p, n;
   std::vector<glm::vec2> uv;
   for (size_t i = 0; i < mesh.positions.size(); ++i) {

@@ -366,7 +366,7 @@ TEST(PovShading, GouraudImageEvaluatesToTheReferenceVertexColours) {
   for (const auto& c : test::shadingCases()) {
     const Scene& s = c.scene;
     if (s.shading != ShadingMode::Gouraud) continue;
-    const TriangleMesh mesh = tessellate(s.objects.at(0));
+    const TriangleMesh mesh = tessellate(s.objects.at(0).shape);
     const Shader<double> shader(s.material, s.lights);
     std::optional<Texture> tex;
     if (s.material.texture) tex = loadTexture(*s.material.texture);

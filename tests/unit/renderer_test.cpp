@@ -154,7 +154,7 @@ TEST(Renderer, StratifiedSamplesGiveFractionalCoverage) {
   Scene s = litPlane(ShadingMode::Phong);
   // Half-width 0.95 puts the plane's edges at x = 16 +- 6.553 px: 2 of the
   // 4 sample columns of pixels 22 and 9 are covered.
-  std::get<Plane>(s.objects[0]).size = {1.9, 1.9};
+  std::get<Plane>(s.objects[0].shape).size = {1.9, 1.9};
   RenderOptions o;
   o.spp = 16;
   Image img = renderScene(s, o);

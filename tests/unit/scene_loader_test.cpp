@@ -53,7 +53,7 @@ TEST(SceneLoader, ValidSceneLoadsWithDefaults) {
   EXPECT_EQ(s.camera.height, 48);
   EXPECT_DOUBLE_EQ(s.camera.fov_y_deg, 45.0);
   ASSERT_EQ(s.objects.size(), 1u);
-  EXPECT_TRUE(std::holds_alternative<UvSphere>(s.objects[0]));
+  EXPECT_TRUE(std::holds_alternative<UvSphere>(s.objects[0].shape));
   EXPECT_EQ(s.shading, ShadingMode::Phong);
   EXPECT_EQ(s.render.spp, 1);
   EXPECT_EQ(s.render.precision, Precision::Double);

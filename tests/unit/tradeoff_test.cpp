@@ -143,7 +143,7 @@ TEST(Tradeoff, ApplyConfigScalesTheKnotAndSetsTheKnobs) {
   c.tessellation_factor = 0.5, c.spp = 16, c.precision = Precision::Float, c.shading = ShadingMode::Flat;
   c.texture_filter = TextureFilter::Nearest;
   const Scene a = applyConfig(s, c);
-  const auto& k = std::get<TorusKnot>(a.objects[0]);
+  const auto& k = std::get<TorusKnot>(a.objects[0].shape);
   EXPECT_EQ(k.segments_along, 384);
   EXPECT_EQ(k.segments_around, 20);
   EXPECT_EQ(a.render.spp, 16);

@@ -34,7 +34,8 @@ double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock:
 
 // "768x40" for the first tessellated shape, "-" for planes only.
 std::string segmentsOf(const Scene& s) {
-  for (const Shape& shape : s.objects) {
+  for (const SceneObject& object : s.objects) {
+    const Shape& shape = object.shape;
     if (auto* k = std::get_if<TorusKnot>(&shape))
       return std::to_string(k->segments_along) + "x" + std::to_string(k->segments_around);
     if (auto* u = std::get_if<UvSphere>(&shape))

@@ -27,8 +27,8 @@ bool validSpp(int n) {
 }
 
 bool hasTessellatedShapes(const Scene& scene) {
-  for (const Shape& s : scene.objects)
-    if (!std::holds_alternative<Plane>(s)) return true;
+  for (const SceneObject& o : scene.objects)
+    if (std::holds_alternative<TorusKnot>(o.shape) || std::holds_alternative<UvSphere>(o.shape)) return true;
   return false;
 }
 
@@ -171,7 +171,8 @@ Scene applyConfig(const Scene& scene, const TradeoffConfig& c, const Budget& bud
   s.shading = c.shading;
   if (s.material.texture && c.texture_filter) s.material.texture->filter = *c.texture_filter;
   if (c.tessellation_factor != 1.0)
-    for (Shape& shape : s.objects) {
+    for (SceneObject& object : s.objects) {
+      Shape& shape = object.shape;
       if (auto* k = std::get_if<TorusKnot>(&shape)) {
         k->segments_along = scaledSegments(k->segments_along, c.tessellation_factor, 3);
         k->segments_around = scaledSegments(k->segments_around, c.tessellation_factor, 3);

@@ -210,6 +210,13 @@ std::string inputHash(const Scene& scene, const fs::path& scene_file, const std:
   f.add(readBytes(scene_file));
   if (scene.material.texture && scene.material.texture->source == TextureSpec::Source::Image)
     f.add(readBytes(scene.material.texture->path));
+  // Each object's own image texture and model file (not the files a model
+  // file refers to: an OBJ's mtl and images, a glTF's buffers).
+  for (const SceneObject& o : scene.objects) {
+    if (o.material && o.material->texture && o.material->texture->source == TextureSpec::Source::Image)
+      f.add(readBytes(o.material->texture->path));
+    if (const auto* m = std::get_if<MeshFile>(&o.shape)) f.add(readBytes(m->path));
+  }
   return f.hex();
 }
 

@@ -76,7 +76,7 @@ std::optional<dvec3> onCone(const PreparedLight<double>& l, test::CaseRng& r) {
 json writeCase(const test::ShadingCase& c, const std::filesystem::path& dir, test::CaseRng& r) {
   const Scene& s = c.scene;
   const GltfExport ex = exportGltf(s, dir / c.name);
-  const TriangleMesh mesh = tessellate(s.objects.at(0));
+  const TriangleMesh mesh = tessellate(s.objects.at(0).shape);
   const Shader<double> shader(s.material, s.lights);
   const dvec3 eye = CameraRays(s.camera).origin;
   const bool textured = s.material.texture.has_value();
