@@ -16,6 +16,7 @@
 #include "common/export_common.h"
 #include "common/supersample.h"
 #include "geometry/mesh.h"
+#include "geometry/scene_meshes.h"
 #include "gl/egl_context.h"
 #include "gl/glsl_models.h"
 #include "shading/flat_normals.h"
@@ -163,8 +164,8 @@ GlScene::GlScene(const Scene& scene) : impl_(new Impl) {
   const CameraRays cam(scene.camera);
   std::vector<Vertex> vertices;
   double min_depth = std::numeric_limits<double>::infinity(), max_depth = 0.0;
-  for (const Shape& shape : scene.objects) {
-    const TriangleMesh m = tessellate(shape);
+  requireOneMaterial(scene, "gl");
+  for (const TriangleMesh& m : sceneMeshes(scene).meshes) {
     const std::vector<glm::dvec3> faces =
         scene.shading == ShadingMode::Flat ? flatNormals(m) : std::vector<glm::dvec3>(m.triangles.size());
     for (size_t t = 0; t < m.triangles.size(); ++t) {

@@ -22,6 +22,7 @@
 
 #include "gl/egl_context.h"
 #include "gl/gl_frame.h"
+#include "common/export_common.h"
 #include "renderers/renderer.h"
 
 namespace xval::renderers {
@@ -33,6 +34,15 @@ Renderer glRenderer() {
   r.subject = "the OpenGL renderer";
   r.summary = "the models as GLSL through OpenGL 4.5 core on EGL (surfaceless; Mesa llvmpipe without a GPU)";
   r.missing = [] { return gl::glUnavailableReason(); };
+  // One material on every object, as the exporters (common/export_common.h).
+  r.cannot_express = [](const Scene& scene) -> std::string {
+    try {
+      requireOneMaterial(scene, "gl");
+    } catch (const ExportError& e) {
+      return e.what();
+    }
+    return "";
+  };
   r.render = [](const Scene& scene, const RenderRequest&, RenderInfo* info) {
     const auto t0 = std::chrono::steady_clock::now();
     Image image;
