@@ -85,11 +85,17 @@ if(NOT _pov_N EQUAL 1 OR NOT _pov_1 STREQUAL "scene.ini")
   message(FATAL_ERROR "povray was started with ${_pov_N} arguments, the first ${_pov_1}")
 endif()
 read_args(blender _bl)
-if(NOT _bl_N EQUAL 12)
+# Blender runs twice (Cycles and EEVEE, in either order: validate's jobs
+# run in parallel); the stand-in keeps the last start's arguments, which
+# end in "--engine cycles" or "--engine eevee".
+if(NOT _bl_N EQUAL 14)
   message(FATAL_ERROR "blender was started with ${_bl_N} arguments")
 endif()
+if(NOT _bl_14 STREQUAL "cycles" AND NOT _bl_14 STREQUAL "eevee")
+  message(FATAL_ERROR "blender's engine argument is \"${_bl_14}\"")
+endif()
 set(_expected_bl 1 "-b" 2 "--factory-startup" 3 "-noaudio" 4 "-P" 6 "--" 7 "--gltf" 9 "--out"
-                 11 "--mode" 12 "model")
+                 11 "--mode" 12 "model" 13 "--engine")
 while(_expected_bl)
   list(POP_FRONT _expected_bl _i _v)
   if(NOT "${_bl_${_i}}" STREQUAL "${_v}")

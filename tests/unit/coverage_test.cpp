@@ -35,6 +35,8 @@ const std::filesystem::path kSpec = std::filesystem::path(XVAL_TESTS_DIR) / "cov
 const std::map<std::string, int> kExpressible = {
     {"povray", 1116},
     {"blender", 1152},
+    {"eevee", 1152},
+    {"gl", 1152},
 };
 
 TEST(Coverage, EveryRendererExpressesTheMeasuredShareOfTheSceneMatrix) {
