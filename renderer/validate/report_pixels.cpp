@@ -81,7 +81,8 @@ std::string casePixels(const J& c, const fs::path& dir) {
   std::ostringstream buttons;
   std::string first;
   for (auto it = c["renders"].begin(); it != c["renders"].end(); ++it) {
-    if (it.value().contains("error")) continue;
+    // Only renders with an image: not a failed or a not-expressible one.
+    if (!it.value().contains("image") || !it.value()["image"].is_string()) continue;
     const std::string src = it.value()["image"].get<std::string>();
     if (first.empty()) first = src;
     buttons << "<button type=\"button\" data-src=\"" << htmlEscape(src) << "\">" << htmlEscape(it.key())

@@ -32,6 +32,7 @@ stand_in(blender "while [ $# -gt 0 ]; do if [ \"$1\" = --out ]; then out=$2; fi;
 
 execute_process(COMMAND ${CMAKE_COMMAND} -E env "PATH=${WORK}/bin:/usr/bin:/bin"
                         ${XVAL} validate ${SCENE} -o ${WORK}/out --jobs 2 --timeout 60 --junit ${WORK}/junit.xml
+                        --renderers reference,povray,blender
                 RESULT_VARIABLE rc ERROR_VARIABLE err TIMEOUT 300)
 message("xval validate: exit ${rc}\n${err}")
 if(NOT rc EQUAL 0 AND NOT rc EQUAL 1)

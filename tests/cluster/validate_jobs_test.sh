@@ -30,7 +30,7 @@ tol="$src/reference/tolerances.json"
 o="$work/run"
 
 # The plan: three jobs, all to run; nothing rendered.
-run "$xval" validate "$scene" --tolerances "$tol" -o "$o" --plan-only
+run "$xval" validate "$scene" --renderers reference,povray,blender --tolerances "$tol" -o "$o" --plan-only
 expect "plan-only exits 0" [ "$rc" -eq 0 ]
 expect "plan-only lists jobs 0 1 2 (got: $out)" [ "$out" = $'0\n1\n2' ]
 expect "plan-only writes jobs.json" [ -f "$o/jobs.json" ]
@@ -47,9 +47,9 @@ expect "run-job 0's record says ok" \
 expect "no temporary files are left" [ -z "$(find "$o" -name '*.partial*')" ]
 
 # Resume: the done job is not listed; without --resume everything is.
-run "$xval" validate "$scene" --tolerances "$tol" -o "$o" --plan-only --resume
+run "$xval" validate "$scene" --renderers reference,povray,blender --tolerances "$tol" -o "$o" --plan-only --resume
 expect "plan-only --resume lists jobs 1 2 (got: $out)" [ "$out" = $'1\n2' ]
-run "$xval" validate "$scene" --tolerances "$tol" -o "$o" --plan-only
+run "$xval" validate "$scene" --renderers reference,povray,blender --tolerances "$tol" -o "$o" --plan-only
 expect "plan-only without --resume lists 0 1 2 again (got: $out)" [ "$out" = $'0\n1\n2' ]
 
 # Compare with jobs that never ran: an error (exit 2), said per render.
@@ -66,7 +66,7 @@ run env PATH="$work/fakebin:$PATH" "$xval" validate --plan "$o/jobs.json" --run-
 expect "run-job with a failing povray exits 2 (got $rc)" [ "$rc" -eq 2 ]
 expect "its record holds the error" \
   python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); sys.exit(not r.get("error"))' "$o/light_spot/povray.job.json"
-run "$xval" validate "$scene" --tolerances "$tol" -o "$o" --plan-only --resume
+run "$xval" validate "$scene" --renderers reference,povray,blender --tolerances "$tol" -o "$o" --plan-only --resume
 expect "a failed job is listed again on resume (got: $out)" [ "$out" = $'1\n2' ]
 
 # Bad requests name what is wrong.
@@ -76,7 +76,7 @@ run "$xval" validate --plan "$o/jobs.json" --run-job 0 -o "$work/elsewhere"
 expect "--plan with -o is refused" eval '[ "$rc" -eq 2 ] && [[ $err == *"come from the plan"* ]]'
 sed 's/"renderer": "povray"/"renderer": "foo"/' "$o/jobs.json" > "$work/bad_plan.json"
 run "$xval" validate --plan "$work/bad_plan.json" --run-job 0
-expect "a tampered plan names the field (stderr: $err)" eval '[ "$rc" -eq 2 ] && [[ $err == *'\''bad_plan.json: jobs[1].renderer: "foo": expected "povray"'\''* ]]'
+expect "a tampered plan names the field (stderr: $err)" eval '[ "$rc" -eq 2 ] && [[ $err == *'\''bad_plan.json: jobs[1].scene/renderer: "light_spot"/"foo": expected "light_spot"/"povray"'\''* ]]'
 
 # A scene edited after planning: the job refuses it, resume redoes it.
 cp "$scene" "$work/edited.json"
