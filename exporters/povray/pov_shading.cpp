@@ -235,10 +235,26 @@ std::optional<std::pair<double, double>> realRoots(const Attenuation& a) {
 //       knee at 0.5 (k = kHighlightScale < 1: T does not reach 1 either);
 //   T^n by `poly_wave n` on pigment_pattern { T }, and a map over it from 0
 //       to ks colour / k^n.
+//   (k = max(kHighlightScale, 1 - 1/(4n)) keeps 1/k^n below e^(1/4)/0.998^125
+//   ~ 1.6 at any n, so the last entry stays finite.)
+// POV-Ray computes these pigments in single precision: R.V carries an
+// absolute error of a few 1e-7, which S = R.V^n multiplies by about n, so
+// the exporter refuses a highlight whose weight n ks max(colour)/c exceeds
+// kMaxHighlightWeight (docs/povray-export.md: measured 1.55/65535 at
+// weight 180 and 3.3/65535 at 900, the default tolerance being 2).
 inline constexpr double kHighlightHalfRange = 0.499, kHighlightScale = 0.998;
+inline constexpr double kMaxHighlightWeight = 400;
 
 Pigment highlight(const LightInfo& l, dvec3 eye, double ks, double shininess, dvec3 colour) {
-  const double h = kHighlightHalfRange, k = kHighlightScale;
+  const double weight = shininess * ks * std::max({colour.x, colour.y, colour.z}) / l.att.constant;
+  if (weight > kMaxHighlightWeight)
+    throw ExportError(
+        "attenuation 1/(c + l d + q d^2) with l > 0, q > 0 and l^2 < 4 q c (or nearly equal roots) on a light "
+        "with a specular highlight, among several lights, with shininess x ks x light colour / c = " +
+        num(weight) + " above " + num(kMaxHighlightWeight) +
+        ": that highlight is computed in POV-Ray's single-precision pigments (no sum of fades has the "
+        "complex poles), whose error grows with the shininess beyond the default tolerance");
+  const double h = kHighlightHalfRange, k = std::max(kHighlightScale, 1.0 - 0.25 / std::max(shininess, 1.0));
   auto g = [](double v) { return constant(dvec3(v)); };
   const Pattern a = slopeTowards(l.position), b = slopeTowards(eye);
   Pigment rv = sum({g(0.5), map(a, {{0.0, map(b, {{0.0, g(2 * h)}, {1.0, g(-2 * h)}})},
