@@ -33,6 +33,18 @@ Pattern grey(std::shared_ptr<const PigmentNode> inner) {
   return p;
 }
 
+Pattern greyPower(std::shared_ptr<const PigmentNode> inner, double exponent) {
+  Pattern p = grey(std::move(inner));
+  p.exponent = exponent;
+  return p;
+}
+
+Pattern lightEye(glm::dvec3 point, glm::dvec3 eye) {
+  Pattern p;
+  p.kind = Pattern::Kind::LightEye, p.point = point, p.eye = eye;
+  return p;
+}
+
 namespace {
 
 std::string bodySdl(const Pigment& p, int ind);
@@ -60,7 +72,17 @@ std::string patternSdl(const Pattern& p) {
              ") * " + num(a.y) + " + (z - " + num(x.z) + ") * " + num(a.z) + " - " +
              num(p.cos_cutoff) + " * " + distanceExpr(x) + ", 0, 1, 1) }";
     }
-    case Pattern::Kind::Grey: return "pigment_pattern {\n" + bodySdl(p.inner, 1) + "\n}";
+    case Pattern::Kind::Grey:
+      return "pigment_pattern {\n" + bodySdl(p.inner, 1) + "\n}" +
+             (p.exponent != 1.0 ? " poly_wave " + num(p.exponent) : "");
+    case Pattern::Kind::LightEye: {
+      // dot(P - x, E - x) / (|P - x| |E - x|), clamped to [-1, 1].
+      const glm::dvec3 l = p.point, e = p.eye;
+      const std::string dot = "((" + num(l.x) + " - x)*(" + num(e.x) + " - x) + (" + num(l.y) + " - y)*(" +
+                              num(e.y) + " - y) + (" + num(l.z) + " - z)*(" + num(e.z) + " - z))";
+      return "function { 0.5 + 0.5 * min(1, max(-1, " + dot + " / (" + distanceExpr(l) + " * " +
+             distanceExpr(e) + "))) }";
+    }
   }
   return "";
 }

@@ -37,15 +37,22 @@ namespace xval::pov {
 //                normal, so slope patterns inside P work), wrapped into
 //                [0, 1) like a function's value (measured: 1.5 -> 0.5). The
 //                trees built here keep it grey (r = g = b) and in [0, 1).
+//                With exponent != 1, `poly_wave exponent` raises the wrapped
+//                value v to v^exponent (POV-Ray's pow, after the wrap).
+//   LightEye     function (1 + L.V) / 2, L = normalize(P - x), V =
+//                normalize(E - x) (E = `eye`), its cosine clamped to [-1, 1]
+//                inside the function, so the value stays in [0, 1]
 struct PigmentNode;
 struct Pattern {
-  enum class Kind { Slope, Attenuation, Cone, Grey };
+  enum class Kind { Slope, Attenuation, Cone, Grey, LightEye };
   Kind kind = Kind::Slope;
   bool point_at = true;  // Slope: towards `point` (else along `direction`)
   glm::dvec3 point{0.0}, direction{0.0};  // the light's position; axis or D
   double c = 1, l = 0, q = 0;  // Attenuation
   double cos_cutoff = -1;      // Cone
   std::shared_ptr<const PigmentNode> inner;  // Grey
+  double exponent = 1;         // Grey: poly_wave exponent when != 1
+  glm::dvec3 eye{0.0};         // LightEye
 };
 // POV-Ray's grey value of a colour (the weights of `pigment_pattern`).
 inline constexpr double kGreyRed = 0.297, kGreyGreen = 0.589, kGreyBlue = 0.114;
@@ -58,6 +65,10 @@ Pattern attenuation(glm::dvec3 point, double c, double l, double q);
 Pattern cone(glm::dvec3 point, glm::dvec3 axis, double cos_cutoff);
 // The grey value of `inner` (a tree whose leaves are grey constants).
 Pattern grey(std::shared_ptr<const PigmentNode> inner);
+// grey(inner) raised to `exponent` (poly_wave).
+Pattern greyPower(std::shared_ptr<const PigmentNode> inner, double exponent);
+// (1 + L.V) / 2 at the hit for a light at `point` and the eye at `eye`.
+Pattern lightEye(glm::dvec3 point, glm::dvec3 eye);
 std::string patternSdl(const Pattern& p);
 
 using Pigment = std::shared_ptr<const PigmentNode>;

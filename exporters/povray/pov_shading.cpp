@@ -6,6 +6,7 @@
 #include <numbers>
 #include <optional>
 
+#include "camera/camera.h"
 #include "common/export_common.h"
 #include "povray/sdl.h"
 #include "shading/models.h"
@@ -220,7 +221,57 @@ std::optional<std::pair<double, double>> realRoots(const Attenuation& a) {
   return std::pair{r1, r2};
 }
 
-Specular specular(const Scene& s, const std::vector<LightInfo>& lights, bool filter_layer) {
+// The specular term of one light as an emission pigment, for an
+// attenuation that no sum of POV-Ray light sources gives (complex roots,
+// among several lights): ks colour att [lit] clamp(R.V)^n with
+//   R.V = 2 (N.L)(N.V) - L.V = 2 (2a - 1)(2b - 1) + 1 - 2e,
+// a = (1 + N.L)/2 and b = (1 + N.V)/2 slope patterns (towards the light and
+// the eye), e = (1 + L.V)/2 a function of position. The nested maps:
+//   G = 0.5 + h R.V in [0.5 - h, 0.5 + h] (grey; the bilinear term is a map
+//       over a of maps over b, exact at the corners a, b in {0, 1}; h =
+//       kHighlightHalfRange < 1/2, so G stays inside (0, 1) and
+//       pigment_pattern does not wrap);
+//   T = k clamp(R.V) = k clamp((G - 0.5)/h) in [0, k]: a map over G with a
+//       knee at 0.5 (k = kHighlightScale < 1: T does not reach 1 either);
+//   T^n by `poly_wave n` on pigment_pattern { T }, and a map over it from 0
+//       to ks colour / k^n.
+//   (k = max(kHighlightScale, 1 - 1/(4n)) keeps 1/k^n below e^(1/4)/0.998^125
+//   ~ 1.6 at any n, so the last entry stays finite.)
+// POV-Ray computes these pigments in single precision: R.V carries an
+// absolute error of a few 1e-7, which S = R.V^n multiplies by about n, so
+// the exporter refuses a highlight whose weight n ks max(colour)/c exceeds
+// kMaxHighlightWeight (docs/povray-export.md: at most 1.57/65535 measured
+// at weight 180, 2.88 at 360, the default tolerance being 2).
+inline constexpr double kHighlightHalfRange = 0.499, kHighlightScale = 0.998;
+inline constexpr double kMaxHighlightWeight = 200;
+
+Pigment highlight(const LightInfo& l, dvec3 eye, double ks, double shininess, dvec3 colour) {
+  const double weight = shininess * ks * std::max({colour.x, colour.y, colour.z}) / l.att.constant;
+  if (weight > kMaxHighlightWeight)
+    throw ExportError(
+        "attenuation 1/(c + l d + q d^2) with l > 0, q > 0 and l^2 < 4 q c (or nearly equal roots) on a light "
+        "with a specular highlight, among several lights, with shininess x ks x light colour / c = " +
+        num(weight) + " above " + num(kMaxHighlightWeight) +
+        ": that highlight is computed in POV-Ray's single-precision pigments (no sum of fades has the "
+        "complex poles), whose error grows with the shininess (2.9/65535 measured at 360)");
+  const double h = kHighlightHalfRange, k = std::max(kHighlightScale, 1.0 - 0.25 / std::max(shininess, 1.0));
+  auto g = [](double v) { return constant(dvec3(v)); };
+  const Pattern a = slopeTowards(l.position), b = slopeTowards(eye);
+  Pigment rv = sum({g(0.5), map(a, {{0.0, map(b, {{0.0, g(2 * h)}, {1.0, g(-2 * h)}})},
+                                    {1.0, map(b, {{0.0, g(-2 * h)}, {1.0, g(2 * h)}})}}),
+                    map(lightEye(l.position, eye), {{0.0, g(h)}, {1.0, g(-h)}})});
+  // At G = 1 the line through (0.5, 0) and (0.5 + h, k) reaches k / (2h).
+  Pigment clamped = map(grey(rv), {{0.0, g(0.0)}, {0.5, g(0.0)}, {1.0, g(k / (2.0 * h))}});
+  Pigment s = map(greyPower(clamped, shininess),
+                  {{0.0, g(0.0)}, {1.0, constant(ks * colour / std::pow(k, shininess))}});
+  return perLight(l, s, true);
+}
+
+// The specular term: POV-Ray's phong through light sources, and for the
+// lights whose attenuation no light source gives, `highlights` (emission
+// terms, see highlight()).
+Specular specular(const Scene& s, const std::vector<LightInfo>& lights, bool filter_layer,
+                  std::vector<Pigment>& highlights) {
   Specular sp;
   const LightingModel& model = s.material.model;
   std::function<dvec3(const LightInfo&)> colour;
@@ -240,19 +291,18 @@ Specular specular(const Scene& s, const std::vector<LightInfo>& lights, bool fil
     colour = [](const LightInfo& l) { return dvec3(models::lightLuma(l.colour)); };
   }
   if (sp.ks == 0.0) return sp;
-  // 1/(c + l d + q d^2) with l > 0 and q > 0 and no real roots apart: only
-  // a texture_map over its position function, which scales every highlight.
-  int general = 0;
-  for (const auto& l : lights)
-    general += l.has_att && l.att.linear != 0.0 && l.att.quadratic != 0.0 && !realRoots(l.att);
-  if (general > 0 && lights.size() > 1)
-    throw ExportError(
-        "attenuation 1/(c + l d + q d^2) with l > 0, q > 0 and l^2 < 4 q c (or nearly equal roots) on "
-        "a light with a specular highlight, among several lights: POV-Ray's per-light fade "
-        "2/(1 + (d/fd)^p) has its poles on the imaginary axis (p = 2) or on the negative real "
-        "axis (p = 1), so no sum of fades has these complex poles, and the texture_map that "
-        "applies a general attenuation to a highlight would scale every light's highlight");
+  // 1/(c + l d + q d^2) with l > 0 and q > 0 and no real roots apart: a
+  // texture_map over its position function for a single light (it scales
+  // every highlight), else that light's highlight in the emission tree.
+  auto general = [](const LightInfo& l) {
+    return l.has_att && l.att.linear != 0.0 && l.att.quadratic != 0.0 && !realRoots(l.att);
+  };
+  const dvec3 eye = CameraRays(s.camera).origin;
   for (const auto& l : lights) {
+    if (lights.size() > 1 && general(l)) {
+      highlights.push_back(highlight(l, eye, sp.ks, sp.shininess, colour(l)));
+      continue;
+    }
     LightSource src;
     src.colour = colour(l);
     if (l.directional) {
@@ -317,7 +367,12 @@ PovShading povShading(const Scene& scene) {
   p.emission = std::holds_alternative<YiqLuma>(scene.material.model)
                    ? emissionYiq(scene, lights)
                    : emissionLinear(scene, lights, p.texture_filter_layer);
-  p.specular = specular(scene, lights, p.texture_filter_layer);
+  std::vector<Pigment> highlights;
+  p.specular = specular(scene, lights, p.texture_filter_layer, highlights);
+  if (!highlights.empty()) {
+    highlights.insert(highlights.begin(), p.emission);
+    p.emission = sum(std::move(highlights));
+  }
   return p;
 }
 

@@ -2,8 +2,9 @@
 # validate/crosscheck.h), with stand-in POV-Ray and Blender that write the
 # reference render of the scene they were given (found by its case folder):
 #   - a folder mixing expressible scenes (tiny, meant_for_two), one POV-Ray
-#     refuses (pov_refuses: classic Phong lit by two lights whose
-#     attenuations have complex roots) and one both external renderers refuse (wide_spp256: its
+#     refuses (pov_refuses: classic Phong of shininess 1000 lit by two
+#     lights whose attenuations have complex roots, a highlight POV-Ray's
+#     single-precision pigments cannot keep within the tolerance) and one both external renderers refuse (wide_spp256: its
 #     16 x 16 sub-pixel image would be 17600 pixels wide) exits 0: the
 #     refusals are recorded as not_expressible with the exporter's reason,
 #     their pairs are not compared, the remaining pairs are, and the case

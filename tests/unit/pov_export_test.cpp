@@ -103,16 +103,22 @@ TEST(PovExport, RefusesWhatOneRenderCannotComputeExactly) {
   s.material.model = YiqLuma{};
   s.lights.push_back(PointLight{{-1, 1, 3}, glm::dvec3(1.0), {}});
   EXPECT_NE(slurp(exportPov(s, dir).pov).find("pigment_pattern"), std::string::npos);
-  // What stays refused: attenuation with complex roots on one of several
-  // specular lights.
+  // Attenuation with complex roots on one of several specular lights:
+  // that light's highlight in the emission tree (poly_wave), the other
+  // light a light source; refused when its weight n ks max(Lc)/c exceeds
+  // what single-precision pigments keep within the tolerance.
   s = smallScene();
-  s.material.model = ClassicPhong{};
+  s.material.model = ClassicPhong{ClassicPhong::Variant::Paper, 0.1, 1.0, 1.0, 200};
   s.lights = {PointLight{{-1, 1, 3}, glm::dvec3(1.0), {1.0, 0.1, 0.05}}, PointLight{{1, 1, 3}, glm::dvec3(1.0), {}}};
+  const std::string pov = slurp(exportPov(s, dir).pov);
+  EXPECT_NE(pov.find("poly_wave 200"), std::string::npos);
+  EXPECT_EQ(pov.find("light_source"), pov.rfind("light_source")) << "one light source, the other in the emission";
+  s.material.model = ClassicPhong{ClassicPhong::Variant::Paper, 0.1, 1.0, 1.0, 201};
   try {
     exportPov(s, dir);
     FAIL();
   } catch (const ExportError& e) {
-    EXPECT_NE(std::string(e.what()).find("complex poles"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("/ c = 201 above 200"), std::string::npos) << e.what();
   }
 }
 
