@@ -113,19 +113,30 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
   });
 }
 
+// The preview is the image box-filtered by k x k blocks, k = ceil(longest
+// side / max_side), so its longest side is at most max_side. Its size is
+// ceil(W/k) x ceil(H/k): the last row and column average the pixels of their
+// partial block that lie inside the image, so no pixel of the image is
+// dropped and a thin image (H < k) still gives one row, never zero.
 void writePreviewPng(const Image& img, const std::filesystem::path& file, int max_side) {
+  if (img.width < 1 || img.height < 1 || max_side < 1)
+    throw std::runtime_error(file.string() + ": cannot write a preview of a " + std::to_string(img.width) + "x" +
+                             std::to_string(img.height) + " image at most " + std::to_string(max_side) +
+                             " px wide (expected positive sizes)");
   const int k = std::max(1, (std::max(img.width, img.height) + max_side - 1) / max_side);
-  const int w = img.width / k, h = img.height / k;
+  const int w = (img.width + k - 1) / k, h = (img.height + k - 1) / k;
   std::vector<unsigned char> px(size_t(w) * h * 3);
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
+    for (int x = 0; x < w; ++x) {
+      const int x1 = std::min(img.width, (x + 1) * k), y1 = std::min(img.height, (y + 1) * k);
+      const int n = (x1 - x * k) * (y1 - y * k);
       for (int c = 0; c < 3; ++c) {
         double sum = 0;
-        for (int dy = 0; dy < k; ++dy)
-          for (int dx = 0; dx < k; ++dx)
-            sum += std::clamp(img.pixel(x * k + dx, y * k + dy)[c], 0.0f, 1.0f);
-        px[(size_t(y) * w + x) * 3 + c] = (unsigned char)std::lround(sum / (k * k) * 255.0);
+        for (int sy = y * k; sy < y1; ++sy)
+          for (int sx = x * k; sx < x1; ++sx) sum += std::clamp(img.pixel(sx, sy)[c], 0.0f, 1.0f);
+        px[(size_t(y) * w + x) * 3 + c] = (unsigned char)std::lround(sum / n * 255.0);
       }
+    }
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
   writeFileAtomically(file, [&](const std::filesystem::path& tmp) {
     auto out = OIIO::ImageOutput::create(tmp.string());

@@ -4,12 +4,22 @@
 //   bvh f  building the float path's Accel (Embree triangles)
 //   bvh d  building the double path's Accel (Embree user geometry)
 // (load also as CPU time, user + system: the loader is single-threaded, so
-// on a loaded machine this is what it costs) and the peak resident memory (ru_maxrss) after the load and at the end.
+// on a loaded machine this is what it costs) and the peak resident memory
+// (ru_maxrss) after the load and at the end.
+// With --frame instead, the scene path of `xval render`: the file as the one
+// mesh object of a 720 x 720 scene (camera on +z, 4.5 from the origin; the
+// knot of scripts/make-scale-meshes.py lies within 1.52 of it; Phong
+// shading, untextured, one point light) read by loadScene ("scene s": the
+// model file's load included), then per path (f = float, the fast path;
+// d = double, the reference) PreparedScene ("setup": tessellation, BVH) and
+// the median of 3 frames (the float frame also as CPU time, all threads:
+// on two idle cores its wall time is about half of it), and the peak
+// resident memory at the end.
 // Each run is a child process of its own (fork), so that every peak is that
 // run's alone. A benchmark, not a test: it prints figures, asserts nothing.
 //
 //   scripts/make-scale-meshes.py /tmp/knots
-//   build/tests/bench/xval_model_load_bench [--repeat N] /tmp/knots/*.ply /tmp/knots/*.glb
+//   build/tests/bench/xval_model_load_bench [--repeat N] [--frame] /tmp/knots/*.ply /tmp/knots/*.glb
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -20,11 +30,18 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "geometry/mesh.h"
 #include "geometry/model_file.h"
 #include "render/accel.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
 
 namespace {
 
@@ -32,6 +49,9 @@ struct Run {
   double load = 0, load_cpu = 0, bvh_float = 0, bvh_double = 0;
   long peak_load_kib = 0, peak_kib = 0;
   long long triangles = 0;
+  double setup_float = 0, frame_float = 0, setup_double = 0, frame_double = 0;  // --frame
+  double frame_float_cpu = 0;  // --frame: CPU time (all threads) of the median-wall float frame
+  long peak_frame_kib = 0;
   char error[512] = {0};
 };
 
@@ -77,15 +97,66 @@ Run measure(const char* file) {
   return r;
 }
 
+double median(std::vector<double> v);
+
+// The scene-path measurement of --frame (see the top of the file).
+Run measureFrame(const char* file) {
+  Run r;
+  try {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                      ("xval_scale_bench_" + std::to_string(getpid()));
+    std::filesystem::create_directories(dir);
+    const std::filesystem::path scene_file = dir / "scene.json";
+    {
+      std::ofstream o(scene_file);
+      o << R"({"format": "xval-scene/1", "name": "scale",
+        "camera": {"position": [0, 0, 4.5], "target": [0, 0, 0], "fov_y_deg": 45, "width": 720, "height": 720},
+        "objects": [{"shape": "mesh", "path": )"
+        << nlohmann::json(std::filesystem::absolute(file).string()).dump() << R"(}],
+        "material": {"model": {"type": "classic_phong", "variant": "paper", "shininess": 40}},
+        "lights": [{"type": "point", "position": [2, 3, 4]}], "shading": "phong"})";
+      if (!o) throw std::runtime_error(scene_file.string() + ": cannot write");
+    }
+    double t0 = now();
+    const xval::Scene scene = xval::loadScene(scene_file);
+    r.load = now() - t0;
+    std::filesystem::remove_all(dir);
+    for (const xval::Precision prec : {xval::Precision::Float, xval::Precision::Double}) {
+      t0 = now();
+      const xval::PreparedScene prepared(scene, prec);
+      const double setup = now() - t0;
+      xval::RenderOptions opt = xval::defaultOptions(scene);
+      opt.precision = prec;
+      xval::Image img(720, 720, false);
+      std::vector<double> frames, cpus;
+      for (int k = 0; k < 3; ++k) {
+        t0 = now();
+        const double c0 = cpuSeconds();
+        prepared.render(opt, img);
+        frames.push_back(now() - t0);
+        cpus.push_back(cpuSeconds() - c0);
+      }
+      if (prec == xval::Precision::Float) r.frame_float_cpu = median(cpus);
+      r.triangles = (long long)prepared.triangleCount();
+      (prec == xval::Precision::Float ? r.setup_float : r.setup_double) = setup;
+      (prec == xval::Precision::Float ? r.frame_float : r.frame_double) = median(frames);
+    }
+  } catch (const std::exception& e) {
+    std::snprintf(r.error, sizeof r.error, "%s", e.what());
+  }
+  r.peak_frame_kib = maxrssKiB();
+  return r;
+}
+
 // One run in a child; its Run comes back through a pipe.
-bool inChild(const char* file, Run& out) {
+bool inChild(const char* file, Run& out, bool frame) {
   int fd[2];
   if (pipe(fd) != 0) return false;
   const pid_t pid = fork();
   if (pid < 0) return false;
   if (pid == 0) {
     close(fd[0]);
-    const Run r = measure(file);
+    const Run r = frame ? measureFrame(file) : measure(file);
     const bool ok = write(fd[1], &r, sizeof r) == (ssize_t)sizeof r;
     _exit(ok ? 0 : 1);
   }
@@ -107,34 +178,46 @@ double median(std::vector<double> v) {
 
 int main(int argc, char** argv) {
   int repeat = 5;
+  bool frame = false;
   std::vector<const char*> files;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--repeat") == 0 && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
+    else if (std::strcmp(argv[i], "--frame") == 0) frame = true;
     else files.push_back(argv[i]);
   }
   if (files.empty()) {
-    std::fprintf(stderr, "usage: xval_model_load_bench [--repeat N] FILE...\n");
+    std::fprintf(stderr, "usage: xval_model_load_bench [--repeat N] [--frame] FILE...\n");
     return 64;
   }
-  std::printf("%-24s %10s %5s %9s %9s %9s %9s %12s %12s\n", "file", "triangles", "runs", "load s", "load cpu",
-              "bvh f s", "bvh d s", "peak load", "peak all");
+  if (frame)
+    std::printf("%-24s %10s %5s %9s %9s %9s %9s %9s %9s %12s\n", "file", "triangles", "runs", "scene s", "setup f",
+                "frame f", "f cpu", "setup d", "frame d", "peak");
+  else
+    std::printf("%-24s %10s %5s %9s %9s %9s %9s %12s %12s\n", "file", "triangles", "runs", "load s", "load cpu",
+                "bvh f s", "bvh d s", "peak load", "peak all");
   int status = 0;
   for (const char* f : files) {
-    std::vector<double> load, cpu, bf, bd, pl, pa;
+    std::vector<double> load, cpu, bf, bd, pl, pa, sf, ff, fc, sd, fd, pk;
     Run r;
     for (int k = 0; k < repeat; ++k) {
-      if (!inChild(f, r) || r.error[0]) {
+      if (!inChild(f, r, frame) || r.error[0]) {
         std::printf("%s: %s\n", f, r.error[0] ? r.error : "the measuring child failed");
         status = 1;
         break;
       }
       load.push_back(r.load), cpu.push_back(r.load_cpu), bf.push_back(r.bvh_float), bd.push_back(r.bvh_double);
       pl.push_back(r.peak_load_kib / 1024.0), pa.push_back(r.peak_kib / 1024.0);
+      sf.push_back(r.setup_float), ff.push_back(r.frame_float), sd.push_back(r.setup_double);
+      fd.push_back(r.frame_double), pk.push_back(r.peak_frame_kib / 1024.0), fc.push_back(r.frame_float_cpu);
     }
     if (load.size() != size_t(repeat)) continue;
     const char* base = std::strrchr(f, '/') ? std::strrchr(f, '/') + 1 : f;
-    std::printf("%-24s %10lld %5d %9.3f %9.3f %9.3f %9.3f %8.0f MiB %8.0f MiB\n", base, r.triangles, repeat,
-                median(load), median(cpu), median(bf), median(bd), median(pl), median(pa));
+    if (frame)
+      std::printf("%-24s %10lld %5d %9.3f %9.3f %9.4f %9.4f %9.3f %9.4f %8.0f MiB\n", base, r.triangles, repeat,
+                  median(load), median(sf), median(ff), median(fc), median(sd), median(fd), median(pk));
+    else
+      std::printf("%-24s %10lld %5d %9.3f %9.3f %9.3f %9.3f %8.0f MiB %8.0f MiB\n", base, r.triangles, repeat,
+                  median(load), median(cpu), median(bf), median(bd), median(pl), median(pa));
     std::fflush(stdout);
   }
   return status;

@@ -1,4 +1,4 @@
-// xval_model_corpus ROOT PROBE [--timeout S] [--every K] [--report FILE]:
+// xval_model_corpus ROOT PROBE [--timeout S] [--every K] [--report FILE] [--render]:
 // every regular file under ROOT (sorted; with --every K, the K-th ones of
 // the sorted list plus every file in a folder named "invalid" or whose
 // path names a deliberately broken case, see kAlwaysRun) through the model
@@ -9,7 +9,9 @@
 // Passes (exit 0) when every file was loaded or refused with a message
 // naming it, and no probe crashed (signal, sanitizer report: non-zero
 // exit), hung (time-out) or let an exception other than ModelFileError
-// escape. Prints one line per model file (outcome, seconds, message) and
+// escape. With --render, each model file is also rendered by the probe
+// (xval_model_probe --render: a generated scene of it, both paths), and a
+// loaded file must have been rendered. Prints one line per model file (outcome, seconds, message) and
 // a summary; --report writes the same lines to FILE.
 #include <algorithm>
 #include <filesystem>
@@ -48,15 +50,21 @@ std::string readAll(const fs::path& p) {
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::cerr << "usage: xval_model_corpus ROOT PROBE [--timeout S] [--every K] [--report FILE]\n";
+    std::cerr << "usage: xval_model_corpus ROOT PROBE [--timeout S] [--every K] [--report FILE] [--render]\n";
     return 64;
   }
   const fs::path root = argv[1], probe = fs::absolute(argv[2]);
   double timeout = 60;
   size_t every = 1;
   fs::path report;
-  for (int i = 3; i + 1 < argc; i += 2) {
+  bool render = false;
+  for (int i = 3; i < argc; i += 2) {
     const std::string a = argv[i];
+    if (a == "--render") {
+      render = true, --i;
+      continue;
+    }
+    if (i + 1 >= argc) return std::cerr << "option " << a << " needs a value\n", 64;
     if (a == "--timeout") timeout = std::stod(argv[i + 1]);
     else if (a == "--every") every = std::max<size_t>(1, std::stoul(argv[i + 1]));
     else if (a == "--report") report = argv[i + 1];
@@ -88,6 +96,7 @@ int main(int argc, char** argv) {
   // One probe per model file; the others in one (refused by extension).
   auto run = [&](const std::vector<fs::path>& batch, const std::string& name) {
     std::vector<std::string> args{probe.string()};
+    if (render) args.push_back("--render");
     for (const auto& f : batch) args.push_back(f.string());
     const fs::path log = work / (name + ".log");
     const xval::ProcessResult r = xval::runProcess(args, work, log, timeout);
@@ -101,6 +110,9 @@ int main(int argc, char** argv) {
         ++answered;
         const bool names_file = k < batch.size() && line.find(batch[k].string()) != std::string::npos;
         if (!names_file) ++bad, lines << "BAD (message does not name the file) ";
+        const bool rendered = line.find("; rendered: ") != std::string::npos;
+        if (render && line[0] == 'l' && !rendered && k < batch.size() && isModelFile(batch[k]))
+          ++bad, lines << "BAD (loaded but not rendered) ";
         (line[0] == 'l' ? loaded : refused) += 1;
         if (batch.size() == 1) lines << "[" << r.seconds << " s] ";
         lines << line << "\n";

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "image/image.h"
+#include "image/image_header.h"
 
 using namespace xval;
 
@@ -72,4 +73,20 @@ TEST(ImageIo, UnsupportedExtensionIsAnError) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("xval_rt.jpg"), std::string::npos);
   }
+}
+
+// The preview of a thin image keeps every pixel: 2000 x 1 at most 360 px
+// wide is k = 6 blocks, ceil(2000/6) = 334 x 1 (not 333 x 0), and the last
+// column averages the two pixels of its partial block (1998 and 1999).
+TEST(ImageIo, PreviewOfAThinImageKeepsEveryPixel) {
+  Image img(2000, 1, false);
+  for (int x = 0; x < 2000; ++x)
+    for (int c = 0; c < 3; ++c) img.pixel(x, 0)[c] = x >= 1998 ? 1.0f : 0.0f;
+  writePreviewPng(img, tmp("xval_thin.png"), 360);
+  const ImageHeader h = readImageHeader(tmp("xval_thin.png"));
+  EXPECT_EQ(h.width, 334);
+  EXPECT_EQ(h.height, 1);
+  const Image p = readImage(tmp("xval_thin.png"));
+  EXPECT_FLOAT_EQ(p.pixel(333, 0)[0], 1.0f);  // mean of the in-bounds pixels 1998, 1999
+  EXPECT_FLOAT_EQ(p.pixel(332, 0)[0], 0.0f);
 }

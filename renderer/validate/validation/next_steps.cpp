@@ -31,8 +31,9 @@ void printNextSteps(const Plan& plan, const nlohmann::ordered_json& cases) {
     std::fprintf(stderr,
                  "  accept a documented difference: declare it, with its measured reason, in the\n"
                  "  `tolerances` field of %s (defaults: %s)\n"
-                 "  (no golden images are kept: the reference renderer renders every run)\n",
-                 file.c_str(), plan.tolerances.c_str());
+                 "  after an intended change of the reference renderer, store its images anew:\n"
+                 "  xval golden update %s --renderer reference\n",
+                 file.c_str(), plan.tolerances.c_str(), shellQuote(file).c_str());
   }
 }
 
