@@ -273,6 +273,7 @@ class LightTerm:
             self.w = self.att if self.att is not None else self.lit
         self.x = g.vmath("DOT_PRODUCT", N, self.L)
         self._rv = None
+        self.unit_r_of = None  # N, when R is to be normalised (normalize_normal false)
 
     def rv(self):
         # R.V = 2 (N.L)(N.V) - L.V
@@ -280,6 +281,12 @@ class LightTerm:
             g = self.g
             lv = g.vmath("DOT_PRODUCT", self.L, self.V)
             self._rv = g.math("SUBTRACT", g.mul(2.0, g.mul(self.x, self.NV)), lv)
+            if self.unit_r_of is not None:
+                # normalize(R).V, the listing's R for a non-unit N:
+                # |R|^2 = 1 + 4 (N.L)^2 (N.N - 1)
+                nn = g.vmath("DOT_PRODUCT", self.unit_r_of, self.unit_r_of)
+                r2 = g.add(1.0, g.mul(4.0, g.mul(g.mul(self.x, self.x), g.math("SUBTRACT", nn, 1.0))))
+                self._rv = g.math("DIVIDE", self._rv, g.math("SQRT", r2))
         return self._rv
 
     def weighted(self, value):
@@ -305,6 +312,9 @@ def model_colour(g, k, P, N, V, C):
     """The colour of docs/models.md as nodes, from the constants k."""
     NV = g.vmath("DOT_PRODUCT", N, V)
     lights = [LightTerm(g, l, P, N, V, NV) for l in k["lights"]]
+    if k["shading"] == "phong" and not k.get("normalize_normal", True):
+        for lt in lights:
+            lt.unit_r_of = N
     t = k["model"]
     if t == "classic_phong":
         ka, kd, ks, n = k["ka"], k["kd"], k["ks"], k["shininess"]

@@ -166,6 +166,7 @@ template <class T> struct Shading {
     const glm::dvec3 eye_world = cam.origin;
     for (size_t k = 0; k < scene.objects.size(); ++k) {
       shaders.emplace_back(materialOf(scene, k), scene.lights, eye_world);
+      shaders.back().unitReflection(!scene.normalize_normal);  // the listing's normalize(R)
       colours.emplace_back(materialOf(scene, k), textures[k], chains[k]);
     }
     for (size_t i = 0; i < src.size(); ++i) {

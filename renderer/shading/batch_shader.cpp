@@ -178,7 +178,7 @@ void ShadeBatchImpl(const BatchShading& s, const BatchMesh& m, size_t count, con
     const VI i2 = hn::GatherIndex(di, tri_i + 2, t3);
     const VF b1 = hn::LoadU(d, b1p + k), b2 = hn::LoadU(d, b2p + k);
     const VF b0 = (one - b1) - b2;
-    // Phong mode: p, normal (renormalised, 0 stays 0; or as interpolated), uv, V.
+    // Phong mode: p, normal (renormalised; 0 stays 0), uv, V.
     const float* vx = m.vertices.data();
     const VI stride = hn::Set(di, kBatchVertexFloats);
     const VI r0 = i0 * stride, r1 = i1 * stride, r2 = i2 * stride;
@@ -186,12 +186,10 @@ void ShadeBatchImpl(const BatchShading& s, const BatchMesh& m, size_t count, con
                      mul(b2, gatherV3(d, vx, r2, 0)));
     V3 n = add(add(mul(b0, gatherV3(d, vx, r0, 3)), mul(b1, gatherV3(d, vx, r1, 3))),
                mul(b2, gatherV3(d, vx, r2, 3)));
-    if (s.normalize_normal) {
-      const VF len = hn::Sqrt(dot(n, n));
-      const MF has_len = len > zero;
-      n = {hn::IfThenElseZero(has_len, n.x / len), hn::IfThenElseZero(has_len, n.y / len),
-           hn::IfThenElseZero(has_len, n.z / len)};
-    }
+    const VF len = hn::Sqrt(dot(n, n));
+    const MF has_len = len > zero;
+    n = {hn::IfThenElseZero(has_len, n.x / len), hn::IfThenElseZero(has_len, n.y / len),
+         hn::IfThenElseZero(has_len, n.z / len)};
     const V3 to_eye = {zero - p.x, zero - p.y, zero - p.z};
     const VF inv = one / hn::Sqrt(dot(to_eye, to_eye));
     const V3 v = mul(to_eye, V3{inv, inv, inv});
@@ -289,8 +287,8 @@ const char* batchShaderTarget() { return HWY_DYNAMIC_DISPATCH(TargetNameImpl)();
 std::optional<BatchShading> batchShading(const Scene& scene, const Texture* texture, glm::dvec3 eye) {
   if (scene.shading != ShadingMode::Phong) return std::nullopt;
   if (scene.material.texture && scene.material.texture->filter == TextureFilter::Trilinear) return std::nullopt;
+  if (!scene.normalize_normal) return std::nullopt;  // the listing's normalize(R) is the scalar path's
   BatchShading s;
-  s.normalize_normal = scene.normalize_normal;
   if (const auto* y = std::get_if<YiqLuma>(&scene.material.model)) {
     s.model = BatchShading::Model::YiqLuma;
     s.kd = float(y->kd), s.ks = float(y->ks), s.shininess = float(y->shininess);

@@ -16,8 +16,8 @@
 // Covers: shading mode phong; models yiq_luma and classic_phong (variant
 // paper); point, directional and spot lights with or without attenuation;
 // texture (nearest or bilinear; not trilinear, whose level needs each hit's
-// footprint) or base colour; the normal re-normalised or not
-// (normalize_normal). Anything else (flat,
+// footprint) or base colour; the normal re-normalised (not the scene
+// option normalize_normal false, with its normalize(R)). Anything else (flat,
 // gouraud, course variant, Forsyth's family) is not built: batchShading()
 // returns nothing and the renderer shades one hit at a time.
 #pragma once
@@ -46,7 +46,6 @@ struct BatchShading {
   const Texture* texture = nullptr;          // packed (Texture::pack) or not
   TextureFilter filter = TextureFilter::Nearest;
   glm::vec3 base{1};
-  bool normalize_normal = true;  // the scene's (scene.h)
 };
 
 // The scene's shading for the kernel (light positions relative to `eye`,

@@ -1,5 +1,6 @@
 # `xval extremes` with POV-Ray, Blender, EEVEE and gl over the whole matrix (160 x 160;
-# about 1 minute on an idle 2-core machine, 2.5 under a load of 8), then
+# POV-Ray and Blender about 1 minute on an idle 2-core machine, 2.5 under a load
+# of 8; EEVEE adds a Blender process per case, 2-49 s each by the load), then
 # `xval report` on a copy of the published report folder (its PNGs and
 # results.json; no EXRs needed) given the extremes folder inside it
 # (--extremes).
