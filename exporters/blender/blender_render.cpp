@@ -69,10 +69,16 @@ double renderTimeFromLog(const std::filesystem::path& log) {
 
 }  // namespace
 
-void checkBlenderScene(const Scene& scene) {
+void checkBlenderScene(const Scene& scene, BlenderEngine engine) {
   // render.spp = n^2: Blender renders n W x n H pixels, one sample through
   // each centre (common/supersample.h); the grid's limits are the harness's.
   subpixelGrid(scene);
+  // EEVEE's Image Texture, Linear, is trilinear on the GPU; Cycles has no
+  // such lookup.
+  if (engine == BlenderEngine::Cycles)
+    refuseTrilinear(scene, "blender (Cycles)",
+                    "Cycles filters an image texture on its one level (Linear is bilinear, no mip-maps on the "
+                    "CPU) and a path-traced ray carries no pixel footprint to choose a level from");
 }
 
 Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_dir,
@@ -81,6 +87,7 @@ Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_di
   if (engine == BlenderEngine::Eevee && mode != BlenderMode::Model)
     throw std::invalid_argument("renderWithBlender: EEVEE renders the model mode only");
   // Checked before anything is written.
+  checkBlenderScene(scene, engine);
   const SubpixelGrid g = subpixelGrid(scene);
   const std::filesystem::path script = blenderScript();
   if (!std::filesystem::is_regular_file(script))

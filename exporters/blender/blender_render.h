@@ -32,8 +32,9 @@ enum class BlenderEngine {
 std::filesystem::path blenderScript();
 
 // Throws ExportError when the harness cannot render the scene exactly
-// (checked before anything is exported; the glTF exporter may refuse more).
-void checkBlenderScene(const Scene& scene);
+// with that engine (checked before anything is exported; the glTF exporter
+// may refuse more).
+void checkBlenderScene(const Scene& scene, BlenderEngine engine = BlenderEngine::Cycles);
 
 Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_dir,
                         double timeout_seconds, ExternalRenderInfo* info = nullptr,

@@ -15,7 +15,8 @@ extras (exporters/gltf/shading_constants.h); this script derives none:
       exported `blender_to_world` rows (the shading is in world frame),
   N = the glTF NORMAL accessor copied into a float corner attribute
       (`xval_normal`) in index order, normalised (the importer's custom
-      split normals are compressed, up to 0.034 degrees off); flat shading
+      split normals are compressed, up to 0.034 degrees off), or as
+      interpolated with normalize_normal false (the listing); flat shading
       reads a face attribute (`xval_face_normal`) holding the exported
       per-triangle normals, the reference renderer's own;
   C = the texture through an Image Texture node (Non-Color: stored values,
@@ -46,6 +47,11 @@ Mesa's surfaceless EGL, no X server). What makes its output exact:
     and, with default preferences, filters anisotropically; Mesa's
     llvmpipe filters 8-bit textures in 8-bit fixed point); anisotropic
     filtering is turned off in the preferences all the same;
+  - texture filter trilinear (the paper's MIN_MAG_MIP_LINEAR) is EEVEE's
+    own Linear lookup, trilinear on the GPU's mip chain, with the texture
+    copied into a float32 image first (float32 on the GPU, so neither the
+    lookups nor the mip-maps are 8-bit); Cycles refuses it (the C++ side,
+    before anything is exported);
   - a 16-bit texture uploaded as float32, not half float (the image's
     use_half_precision off: half's 11-bit mantissa moves a 16-bit code by
     up to ~31/65535);
@@ -267,6 +273,7 @@ class LightTerm:
             self.w = self.att if self.att is not None else self.lit
         self.x = g.vmath("DOT_PRODUCT", N, self.L)
         self._rv = None
+        self.unit_r_of = None  # N, when R is to be normalised (normalize_normal false)
 
     def rv(self):
         # R.V = 2 (N.L)(N.V) - L.V
@@ -274,6 +281,12 @@ class LightTerm:
             g = self.g
             lv = g.vmath("DOT_PRODUCT", self.L, self.V)
             self._rv = g.math("SUBTRACT", g.mul(2.0, g.mul(self.x, self.NV)), lv)
+            if self.unit_r_of is not None:
+                # normalize(R).V, the listing's R for a non-unit N:
+                # |R|^2 = 1 + 4 (N.L)^2 (N.N - 1)
+                nn = g.vmath("DOT_PRODUCT", self.unit_r_of, self.unit_r_of)
+                r2 = g.add(1.0, g.mul(4.0, g.mul(g.mul(self.x, self.x), g.math("SUBTRACT", nn, 1.0))))
+                self._rv = g.math("DIVIDE", self._rv, g.math("SQRT", r2))
         return self._rv
 
     def weighted(self, value):
@@ -299,6 +312,9 @@ def model_colour(g, k, P, N, V, C):
     """The colour of docs/models.md as nodes, from the constants k."""
     NV = g.vmath("DOT_PRODUCT", N, V)
     lights = [LightTerm(g, l, P, N, V, NV) for l in k["lights"]]
+    if k["shading"] == "phong" and not k.get("normalize_normal", True):
+        for lt in lights:
+            lt.unit_r_of = N
     t = k["model"]
     if t == "classic_phong":
         ka, kd, ks, n = k["ka"], k["kd"], k["ks"], k["shininess"]
@@ -342,6 +358,17 @@ def model_colour(g, k, P, N, V, C):
         term = g.vmul(lt.light["colour"], forsyth(g, k, lt.x))
         acc = g.vadd(acc, term if lt.w is None else g.scale(term, lt.w))
     return g.vmul(C, acc)
+
+
+def float_copy(image):
+    """The image's stored values in a float32 image of the same size (EEVEE
+    uploads it as float32 and mip-maps it in float)."""
+    w, h = image.size[0], image.size[1]
+    f = bpy.data.images.new("xval_texture_float", w, h, alpha=False, float_buffer=True, is_data=True)
+    f.colorspace_settings.name = "Non-Color"
+    f.use_half_precision = False
+    f.pixels.foreach_set(array.array("f", image.pixels[:]))
+    return f
 
 
 def closest_lookup(nt, image, uv):
@@ -405,8 +432,10 @@ def build_model_material(nt, k, image, bilinear_from_closest=False):
         a = nt.nodes.new("ShaderNodeAttribute")
         a.attribute_type = "GEOMETRY"
         a.attribute_name = "xval_face_normal" if k["shading"] == "flat" else "xval_normal"
-        N = g.vmath("NORMALIZE", a.outputs["Vector"])
-        if image is not None and bilinear_from_closest and k["texture_filter"] != "nearest":
+        N = a.outputs["Vector"]
+        if k["shading"] == "flat" or k.get("normalize_normal", True):
+            N = g.vmath("NORMALIZE", N)
+        if image is not None and bilinear_from_closest and k["texture_filter"] == "bilinear":
             uv = nt.nodes.new("ShaderNodeTexCoord")
             C = texel_bilinear(g, nt, image, uv.outputs["UV"])
         elif image is not None:
@@ -599,6 +628,8 @@ def main():
         image.alpha_mode = "NONE"
         if args.engine == "eevee":
             image.use_half_precision = False  # a 16-bit texture as float32 on the GPU, not half
+        if args.engine == "eevee" and k["texture_filter"] == "trilinear":
+            image = float_copy(image)
 
     for o in meshes:
         me = o.data

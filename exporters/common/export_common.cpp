@@ -13,6 +13,21 @@ void requireOneMaterial(const Scene& scene, const std::string& exporter) {
                         "written with the scene's one material)");
 }
 
+void refuseTrilinear(const Scene& scene, const std::string& exporter, const std::string& why) {
+  auto check = [&](const Material& m, const std::string& field) {
+    if (m.texture && m.texture->filter == TextureFilter::Trilinear)
+      throw ExportError(exporter + ": " + field + ".texture.filter \"trilinear\" is not expressible: " + why);
+  };
+  check(scene.material, "material");
+  for (size_t k = 0; k < scene.objects.size(); ++k)
+    if (scene.objects[k].material) check(*scene.objects[k].material, "objects[" + std::to_string(k) + "].material");
+}
+
+void refuseUnnormalizedNormal(const Scene& scene, const std::string& exporter, const std::string& why) {
+  if (!scene.normalize_normal)
+    throw ExportError(exporter + ": normalize_normal false is not expressible: " + why);
+}
+
 std::optional<Texture> exportTexture(const Scene& scene, const std::filesystem::path& dir) {
   if (!scene.material.texture) return std::nullopt;
   Texture t = loadTexture(*scene.material.texture);

@@ -44,6 +44,12 @@ std::optional<Texture> exportTexture(const Scene& scene, const std::filesystem::
 // of its own: the exporters write the scene's one material on every mesh.
 void requireOneMaterial(const Scene& scene, const std::string& exporter);
 
+// The paper's listing's own choices (scene.h): throws ExportError, naming
+// the field and `why` (the exporter's reason), when some material's texture
+// has filter trilinear / when the scene's normalize_normal is false.
+void refuseTrilinear(const Scene& scene, const std::string& exporter, const std::string& why);
+void refuseUnnormalizedNormal(const Scene& scene, const std::string& exporter, const std::string& why);
+
 // Throws ExternalToolError, with the tail of the log, unless `r` succeeded
 // and wrote `output`.
 void requireToolOutput(const std::string& tool, const std::filesystem::path& input,

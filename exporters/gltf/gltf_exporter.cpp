@@ -144,7 +144,10 @@ GltfExport exportGltf(const Scene& scene, const std::filesystem::path& dir) {
     tinygltf::Sampler s;
     const bool nearest = scene.material.texture->filter == TextureFilter::Nearest;
     s.magFilter = nearest ? TINYGLTF_TEXTURE_FILTER_NEAREST : TINYGLTF_TEXTURE_FILTER_LINEAR;
-    s.minFilter = nearest ? TINYGLTF_TEXTURE_FILTER_NEAREST : TINYGLTF_TEXTURE_FILTER_LINEAR;
+    s.minFilter = nearest ? TINYGLTF_TEXTURE_FILTER_NEAREST
+                  : scene.material.texture->filter == TextureFilter::Trilinear
+                      ? TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR
+                      : TINYGLTF_TEXTURE_FILTER_LINEAR;
     s.wrapS = s.wrapT = TINYGLTF_TEXTURE_WRAP_REPEAT;
     m.samplers.push_back(s);
     tinygltf::Texture t;

@@ -80,6 +80,7 @@ ordered_json shadingConstants(const Scene& scene) {
   const Shader<double> shader(scene.material, scene.lights);
   ordered_json j;
   j["shading"] = toString(scene.shading);
+  j["normalize_normal"] = scene.normalize_normal;
   j["blender_to_world"] = ordered_json::array({ordered_json::array({1.0, 0.0, 0.0}),
                                                ordered_json::array({0.0, 0.0, 1.0}),
                                                ordered_json::array({0.0, -1.0, 0.0})});

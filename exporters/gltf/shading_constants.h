@@ -10,8 +10,11 @@
 // the three dot products are exact).
 //
 //   shading         "phong" | "flat" | "gouraud"
+//   normalize_normal phong: N = normalize(interpolated normal), or (false,
+//                   the paper's listing) the interpolated normal as it is
 //   eye             the camera position: V = normalize(eye - P)
 //   base_colour     C when there is no texture; texture_filter otherwise
+//                   ("nearest" | "bilinear" | "trilinear")
 //   model           the model's name; its constants (by model):
 //     classic_phong  ka, kd, ks, shininess, course, specular (ks != 0),
 //                    ka_ambient = ka A

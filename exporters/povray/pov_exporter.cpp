@@ -78,6 +78,12 @@ PovExport exportPov(const Scene& scene, const std::filesystem::path& dir, const 
   // (common/supersample.h); POV-Ray's own antialiasing stays off, as it
   // averages unsaturated samples.
   const SubpixelGrid grid = subpixelGrid(scene);
+  refuseTrilinear(scene, "POV-Ray export",
+                  "POV-Ray's image_map has no mip-maps (it filters one level, by interpolate 2 at most) and a "
+                  "traced ray carries no pixel footprint to choose a level from");
+  refuseUnnormalizedNormal(scene, "POV-Ray export",
+                           "POV-Ray normalises a smooth triangle's interpolated normal before any pigment or "
+                           "finish sees it");
   std::filesystem::create_directories(dir);
   PovExport ex;
   ex.dir = dir;

@@ -232,7 +232,8 @@ GlScene::GlScene(const Scene& scene) : impl_(new Impl) {
   glNamedBufferStorage(d.ssbo, GLsizeiptr(blocks.size() * sizeof(LightBlock)), blocks.data(), 0);
   checkGl("uploading the lights");
 
-  // Texture: RGBA32F, one level, read by texelFetch only.
+  // Texture: RGBA32F, one level, read by texelFetch only; trilinear: every
+  // level down to 1 x 1, made by the driver.
   int texture_mode = 0;
   if (scene.material.texture) {
     const Texture tex = loadTexture(*scene.material.texture);
@@ -248,13 +249,25 @@ GlScene::GlScene(const Scene& scene) : impl_(new Impl) {
     if (tex.width > max_tex || tex.height > max_tex)
       throw std::runtime_error("OpenGL: a " + std::to_string(tex.width) + " x " + std::to_string(tex.height) +
                                " texture exceeds GL_MAX_TEXTURE_SIZE " + std::to_string(max_tex));
+    const bool trilinear = scene.material.texture->filter == TextureFilter::Trilinear;
+    GLsizei levels = 1;
+    while (trilinear && std::max(tex.width, tex.height) >> levels) ++levels;  // floor(log2(max)) + 1
     glCreateTextures(GL_TEXTURE_2D, 1, &d.texture);
-    glTextureStorage2D(d.texture, 1, GL_RGBA32F, tex.width, tex.height);
+    glTextureStorage2D(d.texture, levels, GL_RGBA32F, tex.width, tex.height);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glTextureSubImage2D(d.texture, 0, 0, 0, tex.width, tex.height, GL_RGBA, GL_FLOAT, rgba.data());
-    glTextureParameteri(d.texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(d.texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    texture_mode = scene.material.texture->filter == TextureFilter::Nearest ? 1 : 2;
+    if (trilinear) {
+      glGenerateTextureMipmap(d.texture);
+      glTextureParameteri(d.texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+      glTextureParameteri(d.texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+      glTextureParameteri(d.texture, GL_TEXTURE_WRAP_S, GL_REPEAT);
+      glTextureParameteri(d.texture, GL_TEXTURE_WRAP_T, GL_REPEAT);
+      glTextureParameterf(d.texture, GL_TEXTURE_MAX_ANISOTROPY, 1.0f);
+    } else {
+      glTextureParameteri(d.texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTextureParameteri(d.texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    texture_mode = trilinear ? 3 : scene.material.texture->filter == TextureFilter::Nearest ? 1 : 2;
     checkGl("uploading the texture");
   }
 
@@ -301,6 +314,7 @@ GlScene::GlScene(const Scene& scene) : impl_(new Impl) {
   const glm::vec3 base(scene.material.base_color);
   glUniform3f(loc("u_base"), base.x, base.y, base.z);
   glUniform1i(loc("u_texture"), texture_mode);
+  glUniform1i(loc("u_normalize_normal"), scene.normalize_normal);
   glUniform1i(loc("u_light_count"), GLint(lights.size()));
   checkGl("setting the uniforms");
 

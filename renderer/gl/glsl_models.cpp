@@ -10,7 +10,8 @@ namespace {
 // lookups and the models. Kinds: shading 0 flat, 1 gouraud, 2 phong;
 // model 0 classic_phong, 1 yiq_luma, 2 lambert, 3 wrap_around,
 // 4 hemispherical, 5 bidirectional, 6 trilight; light 0 point,
-// 1 directional, 2 spot; texture 0 none (u_base), 1 nearest, 2 bilinear.
+// 1 directional, 2 spot; texture 0 none (u_base), 1 nearest, 2 bilinear,
+// 3 trilinear (the sampler's LINEAR_MIPMAP_LINEAR on the GL mip chain).
 const char* kCommon = R"GLSL(
 #version 450 core
 
@@ -27,6 +28,7 @@ uniform vec3 u_ambient;    // A: the ambient lights' summed colour
 uniform float u_ambient_luma;  // A_Y = lightLuma(A)
 uniform vec3 u_base;
 uniform int u_texture;
+uniform bool u_normalize_normal;  // phong: re-normalise the interpolated normal
 uniform int u_light_count;
 layout(binding = 0) uniform sampler2D u_tex;  // RGBA32F, row 0 = the image's top, read by texelFetch
 
@@ -179,6 +181,9 @@ vec3 shade(vec3 p, vec3 n, vec3 v, vec3 c) {
 vec3 texel(int x, int y) { return texelFetch(u_tex, ivec2(x, y), 0).rgb; }
 vec3 surfaceColour(vec2 uv) {
   if (u_texture == 0) return u_base;
+  // The hardware's trilinear filter (GL_REPEAT wrapping) on the triangle's
+  // own uv, unwrapped, so its derivatives across the pixel quad are smooth.
+  if (u_texture == 3) return texture(u_tex, uv).rgb;
   ivec2 size = textureSize(u_tex, 0);
   float fu = uv.x - floor(uv.x), fv = uv.y - floor(uv.y);
   if (!(fu >= 0.0 && fu <= 1.0)) fu = 0.0;  // NaN: a non-finite u
@@ -234,7 +239,8 @@ void main() {
 )GLSL";
 
 // Per fragment: flat uses the triangle's normal, phong the interpolated one
-// re-normalised; V = normalize(eye - p) with the eye at the origin. The
+// re-normalised (or, with the scene's normalize_normal off, as the paper's
+// listing, as interpolated); V = normalize(eye - p) with the eye at the origin. The
 // colour is written unsaturated (the box filter saturates each sample);
 // alpha 1 marks a hit.
 const char* kFragment = R"GLSL(
@@ -250,7 +256,7 @@ void main() {
     o_colour = vec4(v_colour, 1.0);
     return;
   }
-  vec3 n = u_shading == 0 ? v_face_normal : unitOrZero(v_normal);
+  vec3 n = u_shading == 0 ? v_face_normal : u_normalize_normal ? unitOrZero(v_normal) : v_normal;
   vec3 v = normalize(-v_position);
   o_colour = vec4(shade(v_position, n, v, surfaceColour(v_uv)), 1.0);
 }

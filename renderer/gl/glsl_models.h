@@ -12,7 +12,11 @@
 // re-normalised (zero stays zero), uv wrapped per triangle, n = 0 gives
 // S = 1, clamps map NaN to 0, towardsLight's rescaling of far and near
 // lights, and the texture read texel by texel (texelFetch) with the
-// reference's nearest and bilinear rules, never by the sampler.
+// reference's nearest and bilinear rules, never by the sampler. Two of the
+// listing's own choices are the scene's to make: the normal not
+// re-normalised (normalize_normal false), and filter trilinear, which is
+// the hardware's own sampler (LINEAR_MIPMAP_LINEAR, glGenerateMipmap's
+// chain, its level of detail), the one lookup not written out here.
 #pragma once
 
 namespace xval::gl {

@@ -25,6 +25,7 @@
 #include "shading/flat_normals.h"
 #include "shading/shader.h"
 #include "shading/surface_colour.h"
+#include "texture/mip_chain.h"
 #include "texture/texture.h"
 
 namespace xval {
@@ -106,6 +107,40 @@ double geometricIncidence(const TriangleMesh& m, const glm::u32vec3& t, glm::dve
   return len > 0.0 ? std::abs(glm::dot(g / len, dir)) : 0.0;
 }
 
+// The derivatives of the hit's uv along the image's x and y, per `step`
+// pixels (the sample grid's spacing), from the camera ray's differentials:
+// the ray through image point (x, y) is O + t D with D = forward + sx right
+// + sy up' (camera/camera.h, D . forward = 1), so
+//   dD/dx = (2 / W) tan(fov_y / 2) (W / H) right,  dD/dy = -(2 / H) tan(fov_y / 2) up'.
+// On the triangle's plane (P0 + b1 e1 + b2 e2, e_k = P_k - P0, T = O - P0)
+//   b1 = (D . a1) / (D . m), b2 = (D . a2) / (D . m),
+//   a1 = e2 x T, a2 = T x e1, m = e2 x e1 (Cramer's rule, as Moller-Trumbore),
+// whose derivative along x is db1/dx = ((Dx . a1)(D . m) - (D . a1)(Dx . m)) / (D . m)^2
+// (the same for b2 and y); duv = db1 (uv1 - uv0) + db2 (uv2 - uv0). In
+// double from the world-space mesh, whatever the shading precision; D from
+// the hit point p: D = (p - O) / ((p - O) . forward).
+struct UvFootprint {
+  glm::dvec2 dx{0}, dy{0};
+};
+UvFootprint uvFootprint(const CameraRays& cam, const TriangleMesh& m, const glm::u32vec3& tri, double b1, double b2,
+                        double step) {
+  const glm::dvec3 P0 = m.positions[tri[0]], e1 = m.positions[tri[1]] - P0, e2 = m.positions[tri[2]] - P0;
+  const glm::dvec3 T = cam.origin - P0, a1 = glm::cross(e2, T), a2 = glm::cross(T, e1), mm = glm::cross(e2, e1);
+  const glm::dvec3 to_p = P0 + b1 * e1 + b2 * e2 - cam.origin;
+  const glm::dvec3 D = to_p / glm::dot(to_p, cam.forward);
+  const double s = cam.tan_half_fov * step;
+  const glm::dvec3 Dx = (2.0 / cam.width) * s * cam.aspect * cam.right, Dy = (-2.0 / cam.height) * s * cam.up;
+  const double dm = glm::dot(D, mm), da1 = glm::dot(D, a1), da2 = glm::dot(D, a2);
+  const glm::dvec2 du1 = m.uvs[tri[1]] - m.uvs[tri[0]], du2 = m.uvs[tri[2]] - m.uvs[tri[0]];
+  auto along = [&](const glm::dvec3& Dd) {
+    const double dmd = glm::dot(Dd, mm);
+    const double db1 = (glm::dot(Dd, a1) * dm - da1 * dmd) / (dm * dm);
+    const double db2 = (glm::dot(Dd, a2) * dm - da2 * dmd) / (dm * dm);
+    return db1 * du1 + db2 * du2;
+  };
+  return {along(Dx), along(Dy)};
+}
+
 // Everything the per-sample work needs in precision T. One shader and
 // surface colour per scene object (its material: materialOf).
 template <class T> struct Shading {
@@ -113,6 +148,8 @@ template <class T> struct Shading {
   std::vector<Shader<T>> shaders;
   std::vector<SurfaceColour<T>> colours;
   ShadingMode mode;
+  bool normalize_normal = true;  // phong: normalize(sum b_k N_k), else the sum as it is
+  CameraRays cam;                // for the trilinear filter's footprint (uvFootprint)
   // Shading coordinates are camera-relative: every position minus the eye,
   // subtracted in double before the rounding to T (shading/shader.h), so
   // the eye is the origin and a float surface point keeps float's relative
@@ -124,12 +161,13 @@ template <class T> struct Shading {
   // textures[k]: object k's texture (null: none); mesh_object[i]: the
   // object of src[i].
   Shading(const Scene& scene, const std::vector<TriangleMesh>& src, const std::vector<size_t>& mesh_object,
-          const std::vector<const Texture*>& textures)
-      : mode(scene.shading) {
-    const glm::dvec3 eye_world = CameraRays(scene.camera).origin;
+          const std::vector<const Texture*>& textures, const std::vector<const MipChain*>& chains)
+      : mode(scene.shading), normalize_normal(scene.normalize_normal), cam(scene.camera) {
+    const glm::dvec3 eye_world = cam.origin;
     for (size_t k = 0; k < scene.objects.size(); ++k) {
       shaders.emplace_back(materialOf(scene, k), scene.lights, eye_world);
-      colours.emplace_back(materialOf(scene, k), textures[k]);
+      shaders.back().unitReflection(!scene.normalize_normal);  // the listing's normalize(R)
+      colours.emplace_back(materialOf(scene, k), textures[k], chains[k]);
     }
     for (size_t i = 0; i < src.size(); ++i) {
       const size_t k = mesh_object[i];
@@ -141,13 +179,25 @@ template <class T> struct Shading {
 
 // ---- Accumulation: what a hit contributes to its pixel ----------------------
 
+// The surface colour C of a hit at its wrapped uv; a trilinear texture at
+// the level of the hit's footprint per `step` pixels (uvFootprint).
+template <class T>
+glm::vec<3, T> hitColour(const Shading<T>& sh, const Hit& h, glm::vec<2, T> uv, double step) {
+  const ShadedMesh<T>& m = sh.meshes[h.mesh];
+  const SurfaceColour<T>& colour = sh.colours[m.object];
+  if (!colour.usesFootprint()) return colour.at(uv);
+  const UvFootprint f = uvFootprint(sh.cam, *m.src, m.src->triangles[h.triangle], h.b1, h.b2, step);
+  return colour.at(uv, colour.mips->lambda(f.dx, f.dy));
+}
+
 // The unsaturated colour c of one hit: the model at the hit's point p =
-// sum b_k P_k, normal (Phong: normalize(sum b_k N_k), zero stays zero; flat:
-// the face normal), texture colour at the wrapped uv; Gouraud: sum b_k of
-// the vertex colours. backfacing: the shading normal faces away from the
+// sum b_k P_k, normal (Phong: normalize(sum b_k N_k), zero stays zero, or
+// with normalize_normal off the sum itself; flat: the face normal), texture
+// colour at the wrapped uv (hitColour, per `step` pixels); Gouraud: sum b_k
+// of the vertex colours. backfacing: the shading normal faces away from the
 // eye, N . (eye - p) < 0 (always false for Gouraud).
 template <class T>
-__attribute__((flatten)) glm::vec<3, T> shadeHit(const Shading<T>& sh, const Hit& h, bool& backfacing) {
+__attribute__((flatten)) glm::vec<3, T> shadeHit(const Shading<T>& sh, const Hit& h, double step, bool& backfacing) {
   using V = glm::vec<3, T>;
   const ShadedMesh<T>& m = sh.meshes[h.mesh];
   const auto& tri = m.src->triangles[h.triangle];
@@ -162,13 +212,15 @@ __attribute__((flatten)) glm::vec<3, T> shadeHit(const Shading<T>& sh, const Hit
     nrm = m.face_n[h.triangle];
   } else {
     nrm = b0 * m.n[tri[0]] + b1 * m.n[tri[1]] + b2 * m.n[tri[2]];
-    T len = glm::length(nrm);
-    nrm = len > T(0) ? nrm / len : V(0);  // zero-length normals stay 0
+    if (sh.normalize_normal) {
+      T len = glm::length(nrm);
+      nrm = len > T(0) ? nrm / len : V(0);  // zero-length normals stay 0
+    }
   }
   const glm::vec<2, T> uv = interpolateUv(m.uv, tri, b1, b2);
   V v = glm::normalize(sh.eye - p);
   backfacing = glm::dot(nrm, v) < T(0);
-  return sh.shaders[m.object].shade(p, nrm, v, sh.colours[m.object].at(uv));
+  return sh.shaders[m.object].shade(p, nrm, v, hitColour(sh, h, uv, step));
 }
 
 // One pixel's running sums over its samples.
@@ -190,6 +242,7 @@ template <class T> struct Accumulation {
   Image& img;
   bool diag;  // diagnostics asked for and the image has their channels
   T inv;      // 1 / n^2
+  double step;  // 1 / n: the sample grid's spacing in pixels (hitColour)
 
   // Adds one sample's hit (dir: its ray direction, read with diagnostics).
   void add(const Hit& h, const glm::dvec3& dir, PixelSums<T>& px) const {
@@ -199,12 +252,12 @@ template <class T> struct Accumulation {
       const auto& tri = m.src->triangles[h.triangle];
       px.incidence = std::min(px.incidence, geometricIncidence(*m.src, tri, dir));
       const glm::vec<2, T> uv = interpolateUv(m.uv, tri, T(h.b1), T(h.b2));
-      if (px.hits == 0) px.albedo = sh.colours[m.object].at(uv);
+      if (px.hits == 0) px.albedo = hitColour(sh, h, uv, step);
       const glm::vec<2, T> corners[3] = {m.uv[tri[0]], m.uv[tri[1]], m.uv[tri[2]]};
       px.texel_edge = std::min(px.texel_edge, sh.colours[m.object].texelEdge(uv, corners));
     }
     bool back = false;
-    const glm::vec<3, T> c = shadeHit(sh, h, back);
+    const glm::vec<3, T> c = shadeHit(sh, h, step, back);
     px.backfacing += back;
     px.final_sum += models::saturate(c);
     if (diag) px.raw_sum += c;
@@ -235,7 +288,7 @@ template <class T> struct Accumulation {
       return;
     }
     bool back;
-    const glm::vec<3, T> c = models::saturate(shadeHit(sh, h, back));
+    const glm::vec<3, T> c = models::saturate(shadeHit(sh, h, step, back));
     px[0] = float(c.x), px[1] = float(c.y), px[2] = float(c.z), px[3] = 1.0f;
   }
 };
@@ -453,6 +506,9 @@ struct PreparedScene::Impl {
   // The default material's texture, then those of objects with their own.
   std::vector<std::unique_ptr<Texture>> textures;
   std::vector<const Texture*> object_texture;  // per object (null: untextured)
+  // Mip chains of the textures a trilinear filter reads (texture/mip_chain.h).
+  std::vector<std::unique_ptr<MipChain>> chains;
+  std::vector<const MipChain*> object_chain;  // per object (null: none)
   std::optional<Accel> accel;
   std::vector<bool> back_faces_hidden;  // per mesh: geometry/front_faces.h, from the camera
   size_t bvh_culled = 0;                // back faces left out of the BVH
@@ -494,12 +550,24 @@ PreparedScene::PreparedScene(const Scene& scene, Precision precision, bool cull_
     d.textures.push_back(std::make_unique<Texture>(loadTexture(*scene.material.texture)));
     default_texture = d.textures.back().get();
   }
+  const MipChain* default_chain = nullptr;
+  auto chainOf = [&](const Material& m, const Texture* t) -> const MipChain* {
+    if (!t || m.texture->filter != TextureFilter::Trilinear) return nullptr;
+    d.chains.push_back(std::make_unique<MipChain>(mipChain(*t)));
+    return d.chains.back().get();
+  };
+  if (default_texture) default_chain = chainOf(scene.material, default_texture);
   for (const SceneObject& o : scene.objects) {
-    if (!o.material) d.object_texture.push_back(default_texture);
-    else if (!o.material->texture) d.object_texture.push_back(nullptr);
-    else {
+    if (!o.material) {
+      d.object_texture.push_back(default_texture);
+      d.object_chain.push_back(default_chain);
+    } else if (!o.material->texture) {
+      d.object_texture.push_back(nullptr);
+      d.object_chain.push_back(nullptr);
+    } else {
       d.textures.push_back(std::make_unique<Texture>(loadTexture(*o.material->texture)));
       d.object_texture.push_back(d.textures.back().get());
+      d.object_chain.push_back(chainOf(*o.material, d.textures.back().get()));
     }
   }
   // The ray paths' BVH: without the back faces no camera ray hits first
@@ -512,14 +580,14 @@ PreparedScene::PreparedScene(const Scene& scene, Precision precision, bool cull_
   }
   d.accel.emplace(d.meshes, precision, only);
   if (precision == Precision::Float) {
-    d.shading.emplace<Shading<float>>(d.scene, d.meshes, d.mesh_object, d.object_texture);
+    d.shading.emplace<Shading<float>>(d.scene, d.meshes, d.mesh_object, d.object_texture, d.object_chain);
     // The kernel shades with one material: not built for objects with their own.
     if (!hasObjectMaterials(d.scene)) d.batch = batchShading(d.scene, default_texture, eye);
     if (d.batch)
       for (const auto& m : std::get<Shading<float>>(d.shading).meshes)
         d.batch_meshes.push_back(batchMesh(m.p, m.n, m.uv, m.src->triangles));
   } else
-    d.shading.emplace<Shading<double>>(d.scene, d.meshes, d.mesh_object, d.object_texture);
+    d.shading.emplace<Shading<double>>(d.scene, d.meshes, d.mesh_object, d.object_texture, d.object_chain);
   d.setup_seconds = secondsSince(t0);
 }
 
@@ -571,7 +639,7 @@ void PreparedScene::Impl::renderRasterised(const Shading<float>& sh, const Rende
                                            RenderStats& stats, Progress& progress) const {
   const CameraRays cam(scene.camera);
   const int n = samplesPerSide(opt);
-  const Accumulation<float> acc{sh, img, opt.diagnostics && !img.raw.empty(), 1.0f / float(n * n)};
+  const Accumulation<float> acc{sh, img, opt.diagnostics && !img.raw.empty(), 1.0f / float(n * n), 1.0 / n};
   stats.visibility = "rasterised";
   const Rasteriser raster(meshes, cam, kBand, opt.cull_back_faces ? back_faces_hidden : std::vector<bool>{});
   stats.culled_triangles = raster.culledTriangles();
@@ -597,7 +665,7 @@ void PreparedScene::Impl::renderTraced(const Shading<T>& sh, const RenderOptions
                                        RenderStats& stats, Progress& progress) const {
   const CameraRays cam(scene.camera);
   const int n = samplesPerSide(opt), W = img.width, H = img.height;
-  const Accumulation<T> acc{sh, img, opt.diagnostics && !img.raw.empty(), T(1) / T(n * n)};
+  const Accumulation<T> acc{sh, img, opt.diagnostics && !img.raw.empty(), T(1) / T(n * n), 1.0 / n};
   stats.visibility = std::is_same_v<T, float> ? "Embree 16-ray packets (float)"
                                               : "Embree 16-ray packets, double-precision watertight test";
   stats.culled_triangles = bvh_culled;

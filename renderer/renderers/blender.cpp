@@ -29,15 +29,17 @@ std::string blenderScriptMissing() {
   return "Blender script " + script.string() + " not found (set XVAL_BLENDER_SCRIPT)";
 }
 
-// The Blender harness's refusal of a scene, "" when it can render it.
-std::string blenderRefusal(const Scene& scene) {
+// The Blender harness's refusal of a scene with that engine, "" when it can
+// render it.
+std::string blenderEngineRefusal(const Scene& scene, BlenderEngine engine) {
   try {
-    checkBlenderScene(scene);
+    checkBlenderScene(scene, engine);
   } catch (const ExportError& e) {
     return e.what();
   }
   return exportRefusal([&](const std::filesystem::path& dir) { exportGltf(scene, dir); });
 }
+std::string blenderRefusal(const Scene& scene) { return blenderEngineRefusal(scene, BlenderEngine::Cycles); }
 
 Renderer blenderRenderer() {
   Renderer r;

@@ -8,7 +8,8 @@
 // one sample on each pixel centre, Standard view transform and a raw float
 // EXR, a clip range fitted to the scene, bilinear lookups rebuilt from
 // Closest ones, anisotropic filtering off. Supersampling and saturation as
-// the blender renderer's. It refuses what the blender renderer refuses.
+// the blender renderer's. It refuses what the blender renderer refuses,
+// except texture filter trilinear, which is EEVEE's own Linear lookup.
 //
 // Parameters (RenderRequest):
 //   work_dir         the export, the log (eevee.log) and the raw EXR
@@ -21,7 +22,7 @@
 namespace xval::renderers {
 
 std::string blenderScriptMissing();              // renderers/blender.cpp
-std::string blenderRefusal(const Scene& scene);  // renderers/blender.cpp
+std::string blenderEngineRefusal(const Scene& scene, BlenderEngine engine);  // renderers/blender.cpp
 
 Renderer eeveeRenderer() {
   Renderer r;
@@ -31,7 +32,7 @@ Renderer eeveeRenderer() {
   r.version_command = {"blender", "--version"};
   r.version_marker = "Blender";
   r.missing = blenderScriptMissing;
-  r.cannot_express = blenderRefusal;
+  r.cannot_express = [](const Scene& scene) { return blenderEngineRefusal(scene, BlenderEngine::Eevee); };
   r.render = [](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
     ExternalRenderInfo tool;
     Image image = renderWithBlender(scene, request.work_dir, request.timeout_seconds, &tool, BlenderMode::Model,

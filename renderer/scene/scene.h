@@ -101,7 +101,10 @@ struct ObjectTransform {
 };
 
 // --- texture ------------------------------------------------------------
-enum class TextureFilter { Nearest, Bilinear };
+// Trilinear: the paper's listing's sampler MIN_MAG_MIP_LINEAR, bilinear
+// lookups in the two mip levels around the pixel footprint's level
+// (texture/mip_chain.h states the chain, the level and the blend).
+enum class TextureFilter { Nearest, Bilinear, Trilinear };
 
 struct TextureSpec {
   enum class Source { Brick, Image };
@@ -213,6 +216,10 @@ struct Scene {
   Material material;  // the default of every object without its own
   std::vector<Light> lights;
   ShadingMode shading = ShadingMode::Phong;
+  // Phong shading's normal: normalize(sum b_k N_k) (true), or the
+  // interpolated sum b_k N_k as it is (false: the paper's listing, which
+  // does not re-normalise). Only shading phong may set it false.
+  bool normalize_normal = true;
   RenderSettings render;
   std::vector<DeclaredTolerance> tolerances;  // used only by comparisons
   // The renderers the scene is meant for (registry ids); empty: every one.

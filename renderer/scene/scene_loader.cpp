@@ -222,8 +222,10 @@ void checkTextureImage(JsonReader& r, const std::filesystem::path& file, const s
 TextureSpec readTexture(JsonReader r, const std::filesystem::path& scene_dir) {
   TextureSpec t;
   std::string source = r.requireChoice("source", {"brick", "image"});
-  std::string filter = r.choice("filter", "bilinear", {"nearest", "bilinear"});
-  t.filter = filter == "nearest" ? TextureFilter::Nearest : TextureFilter::Bilinear;
+  std::string filter = r.choice("filter", "bilinear", {"nearest", "bilinear", "trilinear"});
+  t.filter = filter == "nearest"     ? TextureFilter::Nearest
+             : filter == "trilinear" ? TextureFilter::Trilinear
+                                     : TextureFilter::Bilinear;
   if (source == "image") {
     t.source = TextureSpec::Source::Image;
     t.path = readInputPath(r, scene_dir, "texture file");
@@ -443,6 +445,18 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file, con
   s.shading = shading == "flat"      ? ShadingMode::Flat
               : shading == "gouraud" ? ShadingMode::Gouraud
                                      : ShadingMode::Phong;
+  s.normalize_normal = r.boolean("normalize_normal", true);
+  if (!s.normalize_normal && s.shading != ShadingMode::Phong)
+    r.fail("normalize_normal", std::string("false applies to shading \"phong\" only (the interpolated normal), got "
+                                           "shading \"") + toString(s.shading) + "\"");
+  // A vertex has no pixel footprint to choose a mip level from.
+  for (size_t k = 0; s.shading == ShadingMode::Gouraud && k <= s.objects.size(); ++k) {
+    const Material& m = k < s.objects.size() ? materialOf(s, k) : s.material;
+    if (m.texture && m.texture->filter == TextureFilter::Trilinear)
+      r.fail("shading", "\"gouraud\" evaluates the texture at the vertices, where a trilinear filter has no "
+                        "pixel footprint to choose its mip level from; expected \"phong\" or \"flat\" with "
+                        "texture filter \"trilinear\"");
+  }
   if (auto rs = r.object("render")) s.render = readRender(*rs);
   s.tolerances = readTolerances(r);
   s.renderers = readRenderers(r);
@@ -503,7 +517,12 @@ const char* toString(ShadingMode m) {
 }
 const char* toString(Precision p) { return p == Precision::Float ? "float" : "double"; }
 const char* toString(TextureFilter f) {
-  return f == TextureFilter::Nearest ? "nearest" : "bilinear";
+  switch (f) {
+    case TextureFilter::Nearest: return "nearest";
+    case TextureFilter::Bilinear: return "bilinear";
+    case TextureFilter::Trilinear: return "trilinear";
+  }
+  return "?";
 }
 const char* modelName(const LightingModel& m) {
   // One overload per alternative: the name does not depend on the

@@ -107,6 +107,7 @@ J sceneToJson(const Scene& s, const std::string* texture_path) {
   j["lights"] = J::array();
   for (const auto& l : s.lights) j["lights"].push_back(light(l));
   j["shading"] = toString(s.shading);
+  if (!s.normalize_normal) j["normalize_normal"] = false;
   j["render"] = {{"spp", s.render.spp}, {"precision", toString(s.render.precision)}};
   if (!s.tolerances.empty()) {
     J t;

@@ -286,6 +286,8 @@ const char* batchShaderTarget() { return HWY_DYNAMIC_DISPATCH(TargetNameImpl)();
 
 std::optional<BatchShading> batchShading(const Scene& scene, const Texture* texture, glm::dvec3 eye) {
   if (scene.shading != ShadingMode::Phong) return std::nullopt;
+  if (scene.material.texture && scene.material.texture->filter == TextureFilter::Trilinear) return std::nullopt;
+  if (!scene.normalize_normal) return std::nullopt;  // the listing's normalize(R) is the scalar path's
   BatchShading s;
   if (const auto* y = std::get_if<YiqLuma>(&scene.material.model)) {
     s.model = BatchShading::Model::YiqLuma;

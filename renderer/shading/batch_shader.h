@@ -15,7 +15,9 @@
 //
 // Covers: shading mode phong; models yiq_luma and classic_phong (variant
 // paper); point, directional and spot lights with or without attenuation;
-// texture (nearest or bilinear) or base colour. Anything else (flat,
+// texture (nearest or bilinear; not trilinear, whose level needs each hit's
+// footprint) or base colour; the normal re-normalised (not the scene
+// option normalize_normal false, with its normalize(R)). Anything else (flat,
 // gouraud, course variant, Forsyth's family) is not built: batchShading()
 // returns nothing and the renderer shades one hit at a time.
 #pragma once

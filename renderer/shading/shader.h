@@ -15,6 +15,9 @@
 // A is the summed colour of the ambient lights; [lit] is 0 outside a spot
 // cone, where (except course's per-light ambient) a light adds nothing.
 // R = 2 (N.L) N - L is not gated by N.L (the listing does not gate it).
+// With unitReflection(true) (the scene's normalize_normal false, whose N is
+// the interpolated normal, not unit) R = normalize(2 (N.L) N - L), as the
+// listing writes it, so that the |R - V| form below gets a unit R.
 // The result is unsaturated; the renderer saturates the final pixel colour
 // once (the paper's render target did), so the listing's YIQtoRGB saturate
 // is that same single saturate.
@@ -56,6 +59,8 @@ template <class T> class Shader {
   }
 
   bool usesSpecular() const { return specular_; }
+  // R normalised (see above); off by default (N is unit, so is R).
+  void unitReflection(bool on) { unit_reflection_ = on; }
   glm::dvec3 origin() const { return origin_; }
   const std::vector<PreparedLight<T>>& lights() const { return lights_; }
   // A: the summed colour of the ambient lights; A_Y = Y(A) (lightLuma).
@@ -77,7 +82,7 @@ template <class T> class Shader {
             if (s.lit) {
               T x = glm::dot(n, s.L);
               term += kd_ * clamp0(x);
-              if (specular_) term += ks_ * phongSpecular(reflect(n, s.L, x), v, n_);
+              if (specular_) term += ks_ * phongSpecular(mirror(n, s.L, x), v, n_);
             }
             acc += w * term;
           }
@@ -90,7 +95,7 @@ template <class T> class Shader {
           V w = s.att * l.color;
           T x = glm::dot(n, s.L);
           diff += w * clamp0(x);
-          if (specular_) spec += w * phongSpecular(reflect(n, s.L, x), v, n_);
+          if (specular_) spec += w * phongSpecular(mirror(n, s.L, x), v, n_);
         }
         return c * (ka_ * ambient_ + kd_ * diff) + ks_ * spec;
       }
@@ -104,7 +109,7 @@ template <class T> class Shader {
           dsum += w * saturate(x);
           // saturate(R.V)^n: R.V <= 1 for unit vectors, so the upper clamp
           // only removes rounding, which the |R - V| form has none of.
-          if (specular_) ssum += w * phongSpecular(reflect(n, s.L, x), v, n_);
+          if (specular_) ssum += w * phongSpecular(mirror(n, s.L, x), v, n_);
         }
         T dl = saturate(ambient_luma_ + kd_ * dsum);
         return yiqLuma(c, dl, ks_ * ssum, offset_);
@@ -124,6 +129,13 @@ template <class T> class Shader {
  private:
   enum class Kind { ClassicPhong, YiqLuma, Lambert, WrapAround, Hemispherical, BiDirectional,
                     Trilight };
+
+  V mirror(V n, V L, T x) const {
+    const V r = models::reflect(n, L, x);
+    if (!unit_reflection_) return r;
+    const T len = glm::length(r);
+    return len > T(0) ? r / len : V(0);
+  }
 
   V forsyth(T x) const {
     using namespace models;
@@ -159,7 +171,7 @@ template <class T> class Shader {
   std::vector<PreparedLight<T>> lights_;
   V ambient_{0};
   T ambient_luma_ = 0;
-  bool course_ = false, specular_ = false;
+  bool course_ = false, specular_ = false, unit_reflection_ = false;
   T ka_ = 1, kd_ = 1, ks_ = 1, n_ = 55, offset_ = T(0.1), factor_ = 0;
   V c0_{1}, c1_{0}, c2_{0};
 };

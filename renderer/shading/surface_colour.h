@@ -1,6 +1,8 @@
 // SurfaceColour: the C of the models at a uv: the texture (with the
 // material's filter) when there is one, else the base colour; no texture
-// fetch without a texture.
+// fetch without a texture. A trilinear filter looks up the texture's mip
+// chain at a level of detail lambda (texture/mip_chain.h); without one
+// (lambda 0) that is level 0's bilinear lookup.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -10,6 +12,7 @@
 #include "geometry/mesh.h"
 #include "scene/scene.h"
 #include "shading/shader.h"
+#include "texture/mip_chain.h"
 #include "texture/texel_edge.h"
 #include "texture/texture.h"
 
@@ -19,14 +22,21 @@ template <class T> struct SurfaceColour {
   const Texture* texture = nullptr;
   TextureFilter filter = TextureFilter::Nearest;
   glm::vec<3, T> base{1};
+  const MipChain* mips = nullptr;  // the texture's chain, for a trilinear filter
 
-  SurfaceColour(const Material& m, const Texture* tex)
+  SurfaceColour(const Material& m, const Texture* tex, const MipChain* chain = nullptr)
       : texture(tex),
         filter(m.texture ? m.texture->filter : TextureFilter::Nearest),
-        base(m.base_color) {}
+        base(m.base_color),
+        mips(chain) {}
 
-  glm::vec<3, T> at(glm::vec<2, T> uv) const {
-    return texture ? texture->lookup(uv, filter) : base;
+  // True when the colour depends on the pixel footprint (lambda).
+  bool usesFootprint() const { return texture && filter == TextureFilter::Trilinear && mips; }
+
+  glm::vec<3, T> at(glm::vec<2, T> uv, double lambda = 0.0) const {
+    if (!texture) return base;
+    if (usesFootprint()) return mips->lookup(uv, lambda);
+    return texture->lookup(uv, filter);
   }
 
   // For a nearest-filtered texture, how near uv is to another texel's pick

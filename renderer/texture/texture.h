@@ -6,7 +6,9 @@
 // centre at ((ix + 0.5)/W, (iy + 0.5)/H). Wrap: only frac(u), frac(v) count.
 //   nearest:  ix = floor(frac(u) W), iy = floor(frac(v) H)
 //   bilinear: x = frac(u) W - 0.5, x0 = floor(x), wx = x - x0 (same in y),
-//             the four texels (x0, x0+1) x (y0, y0+1) taken modulo W, H.
+//             the four texels (x0, x0+1) x (y0, y0+1) taken modulo W, H;
+//   trilinear on this one texture (level 0 of its mip chain,
+//             texture/mip_chain.h): the bilinear lookup.
 #pragma once
 
 #include <glm/glm.hpp>

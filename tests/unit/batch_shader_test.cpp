@@ -92,6 +92,7 @@ TEST(BatchShader, EveryLightKindAndNearestTextureIsBitIdentical) {
   expectBitIdentical(s);
 }
 
+
 // Without a texture (base colour), shininess 0 (S = 1 everywhere), and a
 // light so far away that |D|^2 overflows float (towardsLight's rescaling).
 TEST(BatchShader, BaseColourShininessZeroAndFarLightAreBitIdentical) {
@@ -119,6 +120,14 @@ TEST(BatchShader, DeclinesWhatItDoesNotCover) {
   EXPECT_FALSE(batchShading(s, nullptr, eye).has_value());
   s.material.model = Trilight{};
   EXPECT_FALSE(batchShading(s, nullptr, eye).has_value());
+  s.material.model = ClassicPhong{};
+  s.material.texture = TextureSpec{TextureSpec::Source::Brick, {}, TextureFilter::Trilinear};
+  EXPECT_FALSE(batchShading(s, nullptr, eye).has_value());  // the level needs each hit's footprint
+  s.material.texture.reset();
+  s.normalize_normal = false;
+  EXPECT_FALSE(batchShading(s, nullptr, eye).has_value());  // the listing's normalize(R): the scalar path
+  s.normalize_normal = true;
+  s.material.model = Trilight{};
   // Declined scenes render one hit at a time.
   RenderOptions o;
   o.precision = Precision::Float;

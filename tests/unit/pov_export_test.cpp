@@ -122,6 +122,34 @@ TEST(PovExport, RefusesWhatOneRenderCannotComputeExactly) {
   }
 }
 
+// The paper's listing's own choices: POV-Ray refuses both, Cycles the
+// trilinear filter, EEVEE neither, each with the field and its reason,
+// before anything is written.
+TEST(PovExport, ListingOptionsAreRefusedWhereNotExpressible) {
+  auto refusal = [](auto&& f) -> std::string {
+    try {
+      f();
+    } catch (const ExportError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  Scene tri = smallScene();
+  tri.material.texture = TextureSpec{TextureSpec::Source::Brick, {}, TextureFilter::Trilinear};
+  Scene raw = smallScene();
+  raw.normalize_normal = false;
+  const fs::path dir = freshDir("refuse_listing");
+  std::string m = refusal([&] { exportPov(tri, dir / "a"); });
+  EXPECT_NE(m.find("material.texture.filter \"trilinear\" is not expressible: POV-Ray"), std::string::npos) << m;
+  EXPECT_FALSE(fs::exists(dir / "a"));
+  m = refusal([&] { exportPov(raw, dir / "b"); });
+  EXPECT_NE(m.find("normalize_normal false is not expressible: POV-Ray normalises"), std::string::npos) << m;
+  m = refusal([&] { checkBlenderScene(tri, BlenderEngine::Cycles); });
+  EXPECT_NE(m.find("blender (Cycles): material.texture.filter \"trilinear\""), std::string::npos) << m;
+  EXPECT_EQ(refusal([&] { checkBlenderScene(tri, BlenderEngine::Eevee); }), "");
+  EXPECT_EQ(refusal([&] { checkBlenderScene(raw, BlenderEngine::Cycles); }), "");
+}
+
 // Stand-in povray and blender executables on PATH.
 class FakeTool : public ::testing::Test {
  protected:

@@ -282,3 +282,31 @@ TEST(SceneLoader, RenderersNameKnownRenderersOnceAtLeastTwo) {
   // The writer keeps the field (the generator's scenes and round trips).
   EXPECT_EQ(parseScene(sceneToJson(s).dump(), "scene.json").renderers, s.renderers);
 }
+
+// The paper's listing's own choices: read, checked, written back.
+TEST(SceneLoader, ListingOptionsNormalizeNormalAndTrilinear) {
+  std::string text = kValid;
+  text.replace(text.find("\"name\": \"t\""), 11, "\"name\": \"t\", \"normalize_normal\": false");
+  EXPECT_FALSE(parseScene(text, "dir/scene.json").normalize_normal);
+  EXPECT_TRUE(parseScene(kValid, "dir/scene.json").normalize_normal);
+  expectError("\"name\": \"t\"", "\"name\": \"t\", \"normalize_normal\": false, \"shading\": \"flat\"",
+              {"normalize_normal", "phong", "\"flat\""});
+  expectError("\"name\": \"t\"", "\"name\": \"t\", \"normalize_normal\": 0", {"normalize_normal", "0"});
+  const std::string tri = "{\"type\": \"classic_phong\"}, \"texture\": {\"source\": \"brick\", \"filter\": \"trilinear\"}";
+  text = kValid;
+  text.replace(text.find("{\"type\": \"classic_phong\"}"), 25, tri);
+  const Scene s = parseScene(text, "dir/scene.json");
+  ASSERT_TRUE(s.material.texture);
+  EXPECT_EQ(s.material.texture->filter, TextureFilter::Trilinear);
+  expectError("{\"type\": \"classic_phong\"}", tri + "}, \"shading\": \"gouraud\", \"x\": {\"y\": 0",
+              {"shading", "gouraud", "trilinear", "footprint"});
+  expectError("{\"type\": \"classic_phong\"}", "{\"type\": \"classic_phong\"}, \"texture\": {\"source\": \"brick\", "
+              "\"filter\": \"mipmap\"}", {"material.texture.filter", "\"mipmap\"", "trilinear"});
+  // The writer keeps both (and writes normalize_normal only when false).
+  Scene w = s;
+  w.normalize_normal = false;
+  const Scene back = parseScene(sceneToJson(w).dump(), "dir/scene.json");
+  EXPECT_FALSE(back.normalize_normal);
+  EXPECT_EQ(back.material.texture->filter, TextureFilter::Trilinear);
+  EXPECT_EQ(sceneToJson(s).dump().find("normalize_normal"), std::string::npos);
+}
