@@ -439,12 +439,21 @@ def build_model_material(nt, k, image, bilinear_from_closest=False):
 # the larger side of the image actually rendered (n W x n H when
 # supersampling), moves it back to the centre (residual < 2e-6 px); without
 # it, sharp texture edges differ by up to ~3000/65535.
+# Cycles' unit of shift is the image's side along the sensor fit, in x and
+# in y alike (a shift s moves the view by s * H pixels for VERTICAL, s * W
+# for HORIZONTAL, s * max(W, H) for AUTO): with the harness's VERTICAL fit,
+# the height. Dividing by max(W, H) instead left a landscape image's samples
+# 0.000488758 (1 - H/W) px off, which on a 400 x 300 knot put 8.7% of the
+# pixels beyond 2/65535 (max 32.6/65535); tests/cross/cycles_sample_offset.py
+# measures it at square, landscape and portrait sizes.
 SAMPLE_OFFSET_PX = 0.000488758
 
 
 def centre_samples(camera, width, height):
-    camera.data.shift_x = -SAMPLE_OFFSET_PX / max(width, height)
-    camera.data.shift_y = -SAMPLE_OFFSET_PX / max(width, height)
+    fit = camera.data.sensor_fit
+    side = height if fit == "VERTICAL" else width if fit == "HORIZONTAL" else max(width, height)
+    camera.data.shift_x = -SAMPLE_OFFSET_PX / side
+    camera.data.shift_y = -SAMPLE_OFFSET_PX / side
 
 
 def setup_output(scene, width, height, out, multilayer):
