@@ -9,8 +9,10 @@ mode model (default): every mesh gets an Emission shader (strength 1) whose
 colour is the model of docs/models.md built from Math / Vector Math nodes
 (build_model_material). Every constant it needs (light directions, cos of
 the spot cutoff, per-light luma, attenuation flags, the ambient sum and its
-luma, the luma row, ...) is read from the export's `xval_shading` scene
-extras (exporters/gltf/shading_constants.h); this script derives none:
+luma, the luma row, ...) is read from the `xval_shading` extras of the
+mesh's glTF material (exporters/gltf/shading_constants.h; one node tree per
+material, its texture the file named by the material's `xval_texture`);
+this script derives none:
   P = Geometry > Position, taken to the scene's world frame with the
       exported `blender_to_world` rows (the shading is in world frame),
   N = the glTF NORMAL accessor copied into a float corner attribute
@@ -466,12 +468,21 @@ def build_model_material(nt, k, image, bilinear_from_closest=False):
 # the larger side of the image actually rendered (n W x n H when
 # supersampling), moves it back to the centre (residual < 2e-6 px); without
 # it, sharp texture edges differ by up to ~3000/65535.
+# Cycles' unit of shift is the image's side along the sensor fit, in x and
+# in y alike (a shift s moves the view by s * H pixels for VERTICAL, s * W
+# for HORIZONTAL, s * max(W, H) for AUTO): with the harness's VERTICAL fit,
+# the height. Dividing by max(W, H) instead left a landscape image's samples
+# 0.000488758 (1 - H/W) px off, which on a 400 x 300 knot put 8.7% of the
+# pixels beyond 2/65535 (max 32.6/65535); tests/cross/cycles_sample_offset.py
+# measures it at square, landscape and portrait sizes.
 SAMPLE_OFFSET_PX = 0.000488758
 
 
 def centre_samples(camera, width, height):
-    camera.data.shift_x = -SAMPLE_OFFSET_PX / max(width, height)
-    camera.data.shift_y = -SAMPLE_OFFSET_PX / max(width, height)
+    fit = camera.data.sensor_fit
+    side = height if fit == "VERTICAL" else width if fit == "HORIZONTAL" else max(width, height)
+    camera.data.shift_x = -SAMPLE_OFFSET_PX / side
+    camera.data.shift_y = -SAMPLE_OFFSET_PX / side
 
 
 def setup_output(scene, width, height, out, multilayer):
@@ -617,36 +628,52 @@ def main():
     for o in list(scene.objects):
         if o.type == "LIGHT":
             bpy.data.objects.remove(o, do_unlink=True)
-    if "xval_shading" not in scene.keys():
-        fail("no xval_shading constants in the glTF scene extras")
-    k = json.loads(scene["xval_shading"])
-    image = None
-    if k["texture_filter"] is not None:
-        folder = os.path.dirname(os.path.abspath(args.gltf))
-        image = bpy.data.images.load(os.path.join(folder, "texture.png"), check_existing=True)
-        image.colorspace_settings.name = "Non-Color"
-        image.alpha_mode = "NONE"
-        if args.engine == "eevee":
-            image.use_half_precision = False  # a 16-bit texture as float32 on the GPU, not half
-        if args.engine == "eevee" and k["texture_filter"] == "trilinear":
-            image = float_copy(image)
+    # One node tree per glTF material, from the constants in its extras
+    # (every object of one material shares it).
+    folder = os.path.dirname(os.path.abspath(args.gltf))
+    materials = {}
+
+    def model_material(index):
+        if index in materials:
+            return materials[index]
+        docs = data.doc.get("materials", [])
+        if not isinstance(index, int) or not 0 <= index < len(docs):
+            fail("material %r not in the glTF" % (index,))
+        extras = docs[index].get("extras", {})
+        if "xval_shading" not in extras:
+            fail("no xval_shading constants in the extras of glTF material %d" % index)
+        k = json.loads(extras["xval_shading"])
+        image = None
+        if k["texture_filter"] is not None:
+            name = extras.get("xval_texture")
+            if not isinstance(name, str) or not name or "/" in name or "\\" in name or name.startswith("."):
+                fail("glTF material %d: texture file %r is not a file of the export folder" % (index, name))
+            image = bpy.data.images.load(os.path.join(folder, name), check_existing=True)
+            image.colorspace_settings.name = "Non-Color"
+            image.alpha_mode = "NONE"
+            if args.engine == "eevee":
+                image.use_half_precision = False  # a 16-bit texture as float32 on the GPU, not half
+            if args.engine == "eevee" and k["texture_filter"] == "trilinear":
+                image = float_copy(image)
+        mat = bpy.data.materials.new("xval_model_%d" % index)
+        mat.use_nodes = True
+        build_model_material(mat.node_tree, k, image, bilinear_from_closest=args.engine == "eevee")
+        materials[index] = (mat, k)
+        return materials[index]
 
     for o in meshes:
         me = o.data
-        attrs, corners = mesh_attributes(data, data.primitive(me.name), k["shading"])
+        prim = data.primitive(me.name)
+        mat, k = model_material(prim.get("material"))
+        attrs, corners = mesh_attributes(data, prim, k["shading"])
         if len(me.loops) != corners:
             fail("mesh %s: %d corners in Blender, %d indices in the glTF" % (me.name, len(me.loops), corners))
         if len(me.polygons) * 3 != corners:
             fail("mesh %s: %d faces in Blender, %d triangles in the glTF" % (me.name, len(me.polygons), corners // 3))
         for name, (domain, values) in attrs.items():
             me.attributes.new(name, "FLOAT_VECTOR", domain).data.foreach_set("vector", values)
-
-    mat = bpy.data.materials.new("xval_model")
-    mat.use_nodes = True
-    build_model_material(mat.node_tree, k, image, bilinear_from_closest=args.engine == "eevee")
-    for o in meshes:
-        o.data.materials.clear()
-        o.data.materials.append(mat)
+        me.materials.clear()
+        me.materials.append(mat)
     if args.engine == "eevee":
         fit_clip_range(cams[0], meshes)
         setup_output(scene, width, height, args.out, False)

@@ -5,12 +5,34 @@
 
 namespace xval {
 
-void requireOneMaterial(const Scene& scene, const std::string& exporter) {
-  for (size_t k = 0; k < scene.objects.size(); ++k)
-    if (scene.objects[k].material)
-      throw ExportError(exporter + ": objects[" + std::to_string(k) +
-                        "].material: objects with materials of their own are not exported yet (every mesh is "
-                        "written with the scene's one material)");
+MaterialSlots materialSlots(const Scene& scene) {
+  MaterialSlots s;
+  s.materials.push_back(&scene.material);
+  s.used.push_back(false);
+  for (size_t k = 0; k < scene.objects.size(); ++k) {
+    const auto& own = scene.objects[k].material;
+    s.materials.push_back(own ? &*own : nullptr);
+    s.used.push_back(own.has_value());
+    s.object_slot.push_back(own ? k + 1 : 0);
+    if (!own) s.used[0] = true;
+  }
+  return s;
+}
+
+std::string exportedTextureName(size_t slot) {
+  return slot == 0 ? "texture.png" : "texture_object" + std::to_string(slot - 1) + ".png";
+}
+
+std::optional<Texture> exportTexture(const Material& material, const std::filesystem::path& dir,
+                                     const std::string& file, const std::string& what) {
+  if (!material.texture) return std::nullopt;
+  Texture t = loadTexture(*material.texture);
+  if (t.rgb8.empty() && t.rgb16.empty())
+    throw ExportError(what + ": texture " + material.texture->path.string() +
+                      " is neither 8-bit nor 16-bit integer; the exporters copy textures losslessly "
+                      "as 8-bit or 16-bit PNG");
+  writeTexturePng(t, dir / file);
+  return t;
 }
 
 void refuseTrilinear(const Scene& scene, const std::string& exporter, const std::string& why) {
@@ -29,14 +51,7 @@ void refuseUnnormalizedNormal(const Scene& scene, const std::string& exporter, c
 }
 
 std::optional<Texture> exportTexture(const Scene& scene, const std::filesystem::path& dir) {
-  if (!scene.material.texture) return std::nullopt;
-  Texture t = loadTexture(*scene.material.texture);
-  if (t.rgb8.empty() && t.rgb16.empty())
-    throw ExportError("texture " + scene.material.texture->path.string() +
-                      " is neither 8-bit nor 16-bit integer; the exporters copy textures losslessly "
-                      "as 8-bit or 16-bit PNG");
-  writeTexturePng(t, dir / "texture.png");
-  return t;
+  return exportTexture(scene.material, dir, exportedTextureName(0), "material");
 }
 
 void requireToolOutput(const std::string& tool, const std::filesystem::path& input,

@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "process/run_process.h"
 #include "image/image.h"
@@ -40,9 +41,27 @@ inline constexpr double kDefaultToolTimeoutSeconds = 600.0;
 // neither (a float image).
 std::optional<Texture> exportTexture(const Scene& scene, const std::filesystem::path& dir);
 
-// Throws ExportError, the exporter's refusal, when an object has a material
-// of its own: the exporters write the scene's one material on every mesh.
-void requireOneMaterial(const Scene& scene, const std::string& exporter);
+// The materials an export writes, one slot each: slot 0 is the scene's
+// material, slot k + 1 object k's own (when it has one). `object_slot[k]`
+// is the slot object k is shaded with; `used[s]` whether any object uses
+// slot s (an unused slot is not written, its texture not read).
+struct MaterialSlots {
+  std::vector<const Material*> materials;
+  std::vector<size_t> object_slot;
+  std::vector<bool> used;
+};
+MaterialSlots materialSlots(const Scene& scene);
+
+// The name of slot s's texture copy in the export folder: "texture.png"
+// for the scene's material (slot 0), "texture_object<k>.png" for object
+// k's (slot k + 1). Never a user string.
+std::string exportedTextureName(size_t slot);
+
+// Loads `material`'s texture and writes it as DIR/`file` (as exportTexture
+// above). None without a texture; throws ExportError naming `what` (e.g.
+// "objects[2].material") for a float image.
+std::optional<Texture> exportTexture(const Material& material, const std::filesystem::path& dir,
+                                     const std::string& file, const std::string& what);
 
 // The paper's listing's own choices (scene.h): throws ExportError, naming
 // the field and `why` (the exporter's reason), when some material's texture

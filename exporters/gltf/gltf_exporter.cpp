@@ -125,7 +125,6 @@ GltfExport exportGltf(const Scene& scene, const std::filesystem::path& dir) {
   // The resolution Blender renders: n W x n H for render.spp = n^2, one
   // sample through each pixel centre (common/supersample.h); checked first.
   const SubpixelGrid grid = subpixelGrid(scene);
-  requireOneMaterial(scene, "glTF export");
   std::filesystem::create_directories(dir);
   GltfExport ex{dir / "scene.gltf", dir};
   tinygltf::Model m;
@@ -134,56 +133,72 @@ GltfExport exportGltf(const Scene& scene, const std::filesystem::path& dir) {
   m.buffers.resize(1);
   m.buffers[0].uri = "scene.bin";
 
-  const std::optional<Texture> texture = exportTexture(scene, dir);
-  const bool textured = texture.has_value();
-  if (textured) {
-    tinygltf::Image img;
-    img.uri = "texture.png";
-    img.mimeType = "image/png";
-    m.images.push_back(img);
-    tinygltf::Sampler s;
-    const bool nearest = scene.material.texture->filter == TextureFilter::Nearest;
-    s.magFilter = nearest ? TINYGLTF_TEXTURE_FILTER_NEAREST : TINYGLTF_TEXTURE_FILTER_LINEAR;
-    s.minFilter = nearest ? TINYGLTF_TEXTURE_FILTER_NEAREST
-                  : scene.material.texture->filter == TextureFilter::Trilinear
-                      ? TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR
-                      : TINYGLTF_TEXTURE_FILTER_LINEAR;
-    s.wrapS = s.wrapT = TINYGLTF_TEXTURE_WRAP_REPEAT;
-    m.samplers.push_back(s);
-    tinygltf::Texture t;
-    t.source = 0;
-    t.sampler = 0;
-    m.textures.push_back(t);
+  // One glTF material per material slot (export_common.h): slot 0 the
+  // scene's, then each object's own; each with its texture copy and its
+  // shading constants in the material's extras.
+  const MaterialSlots slots = materialSlots(scene);
+  std::vector<std::optional<Texture>> textures(slots.materials.size());
+  std::vector<int> gltf_material(slots.materials.size(), -1);
+  for (size_t k = 0; k < slots.materials.size(); ++k) {
+    if (!slots.used[k]) continue;
+    const Material& material = *slots.materials[k];
+    textures[k] = exportTexture(material, dir, exportedTextureName(k),
+                                k == 0 ? "material" : "objects[" + std::to_string(k - 1) + "].material");
+    tinygltf::Material mat;
+    mat.name = k == 0 ? "xval_material" : "xval_material_object" + std::to_string(k - 1);
+    mat.doubleSided = true;  // the paper's shader: CullMode None
+    mat.pbrMetallicRoughness.metallicFactor = 0.0;
+    if (textures[k]) {
+      tinygltf::Image img;
+      img.uri = exportedTextureName(k);
+      img.mimeType = "image/png";
+      m.images.push_back(img);
+      tinygltf::Sampler smp;
+      const bool nearest = material.texture->filter == TextureFilter::Nearest;
+      smp.magFilter = nearest ? TINYGLTF_TEXTURE_FILTER_NEAREST : TINYGLTF_TEXTURE_FILTER_LINEAR;
+      smp.minFilter = nearest ? TINYGLTF_TEXTURE_FILTER_NEAREST
+                      : material.texture->filter == TextureFilter::Trilinear
+                          ? TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR
+                          : TINYGLTF_TEXTURE_FILTER_LINEAR;
+      smp.wrapS = smp.wrapT = TINYGLTF_TEXTURE_WRAP_REPEAT;
+      m.samplers.push_back(smp);
+      tinygltf::Texture t;
+      t.source = int(m.images.size() - 1);
+      t.sampler = int(m.samplers.size() - 1);
+      m.textures.push_back(t);
+      mat.pbrMetallicRoughness.baseColorTexture.index = int(m.textures.size() - 1);
+    } else {
+      glm::dvec3 b = glm::clamp(material.base_color, 0.0, 1.0);
+      mat.pbrMetallicRoughness.baseColorFactor = {b.x, b.y, b.z, 1.0};
+    }
+    tinygltf::Value::Object me;
+    me["xval_shading"] = tinygltf::Value(shadingConstants(scene, material).dump());
+    me["xval_texture"] = textures[k] ? tinygltf::Value(exportedTextureName(k)) : tinygltf::Value();
+    mat.extras = tinygltf::Value(me);
+    m.materials.push_back(mat);
+    gltf_material[k] = int(m.materials.size() - 1);
   }
-  tinygltf::Material mat;
-  mat.name = "xval_material";
-  mat.doubleSided = true;  // the paper's shader: CullMode None
-  mat.pbrMetallicRoughness.metallicFactor = 0.0;
-  if (textured) {
-    mat.pbrMetallicRoughness.baseColorTexture.index = 0;
-  } else {
-    glm::dvec3 b = glm::clamp(scene.material.base_color, 0.0, 1.0);
-    mat.pbrMetallicRoughness.baseColorFactor = {b.x, b.y, b.z, 1.0};
-  }
-  m.materials.push_back(mat);
 
   tinygltf::Scene gs;
   const CameraRays cam(scene.camera);
-  std::optional<Shader<double>> shader;
-  if (scene.shading == ShadingMode::Gouraud) shader.emplace(scene.material, scene.lights);
-  const std::vector<TriangleMesh> meshes = sceneMeshes(scene).meshes;
+  const SceneMeshes sm = sceneMeshes(scene);
+  const std::vector<TriangleMesh>& meshes = sm.meshes;
   for (size_t k = 0; k < meshes.size(); ++k) {
     const TriangleMesh& mesh = meshes[k];
+    const size_t slot = slots.object_slot[sm.object[k]];
+    const Material& material = *slots.materials[slot];
+    const Texture* texture = textures[slot] ? &*textures[slot] : nullptr;
     tinygltf::Primitive prim;
     prim.mode = TINYGLTF_MODE_TRIANGLES;
-    prim.material = 0;
+    prim.material = gltf_material[slot];
     prim.attributes["POSITION"] = addVec3(m, mesh.positions, true);
     prim.attributes["NORMAL"] = addVec3(m, mesh.normals, false);
-    if (textured) prim.attributes["TEXCOORD_0"] = addVec2(m, mesh.uvs);
-    if (shader) {
-      SurfaceColour<double> sc(scene.material, texture ? &*texture : nullptr);
+    if (texture) prim.attributes["TEXCOORD_0"] = addVec2(m, mesh.uvs);
+    if (scene.shading == ShadingMode::Gouraud) {
+      const Shader<double> shader(material, scene.lights);
+      SurfaceColour<double> sc(material, texture);
       prim.attributes["_XVAL_GOURAUD"] =
-          addVec3(m, gouraudVertexColours(*shader, mesh, sc, cam.origin), false);
+          addVec3(m, gouraudVertexColours(shader, mesh, sc, cam.origin), false);
     }
     prim.indices = addIndices(m, mesh.triangles);
     if (scene.shading == ShadingMode::Flat) {
@@ -258,9 +273,15 @@ GltfExport exportGltf(const Scene& scene, const std::filesystem::path& dir) {
     gs.nodes.push_back(int(m.nodes.size() - 1));
   }
 
-  const std::string exported_texture = "texture.png";
+  // The scene as written, every texture path replaced by its copy's name
+  // (no user path is passed on).
+  Scene written = scene;
+  if (written.material.texture) written.material.texture->path = exportedTextureName(0);
+  for (size_t k = 0; k < written.objects.size(); ++k)
+    if (written.objects[k].material && written.objects[k].material->texture)
+      written.objects[k].material->texture->path = exportedTextureName(k + 1);
   tinygltf::Value::Object extras;
-  extras["xval"] = tinygltf::Value(sceneToJson(scene, textured ? &exported_texture : nullptr).dump());
+  extras["xval"] = tinygltf::Value(sceneToJson(written).dump());
   extras["xval_shading"] = tinygltf::Value(shadingConstants(scene).dump());
   extras["xval_render"] = tinygltf::Value(
       nlohmann::json{{"width", grid.width}, {"height", grid.height}, {"subpixels_per_side", grid.n}}.dump());

@@ -1,6 +1,11 @@
 // glTF 2.0 exporter (tinygltf): the scene for Blender's importer.
 //
-// Written: scene.gltf, scene.bin, texture.png (when textured).
+// Written: scene.gltf, scene.bin, and a copy of each material's texture
+// (common/export_common.h: texture.png, texture_object<k>.png).
+//  - one glTF material per material of the scene (the scene's, each
+//    object's own), with its shading constants in the material's extras
+//    ({"xval_shading": "<JSON text>"}, shading_constants.h, for that
+//    material) and the name of its texture copy ({"xval_texture"});
 //  - one mesh per object with the reference renderer's very triangles:
 //    POSITION, NORMAL, TEXCOORD_0 (same uv convention as ours: glTF's),
 //    indices; for Gouraud shading also `_XVAL_GOURAUD` (float VEC3: the
@@ -19,8 +24,8 @@
 //    (Blender's importer keeps scene extras as Scene custom properties;
 //    root-level extras are dropped): {"xval": "<scene JSON text>"}, the
 //    scene-file JSON (scene_writer.h) with its texture path replaced;
-//  - every shading constant of the Blender harness in the scene's extras
-//    too, {"xval_shading": "<JSON text>"} (shading_constants.h), and for
+//  - the scene material's shading constants in the scene's extras too,
+//    {"xval_shading": "<JSON text>"} (shading_constants.h), and for
 //    flat shading the per-triangle normals (flat_normals.h) as a float
 //    VEC3 accessor named by the primitive's extras ("xval_face_normals").
 // Strings from the scene appear only as JSON string values (escaped by

@@ -76,8 +76,10 @@ struct ModelConstants {
 
 }  // namespace
 
-ordered_json shadingConstants(const Scene& scene) {
-  const Shader<double> shader(scene.material, scene.lights);
+ordered_json shadingConstants(const Scene& scene) { return shadingConstants(scene, scene.material); }
+
+ordered_json shadingConstants(const Scene& scene, const Material& material) {
+  const Shader<double> shader(material, scene.lights);
   ordered_json j;
   j["shading"] = toString(scene.shading);
   j["normalize_normal"] = scene.normalize_normal;
@@ -85,13 +87,13 @@ ordered_json shadingConstants(const Scene& scene) {
                                                ordered_json::array({0.0, 0.0, 1.0}),
                                                ordered_json::array({0.0, -1.0, 0.0})});
   j["eye"] = vec(CameraRays(scene.camera).origin);
-  j["base_colour"] = vec(scene.material.base_color);
-  if (scene.material.texture)
-    j["texture_filter"] = toString(scene.material.texture->filter);
+  j["base_colour"] = vec(material.base_color);
+  if (material.texture)
+    j["texture_filter"] = toString(material.texture->filter);
   else
     j["texture_filter"] = nullptr;
-  j["model"] = modelName(scene.material.model);
-  std::visit(ModelConstants{shader, j}, scene.material.model);
+  j["model"] = modelName(material.model);
+  std::visit(ModelConstants{shader, j}, material.model);
   ordered_json lights = ordered_json::array();
   for (const auto& l : shader.lights()) lights.push_back(lightConstants(l));
   j["lights"] = lights;

@@ -40,5 +40,8 @@
 namespace xval {
 
 nlohmann::ordered_json shadingConstants(const Scene& scene);
+// The constants of an object of `material` in `scene` (its own material,
+// scene.h materialOf): written into that glTF material's extras.
+nlohmann::ordered_json shadingConstants(const Scene& scene, const Material& material);
 
 }  // namespace xval

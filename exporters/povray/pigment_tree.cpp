@@ -47,7 +47,7 @@ Pattern lightEye(glm::dvec3 point, glm::dvec3 eye) {
 
 namespace {
 
-std::string bodySdl(const Pigment& p, int ind);
+std::string bodySdl(const Pigment& p, int ind, const std::string& fn);
 
 std::string distanceExpr(glm::dvec3 p) {
   return "sqrt((x - " + num(p.x) + ")*(x - " + num(p.x) + ") + (y - " + num(p.y) + ")*(y - " +
@@ -72,8 +72,8 @@ std::string patternSdl(const Pattern& p) {
              ") * " + num(a.y) + " + (z - " + num(x.z) + ") * " + num(a.z) + " - " +
              num(p.cos_cutoff) + " * " + distanceExpr(x) + ", 0, 1, 1) }";
     }
-    case Pattern::Kind::Grey:
-      return "pigment_pattern {\n" + bodySdl(p.inner, 1) + "\n}" +
+    case Pattern::Kind::Grey:  // its leaves are grey constants: no texture lookup (leafSdl checks)
+      return "pigment_pattern {\n" + bodySdl(p.inner, 1, "") + "\n}" +
              (p.exponent != 1.0 ? " poly_wave " + num(p.exponent) : "");
     case Pattern::Kind::LightEye: {
       // dot(P - x, E - x) / (|P - x| |E - x|), clamped to [-1, 1].
@@ -160,7 +160,7 @@ std::string pad(int n) { return std::string(size_t(n) * 2, ' '); }
 // out = sum_ch C.ch m[ch] + b: an average of n parts, each carrying n
 // times its term, so that the average is the sum.
 // With `filter`, every colour is rgbf with filter 1 (the average keeps it 1).
-std::string leafSdl(const PigmentNode& l, int ind, bool filter = false) {
+std::string leafSdl(const PigmentNode& l, int ind, const std::string& fn, bool filter = false) {
   static const char* channel[3] = {"red", "green", "blue"};
   auto colour = [filter](glm::dvec3 c) {
     return filter ? "rgbf <" + num(c.x) + ", " + num(c.y) + ", " + num(c.z) + ", 1>" : "rgb " + vec(c);
@@ -172,8 +172,10 @@ std::string leafSdl(const PigmentNode& l, int ind, bool filter = false) {
   for (int ch = 0; ch < 3; ++ch) {
     glm::dvec3 col = l.m[ch];
     if (col == glm::dvec3(0.0)) continue;
+    if (fn.empty())  // a texture term where no texture function is in scope (inside a grey pattern)
+      throw std::logic_error("pigment tree: a texture-dependent leaf inside a grey pigment_pattern");
     // C.ch in [0,1] is the pattern value; the colour_map scales it.
-    parts.push_back("uv_mapping function { XvalTexture(x, y, z)." + std::string(channel[ch]) +
+    parts.push_back("uv_mapping function { " + fn + "(x, y, z)." + std::string(channel[ch]) +
                     " } colour_map { [0 " + colour(glm::dvec3(0.0)) + "] [1 " + colour(col * double(n)) + "] }");
   }
   if (l.b != glm::dvec3(0.0)) parts.push_back(colour(l.b * double(n)));
@@ -184,20 +186,20 @@ std::string leafSdl(const PigmentNode& l, int ind, bool filter = false) {
 }
 
 // A pigment body (what goes inside `pigment { }` or a pigment_map entry).
-std::string bodySdl(const Pigment& p, int ind) {
+std::string bodySdl(const Pigment& p, int ind, const std::string& fn) {
   switch (p->kind) {
-    case PigmentNode::Kind::Leaf: return leafSdl(*p, ind);
+    case PigmentNode::Kind::Leaf: return leafSdl(*p, ind, fn);
     case PigmentNode::Kind::Map: {
       std::string s = pad(ind) + patternSdl(p->pattern) + "\n" + pad(ind) + "pigment_map {\n";
       for (const auto& [v, c] : p->entries)
-        s += pad(ind + 1) + "[" + num(v) + "\n" + bodySdl(c, ind + 2) + "]\n";
+        s += pad(ind + 1) + "[" + num(v) + "\n" + bodySdl(c, ind + 2, fn) + "]\n";
       return s + pad(ind) + "}";
     }
     case PigmentNode::Kind::Sum: {
       const double n = double(p->children.size());
       std::string s = pad(ind) + "average pigment_map {\n";
       for (const auto& c : p->children)
-        s += pad(ind + 1) + "[1\n" + bodySdl(scaled(c, n), ind + 2) + "]\n";
+        s += pad(ind + 1) + "[1\n" + bodySdl(scaled(c, n), ind + 2, fn) + "]\n";
       return s + pad(ind) + "}";
     }
   }
@@ -206,12 +208,12 @@ std::string bodySdl(const Pigment& p, int ind) {
 
 }  // namespace
 
-std::string toSdl(const Pigment& p, int ind) {
-  return pad(ind) + "pigment {\n" + bodySdl(p, ind + 1) + "\n" + pad(ind) + "}";
+std::string toSdl(const Pigment& p, int ind, const std::string& fn) {
+  return pad(ind) + "pigment {\n" + bodySdl(p, ind + 1, fn) + "\n" + pad(ind) + "}";
 }
 
-std::string filterLayerSdl(const PigmentNode& leaf, int ind) {
-  return pad(ind) + "pigment {\n" + leafSdl(leaf, ind + 1, true) + "\n" + pad(ind) + "}";
+std::string filterLayerSdl(const PigmentNode& leaf, int ind, const std::string& fn) {
+  return pad(ind) + "pigment {\n" + leafSdl(leaf, ind + 1, fn, true) + "\n" + pad(ind) + "}";
 }
 
 }  // namespace xval::pov

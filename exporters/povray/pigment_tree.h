@@ -97,11 +97,14 @@ Pigment scaled(const Pigment& p, double k);
 Pigment mapLeaves(const Pigment& p, const std::function<Pigment(const PigmentNode&)>& fn);
 
 bool usesTexture(const Pigment& p);
-std::string toSdl(const Pigment& p, int indent = 0);
+// `texture_function`: the declared function of the texture's image_map that
+// the leaves read (one per textured material of a scene).
+std::string toSdl(const Pigment& p, int indent = 0, const std::string& texture_function = "XvalTexture");
 // A leaf m C (b = 0) as a pigment with filter 1 everywhere: a layer of a
 // layered texture whose layers below show through multiplied by m C per
 // channel (POV-Ray multiplies them by filter x colour + transmit; measured
 // exact, highlights included). Used for the texture colour C (m = I).
-std::string filterLayerSdl(const PigmentNode& leaf, int indent = 0);
+std::string filterLayerSdl(const PigmentNode& leaf, int indent = 0,
+                           const std::string& texture_function = "XvalTexture");
 
 }  // namespace xval::pov

@@ -2,9 +2,14 @@
 // renders, in ONE render, into the image the reference renderer makes.
 //
 // Written: scene.pov, scene.ini (every option that matters; render with
-// `povray scene.ini` from the folder), texture.png when the material has a
-// texture, README.txt. No user string reaches the SDL except, made safe, in
-// a comment: the texture is always copied to "texture.png".
+// `povray scene.ini` from the folder), a copy of each material's texture,
+// README.txt. No user string reaches the SDL except, made safe, in a
+// comment: the textures are always copied to "texture.png" (the scene's
+// material) and "texture_object<k>.png" (object k's own).
+// Objects with materials of their own: each material has its own texture
+// function, pigment tree and finish (declared names suffixed _object<k>),
+// and each object is a light_group of its material's light sources with
+// global_lights off (their colours depend on the material).
 //
 // How each part of a model is computed (docs/povray-export.md):
 //  - geometry: mesh2 with the same positions, normals (Phong shading; none

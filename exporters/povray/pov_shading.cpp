@@ -376,4 +376,10 @@ PovShading povShading(const Scene& scene) {
   return p;
 }
 
+PovShading povShading(const Scene& scene, const Material& material) {
+  Scene s = scene;
+  s.material = material;
+  return povShading(s);
+}
+
 }  // namespace xval::pov

@@ -55,5 +55,8 @@ struct PovShading {
 // Throws ExportError for what POV-Ray cannot compute exactly in one render.
 // Not for Gouraud shading (its colours are the reference shader's).
 PovShading povShading(const Scene& scene);
+// The shading of an object of `material` in `scene` (the scene's lights,
+// camera and shading mode; an object's own material, scene.h materialOf).
+PovShading povShading(const Scene& scene, const Material& material);
 
 }  // namespace xval::pov

@@ -9,7 +9,9 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <tuple>
 #include <type_traits>
+#include <utility>
 #include <variant>
 
 #include "camera/camera.h"
@@ -125,12 +127,85 @@ ModelUniforms modelUniforms(const LightingModel& m) {
   return u;
 }
 
+// Uploads `spec` as an RGBA32F texture of one level (appended to `owned`,
+// which deletes it); returns it and the shaders' u_texture mode (1 nearest, 3 trilinear,
+// 2 bilinear).
+std::pair<GLuint, int> uploadTexture(const TextureSpec& spec, std::vector<GLuint>& owned) {
+  const Texture tex = loadTexture(spec);
+  std::vector<float> rgba(size_t(tex.width) * tex.height * 4, 1.0f);
+  for (int y = 0; y < tex.height; ++y)
+    for (int x = 0; x < tex.width; ++x) {
+      const glm::vec3 c = tex.texel(x, y);
+      float* o = &rgba[(size_t(y) * tex.width + x) * 4];
+      o[0] = c.x, o[1] = c.y, o[2] = c.z;
+    }
+  GLint max_tex = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_tex);
+  if (tex.width > max_tex || tex.height > max_tex)
+    throw std::runtime_error("OpenGL: a " + std::to_string(tex.width) + " x " + std::to_string(tex.height) +
+                             " texture exceeds GL_MAX_TEXTURE_SIZE " + std::to_string(max_tex));
+  // Trilinear: every level down to 1 x 1, made by the driver.
+  const bool trilinear = spec.filter == TextureFilter::Trilinear;
+  GLsizei levels = 1;
+  while (trilinear && std::max(tex.width, tex.height) >> levels) ++levels;  // floor(log2(max)) + 1
+  GLuint t = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &t);
+  owned.push_back(t);
+  glTextureStorage2D(t, levels, GL_RGBA32F, tex.width, tex.height);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTextureSubImage2D(t, 0, 0, 0, tex.width, tex.height, GL_RGBA, GL_FLOAT, rgba.data());
+  if (trilinear) {
+    glGenerateTextureMipmap(t);
+    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(t, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(t, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    glTextureParameterf(t, GL_TEXTURE_MAX_ANISOTROPY, 1.0f);
+  } else {
+    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  }
+  checkGl("uploading the texture");
+  return {t, trilinear ? 3 : spec.filter == TextureFilter::Nearest ? 1 : 2};
+}
+
 }  // namespace
+
+// One draw call: a run of vertices of one material, its uniforms and texture.
+struct Draw {
+  GLint first = 0;
+  GLsizei count = 0;
+  ModelUniforms model;
+  glm::vec3 base{1};
+  int texture_mode = 0;  // 0 none, 1 nearest, 2 bilinear, 3 trilinear
+  GLuint texture = 0;
+};
+
+// The draw's material as the shaders' uniforms (the program in use).
+void setMaterialUniforms(GLuint p, const Draw& d) {
+  auto loc = [p](const char* name) { return glGetUniformLocation(p, name); };
+  const ModelUniforms& mu = d.model;
+  glUniform1i(loc("u_model"), mu.model);
+  glUniform1i(loc("u_course"), mu.course);
+  glUniform1i(loc("u_specular"), mu.specular);
+  glUniform1f(loc("u_ka"), mu.ka);
+  glUniform1f(loc("u_kd"), mu.kd);
+  glUniform1f(loc("u_ks"), mu.ks);
+  glUniform1f(loc("u_n"), mu.n);
+  glUniform1f(loc("u_offset"), mu.offset);
+  glUniform1f(loc("u_factor"), mu.factor);
+  glUniform3f(loc("u_c0"), mu.c0.x, mu.c0.y, mu.c0.z);
+  glUniform3f(loc("u_c1"), mu.c1.x, mu.c1.y, mu.c1.z);
+  glUniform3f(loc("u_c2"), mu.c2.x, mu.c2.y, mu.c2.z);
+  glUniform3f(loc("u_base"), d.base.x, d.base.y, d.base.z);
+  glUniform1i(loc("u_texture"), d.texture_mode);
+}
 
 struct GlScene::Impl {
   std::optional<EglContext> context;
-  GLuint program = 0, vao = 0, vbo = 0, ssbo = 0, texture = 0, fbo = 0, colour_rb = 0, depth_rb = 0;
-  GLsizei vertex_count = 0;
+  GLuint program = 0, vao = 0, vbo = 0, ssbo = 0, fbo = 0, colour_rb = 0, depth_rb = 0;
+  std::vector<GLuint> textures;
+  std::vector<Draw> draws;
   int width = 0, height = 0;
   double setup_seconds = 0.0;
 
@@ -139,7 +214,7 @@ struct GlScene::Impl {
     glDeleteFramebuffers(1, &fbo);
     glDeleteRenderbuffers(1, &colour_rb);
     glDeleteRenderbuffers(1, &depth_rb);
-    glDeleteTextures(1, &texture);
+    if (!textures.empty()) glDeleteTextures(GLsizei(textures.size()), textures.data());
     glDeleteBuffers(1, &ssbo);
     glDeleteBuffers(1, &vbo);
     glDeleteVertexArrays(1, &vao);
@@ -164,8 +239,18 @@ GlScene::GlScene(const Scene& scene) : impl_(new Impl) {
   const CameraRays cam(scene.camera);
   std::vector<Vertex> vertices;
   double min_depth = std::numeric_limits<double>::infinity(), max_depth = 0.0;
-  requireOneMaterial(scene, "gl");
-  for (const TriangleMesh& m : sceneMeshes(scene).meshes) {
+  // The meshes in order, one draw per run of meshes of one material slot.
+  const SceneMeshes sm = sceneMeshes(scene);
+  const MaterialSlots slots = materialSlots(scene);
+  std::vector<size_t> draw_slot;
+  for (size_t mi = 0; mi < sm.meshes.size(); ++mi) {
+    const TriangleMesh& m = sm.meshes[mi];
+    const size_t slot = slots.object_slot[sm.object[mi]];
+    if (d.draws.empty() || draw_slot.back() != slot) {
+      d.draws.push_back(Draw{});
+      d.draws.back().first = GLint(vertices.size());
+      draw_slot.push_back(slot);
+    }
     const std::vector<glm::dvec3> faces =
         scene.shading == ShadingMode::Flat ? flatNormals(m) : std::vector<glm::dvec3>(m.triangles.size());
     for (size_t t = 0; t < m.triangles.size(); ++t) {
@@ -185,8 +270,8 @@ GlScene::GlScene(const Scene& scene) : impl_(new Impl) {
         max_depth = std::max(max_depth, z);
       }
     }
+    d.draws.back().count = GLsizei(vertices.size()) - d.draws.back().first;
   }
-  d.vertex_count = GLsizei(vertices.size());
   const double near = !(min_depth > 0.0) ? std::max(max_depth, 1.0) * 1e-6 : 0.5 * min_depth;
 
   const GLuint vs = compile(GL_VERTEX_SHADER, vertexShaderSource(), "vertex");
@@ -232,43 +317,19 @@ GlScene::GlScene(const Scene& scene) : impl_(new Impl) {
   glNamedBufferStorage(d.ssbo, GLsizeiptr(blocks.size() * sizeof(LightBlock)), blocks.data(), 0);
   checkGl("uploading the lights");
 
-  // Texture: RGBA32F, one level, read by texelFetch only; trilinear: every
-  // level down to 1 x 1, made by the driver.
-  int texture_mode = 0;
-  if (scene.material.texture) {
-    const Texture tex = loadTexture(*scene.material.texture);
-    std::vector<float> rgba(size_t(tex.width) * tex.height * 4, 1.0f);
-    for (int y = 0; y < tex.height; ++y)
-      for (int x = 0; x < tex.width; ++x) {
-        const glm::vec3 c = tex.texel(x, y);
-        float* o = &rgba[(size_t(y) * tex.width + x) * 4];
-        o[0] = c.x, o[1] = c.y, o[2] = c.z;
-      }
-    GLint max_tex = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_tex);
-    if (tex.width > max_tex || tex.height > max_tex)
-      throw std::runtime_error("OpenGL: a " + std::to_string(tex.width) + " x " + std::to_string(tex.height) +
-                               " texture exceeds GL_MAX_TEXTURE_SIZE " + std::to_string(max_tex));
-    const bool trilinear = scene.material.texture->filter == TextureFilter::Trilinear;
-    GLsizei levels = 1;
-    while (trilinear && std::max(tex.width, tex.height) >> levels) ++levels;  // floor(log2(max)) + 1
-    glCreateTextures(GL_TEXTURE_2D, 1, &d.texture);
-    glTextureStorage2D(d.texture, levels, GL_RGBA32F, tex.width, tex.height);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTextureSubImage2D(d.texture, 0, 0, 0, tex.width, tex.height, GL_RGBA, GL_FLOAT, rgba.data());
-    if (trilinear) {
-      glGenerateTextureMipmap(d.texture);
-      glTextureParameteri(d.texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-      glTextureParameteri(d.texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-      glTextureParameteri(d.texture, GL_TEXTURE_WRAP_S, GL_REPEAT);
-      glTextureParameteri(d.texture, GL_TEXTURE_WRAP_T, GL_REPEAT);
-      glTextureParameterf(d.texture, GL_TEXTURE_MAX_ANISOTROPY, 1.0f);
-    } else {
-      glTextureParameteri(d.texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-      glTextureParameteri(d.texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    }
-    texture_mode = trilinear ? 3 : scene.material.texture->filter == TextureFilter::Nearest ? 1 : 2;
-    checkGl("uploading the texture");
+  // Per material slot: its uniforms and texture (RGBA32F, one level, read
+  // by texelFetch only), uploaded once and shared by its draws.
+  std::vector<int> slot_texture_mode(slots.materials.size(), 0);
+  std::vector<GLuint> slot_texture(slots.materials.size(), 0);
+  for (size_t k = 0; k < slots.materials.size(); ++k)
+    if (slots.used[k] && slots.materials[k]->texture)
+      std::tie(slot_texture[k], slot_texture_mode[k]) = uploadTexture(*slots.materials[k]->texture, d.textures);
+  for (size_t i = 0; i < d.draws.size(); ++i) {
+    const Material& mat = *slots.materials[draw_slot[i]];
+    d.draws[i].model = modelUniforms(mat.model);
+    d.draws[i].base = glm::vec3(mat.base_color);
+    d.draws[i].texture = slot_texture[draw_slot[i]];
+    d.draws[i].texture_mode = slot_texture_mode[draw_slot[i]];
   }
 
   // Targets.
@@ -296,24 +357,8 @@ GlScene::GlScene(const Scene& scene) : impl_(new Impl) {
   glUniform2f(loc("u_scale"), float(1.0 / (cam.tan_half_fov * cam.aspect)), float(1.0 / cam.tan_half_fov));
   glUniform1f(loc("u_near"), float(near));
   glUniform1i(loc("u_shading"), scene.shading == ShadingMode::Flat ? 0 : scene.shading == ShadingMode::Gouraud ? 1 : 2);
-  const ModelUniforms mu = modelUniforms(scene.material.model);
-  glUniform1i(loc("u_model"), mu.model);
-  glUniform1i(loc("u_course"), mu.course);
-  glUniform1i(loc("u_specular"), mu.specular);
-  glUniform1f(loc("u_ka"), mu.ka);
-  glUniform1f(loc("u_kd"), mu.kd);
-  glUniform1f(loc("u_ks"), mu.ks);
-  glUniform1f(loc("u_n"), mu.n);
-  glUniform1f(loc("u_offset"), mu.offset);
-  glUniform1f(loc("u_factor"), mu.factor);
-  glUniform3f(loc("u_c0"), mu.c0.x, mu.c0.y, mu.c0.z);
-  glUniform3f(loc("u_c1"), mu.c1.x, mu.c1.y, mu.c1.z);
-  glUniform3f(loc("u_c2"), mu.c2.x, mu.c2.y, mu.c2.z);
   glUniform3f(loc("u_ambient"), ambient.x, ambient.y, ambient.z);
   glUniform1f(loc("u_ambient_luma"), models::lightLuma(ambient));
-  const glm::vec3 base(scene.material.base_color);
-  glUniform3f(loc("u_base"), base.x, base.y, base.z);
-  glUniform1i(loc("u_texture"), texture_mode);
   glUniform1i(loc("u_normalize_normal"), scene.normalize_normal);
   glUniform1i(loc("u_light_count"), GLint(lights.size()));
   checkGl("setting the uniforms");
@@ -330,7 +375,6 @@ GlScene::GlScene(const Scene& scene) : impl_(new Impl) {
   glBindFramebuffer(GL_FRAMEBUFFER, d.fbo);
   glBindVertexArray(d.vao);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightsBinding, d.ssbo);
-  if (d.texture) glBindTextureUnit(kTextureUnit, d.texture);
   checkGl("setting the state");
   d.setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -343,7 +387,12 @@ void GlScene::draw() {
   const float clear_depth = 0.0f;  // reversed Z: 0 is infinitely far
   glClearNamedFramebufferfv(d.fbo, GL_COLOR, 0, clear_colour);
   glClearNamedFramebufferfv(d.fbo, GL_DEPTH, 0, &clear_depth);
-  if (d.vertex_count > 0) glDrawArrays(GL_TRIANGLES, 0, d.vertex_count);
+  for (const Draw& dr : d.draws) {
+    if (dr.count == 0) continue;
+    setMaterialUniforms(d.program, dr);
+    if (dr.texture) glBindTextureUnit(kTextureUnit, dr.texture);
+    glDrawArrays(GL_TRIANGLES, dr.first, dr.count);
+  }
   glFinish();
   checkGl("drawing the frame");
 }

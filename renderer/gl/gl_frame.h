@@ -12,10 +12,13 @@
 // (depth = near / z, cleared to 0, test GREATER, infinite far plane), the
 // near plane fitted to the scene: half the smallest view depth of any
 // vertex, or 1e-6 of the largest when a vertex lies at or behind the eye.
-// The texture is uploaded as RGBA32F without mip-maps and read only by
-// texelFetch; with filter trilinear it has the full mip chain
+// Each material's texture is uploaded as RGBA32F without mip-maps and read
+// only by texelFetch; with filter trilinear it has the full mip chain
 // (glGenerateTextureMipmap) and is read by texture() through the sampler,
-// LINEAR_MIPMAP_LINEAR, REPEAT, no anisotropy. No face culling, no blending, no multisampling.
+// LINEAR_MIPMAP_LINEAR, REPEAT, no anisotropy. The meshes are drawn in
+// scene order, one draw per run of meshes of one material, with that
+// material's uniforms and texture. No face culling, no blending, no
+// multisampling.
 //
 // render.spp = n^2: the frame is n W x n H, one fragment on each pixel
 // centre (common/supersample.h), box-filtered as the external renderers'

@@ -35,11 +35,9 @@ Renderer glRenderer() {
   r.subject = "the OpenGL renderer";
   r.summary = "the models as GLSL through OpenGL 4.5 core on EGL (surfaceless; Mesa llvmpipe without a GPU)";
   r.missing = [] { return gl::glUnavailableReason(); };
-  // One material on every object, as the exporters (common/export_common.h),
-  // and a supersampled frame within the image limits (common/supersample.h).
+  // A supersampled frame within the image limits (common/supersample.h).
   r.cannot_express = [](const Scene& scene) -> std::string {
     try {
-      requireOneMaterial(scene, "gl");
       subpixelGrid(scene);  // the n W x n H frame must be an image xval reads back
     } catch (const ExportError& e) {
       return e.what();

@@ -12,6 +12,7 @@
 #include "povray/pov_exporter.h"
 #include "blender/blender_render.h"
 #include "povray/pov_render.h"
+#include "povray/pov_shading.h"
 #include "scene/scene_loader.h"
 #include "texture/brick.h"
 
@@ -148,6 +149,52 @@ TEST(PovExport, ListingOptionsAreRefusedWhereNotExpressible) {
   EXPECT_NE(m.find("blender (Cycles): material.texture.filter \"trilinear\""), std::string::npos) << m;
   EXPECT_EQ(refusal([&] { checkBlenderScene(tri, BlenderEngine::Eevee); }), "");
   EXPECT_EQ(refusal([&] { checkBlenderScene(raw, BlenderEngine::Cycles); }), "");
+}
+
+// Objects with materials of their own: each mesh2 is written with its own
+// material's pigment tree (the one povShading builds for that material,
+// whose evaluation pov_shading_test checks), texture copy and finish, in a
+// light_group of that material's light sources (their colours differ per
+// material: course C Lc, paper Lc, YIQ Y(Lc)).
+TEST(PovExport, EachObjectIsWrittenWithItsOwnMaterial) {
+  fs::path dir = freshDir("object_materials");
+  Scene s = smallScene();
+  s.lights.push_back(DirectionalLight{{0.3, -1, -1}, {0.4, 0.5, 0.6}});
+  s.material.model = ClassicPhong{ClassicPhong::Variant::Paper, 0.3, 0.7, 0.5, 30};
+  s.objects = {UvSphere{}, UvSphere{}, UvSphere{}};
+  s.objects[1].material = Material{ClassicPhong{ClassicPhong::Variant::Course, 0.2, 0.8, 0.6, 12}, {}, {0.5, 0.2, 0.9}};
+  s.objects[2].material = Material{YiqLuma{}, TextureSpec{}, glm::dvec3(1.0)};
+  const std::string sdl = slurp(exportPov(s, dir).pov);
+  EXPECT_TRUE(fs::exists(dir / "texture_object2.png"));
+  EXPECT_FALSE(fs::exists(dir / "texture.png"));  // the scene's material has none
+  // The three objects, in order, each in its light_group.
+  std::vector<std::string> groups;
+  for (size_t at = sdl.find("light_group {"); at != std::string::npos;) {
+    const size_t next = sdl.find("light_group {", at + 1);
+    groups.push_back(sdl.substr(at, next == std::string::npos ? std::string::npos : next - at));
+    at = next;
+  }
+  ASSERT_EQ(groups.size(), 3u);
+  const std::string suffix[3] = {"", "_object1", "_object2"};
+  for (size_t k = 0; k < 3; ++k) {
+    const Material& mat = materialOf(s, k);
+    const pov::PovShading want = pov::povShading(s, mat);
+    EXPECT_NE(sdl.find("#declare XvalEmission" + suffix[k] + " =\n" +
+                       pov::toSdl(want.emission, 1, "XvalTexture" + suffix[k]) + "\n"),
+              std::string::npos)
+        << "object " << k;
+    EXPECT_NE(groups[k].find("texture { XvalMaterial" + suffix[k] + " }"), std::string::npos) << groups[k];
+    EXPECT_NE(groups[k].find("global_lights off"), std::string::npos);
+    ASSERT_FALSE(want.specular.light_sources.empty());
+    for (const auto& ls : want.specular.light_sources)
+      EXPECT_NE(groups[k].find(pov::lightSourceSdl(ls)), std::string::npos) << "object " << k;
+  }
+  // The course material's highlight is C Lc: its light sources are not the
+  // paper material's, so one scene-wide set could not serve both.
+  EXPECT_NE(pov::povShading(s, materialOf(s, 0)).specular.light_sources[0].colour,
+            pov::povShading(s, materialOf(s, 1)).specular.light_sources[0].colour);
+  EXPECT_NE(sdl.find("image_map { png \"texture_object2.png\""), std::string::npos);
+  EXPECT_EQ(sdl.find("texture.png"), std::string::npos);
 }
 
 // Stand-in povray and blender executables on PATH.

@@ -331,6 +331,59 @@ TEST(PovShading, EvaluatesToTheReferenceShaderForEveryModelAndLight) {
             << " samples, largest relative error " << worst << "\n";
 }
 
+// Objects with materials of their own (pov_exporter.cpp writes each object
+// with povShading(scene, its material)): in one scene, several objects of
+// the shading cases' materials, the scene's own material another one. Each
+// object's shading evaluates to the reference shader of ITS material, and
+// the materials differ (so an object shaded with another's would fail).
+TEST(PovShading, EachObjectsMaterialEvaluatesToItsReferenceShader) {
+  test::CaseRng r(777);
+  const std::vector<test::ShadingCase> cases = test::shadingCases();
+  int objects = 0, differ = 0;
+  for (size_t c = 0; c + 2 < cases.size(); c += 3) {
+    Scene s = cases[c].scene;
+    if (s.shading == ShadingMode::Gouraud) continue;
+    s.material = Material{Lambert{dvec3(0.3, 0.6, 0.9)}, {}, dvec3(0.7)};
+    s.objects = {UvSphere{}, UvSphere{}, UvSphere{}};
+    for (size_t k = 0; k < 3; ++k) s.objects[k].material = cases[c + k].scene.material;
+    const Shader<double> fallback(s.material, s.lights);
+    const dvec3 eye = CameraRays(s.camera).origin;
+    for (size_t k = 0; k < 3; ++k) {
+      const Material& mat = materialOf(s, k);
+      PovShading pov;
+      try {
+        pov = povShading(s, mat);
+      } catch (const ExportError&) {
+        continue;  // a documented refusal of this material with these lights
+      }
+      ++objects;
+      const Shader<double> shader(mat, s.lights);
+      bool differs = false;
+      for (int i = 0; i < 50; ++i) {
+        Point q;
+        q.x = r.inBox(1.0);
+        q.eye = eye;
+        const dvec3 v = glm::normalize(eye - q.x);
+        do q.n = r.unit();
+        while (!(glm::dot(q.n, v) > 0.05));
+        if (nearCone(shader.lights(), q.x)) continue;
+        q.c = mat.texture ? r.colour() : mat.base_color;
+        const dvec3 want = shader.shade(q.x, q.n, v, q.c);
+        dvec3 got = evaluate(pov.emission, q) + phong(pov.specular, q);
+        if (pov.texture_filter_layer) got *= evaluateLeaf(*affine(glm::dmat3(1.0), dvec3(0.0)), q);
+        differs |= glm::length(fallback.shade(q.x, q.n, v, q.c) - want) > 1e-6;
+        for (int ch = 0; ch < 3; ++ch)
+          ASSERT_LE(std::abs(got[ch] - want[ch]) / std::max(1.0, std::abs(want[ch])), 1e-9)
+              << cases[c + k].name << " as objects[" << k << "].material: channel " << ch << " " << got[ch]
+              << " vs " << want[ch];
+      }
+      differ += differs;
+    }
+  }
+  EXPECT_GT(objects, 20);
+  EXPECT_GT(differ, objects / 2);
+}
+
 // A grey pattern's inner tree is the pattern, not a leaf: scaling the map
 // scales its entries and leaves the pattern value alone.
 TEST(PovShading, ScalingAMapOverAGreyPatternKeepsItsPatternValue) {
