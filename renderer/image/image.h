@@ -87,7 +87,7 @@ void requireDecodable(const std::filesystem::path& file, int width, int height);
 // Images read back (from the external renderers, by `xval compare` and
 // `xval validate`): at most the largest image xval renders (kMaxImageSide,
 // kMaxImagePixels: scene/scene_loader.h) and this many channels (xval's EXRs
-// have 14, a Blender multilayer EXR a few dozen); checked on the header
+// have 15, a Blender multilayer EXR a few dozen); checked on the header
 // before any pixel is allocated (image/image_header.h).
 inline constexpr int kMaxReadImageChannels = 64;
 
