@@ -91,9 +91,9 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
         const char* names[7] = {"<=0.5", "<=1", "<=2", "<=4", "<=16", "<=256", ">256"};
         for (int i = 0; i < 7; ++i) std::printf(" %s:%lld", names[i], m.histogram[i]);
         std::printf("\nover tolerance: %lld (occlusion edge %lld, backfacing normal %lld, grazing %lld, "
-                    "texel boundary %lld, unexplained %lld)\n",
+                    "texel boundary %lld, triangle edge %lld, unexplained %lld)\n",
                     m.over_tolerance, m.over_occlusion_edge, m.over_backfacing, m.over_grazing,
-                    m.over_texel_boundary, m.over_unexplained);
+                    m.over_texel_boundary, m.over_triangle_edge, m.over_unexplained);
         std::printf("max unexplained %.3f (x/65535) at (%d, %d), cap %.6g\n", m.max_unexplained * 65535,
                     m.worst_unexplained_x, m.worst_unexplained_y, t.max_unexplained * 65535);
         std::printf("worst pixel (%d, %d)\n", m.worst_x, m.worst_y);

@@ -32,9 +32,15 @@
 // locked (files/output_folder.h: a plain run, --plan-only and
 // --compare-only alone, --run-job shared), and a new run removes the old
 // results.json and report.html before it plans.
+//
+// Scenes into a folder that holds an earlier run: those cases are updated
+// and the folder's other cases kept (compared again from their renders,
+// not rendered again), or dropped with the reason on stderr when their
+// scene file is gone or changed (validate/validation/plan_update.h).
 #include <cstdio>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <thread>
 
 #include "cli/cli_common.h"
@@ -50,6 +56,7 @@
 #include "validate/tolerances.h"
 #include "validate/validation/compare_step.h"
 #include "validate/validation/plan.h"
+#include "validate/validation/plan_update.h"
 #include "validate/validation/run_job.h"
 
 namespace xval::cli {
@@ -195,15 +202,23 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
         sectionsJson(sections(*args), args->dir);  // a folder with no results fails before any render
         std::vector<std::string> inputs = args->inputs;
         if (inputs.empty()) inputs.push_back("reference/scenes");
-        const v::Plan plan = v::makePlan(inputs, args->tolerances, args->dir, args->timeout, args->budget.get(),
-                                         v::runRenderers(args->renderers));
+        v::Plan plan = v::makePlan(inputs, args->tolerances, args->dir, args->timeout, args->budget.get(),
+                                   v::runRenderers(args->renderers));
         std::filesystem::create_directories(plan.dir);
         const FolderLock folder_lock(plan.dir, FolderLock::Mode::Exclusive, "xval validate");
+        // The folder's other cases are kept (validate/validation/plan_update.h).
+        if (const std::optional<v::Plan> earlier = v::earlierPlan(plan)) {
+          const v::PlanUpdate update = v::keepEarlierScenes(plan, *earlier);
+          for (const std::string& d : update.dropped) std::fprintf(stderr, "xval validate: earlier case %s\n", d.c_str());
+          if (update.kept)
+            std::fprintf(stderr, "xval validate: keeping %zu earlier cases of %s (compared again, not rendered)\n",
+                         update.kept, plan.dir.c_str());
+        }
         // A new run: the old verdict must not pass for this run's, even if
         // this run is killed before it writes its own.
         v::removeVerdict(plan);
         v::writePlan(plan);
-        const std::vector<size_t> todo = v::jobsToRun(plan, args->resume);
+        const std::vector<size_t> todo = v::withoutKept(plan, v::jobsToRun(plan, args->resume));
         if (args->plan_only) {
           for (size_t k : todo) std::printf("%zu\n", k);
           std::fprintf(stderr, "xval validate: wrote %s: %zu jobs (%zu scenes, renderers %s), %zu to run\n",
@@ -211,7 +226,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
                        renderers::joinNames(plan.renderers).c_str(), todo.size());
           return 0;
         }
-        if (todo.size() < plan.jobs.size())
+        if (args->resume && todo.size() < plan.jobs.size())
           std::fprintf(stderr, "xval validate: --resume: %zu of %zu jobs done before, %zu to run\n",
                        plan.jobs.size() - todo.size(), plan.jobs.size(), todo.size());
         const int workers =

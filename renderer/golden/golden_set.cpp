@@ -7,11 +7,13 @@
 #include <algorithm>
 
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <vector>
 
 #include "files/atomic_write.h"
+#include "image/pixel_classes.h"
 #include "scene/scene_loader.h"
 
 namespace xval::golden {
@@ -65,21 +67,42 @@ fs::path goldenFolder(const fs::path& scene_file, const std::string& renderer) {
       .lexically_normal();
 }
 
+namespace {
+
+// A distance channel as stored in 16-bit floats: infinity ("far") beyond
+// kGoldenEdgeMargin times the class's bound (the class compares with the
+// bound only, and far values would only cost space), and a value above the
+// bound never below bound (1 + 2^-10), so that rounding to 16 bits (11
+// significant bits, monotone) cannot bring it onto the bound: the bounds
+// are powers of two, exact in 16 bits, and a value at or below one stays
+// at or below it. The stored channel classifies every pixel as the
+// render's does.
+float storedDistance(float v, float bound) {
+  if (!(v <= kGoldenEdgeMargin * bound)) return std::numeric_limits<float>::infinity();
+  return v <= bound ? v : std::max(v, bound * (1.0f + 1.0f / 1024.0f));
+}
+
+}  // namespace
+
 void writeGoldenImage(const Image& img, const fs::path& file) {
   namespace OIIO = OIIO_NAMESPACE;
   const size_t n = size_t(img.width) * size_t(img.height);
   const bool diag = img.depth.size() == n && img.backfacing.size() == n && img.incidence.size() == n;
+  const bool texel = diag && img.texel_edge.size() == n;
+  const bool edge = diag && img.triangle_edge.size() == n;
   if (file.has_parent_path()) fs::create_directories(file.parent_path());
   writeFileAtomically(file, [&](const fs::path& tmp) {
     auto out = OIIO::ImageOutput::create(tmp.string());
     if (!out) throw std::runtime_error(file.string() + ": cannot create image writer: " + OIIO::geterror());
-    const int nc = diag ? 7 : 4;
+    const int nc = diag ? 7 + texel + edge : 4;
     OIIO::ImageSpec spec(img.width, img.height, nc, OIIO::TypeDesc::FLOAT);
     spec.channelnames = {"R", "G", "B", "A"};
     spec.channelformats.assign(size_t(nc), OIIO::TypeDesc::FLOAT);
     if (diag) {
       spec.channelnames.insert(spec.channelnames.end(), {"Z", "backfacing", "incidence"});
-      for (int c = 4; c < 7; ++c) spec.channelformats[size_t(c)] = OIIO::TypeDesc::HALF;
+      if (texel) spec.channelnames.push_back("texel_edge");
+      if (edge) spec.channelnames.push_back("triangle_edge");
+      for (int c = 4; c < nc; ++c) spec.channelformats[size_t(c)] = OIIO::TypeDesc::HALF;
       spec.z_channel = 4;
     }
     spec.alpha_channel = 3;
@@ -93,6 +116,8 @@ void writeGoldenImage(const Image& img, const fs::path& file) {
         buf[i * nc + 4] = img.depth[i];
         buf[i * nc + 5] = img.backfacing[i];
         buf[i * nc + 6] = img.incidence[i];
+        if (texel) buf[i * nc + 7] = storedDistance(img.texel_edge[i], kTexelEdgeRoundings);
+        if (edge) buf[i * nc + 7 + texel] = storedDistance(img.triangle_edge[i], kTriangleEdgePixels);
       }
     }
     bool ok = out->open(tmp.string(), spec) && out->write_image(OIIO::TypeDesc::FLOAT, buf.data());

@@ -91,6 +91,7 @@ CompareMetrics compareImages(const Image& a, const Image& b, const Tolerance& t)
         case PixelClass::OcclusionEdge: ++m.over_occlusion_edge; break;
         case PixelClass::Grazing: ++m.over_grazing; break;
         case PixelClass::TexelBoundary: ++m.over_texel_boundary; break;
+        case PixelClass::TriangleEdge: ++m.over_triangle_edge; break;
         case PixelClass::Unexplained: ++m.over_unexplained; break;
       }
       if (const size_t k = size_t(cls); k < size_t(kPixelClassCount)) m.over_max[k] = std::max(m.over_max[k], e);

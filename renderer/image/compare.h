@@ -47,6 +47,7 @@ struct CompareMetrics {
   long long over_backfacing = 0;      // shading normal facing away from the eye (N.V < 0)
   long long over_grazing = 0;         // the ray meets its triangle at |cos| < 0.1
   long long over_texel_boundary = 0;  // a nearest-filtered uv within float rounding of a texel edge
+  long long over_triangle_edge = 0;   // a ray within the rounding of a triangle edge (2^-8 px)
   long long over_unexplained = 0;     // none of these
   double over_max[kPixelClassCount] = {};  // per class: the largest error of those pixels
   // The largest error of a covered pixel no class explains (within the
@@ -63,6 +64,7 @@ struct CompareMetrics {
       case PixelClass::OcclusionEdge: return over_occlusion_edge;
       case PixelClass::Grazing: return over_grazing;
       case PixelClass::TexelBoundary: return over_texel_boundary;
+      case PixelClass::TriangleEdge: return over_triangle_edge;
       case PixelClass::Unexplained: break;
     }
     return over_unexplained;

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "camera/triangle_edge.h"
 #include "texture/texel_edge.h"
 
 namespace xval {
@@ -37,7 +38,11 @@ struct Image {
   // roundings of the uv (texture/texel_edge.h; kFarFromTexelEdge when no
   // sample looks up a nearest-filtered texture). Empty in EXRs written
   // before it existed.
-  std::vector<float> depth, backfacing, incidence, albedo, texel_edge;
+  // triangle_edge: over the pixel's samples that hit, the smallest distance
+  // in pixels of a hit from an edge of its triangle, in the image plane
+  // (camera/triangle_edge.h; kFarFromTriangleEdge when no sample hits).
+  // Empty in EXRs written before it existed.
+  std::vector<float> depth, backfacing, incidence, albedo, texel_edge, triangle_edge;
   // False for an image read from a file without an alpha channel (an RGB
   // PNG from elsewhere): readImage then sets alpha = 1 everywhere, so every
   // pixel counts as covered.
@@ -51,7 +56,8 @@ struct Image {
         backfacing(with_raw ? size_t(w) * h : 0, 0.0f),
         incidence(with_raw ? size_t(w) * h : 0, 0.0f),
         albedo(with_raw ? size_t(w) * h * 3 : 0, 0.0f),
-        texel_edge(with_raw ? size_t(w) * h : 0, kFarFromTexelEdge) {}
+        texel_edge(with_raw ? size_t(w) * h : 0, kFarFromTexelEdge),
+        triangle_edge(with_raw ? size_t(w) * h : 0, kFarFromTriangleEdge) {}
   float* pixel(int x, int y) { return &rgba[(size_t(y) * width + x) * 4]; }
   const float* pixel(int x, int y) const { return &rgba[(size_t(y) * width + x) * 4]; }
 };
@@ -62,8 +68,8 @@ inline constexpr const char* kColourEncoding =
     "display-referred code values: no transfer function applied (docs/scene-format.md)";
 
 // OpenEXR (32-bit float; channels R,G,B,A and, when present, raw.R, raw.G,
-// raw.B, Z, backfacing, incidence, albedo.R/G/B (only when present) and
-// texel_edge (only when present); tagged oiio:ColorSpace
+// raw.B, Z, backfacing, incidence, albedo.R/G/B (only when present),
+// texel_edge and triangle_edge (each only when present); tagged oiio:ColorSpace
 // "sRGB", since the values are display-referred codes) or, by extension
 // .png, a 16-bit RGBA PNG: alpha = coverage, colour unassociated as PNG
 // defines it (premultiplied colour / alpha), round(v * 65535) of the
@@ -81,7 +87,7 @@ void requireDecodable(const std::filesystem::path& file, int width, int height);
 // Images read back (from the external renderers, by `xval compare` and
 // `xval validate`): at most the largest image xval renders (kMaxImageSide,
 // kMaxImagePixels: scene/scene_loader.h) and this many channels (xval's EXRs
-// have 14, a Blender multilayer EXR a few dozen); checked on the header
+// have 15, a Blender multilayer EXR a few dozen); checked on the header
 // before any pixel is allocated (image/image_header.h).
 inline constexpr int kMaxReadImageChannels = 64;
 

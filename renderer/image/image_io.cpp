@@ -51,8 +51,9 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
     const bool diag = !img.depth.empty();
     const bool albedo = diag && !img.albedo.empty();
     const bool texel = diag && img.texel_edge.size() == img.depth.size();
+    const bool edge = diag && img.triangle_edge.size() == img.depth.size();
     OIIO::ImageSpec spec(img.width, img.height,
-                         4 + (raw ? 3 : 0) + (diag ? 3 : 0) + (albedo ? 3 : 0) + (texel ? 1 : 0),
+                         4 + (raw ? 3 : 0) + (diag ? 3 : 0) + (albedo ? 3 : 0) + (texel ? 1 : 0) + (edge ? 1 : 0),
                          OIIO::TypeDesc::FLOAT);
     spec.channelnames = {"R", "G", "B", "A"};
     if (raw) spec.channelnames.insert(spec.channelnames.end(), {"raw.R", "raw.G", "raw.B"});
@@ -60,6 +61,7 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
       spec.channelnames.insert(spec.channelnames.end(), {"Z", "backfacing", "incidence"});
       if (albedo) spec.channelnames.insert(spec.channelnames.end(), {"albedo.R", "albedo.G", "albedo.B"});
       if (texel) spec.channelnames.push_back("texel_edge");
+      if (edge) spec.channelnames.push_back("triangle_edge");
       spec.z_channel = 4 + (raw ? 3 : 0);
     }
     spec.alpha_channel = 3;
@@ -83,6 +85,7 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
         if (albedo)
           for (int c = 0; c < 3; ++c) buf[i * spec.nchannels + spec.z_channel + 3 + c] = img.albedo[i * 3 + c];
         if (texel) buf[i * spec.nchannels + spec.z_channel + 3 + (albedo ? 3 : 0)] = img.texel_edge[i];
+        if (edge) buf[i * spec.nchannels + spec.z_channel + 3 + (albedo ? 3 : 0) + (texel ? 1 : 0)] = img.triangle_edge[i];
       }
     }
     ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::FLOAT, buf.data());
@@ -206,6 +209,8 @@ Image readImage(const std::filesystem::path& file, int expect_width, int expect_
   img.albedo.assign(albedo ? img.depth.size() * 3 : 0, 0.0f);
   const int tc = channel("texel_edge");  // absent from EXRs older than it: left empty
   img.texel_edge.assign(diag && tc >= 0 ? img.depth.size() : 0, kFarFromTexelEdge);
+  const int ec = channel("triangle_edge");  // likewise
+  img.triangle_edge.assign(diag && ec >= 0 ? img.depth.size() : 0, kFarFromTriangleEdge);
   for (size_t i = 0; i < size_t(spec.width) * spec.height; ++i) {
     if (diag) {
       img.depth[i] = buf[i * nc + zc];
@@ -214,6 +219,7 @@ Image readImage(const std::filesystem::path& file, int expect_width, int expect_
       if (albedo)
         for (int c = 0; c < 3; ++c) img.albedo[i * 3 + c] = buf[i * nc + ac[c]];
       if (!img.texel_edge.empty()) img.texel_edge[i] = buf[i * nc + tc];
+      if (!img.triangle_edge.empty()) img.triangle_edge[i] = buf[i * nc + ec];
     }
     for (int c = 0; c < 4; ++c)
       img.rgba[i * 4 + c] = ch[c] >= 0 ? buf[i * nc + ch[c]] : 1.0f;

@@ -20,6 +20,10 @@ const std::array<PixelClassInfo, kPixelClassCount> kPixelClasses = {{
      "the uv lies within the float rounding of a texel edge of a nearest-filtered texture: a renderer may pick "
      "the neighbouring texel",
      "texel-boundary"},
+    {PixelClass::TriangleEdge, "triangle_edge", "triangle edge",
+     "the ray passes within the rounding of a triangle edge (2^-8 px): another renderer may hit the neighbouring "
+     "triangle or pass through a crack between the two",
+     "triangle-edge"},
     {PixelClass::Unexplained, "unexplained", "unexplained",
      "none of the known causes: capped by max_unexplained_16bit", "unexplained"},
 }};
@@ -59,6 +63,11 @@ bool nearTexelEdge(const Image& img, int x, int y) {
          channel(img.texel_edge, img, x, y) <= kTexelEdgeRoundings;
 }
 
+bool nearTriangleEdge(const Image& img, int x, int y) {
+  return img.triangle_edge.size() == size_t(img.width) * img.height &&
+         channel(img.triangle_edge, img, x, y) <= kTriangleEdgePixels;
+}
+
 }  // namespace
 
 PixelClass classifyPixel(const Image& a, const Image& b, int x, int y) {
@@ -66,6 +75,7 @@ PixelClass classifyPixel(const Image& a, const Image& b, int x, int y) {
   if (onOcclusionEdge(a, x, y) || onOcclusionEdge(b, x, y)) return PixelClass::OcclusionEdge;
   if (grazing(a, x, y) || grazing(b, x, y)) return PixelClass::Grazing;
   if (nearTexelEdge(a, x, y) || nearTexelEdge(b, x, y)) return PixelClass::TexelBoundary;
+  if (nearTriangleEdge(a, x, y) || nearTriangleEdge(b, x, y)) return PixelClass::TriangleEdge;
   return PixelClass::Unexplained;
 }
 

@@ -15,6 +15,11 @@
 //   texel_boundary     a nearest-filtered texture lookup lies within
 //                      kTexelEdgeRoundings float roundings of the uv from a
 //                      texel edge (texture/texel_edge.h)
+//   triangle_edge      a sample's hit lies within kTriangleEdgePixels of an
+//                      edge of its triangle, in the image plane
+//                      (camera/triangle_edge.h): another renderer may give
+//                      the sample to the neighbouring triangle or let it
+//                      through a crack between the two
 //   unexplained        none of these
 // Each test reads the diagnostics of either image (the reference's, or a
 // copy of them given to another renderer's image); an image without them
@@ -28,8 +33,8 @@
 
 namespace xval {
 
-enum class PixelClass { BackfacingNormal, OcclusionEdge, Grazing, TexelBoundary, Unexplained };
-inline constexpr int kPixelClassCount = 5;
+enum class PixelClass { BackfacingNormal, OcclusionEdge, Grazing, TexelBoundary, TriangleEdge, Unexplained };
+inline constexpr int kPixelClassCount = 6;
 
 struct PixelClassInfo {
   PixelClass id;
@@ -55,6 +60,10 @@ inline constexpr float kDepthJump = 0.05f;
 // (texture/texel_edge.h). Measured on the reference set
 // (docs/pixel-classes.md, "Texel boundary").
 inline constexpr float kTexelEdgeRoundings = 64.0f;
+// Triangle edge: within 2^-8 pixel of an edge in the image plane, the
+// sub-pixel grid a rasteriser snaps vertices to (the largest of the
+// renderers' roundings of an edge; derived in camera/triangle_edge.h).
+inline constexpr float kTriangleEdgePixels = 1.0f / 256.0f;
 
 // The class of pixel (x, y), both images covering it; a and b the same
 // size.

@@ -14,6 +14,7 @@
 #include <variant>
 
 #include "camera/camera.h"
+#include "camera/triangle_edge.h"
 #include "geometry/front_faces.h"
 #include "geometry/mesh.h"
 #include "process/job_pool.h"
@@ -227,7 +228,7 @@ __attribute__((flatten)) glm::vec<3, T> shadeHit(const Shading<T>& sh, const Hit
 template <class T> struct PixelSums {
   glm::vec<3, T> final_sum{0}, raw_sum{0}, albedo{0};
   int hits = 0, backfacing = 0;
-  double nearest = 0.0, incidence = 1.0, texel_edge = kFarFromTexelEdge;
+  double nearest = 0.0, incidence = 1.0, texel_edge = kFarFromTexelEdge, triangle_edge = kFarFromTriangleEdge;
 };
 
 // A pixel's value from its n x n samples, box-filtered:
@@ -236,13 +237,17 @@ template <class T> struct PixelSums {
 // backfacing = the fraction of hits whose shading normal faces away,
 // incidence = the smallest |cos| between a ray and its triangle's plane,
 // albedo = the first hit's texture colour (0 where nothing is hit),
-// texel_edge = the smallest texelEdge over the hits (texture/texel_edge.h).
+// texel_edge = the smallest texelEdge over the hits (texture/texel_edge.h),
+// triangle_edge = the smallest distance in pixels of a hit from an edge of
+// its triangle (camera/triangle_edge.h): a pixel is near an edge when any
+// of its samples is.
 template <class T> struct Accumulation {
   const Shading<T>& sh;
   Image& img;
   bool diag;  // diagnostics asked for and the image has their channels
   T inv;      // 1 / n^2
   double step;  // 1 / n: the sample grid's spacing in pixels (hitColour)
+  const CameraRays& cam;  // the frame's camera (triangle_edge)
 
   // Adds one sample's hit (dir: its ray direction, read with diagnostics).
   void add(const Hit& h, const glm::dvec3& dir, PixelSums<T>& px) const {
@@ -255,6 +260,8 @@ template <class T> struct Accumulation {
       if (px.hits == 0) px.albedo = hitColour(sh, h, uv, step);
       const glm::vec<2, T> corners[3] = {m.uv[tri[0]], m.uv[tri[1]], m.uv[tri[2]]};
       px.texel_edge = std::min(px.texel_edge, sh.colours[m.object].texelEdge(uv, corners));
+      const glm::dvec3 P[3] = {m.src->positions[tri[0]], m.src->positions[tri[1]], m.src->positions[tri[2]]};
+      px.triangle_edge = std::min(px.triangle_edge, triangleEdgePixels(cam, P, h.b1, h.b2));
     }
     bool back = false;
     const glm::vec<3, T> c = shadeHit(sh, h, step, back);
@@ -277,6 +284,7 @@ template <class T> struct Accumulation {
       img.incidence[at] = s.hits ? float(s.incidence) : 0.0f;
       for (int q = 0; q < 3; ++q) img.albedo[at * 3 + q] = float(s.albedo[q]);
       img.texel_edge[at] = float(s.texel_edge);
+      img.triangle_edge[at] = float(s.triangle_edge);
     }
   }
 
@@ -639,7 +647,7 @@ void PreparedScene::Impl::renderRasterised(const Shading<float>& sh, const Rende
                                            RenderStats& stats, Progress& progress) const {
   const CameraRays cam(scene.camera);
   const int n = samplesPerSide(opt);
-  const Accumulation<float> acc{sh, img, opt.diagnostics && !img.raw.empty(), 1.0f / float(n * n), 1.0 / n};
+  const Accumulation<float> acc{sh, img, opt.diagnostics && !img.raw.empty(), 1.0f / float(n * n), 1.0 / n, cam};
   stats.visibility = "rasterised";
   const Rasteriser raster(meshes, cam, kBand, opt.cull_back_faces ? back_faces_hidden : std::vector<bool>{});
   stats.culled_triangles = raster.culledTriangles();
@@ -665,7 +673,7 @@ void PreparedScene::Impl::renderTraced(const Shading<T>& sh, const RenderOptions
                                        RenderStats& stats, Progress& progress) const {
   const CameraRays cam(scene.camera);
   const int n = samplesPerSide(opt), W = img.width, H = img.height;
-  const Accumulation<T> acc{sh, img, opt.diagnostics && !img.raw.empty(), T(1) / T(n * n), 1.0 / n};
+  const Accumulation<T> acc{sh, img, opt.diagnostics && !img.raw.empty(), T(1) / T(n * n), 1.0 / n, cam};
   stats.visibility = std::is_same_v<T, float> ? "Embree 16-ray packets (float)"
                                               : "Embree 16-ray packets, double-precision watertight test";
   stats.culled_triangles = bvh_culled;

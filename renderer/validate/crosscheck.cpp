@@ -76,13 +76,13 @@ int crosscheck(const CrosscheckRequest& request) {
   std::printf(
       "%s vs %s: %s  max %.2f  p99.9 %.2f  RMSE %.3f (x/65535)  within %.6g: %.4f%% (need "
       "%.6g%%)  masks: %lld off (%lld on silhouettes)  over tolerance: %lld (occlusion edge "
-      "%lld, backfacing normal %lld, grazing %lld, texel boundary %lld, unexplained %lld; max unexplained %.2f, "
+      "%lld, backfacing normal %lld, grazing %lld, texel boundary %lld, triangle edge %lld, unexplained %lld; max unexplained %.2f, "
       "cap %.6g)  time: reference %.2f s, %s %.2f s\n",
       scene.name.c_str(), request.renderer.c_str(), pass ? "PASS" : "FAIL",
       m.max_abs * 65535, m.p999_abs * 65535, m.rmse * 65535, tol.max_abs * 65535,
       100 * m.fraction_within, 100 * tol.fraction, m.mask_disagree,
       m.mask_disagree_silhouette, m.over_tolerance, m.over_occlusion_edge, m.over_backfacing,
-      m.over_grazing, m.over_texel_boundary, m.over_unexplained, m.max_unexplained * 65535,
+      m.over_grazing, m.over_texel_boundary, m.over_triangle_edge, m.over_unexplained, m.max_unexplained * 65535,
       tol.max_unexplained * 65535, ref_s, request.renderer.c_str(), info.seconds);
   if (!reason.empty()) std::printf("  declared tolerance: %s\n", reason.c_str());
   return pass ? 0 : 1;

@@ -121,6 +121,7 @@ J comparePair(const CompareContext& cx, const Scene& scene, const renderers::Ren
     A.image.backfacing = diagnostics->backfacing;
     A.image.incidence = diagnostics->incidence;
     A.image.texel_edge = diagnostics->texel_edge;
+    A.image.triangle_edge = diagnostics->triangle_edge;
   }
   CompareMetrics m = compareImages(A.image, B.image, tol);
   PerceptualMetrics pm = perceptualMetrics(A.image, B.image);

@@ -66,6 +66,7 @@ struct PlannedScene {
   std::string file;             // the scene file as given
   std::filesystem::path path;   // the scene file, absolute
   std::vector<LeftOut> left_out;
+  bool kept = false;            // an earlier run's case this run keeps (plan_update.h): not rendered again
 };
 
 struct Plan {
