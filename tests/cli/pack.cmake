@@ -109,13 +109,12 @@ refused(${WORK}/bad "scenes/quad.json: objects\\[0\\].path: .*myset.moved/models
 string(REPLACE "../models/quad.obj" "${WORK}/myset.moved/models/quad.obj" _absolute "${_quad}")
 file(WRITE ${WORK}/bad/scenes/quad.json "${_absolute}")
 refused(${WORK}/bad "scenes/quad.json: objects\\[0\\].path: \"[^\"]*\" is an absolute path" "an absolute reference")
-file(MAKE_DIRECTORY ${WORK}/bad/models)
-file(COPY_FILE ${SET_FILES}/quad.obj "${WORK}/bad/models/a\\b.obj")
-foreach(_f quad.mtl quad_texture.png)
-  file(COPY_FILE ${SET_FILES}/${_f} ${WORK}/bad/models/${_f})
-endforeach()
-string(REPLACE "../models/quad.obj" "../models/a\\\\b.obj" _backslash "${_quad}")
-file(WRITE ${WORK}/bad/scenes/quad.json "${_backslash}")
-refused(${WORK}/bad "a backslash in the path" "a backslash in a name")
+file(COPY_FILE ${SET_FILES}/quad_texture.png "${WORK}/bad/scenes/a\\b.png")
+file(WRITE ${WORK}/bad/scenes/quad.json "{\"format\": \"xval-scene/1\", \"name\": \"textured\",
+ \"camera\": {\"position\": [0, 0, 4], \"target\": [0, 0, 0], \"width\": 16, \"height\": 16},
+ \"objects\": [{\"shape\": \"sphere\"}],
+ \"material\": {\"model\": {\"type\": \"lambert\"}, \"texture\": {\"source\": \"image\", \"path\": \"a\\\\b.png\", \"filter\": \"nearest\"}},
+ \"lights\": [{\"type\": \"directional\", \"direction\": [-0.3, -0.4, -1]}]}\n")
+refused(${WORK}/bad "scenes/quad.json: material.texture.path: .*a.b.png: cannot be packed: a backslash in the path" "a backslash in a name")
 run_xval(2 _o pack ${WORK}/myset.moved -o ${WORK}/set.zip)
 expect("${_o}" "set.zip: expected a file name ending in .tar.gz" "pack -o set.zip")

@@ -283,19 +283,28 @@ std::vector<std::string> jobRenderers() { return renderers::registry().everyScen
 std::vector<std::string> runRenderers(const std::vector<std::string>& names) {
   const std::vector<std::string> every = jobRenderers();
   if (names.empty()) return every;
-  for (size_t i = 0; i < names.size(); ++i) {
-    if (std::find(every.begin(), every.end(), names[i]) == every.end())
+  // Besides the every-scene renderers, the golden sets when named
+  // (renderers/golden.cpp: `golden`, `golden-NAME`, also spelled golden:NAME).
+  std::vector<std::string> named = names;
+  for (std::string& n : named)
+    if (const std::string id = renderers::goldenAlias(n); !id.empty()) n = id;
+  std::vector<std::string> runnable;
+  for (const std::string& id : renderers::registry().ids())
+    if (std::find(every.begin(), every.end(), id) != every.end() || id == "golden" || id.rfind("golden-", 0) == 0)
+      runnable.push_back(id);
+  for (size_t i = 0; i < named.size(); ++i) {
+    if (std::find(runnable.begin(), runnable.end(), named[i]) == runnable.end())
       throw std::runtime_error("--renderers: \"" + names[i] + "\": not a renderer validate runs (expected " +
-                               renderers::joinNames(every) + "; xval renderers lists them)");
-    if (std::find(names.begin(), names.begin() + i, names[i]) != names.begin() + i)
+                               renderers::joinNames(every) + " or a golden set; xval renderers lists them)");
+    if (std::find(named.begin(), named.begin() + i, named[i]) != named.begin() + i)
       throw std::runtime_error("--renderers: \"" + names[i] + "\" named twice");
   }
   if (names.size() < 2)
     throw std::runtime_error("--renderers: expected at least two renderers (a comparison needs two), got " +
                              renderers::joinNames(names));
   std::vector<std::string> out;
-  for (const std::string& id : every)
-    if (std::find(names.begin(), names.end(), id) != names.end()) out.push_back(id);
+  for (const std::string& id : runnable)
+    if (std::find(named.begin(), named.end(), id) != named.end()) out.push_back(id);
   return out;
 }
 

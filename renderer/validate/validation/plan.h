@@ -97,8 +97,10 @@ struct Plan {
 std::vector<std::string> jobRenderers();
 
 // The run's renderers from `validate --renderers` (empty: jobRenderers()),
-// in registry order. Throws std::runtime_error for a name that is not one
-// of jobRenderers() (listing them), a name given twice, or fewer than two.
+// in registry order: jobRenderers() and, when named, the golden sets
+// (`golden`, `golden-NAME`, also spelled `golden:NAME`). Throws
+// std::runtime_error for any other name (listing them), a name given
+// twice, or fewer than two.
 std::vector<std::string> runRenderers(const std::vector<std::string>& names);
 
 // The jobs of plan.scenes[k], as indices into plan.jobs (adjacent).
