@@ -15,6 +15,8 @@ packages=(
   # the gl renderer: OpenGL 4.5 core through EGL (Mesa llvmpipe without a GPU)
   libopengl-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   liblcms2-dev libssl-dev
+  # xval pack's .tar.gz archives
+  libarchive-dev
   # Assimp's test corpus: the model loader's robustness test (tests/corpus)
   assimp-testmodels
   # external renderers and what Blender's glTF add-on needs

@@ -162,6 +162,10 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
                                          cmd->count("--allow-large") > 0;
     run = [args, local_options_given, sections, renderer_files]() -> int {
       try {
+        if (!args->plan.empty() && !renderer_files->empty())
+          throw std::runtime_error("--plan " + args->plan +
+                                   ": the renderer files come from the plan (recorded with their SHA-256 when it "
+                                   "was made); give no --renderer-file");
         renderers::registerRendererFiles(*renderer_files);
         if (!args->plan.empty()) {
           if (args->run_job < 0 && !args->compare_only)

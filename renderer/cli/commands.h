@@ -20,5 +20,6 @@ void addExtremesCommand(CLI::App& app, std::function<int()>& run);
 void addTradeoffCommand(CLI::App& app, std::function<int()>& run);
 void addRenderersCommand(CLI::App& app, std::function<int()>& run);
 void addGoldenCommand(CLI::App& app, std::function<int()>& run);
+void addPackCommand(CLI::App& app, std::function<int()>& run);
 
 }  // namespace xval::cli

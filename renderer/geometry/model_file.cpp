@@ -92,10 +92,13 @@ class GuardedIO : public Assimp::DefaultIOSystem {
       return nullptr;
     }
     total_ += size;
+    if (std::find(opened_.begin(), opened_.end(), *path) == opened_.end()) opened_.push_back(*path);
     return DefaultIOSystem::Open(path->c_str(), "rb");
   }
 
   const std::vector<std::string>& refusals() const { return refusals_; }
+  // The files opened, canonical, in order, each once.
+  const std::vector<fs::path>& opened() const { return opened_; }
 
   // The file `name` names, when it may be read: inside the folder after
   // following symlinks, a regular file. Else nullopt and why.
@@ -127,6 +130,7 @@ class GuardedIO : public Assimp::DefaultIOSystem {
   ModelLimits limits_;
   long long total_ = 0;
   mutable std::vector<std::string> refusals_;
+  std::vector<fs::path> opened_;
 };
 
 // --- checks before Assimp reads -----------------------------------------
@@ -597,6 +601,9 @@ Model loadModelFile(const fs::path& file_in, const ModelLoadOptions& options) {
   Model model;
   model.file = real;
   model.format = ext.substr(1);
+  model.files = {real};
+  for (const fs::path& f : io->opened())
+    if (f != real) model.files.push_back(f);
   const std::vector<Placed> nodes = placeNodes(scene, file, lim);
 
   // Counts first, before any mesh array is filled.
@@ -712,6 +719,10 @@ Model loadModelFile(const fs::path& file_in, const ModelLoadOptions& options) {
                              (options.uvs == UvRequirement::ModelTextures && p.texture.has_value());
       if (needs_uvs && !p.has_uvs)
         throw ModelFileError(where + ": a texture is applied to it, but the mesh has no uv coordinates");
+      if (p.texture && !p.texture->embedded())
+        if (auto inside = io->allowed(p.texture->name, nullptr))
+          if (std::find(model.files.begin(), model.files.end(), *inside) == model.files.end())
+            model.files.push_back(*inside);
       p.mesh = std::move(tm);
       model.primitives.push_back(std::move(p));
     }

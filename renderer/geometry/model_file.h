@@ -102,6 +102,13 @@ struct Model {
   std::filesystem::path file;
   std::string format;  // "obj", "ply", "stl", "off", "gltf", "glb" (the extension, lower case)
   std::vector<ModelPrimitive> primitives;
+  // Every file the model is made of, canonical, each once, the model file
+  // first: the files Assimp opened (an OBJ's mtl, a glTF's buffers and
+  // images) and the external base-colour textures its materials name that
+  // exist inside the model's folder (Assimp only names those). What a
+  // render of the model depends on (validate's input hash) and what
+  // `xval pack` packs with it.
+  std::vector<std::filesystem::path> files;
   long long triangleCount() const;
   long long vertexCount() const;
 };

@@ -62,6 +62,10 @@ std::string sha256Text(const std::string& text) {
   return sha256Of([&](auto update) { update(text.data(), text.size()); });
 }
 
+std::string sha256Pieces(const std::function<void(const std::function<void(const char*, size_t)>&)>& feed) {
+  return sha256Of([&](auto update) { feed(update); });
+}
+
 fs::path goldenFolder(const fs::path& scene_file, const std::string& renderer) {
   return (fs::absolute(scene_file).lexically_normal().parent_path().parent_path() / "golden" / renderer)
       .lexically_normal();

@@ -29,6 +29,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <string>
 
@@ -44,6 +45,9 @@ inline constexpr const char* kManifestFormat = "xval-golden/1";
 // Throws std::runtime_error naming the file when it cannot be read.
 std::string sha256File(const std::filesystem::path& file);
 std::string sha256Text(const std::string& text);
+// SHA-256 over the pieces `feed` passes to the function it is given (a
+// file copied and hashed in one pass).
+std::string sha256Pieces(const std::function<void(const std::function<void(const char*, size_t)>&)>& feed);
 
 // DIR/golden/<renderer> for the scene file DIR/scenes/x.json (any folder
 // name in place of `scenes`): absolute, lexically normal.

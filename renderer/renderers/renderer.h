@@ -98,6 +98,10 @@ struct Renderer {
   // of the frame alone, as the paper's Table 2). Optional (absent: bench
   // times whole renders). Throws as render does.
   std::function<FrameLoop(const Scene&)> prepare_frames;
+  // A renderer defined by a file (renderers/renderer_file.h): that file,
+  // absolute; empty for a built-in one. validate's plan records it with its
+  // hash, so every job of the plan renders with the same definition.
+  std::filesystem::path definition_file;
 
   const std::string& sentenceSubject() const { return subject.empty() ? display_name : subject; }
   bool external() const { return !version_command.empty(); }

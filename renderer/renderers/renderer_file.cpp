@@ -149,6 +149,7 @@ Renderer loadRendererFile(const fs::path& file) {
   out.summary = "defined by " + d.file.string() + " (input " + d.input + ")";
   out.version_command = version;
   out.version_marker = d.name;
+  out.definition_file = fs::absolute(d.file).lexically_normal();
   const std::string program = programPath(d.command.front(), d.file);
   out.missing = [program, file = d.file] { return programProblem(program, file); };
   if (d.input == "gltf")

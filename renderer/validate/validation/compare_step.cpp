@@ -111,8 +111,10 @@ J comparePair(const CompareContext& cx, const Scene& scene, const renderers::Ren
   // Without the reference in the pair, they come from the reference's render
   // when the run has one, else from B when only B carries them (a golden
   // image, which follows the external renderers in registry order): they
-  // describe the same pixels.
-  const auto ref = renders.find(renderers::registry().reference().id);
+  // describe the same pixels. A run with the reference renderer's golden
+  // images in its place takes theirs (they carry its diagnostics).
+  auto ref = renders.find(renderers::registry().reference().id);
+  if (ref == renders.end()) ref = renders.find("golden");
   const Image* diagnostics = ref != renders.end()                         ? &ref->second.image
                              : A.image.depth.empty() && !B.image.depth.empty() ? &B.image
                                                                            : nullptr;

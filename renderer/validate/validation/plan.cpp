@@ -11,6 +11,9 @@
 
 #include "files/atomic_write.h"
 #include "files/output_folder.h"
+#include "geometry/model_file.h"
+#include "golden/golden_set.h"
+#include "renderers/renderer_file.h"
 #include "renderers/registry.h"
 #include "scene/json_reader.h"
 #include "validate/tolerances.h"
@@ -201,21 +204,76 @@ std::vector<RenderJob> readJobs(const FieldReader& rd, const J& j, const Plan& p
   return out;
 }
 
+// The run's renderers defined by a file, and golden-NAME's NAME when NAME is.
+std::vector<RendererFile> rendererFiles(const std::vector<std::string>& run) {
+  std::vector<RendererFile> out;
+  for (const std::string& id : run)
+    for (const std::string& name : {id, id.rfind("golden-", 0) == 0 ? id.substr(7) : std::string()}) {
+      const renderers::Renderer* r = name.empty() ? nullptr : renderers::registry().find(name);
+      if (!r || r->definition_file.empty()) continue;
+      if (std::none_of(out.begin(), out.end(), [&](const RendererFile& f) { return f.name == r->id; }))
+        out.push_back({r->id, r->definition_file, golden::sha256File(r->definition_file)});
+    }
+  return out;
+}
+
+// The plan's "renderer_files" (absent: none), each checked against its
+// file and added to the registry unless it is there from that file.
+std::vector<RendererFile> readRendererFiles(const FieldReader& rd, const J& j) {
+  std::vector<RendererFile> out;
+  if (!j.contains("renderer_files")) return out;
+  const J& v = j["renderer_files"];
+  if (!v.is_array()) throw std::runtime_error(rd.file + ": renderer_files: expected an array");
+  for (size_t k = 0; k < v.size(); ++k) {
+    const std::string where = "renderer_files[" + std::to_string(k) + "].";
+    RendererFile f{rd.str(v[k], "name", where), rd.str(v[k], "path", where), rd.str(v[k], "sha256", where)};
+    const std::string at = rd.file + ": " + where;
+    if (!f.path.is_absolute()) throw std::runtime_error(at + "path: \"" + f.path.string() + "\": expected an absolute path");
+    if (!std::filesystem::is_regular_file(f.path))
+      throw std::runtime_error(at + "path: " + f.path.string() + ": the renderer file of " + f.name +
+                               " is missing (the plan's jobs render with it; make a new plan)");
+    if (const std::string now = golden::sha256File(f.path); now != f.sha256)
+      throw std::runtime_error(at + "path: " + f.path.string() + ": the renderer file of " + f.name +
+                               " changed since the plan was made (SHA-256 " + now + ", the plan's " + f.sha256 +
+                               "); its jobs would render with another renderer: make a new plan");
+    if (const renderers::Renderer* r = renderers::registry().find(f.name)) {
+      if (r->definition_file != f.path)
+        throw std::runtime_error(at + "name: \"" + f.name + "\": already a renderer " +
+                                 (r->definition_file.empty() ? std::string("built into xval")
+                                                             : "defined by " + r->definition_file.string()));
+    } else {
+      renderers::registerRendererFiles({f.path.string()});
+      const renderers::Renderer* added = renderers::registry().find(f.name);
+      if (!added || added->definition_file != f.path)
+        throw std::runtime_error(at + "name: \"" + f.name + "\": " + f.path.string() + " defines another renderer");
+    }
+    out.push_back(std::move(f));
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string inputHash(const Scene& scene, const fs::path& scene_file, const std::string& renderer) {
   Fnv f;
   f.add(kRecordFormat);
   f.add(renderer);
+  if (const renderers::Renderer* r = renderers::registry().find(renderer); r && !r->definition_file.empty())
+    f.add(readBytes(r->definition_file));
   f.add(readBytes(scene_file));
   if (scene.material.texture && scene.material.texture->source == TextureSpec::Source::Image)
     f.add(readBytes(scene.material.texture->path));
-  // Each object's own image texture and model file (not the files a model
-  // file refers to: an OBJ's mtl and images, a glTF's buffers).
+  // Each object's own image texture and model file with every file the
+  // model file is made of (geometry/model_file.h, Model::files: an OBJ's
+  // mtl and images, a glTF's buffers), each under its name.
   for (const SceneObject& o : scene.objects) {
     if (o.material && o.material->texture && o.material->texture->source == TextureSpec::Source::Image)
       f.add(readBytes(o.material->texture->path));
-    if (const auto* m = std::get_if<MeshFile>(&o.shape)) f.add(readBytes(m->path));
+    if (const auto* m = std::get_if<MeshFile>(&o.shape))
+      for (const fs::path& file : m->model->files) {
+        f.add(file.filename().string());
+        f.add(readBytes(file));
+      }
   }
   return f.hex();
 }
@@ -225,19 +283,28 @@ std::vector<std::string> jobRenderers() { return renderers::registry().everyScen
 std::vector<std::string> runRenderers(const std::vector<std::string>& names) {
   const std::vector<std::string> every = jobRenderers();
   if (names.empty()) return every;
-  for (size_t i = 0; i < names.size(); ++i) {
-    if (std::find(every.begin(), every.end(), names[i]) == every.end())
+  // Besides the every-scene renderers, the golden sets when named
+  // (renderers/golden.cpp: `golden`, `golden-NAME`, also spelled golden:NAME).
+  std::vector<std::string> named = names;
+  for (std::string& n : named)
+    if (const std::string id = renderers::goldenAlias(n); !id.empty()) n = id;
+  std::vector<std::string> runnable;
+  for (const std::string& id : renderers::registry().ids())
+    if (std::find(every.begin(), every.end(), id) != every.end() || id == "golden" || id.rfind("golden-", 0) == 0)
+      runnable.push_back(id);
+  for (size_t i = 0; i < named.size(); ++i) {
+    if (std::find(runnable.begin(), runnable.end(), named[i]) == runnable.end())
       throw std::runtime_error("--renderers: \"" + names[i] + "\": not a renderer validate runs (expected " +
-                               renderers::joinNames(every) + "; xval renderers lists them)");
-    if (std::find(names.begin(), names.begin() + i, names[i]) != names.begin() + i)
+                               renderers::joinNames(every) + " or a golden set; xval renderers lists them)");
+    if (std::find(named.begin(), named.begin() + i, named[i]) != named.begin() + i)
       throw std::runtime_error("--renderers: \"" + names[i] + "\" named twice");
   }
   if (names.size() < 2)
     throw std::runtime_error("--renderers: expected at least two renderers (a comparison needs two), got " +
                              renderers::joinNames(names));
   std::vector<std::string> out;
-  for (const std::string& id : every)
-    if (std::find(names.begin(), names.end(), id) != names.end()) out.push_back(id);
+  for (const std::string& id : runnable)
+    if (std::find(named.begin(), named.end(), id) != named.end()) out.push_back(id);
   return out;
 }
 
@@ -274,6 +341,7 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
   plan.timeout_seconds = timeout_seconds;
   plan.budget = budget;
   plan.renderers = runRenderers(run_renderers);
+  plan.renderer_files = rendererFiles(plan.renderers);
   std::map<std::string, std::string> seen;  // scene name -> file
   for (const auto& f : scene_files) {
     Scene scene = loadScene(f, plan.budget);
@@ -319,6 +387,9 @@ void writePlan(const Plan& plan) {
                  {"max_samples", plan.budget.max_samples},
                  {"max_memory_mb", plan.budget.max_memory_mb}};
   j["renderers"] = plan.renderers;
+  j["renderer_files"] = J::array();
+  for (const RendererFile& f : plan.renderer_files)
+    j["renderer_files"].push_back({{"name", f.name}, {"path", f.path.string()}, {"sha256", f.sha256}});
   j["scenes"] = J::array();
   for (const PlannedScene& s : plan.scenes) {
     J left = J::object();
@@ -375,6 +446,7 @@ Plan readPlan(const fs::path& file) {
       *field = v.get<long long>();
     }
   }
+  plan.renderer_files = readRendererFiles(rd, j);
   plan.renderers = readRunRenderers(rd, j);
   plan.scenes = readScenes(rd, j, plan.renderers);
   plan.jobs = readJobs(rd, j, plan);

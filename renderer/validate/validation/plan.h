@@ -23,8 +23,9 @@
 // by construction (only timings and provenance may differ).
 //
 // A job is done when its record says ok, the record's input hash equals
-// the plan's (the scene file's bytes, its image texture's bytes and the
-// renderer) and its EXR and PNG exist, or when its record says the renderer
+// the plan's (inputHash: the scene file's bytes, its textures' and model
+// files' bytes, the renderer and, for a renderer defined by a file, that
+// file's bytes) and its EXR and PNG exist, or when its record says the renderer
 // declared the scene not expressible (Renderer::cannot_express: a verdict,
 // with no images); resuming redoes only jobs that are not done.
 #pragma once
@@ -69,6 +70,15 @@ struct PlannedScene {
   bool kept = false;            // an earlier run's case this run keeps (plan_update.h): not rendered again
 };
 
+// A renderer of the run defined by a file (renderers/renderer_file.h; for
+// golden-NAME, NAME's): the plan records it so that every job of the plan
+// (a resumed run, a Slurm array task) renders with the same definition.
+struct RendererFile {
+  std::string name;             // the renderer's id
+  std::filesystem::path path;   // the definition file, absolute
+  std::string sha256;           // of its bytes when the plan was made
+};
+
 struct Plan {
   std::filesystem::path dir;              // the output folder (holds jobs.json)
   std::string tolerances;                 // the tolerance file as given
@@ -77,6 +87,7 @@ struct Plan {
   Budget budget;                          // every scene is loaded with it (planning and every job)
   double created_unix = 0.0;              // when the plan was made (wall_seconds counts from it)
   std::vector<std::string> renderers;     // the run's renderers, in registry order (at least two)
+  std::vector<RendererFile> renderer_files;  // those of them defined by a file (see RendererFile)
   std::vector<PlannedScene> scenes;       // in scene order
   std::vector<RenderJob> jobs;            // per scene, in scene order: one per renderer of `renderers`
                                           // the scene is meant for, in that order
@@ -87,8 +98,10 @@ struct Plan {
 std::vector<std::string> jobRenderers();
 
 // The run's renderers from `validate --renderers` (empty: jobRenderers()),
-// in registry order. Throws std::runtime_error for a name that is not one
-// of jobRenderers() (listing them), a name given twice, or fewer than two.
+// in registry order: jobRenderers() and, when named, the golden sets
+// (`golden`, `golden-NAME`, also spelled `golden:NAME`). Throws
+// std::runtime_error for any other name (listing them), a name given
+// twice, or fewer than two.
 std::vector<std::string> runRenderers(const std::vector<std::string>& names);
 
 // The jobs of plan.scenes[k], as indices into plan.jobs (adjacent).
@@ -115,11 +128,16 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
               const Budget& budget = Budget{}, const std::vector<std::string>& renderers = jobRenderers());
 void writePlan(const Plan& plan);  // to planFile(plan.dir), atomically
 // Throws std::runtime_error naming the file, the field and what was expected.
+// The plan's renderer files are added to the process's registry (those not
+// in it yet) before its renderers are read; a definition file that is
+// missing or whose SHA-256 is not the recorded one is an error (the jobs
+// would render with another renderer than the plan's).
 Plan readPlan(const std::filesystem::path& file);
 
-// What a render depends on, as a hash: the renderer, the scene file's bytes
-// and, for an image texture, the image's bytes (the plan's and a record's
-// input_hash).
+// What a render depends on, as a hash: the renderer (for one defined by a
+// file, that file's bytes), the scene file's bytes, its image textures'
+// bytes and every file of its model files (Model::files: an OBJ's mtl and
+// images, a glTF's buffers) (the plan's and a record's input_hash).
 std::string inputHash(const Scene& scene, const std::filesystem::path& scene_file, const std::string& renderer);
 
 }  // namespace xval::validation
