@@ -39,6 +39,23 @@ std::string blenderRefusal(const Scene& scene) {
   return exportRefusal([&](const std::filesystem::path& dir) { exportGltf(scene, dir); });
 }
 
+// Many scenes in one Blender process (blender/blender_render.h
+// renderBlenderBatch); the time-out is the first item's, per scene.
+std::vector<BatchOutcome> blenderBatch(const std::vector<BatchItem>& items, BlenderEngine engine) {
+  std::vector<BlenderBatchScene> scenes;
+  for (const BatchItem& item : items) scenes.push_back({item.scene, item.request.work_dir});
+  const double timeout = items.empty() ? kDefaultToolTimeoutSeconds : items.front().request.timeout_seconds;
+  std::vector<BatchOutcome> out;
+  for (BlenderBatchResult& r : renderBlenderBatch(scenes, timeout, engine)) {
+    BatchOutcome o;
+    o.image = std::move(r.image);
+    o.error = std::move(r.error);
+    setInfo(&o.info, r.info);
+    out.push_back(std::move(o));
+  }
+  return out;
+}
+
 Renderer blenderRenderer() {
   Renderer r;
   r.id = "blender";
@@ -53,6 +70,9 @@ Renderer blenderRenderer() {
     Image image = renderWithBlender(scene, request.work_dir, request.timeout_seconds, &tool);
     setInfo(info, tool);
     return image;
+  };
+  r.render_batch = [](const std::vector<BatchItem>& items) {
+    return blenderBatch(items, BlenderEngine::Cycles);
   };
   return r;
 }

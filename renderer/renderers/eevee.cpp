@@ -22,6 +22,7 @@ namespace xval::renderers {
 
 std::string blenderScriptMissing();              // renderers/blender.cpp
 std::string blenderRefusal(const Scene& scene);  // renderers/blender.cpp
+std::vector<BatchOutcome> blenderBatch(const std::vector<BatchItem>& items, BlenderEngine engine);  // renderers/blender.cpp
 
 Renderer eeveeRenderer() {
   Renderer r;
@@ -38,6 +39,9 @@ Renderer eeveeRenderer() {
                                     BlenderEngine::Eevee);
     setInfo(info, tool);
     return image;
+  };
+  r.render_batch = [](const std::vector<BatchItem>& items) {
+    return blenderBatch(items, BlenderEngine::Eevee);
   };
   return r;
 }
