@@ -16,6 +16,10 @@
 // $XVAL_BLENDER_SCRIPT, else the source tree's exporters/blender/
 // render_gltf.py); version: the "Blender ..." line of `blender --version`.
 // render_seconds: the log's render Time.
+// Batches (render_batch): many scenes in one persistent Blender process
+// (renderBlenderBatch), each from factory settings, each with its own log;
+// the time-out applies per scene. `xval validate` batches by default
+// (--batch).
 #include "blender/blender_render.h"
 #include "gltf/gltf_exporter.h"
 #include "renderers/renderer.h"

@@ -15,6 +15,7 @@
 //   timeout_seconds  default kDefaultToolTimeoutSeconds (600)
 // Needs what the blender renderer needs (blender on PATH, the harness
 // script); same version line. render_seconds: the log's render Time.
+// Batches as the blender renderer's (renderers/blender.cpp).
 #include "blender/blender_render.h"
 #include "renderers/renderer.h"
 

@@ -135,6 +135,8 @@ std::vector<JobRecord> runJobBatch(const Plan& plan, const std::vector<size_t>& 
   std::vector<renderers::BatchItem> items;
   std::vector<size_t> item_of;  // started[k]'s item, or SIZE_MAX for none
   const renderers::Renderer* renderer = nullptr;
+  // The items point at the started jobs' scenes: `started` never reallocates.
+  started.reserve(jobs.size());
   for (size_t index : jobs) {
     const RenderJob& job = plan.jobs.at(index);
     started.push_back(startJob(plan, job));
