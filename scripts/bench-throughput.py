@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Throughput of `xval validate`: how much of a run's wall time is the
 renderers' own work (docs/performance.md, "Validation throughput").
 
@@ -25,6 +25,10 @@ prints:
 and, per set, whether the variants' results.json agree timings aside
 (tests/cluster/compare_runs.py). Each run's figures also go to
 DIR/bench.json. Not a test: nothing is asserted, the figures are printed.
+
+Run it with the system Python (/usr/bin/python3): Blender takes its
+Python's home from the PATH, and a pyenv interpreter puts its own first
+(Blender then finds no numpy and every Blender render fails).
 """
 import argparse
 import json
@@ -117,7 +121,8 @@ def main():
         elif s == "sweep":
             folder = os.path.join(a.out, "sweep-scenes")
             if not os.path.isdir(folder):
-                subprocess.run([a.xval, "generate", SPEC, "-o", folder], check=True)
+                subprocess.run([a.xval, "generate", SPEC, "-o", folder], check=True, stdout=subprocess.DEVNULL,
+                               stderr=subprocess.DEVNULL)
             sets[s] = scene_files(folder, a.sweep_scenes)
         else:
             sys.exit("bench-throughput: --sets: unknown set %r (reference, sweep)" % s)
