@@ -6,6 +6,9 @@
 #include <cstdlib>
 #include <fstream>
 
+#include <nlohmann/json.hpp>
+
+#include "files/atomic_write.h"
 #include "process/run_process.h"
 #include "common/supersample.h"
 #include "gltf/gltf_exporter.h"
@@ -81,14 +84,24 @@ void checkBlenderScene(const Scene& scene, BlenderEngine engine) {
                     "CPU) and a path-traced ray carries no pixel footprint to choose a level from");
 }
 
-Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_dir,
-                        double timeout_seconds, ExternalRenderInfo* info, BlenderMode mode,
-                        BlenderEngine engine) {
-  if (engine == BlenderEngine::Eevee && mode != BlenderMode::Model)
-    throw std::invalid_argument("renderWithBlender: EEVEE renders the model mode only");
+namespace {
+
+// One scene, exported and ready for Blender: what its image is read back
+// against.
+struct PreparedScene {
+  SubpixelGrid grid;
+  std::filesystem::path gltf, out, log;
+};
+
+const char* toolName(BlenderEngine engine) { return engine == BlenderEngine::Eevee ? "eevee" : "blender"; }
+
+// Checks the scene and the paths, exports the glTF into work_dir and names
+// this attempt's image. Throws ExportError / ExternalToolError.
+PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& work_dir, BlenderEngine engine) {
+  PreparedScene p;
   // Checked before anything is written.
   checkBlenderScene(scene, engine);
-  const SubpixelGrid g = subpixelGrid(scene);
+  p.grid = subpixelGrid(scene);
   const std::filesystem::path script = blenderScript();
   if (!std::filesystem::is_regular_file(script))
     throw ExternalToolError("Blender script " + script.string() +
@@ -96,27 +109,26 @@ Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_di
   // Blender reads '\\' in a path as a folder separator: such a path would
   // make it read or write elsewhere.
   const std::filesystem::path abs_work = std::filesystem::absolute(work_dir);
-  for (const auto& p : {abs_work, std::filesystem::absolute(script)})
-    if (p.string().find('\\') != std::string::npos)
-      throw ExternalToolError(p.string() + ": contains '\\', which Blender reads as a folder separator; "
+  for (const auto& path : {abs_work, std::filesystem::absolute(script)})
+    if (path.string().find('\\') != std::string::npos)
+      throw ExternalToolError(path.string() + ": contains '\\', which Blender reads as a folder separator; "
                               "choose a folder without it");
-  GltfExport ex = exportGltf(scene, work_dir);
+  p.gltf = exportGltf(scene, work_dir).gltf;
   // The image's name is this attempt's own: a Blender left from an earlier
   // attempt cannot supply it.
-  const std::string tool = engine == BlenderEngine::Eevee ? "eevee" : "blender";
-  const std::filesystem::path out = abs_work / (tool + "-" + attemptToken() + ".exr");
-  const std::filesystem::path log = work_dir / (tool + ".log");
-  ProcessResult r = runProcess(
-      {"blender", "-b", "--factory-startup", "-noaudio", "-P", std::filesystem::absolute(script).string(),
-       "--", "--gltf", std::filesystem::absolute(ex.gltf).string(), "--out", out.string(),
-       "--mode", mode == BlenderMode::Model ? "model" : "native-lambert",
-       "--engine", engine == BlenderEngine::Eevee ? "eevee" : "cycles"},
-      work_dir, log, timeout_seconds);
-  if (info) *info = {r.seconds, log, renderTimeFromLog(log)};
-  requireToolOutput(tool, ex.gltf, r, out);
+  const std::string tool = toolName(engine);
+  p.out = abs_work / (tool + "-" + attemptToken() + ".exr");
+  p.log = work_dir / (tool + ".log");
+  return p;
+}
+
+// Blender's image of a prepared scene, read back, checked and box-filtered.
+Image readBack(const PreparedScene& p, BlenderMode mode, BlenderEngine engine) {
+  const std::string tool = toolName(engine);
+  const SubpixelGrid& g = p.grid;
   Image fine;
   try {
-    fine = mode == BlenderMode::Model ? readImage(out, g.width, g.height) : readDiffDir(out, g.width, g.height);
+    fine = mode == BlenderMode::Model ? readImage(p.out, g.width, g.height) : readDiffDir(p.out, g.width, g.height);
   } catch (const std::exception& e) {
     throw ExternalToolError(tool + " wrote an unusable image: " + e.what());
   }
@@ -138,6 +150,155 @@ Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_di
     img.raw.clear();
   }
   return img;
+}
+
+std::vector<std::string> blenderCommand() {
+  return {"blender", "-b", "--factory-startup", "-noaudio", "-P",
+          std::filesystem::absolute(blenderScript()).string(), "--"};
+}
+
+}  // namespace
+
+Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_dir,
+                        double timeout_seconds, ExternalRenderInfo* info, BlenderMode mode,
+                        BlenderEngine engine) {
+  if (engine == BlenderEngine::Eevee && mode != BlenderMode::Model)
+    throw std::invalid_argument("renderWithBlender: EEVEE renders the model mode only");
+  const PreparedScene p = prepareScene(scene, work_dir, engine);
+  std::vector<std::string> argv = blenderCommand();
+  for (const std::string& a :
+       {std::string("--gltf"), std::filesystem::absolute(p.gltf).string(), std::string("--out"), p.out.string(),
+        std::string("--mode"), std::string(mode == BlenderMode::Model ? "model" : "native-lambert"),
+        std::string("--engine"), std::string(engine == BlenderEngine::Eevee ? "eevee" : "cycles")})
+    argv.push_back(a);
+  ProcessResult r = runProcess(argv, work_dir, p.log, timeout_seconds);
+  if (info) *info = {r.seconds, p.log, renderTimeFromLog(p.log)};
+  requireToolOutput(toolName(engine), p.gltf, r, p.out);
+  return readBack(p, mode, engine);
+}
+
+namespace {
+
+// What the worker's results file says: per position in its job list,
+// whether it started and, when it finished, its outcome.
+struct WorkerLine {
+  bool started = false, done = false, ok = false;
+  std::string error;
+  double seconds = 0.0;
+};
+
+// Lines that are not the worker's records (a torn last line) are skipped:
+// their job then counts as not done.
+std::vector<WorkerLine> readWorkerResults(const std::filesystem::path& file, size_t jobs) {
+  std::vector<WorkerLine> out(jobs);
+  std::ifstream in(file);
+  std::string line;
+  while (std::getline(in, line)) {
+    const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+    if (!j.is_object()) continue;
+    auto index = [&](const char* key) -> long {
+      const auto it = j.find(key);
+      if (it == j.end() || !it->is_number_unsigned() || it->get<size_t>() >= jobs) return -1;
+      return long(it->get<size_t>());
+    };
+    if (const long i = index("start"); i >= 0) out[size_t(i)].started = true;
+    if (const long i = index("done"); i >= 0) {
+      WorkerLine& w = out[size_t(i)];
+      w.done = true;
+      w.ok = j.value("ok", false);
+      w.error = j.contains("error") && j["error"].is_string() ? j["error"].get<std::string>() : "";
+      w.seconds = j.contains("seconds") && j["seconds"].is_number() ? j["seconds"].get<double>() : 0.0;
+    }
+  }
+  return out;
+}
+
+std::string logTail(const std::filesystem::path& log) {
+  return "\nlast lines of " + log.string() + ":\n" + tailOfFile(log);
+}
+
+}  // namespace
+
+std::vector<BlenderBatchResult> renderBlenderBatch(const std::vector<BlenderBatchScene>& scenes,
+                                                   double timeout_seconds, BlenderEngine engine) {
+  std::vector<BlenderBatchResult> results(scenes.size());
+  if (scenes.empty()) return results;
+  const std::string tool = toolName(engine);
+  std::vector<std::optional<PreparedScene>> prepared(scenes.size());
+  std::vector<size_t> pending;
+  for (size_t i = 0; i < scenes.size(); ++i) {
+    try {
+      prepared[i] = prepareScene(*scenes[i].scene, scenes[i].work_dir, engine);
+      pending.push_back(i);
+    } catch (const std::exception& e) {
+      results[i].error = e.what();
+    }
+  }
+  const std::filesystem::path batch_dir = std::filesystem::absolute(scenes.front().work_dir);
+  while (!pending.empty()) {
+    // This attempt's own file names: nothing of an earlier process is read.
+    const std::string token = attemptToken();
+    const std::filesystem::path list = batch_dir / ("batch-" + token + ".json");
+    const std::filesystem::path lines = batch_dir / ("batch-" + token + ".jsonl");
+    const std::filesystem::path log = batch_dir / (tool + "-worker-" + token + ".log");
+    nlohmann::json jobs = nlohmann::json::array();
+    for (size_t i : pending) {
+      const PreparedScene& p = *prepared[i];
+      jobs.push_back({{"gltf", std::filesystem::absolute(p.gltf).string()},
+                      {"out", p.out.string()},
+                      {"log", std::filesystem::absolute(p.log).string()},
+                      {"engine", engine == BlenderEngine::Eevee ? "eevee" : "cycles"}});
+    }
+    writeFileAtomically(list, nlohmann::json{{"jobs", jobs}}.dump(1) + "\n");
+    std::vector<std::string> argv = blenderCommand();
+    for (const std::string& a : {std::string("--batch"), list.string(), std::string("--results"), lines.string()})
+      argv.push_back(a);
+    const ProcessResult r = runProcess(argv, batch_dir, log, timeout_seconds, lines);
+    const std::vector<WorkerLine> worker = readWorkerResults(lines, pending.size());
+    std::vector<size_t> left;
+    bool progressed = false;
+    for (size_t k = 0; k < pending.size(); ++k) {
+      const size_t i = pending[k];
+      const PreparedScene& p = *prepared[i];
+      BlenderBatchResult& out = results[i];
+      const WorkerLine& w = worker[k];
+      if (w.done) {
+        progressed = true;
+        out.info = {w.seconds, p.log, renderTimeFromLog(p.log)};
+        try {
+          if (!w.ok) throw ExternalToolError(tool + " (" + p.gltf.string() + "): " + w.error + logTail(p.log));
+          if (!std::filesystem::exists(p.out))
+            throw ExternalToolError(tool + " (" + p.gltf.string() + ") finished the scene but wrote no image " +
+                                    p.out.string() + logTail(p.log));
+          out.image = readBack(p, BlenderMode::Model, engine);
+        } catch (const std::exception& e) {
+          out.error = e.what();
+        }
+      } else if (w.started) {
+        // The scene the process died on (the last one it started).
+        progressed = true;
+        out.info = {0.0, p.log, -1.0};
+        out.error = tool + " (" + p.gltf.string() + "): the worker process " +
+                    (r.ok() ? std::string("exited 0 without finishing the scene") : r.describe()) +
+                    " while rendering this scene" + logTail(p.log) + logTail(log);
+      } else {
+        left.push_back(i);
+      }
+    }
+    if (!left.empty() && (!progressed || r.ok())) {
+      // A process that started no scene (or ended, status 0, without
+      // them): another one would do the same.
+      for (size_t i : left) {
+        results[i].info = {0.0, log, -1.0};
+        results[i].error = tool + " (" + prepared[i]->gltf.string() + "): the worker process " +
+                           (r.ok() ? std::string("exited 0 without rendering this scene") : r.describe()) +
+                           logTail(log);
+      }
+      left.clear();
+    }
+    pending = left;
+  }
+  return results;
 }
 
 }  // namespace xval

@@ -1,4 +1,4 @@
-// Rendering a scene with Blender 3.4 (Cycles, or EEVEE: the same node
+// Rendering a scene (or a batch of scenes, renderBlenderBatch) with Blender 3.4 (Cycles, or EEVEE: the same node
 // tree through Blender's real-time rasteriser): export glTF, run
 //   blender -b --factory-startup -P exporters/blender/render_gltf.py -- ...
 // with a time-out, and read its float EXR back as an Image. At render.spp =
@@ -10,6 +10,9 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "image/image.h"
 #include "common/export_common.h"
@@ -40,5 +43,31 @@ Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_di
                         double timeout_seconds, ExternalRenderInfo* info = nullptr,
                         BlenderMode mode = BlenderMode::Model,
                         BlenderEngine engine = BlenderEngine::Cycles);
+
+// The persistent worker: many scenes (model mode) rendered by one Blender
+// process (render_gltf.py --batch), each from factory settings, so each
+// image is the one a process of its own renders. Each scene's export, log
+// (<work_dir>/blender.log or eevee.log) and image are in its own work_dir;
+// the job list, the worker's results lines and its own log go in the first
+// scene's work_dir. Per scene:
+//   - a scene that fails (export refused, the harness's error, an unusable
+//     image) is that scene's error, with the tail of its log;
+//   - if the process dies (crash, signal, time-out: `timeout_seconds` per
+//     scene, counted from the scene's start), the scene it died on is
+//     reported with what happened, and the scenes not yet done are
+//     rendered by a fresh process; a process that dies before starting
+//     any scene fails every scene left.
+// Returns one result per scene, in order.
+struct BlenderBatchScene {
+  const Scene* scene = nullptr;
+  std::filesystem::path work_dir;  // a fresh folder per scene
+};
+struct BlenderBatchResult {
+  std::optional<Image> image;   // set when the scene rendered
+  std::string error;            // else why not
+  ExternalRenderInfo info;      // seconds: the scene's part of the worker's time
+};
+std::vector<BlenderBatchResult> renderBlenderBatch(const std::vector<BlenderBatchScene>& scenes,
+                                                   double timeout_seconds, BlenderEngine engine);
 
 }  // namespace xval

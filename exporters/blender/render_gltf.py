@@ -4,6 +4,19 @@ lighting model evaluated as shader-node math.
     blender -b --factory-startup -P render_gltf.py -- \
         --gltf DIR/scene.gltf --out OUT.exr [--mode model|native-lambert]
         [--engine cycles|eevee]
+    blender -b --factory-startup -P render_gltf.py -- \
+        --batch JOBS.json --results RESULTS.jsonl
+
+batch (the persistent worker, blender/blender_render.h renderBlenderBatch):
+JOBS.json is {"jobs": [{"gltf", "out", "log", "engine"}, ...]} (model mode);
+the scenes are rendered one after the other in this one process, each
+from factory settings (read_factory_settings: every datablock, the
+preferences and the scene settings reset, so a scene renders as it would in
+a fresh process), with Blender's stdout and stderr sent to the job's own
+log. Before a job, {"start": i} is appended to RESULTS.jsonl, after it
+{"done": i, "ok": bool, "error": text, "seconds": wall}, each line flushed
+and synced: a process that dies leaves the index it died on as the last
+"start" without its "done".
 
 mode model (default): every mesh gets an Emission shader (strength 1) whose
 colour is the model of docs/models.md built from Math / Vector Math nodes
@@ -95,11 +108,18 @@ def fail(msg):
 def parse_args():
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
     p = argparse.ArgumentParser(prog="render_gltf.py")
-    p.add_argument("--gltf", required=True)
-    p.add_argument("--out", required=True)
+    p.add_argument("--gltf")
+    p.add_argument("--out")
     p.add_argument("--mode", choices=["model", "native-lambert"], default="model")
     p.add_argument("--engine", choices=["cycles", "eevee"], default="cycles")
+    p.add_argument("--batch")
+    p.add_argument("--results")
     args = p.parse_args(argv)
+    if args.batch is not None:
+        if args.results is None or args.gltf is not None or args.out is not None:
+            fail("--batch needs --results, and takes no --gltf or --out")
+    elif args.gltf is None or args.out is None:
+        fail("--gltf and --out are required (or --batch)")
     if args.engine == "eevee" and args.mode != "model":
         fail("--engine eevee renders only --mode model")
     return args
@@ -574,11 +594,9 @@ def setup_render(scene, width, height, out, multilayer):
     c.light_sampling_threshold = 0.0  # no stochastic culling of weak lights
 
 
-def main():
-    args = parse_args()
-    import numpy  # Blender 3.4's glTF importer uses numpy.bool, removed in numpy 1.24.
-    if not hasattr(numpy, "bool"):
-        numpy.bool = bool
+def render_scene(args):
+    """Renders one scene (args: gltf, out, mode, engine) from factory
+    settings."""
     bpy.ops.wm.read_factory_settings(use_empty=True)
     if "FINISHED" not in bpy.ops.import_scene.gltf(filepath=args.gltf, convert_lighting_mode="RAW"):
         fail("the glTF importer failed on " + args.gltf)
@@ -681,6 +699,74 @@ def main():
     else:
         setup_render(scene, width, height, args.out, False)
     bpy.ops.render.render(write_still=True)
+
+
+def patch_numpy():
+    import numpy  # Blender 3.4's glTF importer uses numpy.bool, removed in numpy 1.24.
+    if not hasattr(numpy, "bool"):
+        numpy.bool = bool
+
+
+def append_line(path, record):
+    with open(path, "a", encoding="utf-8") as f:
+        f.write(json.dumps(record) + "\n")
+        f.flush()
+        os.fsync(f.fileno())
+
+
+def run_batch(args):
+    """The jobs of args.batch one after the other; a job's failure is its
+    own "done" record (its message and traceback in its log), never the
+    next job's."""
+    with open(args.batch, "r", encoding="utf-8") as f:
+        jobs = json.load(f)["jobs"]
+    import ctypes
+    import time
+    import traceback
+    libc = ctypes.CDLL(None)
+
+    def flush_all():
+        # Python's streams and C's stdio buffers (Blender prints the render
+        # time with printf): nothing of one job may reach the next one's log.
+        sys.stdout.flush()
+        sys.stderr.flush()
+        libc.fflush(None)
+
+    for i, job in enumerate(jobs):
+        append_line(args.results, {"start": i})
+        t0 = time.monotonic()
+        flush_all()
+        saved = os.dup(1), os.dup(2)
+        fd = os.open(job["log"], os.O_WRONLY | os.O_CREAT | os.O_TRUNC | os.O_NOFOLLOW, 0o644)
+        os.dup2(fd, 1)
+        os.dup2(fd, 2)
+        os.close(fd)
+        error = ""
+        try:
+            render_scene(argparse.Namespace(gltf=job["gltf"], out=job["out"], mode="model",
+                                            engine=job["engine"]))
+        except SystemExit as e:  # fail(): the message is in the log
+            error = "the harness failed (exit %s)" % e.code
+        except Exception as e:
+            traceback.print_exc()
+            error = "%s: %s" % (type(e).__name__, e)
+            print("xval render_gltf.py: error: " + error, file=sys.stderr)
+        flush_all()
+        os.dup2(saved[0], 1)
+        os.dup2(saved[1], 2)
+        os.close(saved[0])
+        os.close(saved[1])
+        append_line(args.results, {"done": i, "ok": not error, "error": error,
+                                   "seconds": time.monotonic() - t0})
+
+
+def main():
+    args = parse_args()
+    patch_numpy()
+    if args.batch is not None:
+        run_batch(args)
+    else:
+        render_scene(args)
 
 
 if __name__ == "__main__":

@@ -1,4 +1,5 @@
 // xval validate [SCENES or DIRS...] -o results/<run>/ [--jobs N] [--timeout S] [--resume]
+//               [--batch N] [--schedule load|count]
 //               [--renderers LIST] [--tolerances FILE] [--extremes DIR] [--tradeoff DIR]
 // xval validate [SCENES or DIRS...] -o OUT --plan-only [--resume]
 // xval validate --plan OUT/jobs.json --run-job K
@@ -16,6 +17,14 @@
 // three in this process (the render jobs in a thread pool); --plan-only,
 // --run-job and --compare-only do one step each, which is how a cluster
 // runs it (scripts/slurm/submit.sh, docs/cluster.md).
+//
+// Scheduling (validate/validation/run_job.h): Blender's jobs (blender,
+// eevee) go to persistent workers, one Blender process per --batch scenes
+// (default: split evenly over the --jobs workers, at most 32 each; 1: one
+// process per scene); with --schedule load (default) a job takes its
+// renderer's measured share of a core, so that POV-Ray, which mostly
+// waits, runs several jobs per core, while CPU-bound jobs never exceed
+// --jobs; --schedule count runs --jobs jobs at once whatever they use.
 //
 // --renderers LIST renders and compares only those renderers; a scene's
 // `renderers` field leaves out the others for that scene (each said on
@@ -82,6 +91,8 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
     std::vector<std::string> inputs, renderers;
     std::string dir, tolerances, plan, extremes, tradeoff, junit;
     int jobs = 0;
+    size_t batch = 0;
+    std::string schedule = "load";
     long run_job = -1;
     bool resume = false, plan_only = false, compare_only = false;
     double timeout = kDefaultToolTimeoutSeconds;
@@ -118,6 +129,14 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
       ->delimiter(',');
   cmd->add_option("--jobs", args->jobs, "Renders in parallel (default: the core count)")
       ->check(CLI::Range(1, 256));
+  cmd->add_option("--batch", args->batch,
+                  "Scenes per Blender process (blender, eevee: one persistent worker renders a batch; "
+                  "0, the default: the scenes split evenly over the --jobs workers, at most 32 each; "
+                  "1: one process per scene)");
+  cmd->add_option("--schedule", args->schedule,
+                  "load (default): a job takes the share of a core its renderer keeps busy, so POV-Ray, "
+                  "which mostly waits, runs several jobs per core; count: --jobs jobs at once")
+      ->check(CLI::IsMember({"load", "count"}));
   cmd->add_option("--timeout", args->timeout, "Seconds before an external renderer is killed")
       ->check(Seconds);
   addBudgetOptions(cmd, args->budget);
@@ -157,7 +176,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
   plan->excludes(plan_only)->excludes(resume);
   auto renderer_files = addRendererFileOption(cmd);
   cmd->callback([args, &run, cmd, sections, renderer_files]() {
-    const bool local_options_given = cmd->count("--jobs") + cmd->count("--renderers") + cmd->count("--timeout") + cmd->count("--max-triangles") +
+    const bool local_options_given = cmd->count("--jobs") + cmd->count("--batch") + cmd->count("--schedule") + cmd->count("--renderers") + cmd->count("--timeout") + cmd->count("--max-triangles") +
                                          cmd->count("--max-samples") + cmd->count("--max-memory-mb") +
                                          cmd->count("--allow-large") > 0;
     run = [args, local_options_given, sections, renderer_files]() -> int {
@@ -233,9 +252,11 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
         if (args->resume && todo.size() < plan.jobs.size())
           std::fprintf(stderr, "xval validate: --resume: %zu of %zu jobs done before, %zu to run\n",
                        plan.jobs.size() - todo.size(), plan.jobs.size(), todo.size());
-        const int workers =
-            args->jobs > 0 ? args->jobs : defaultWorkers();
-        v::runJobs(plan, todo, workers);
+        v::RunSettings settings;
+        settings.workers = args->jobs > 0 ? args->jobs : defaultWorkers();
+        settings.batch = args->batch;
+        settings.by_load = args->schedule == "load";
+        v::runJobs(plan, todo, settings);
         return withJunit(plan, v::compareAndReport(plan, sections(*args)), args->junit);
       } catch (const std::exception& e) {
         std::fprintf(stderr, "xval validate: error: %s\n", e.what());

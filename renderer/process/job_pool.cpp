@@ -3,7 +3,12 @@
 
 #include <algorithm>
 #include <atomic>
+#include <condition_variable>
+#include <limits>
+#include <cmath>
 #include <exception>
+#include <stdexcept>
+#include <string>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -29,6 +34,50 @@ void runJobPool(size_t count, int workers, const std::function<void(size_t)>& jo
   const size_t threads = std::clamp<size_t>(size_t(std::max(1, workers)), 1, std::max<size_t>(1, count));
   std::vector<std::thread> pool;
   for (size_t w = 0; w < threads; ++w) pool.emplace_back(worker);
+  for (auto& t : pool) t.join();
+  if (first_error) std::rethrow_exception(first_error);
+}
+
+void runWeightedJobPool(size_t count, double capacity, const std::function<double(size_t)>& weight,
+                        const std::function<void(size_t)>& job) {
+  if (count == 0) return;
+  std::vector<double> w(count);
+  double lightest = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < count; ++i) {
+    w[i] = std::min(weight(i), capacity);
+    if (!(w[i] > 0.0)) throw std::invalid_argument("runWeightedJobPool: job " + std::to_string(i) +
+                                                   " has weight " + std::to_string(w[i]) + ", not > 0");
+    lightest = std::min(lightest, w[i]);
+  }
+  // Enough threads for the most jobs that can run at once.
+  const size_t most = size_t(std::max(1.0, std::floor(capacity / lightest + 1e-9)));
+  std::mutex lock;
+  std::condition_variable freed;
+  double used = 0.0;
+  size_t running = 0, next = 0;
+  std::exception_ptr first_error;
+  auto worker = [&]() {
+    std::unique_lock<std::mutex> g(lock);
+    while (next < count) {
+      const size_t i = next++;
+      freed.wait(g, [&] { return running == 0 || used + w[i] <= capacity + 1e-9; });
+      used += w[i];
+      ++running;
+      g.unlock();
+      try {
+        job(i);
+      } catch (...) {
+        std::lock_guard<std::mutex> e(lock);
+        if (!first_error) first_error = std::current_exception();
+      }
+      g.lock();
+      used -= w[i];
+      --running;
+      freed.notify_all();
+    }
+  };
+  std::vector<std::thread> pool;
+  for (size_t t = 0; t < std::min(most, count); ++t) pool.emplace_back(worker);
   for (auto& t : pool) t.join();
   if (first_error) std::rethrow_exception(first_error);
 }

@@ -23,4 +23,13 @@ int defaultWorkers();
 
 void runJobPool(size_t count, int workers, const std::function<void(size_t index)>& job);
 
+// runWeightedJobPool(count, capacity, weight, job): job(i) once for every
+// i, taken in index order, as many at once as their weights fit in
+// `capacity` (a job of weight w runs when the running jobs' weights plus w
+// are at most capacity, or when nothing runs: a job heavier than the
+// capacity runs alone). weight(i) > 0; e.g. capacity = cores and weight =
+// the share of a core a job keeps busy. Exceptions as runJobPool.
+void runWeightedJobPool(size_t count, double capacity, const std::function<double(size_t index)>& weight,
+                        const std::function<void(size_t index)>& job);
+
 }  // namespace xval

@@ -138,7 +138,8 @@ std::filesystem::path findOnPath(const std::string& name) {
 }
 
 ProcessResult runProcess(const std::vector<std::string>& argv, const std::filesystem::path& cwd,
-                         const std::filesystem::path& log, double timeout_seconds) {
+                         const std::filesystem::path& log, double timeout_seconds,
+                         const std::filesystem::path& progress) {
   ProcessResult r;
   r.log = log;
   r.timeout_seconds = timeout_seconds;
@@ -190,11 +191,18 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const std::filesy
   }
   r.started = true;
   int status = 0;
+  double since = 0.0;        // when the time-out's count started (seconds after t0)
+  off_t progress_size = -1;  // the progress file's size then
   for (;;) {
     pid_t w = waitpid(pid, &status, WNOHANG);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (w == pid) break;
-    if (r.seconds > timeout_seconds) {
+    struct stat st;
+    if (!progress.empty() && stat(progress.c_str(), &st) == 0 && st.st_size != progress_size) {
+      progress_size = st.st_size;
+      since = r.seconds;
+    }
+    if (r.seconds - since > timeout_seconds) {
       r.timed_out = true;
       kill(-pid, SIGKILL);
       waitpid(pid, &status, 0);

@@ -30,8 +30,12 @@ struct ProcessResult {
   std::string describe() const;
 };
 
+// `progress` (optional): a file the tool appends to as it goes (a worker
+// that renders many jobs writes a line per job); the time-out then counts
+// from the last change of its size, i.e. it applies to each job.
 ProcessResult runProcess(const std::vector<std::string>& argv, const std::filesystem::path& cwd,
-                         const std::filesystem::path& log, double timeout_seconds);
+                         const std::filesystem::path& log, double timeout_seconds,
+                         const std::filesystem::path& progress = {});
 
 // SIGINT, SIGTERM and SIGHUP (unless SIGHUP was ignored, as under nohup)
 // are taken by a thread of their own: on the first one, every process

@@ -16,6 +16,10 @@
 // $XVAL_BLENDER_SCRIPT, else the source tree's exporters/blender/
 // render_gltf.py); version: the "Blender ..." line of `blender --version`.
 // render_seconds: the log's render Time.
+// Batches (render_batch): many scenes in one persistent Blender process
+// (renderBlenderBatch), each from factory settings, each with its own log;
+// the time-out applies per scene. `xval validate` batches by default
+// (--batch).
 #include "blender/blender_render.h"
 #include "gltf/gltf_exporter.h"
 #include "renderers/renderer.h"
@@ -41,6 +45,23 @@ std::string blenderEngineRefusal(const Scene& scene, BlenderEngine engine) {
 }
 std::string blenderRefusal(const Scene& scene) { return blenderEngineRefusal(scene, BlenderEngine::Cycles); }
 
+// Many scenes in one Blender process (blender/blender_render.h
+// renderBlenderBatch); the time-out is the first item's, per scene.
+std::vector<BatchOutcome> blenderBatch(const std::vector<BatchItem>& items, BlenderEngine engine) {
+  std::vector<BlenderBatchScene> scenes;
+  for (const BatchItem& item : items) scenes.push_back({item.scene, item.request.work_dir});
+  const double timeout = items.empty() ? kDefaultToolTimeoutSeconds : items.front().request.timeout_seconds;
+  std::vector<BatchOutcome> out;
+  for (BlenderBatchResult& r : renderBlenderBatch(scenes, timeout, engine)) {
+    BatchOutcome o;
+    o.image = std::move(r.image);
+    o.error = std::move(r.error);
+    setInfo(&o.info, r.info);
+    out.push_back(std::move(o));
+  }
+  return out;
+}
+
 Renderer blenderRenderer() {
   Renderer r;
   r.id = "blender";
@@ -55,6 +76,9 @@ Renderer blenderRenderer() {
     Image image = renderWithBlender(scene, request.work_dir, request.timeout_seconds, &tool);
     setInfo(info, tool);
     return image;
+  };
+  r.render_batch = [](const std::vector<BatchItem>& items) {
+    return blenderBatch(items, BlenderEngine::Cycles);
   };
   return r;
 }

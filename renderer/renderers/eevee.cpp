@@ -16,6 +16,7 @@
 //   timeout_seconds  default kDefaultToolTimeoutSeconds (600)
 // Needs what the blender renderer needs (blender on PATH, the harness
 // script); same version line. render_seconds: the log's render Time.
+// Batches as the blender renderer's (renderers/blender.cpp).
 #include "blender/blender_render.h"
 #include "renderers/renderer.h"
 
@@ -23,6 +24,7 @@ namespace xval::renderers {
 
 std::string blenderScriptMissing();              // renderers/blender.cpp
 std::string blenderEngineRefusal(const Scene& scene, BlenderEngine engine);  // renderers/blender.cpp
+std::vector<BatchOutcome> blenderBatch(const std::vector<BatchItem>& items, BlenderEngine engine);  // renderers/blender.cpp
 
 Renderer eeveeRenderer() {
   Renderer r;
@@ -39,6 +41,9 @@ Renderer eeveeRenderer() {
                                     BlenderEngine::Eevee);
     setInfo(info, tool);
     return image;
+  };
+  r.render_batch = [](const std::vector<BatchItem>& items) {
+    return blenderBatch(items, BlenderEngine::Eevee);
   };
   return r;
 }

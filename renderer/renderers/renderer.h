@@ -58,6 +58,17 @@ struct FrameLoop {
   double setup_seconds = 0.0;  // the preparation, once (context, shaders, uploads)
 };
 
+// One scene of a batch (Renderer::render_batch), and what became of it.
+struct BatchItem {
+  const Scene* scene = nullptr;
+  RenderRequest request;
+};
+struct BatchOutcome {
+  std::optional<Image> image;  // set when it rendered
+  std::string error;           // else why not (as render's exception would say)
+  RenderInfo info;
+};
+
 struct Renderer {
   // How commands, file names and scene files name it: lower-case letters,
   // digits and '-' (it names files such as OUT/<scene>/<id>.exr).
@@ -94,6 +105,15 @@ struct Renderer {
   // writes garbage, std::runtime_error otherwise; never returns a partial
   // image. `info` may be null.
   std::function<Image(const Scene&, const RenderRequest&, RenderInfo* info)> render;
+  // Renders several scenes at once (for an outside tool: one process for
+  // many scenes), each image the one `render` gives: one outcome per item,
+  // in order; an item's failure is its own outcome's error, never another
+  // item's. Optional (absent: scenes are rendered one at a time).
+  std::function<std::vector<BatchOutcome>(const std::vector<BatchItem>&)> render_batch;
+  // The share of a core one job keeps busy on average, measured (an outside
+  // tool that mostly waits: below 1): the job pool runs up to 1 / cpu_share
+  // such jobs per core beside each other (process/job_pool.h).
+  double cpu_share = 1.0;
   // A real-time renderer's frame loop for `xval bench` (frames per second
   // of the frame alone, as the paper's Table 2). Optional (absent: bench
   // times whole renders). Throws as render does.

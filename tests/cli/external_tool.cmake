@@ -86,7 +86,9 @@ if(CMD STREQUAL "render")
   set(_cmd ${XVAL} render ${SCENE} -o ${WORK}/out.exr --renderer ${TOOL} --timeout 2 -q)
   set(_exit 2)
 else()
-  set(_cmd ${XVAL} validate ${SCENE} -o ${WORK}/out --jobs 3 --timeout 2
+  # --batch 1: the stand-in speaks the one-scene protocol (--gltf, --out);
+  # the persistent worker's faults are tests/cross/blender_worker_dies.cmake's.
+  set(_cmd ${XVAL} validate ${SCENE} -o ${WORK}/out --jobs 3 --timeout 2 --batch 1
            --tolerances ${CMAKE_CURRENT_LIST_DIR}/../../reference/tolerances.json)
   set(_exit 2)
 endif()

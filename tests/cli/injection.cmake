@@ -48,7 +48,7 @@ endif()
 set(_out "${WORK}/out $(touch PWNED_OUT) `touch PWNED_OUT2`")
 execute_process(
   COMMAND ${CMAKE_COMMAND} -E env PATH=${WORK}/bin
-          ${XVAL} validate ${WORK}/scene/${_scene_name} -o ${_out} --jobs 3 --timeout 20
+          ${XVAL} validate ${WORK}/scene/${_scene_name} -o ${_out} --jobs 3 --timeout 20 --batch 1
           --tolerances ${CMAKE_CURRENT_LIST_DIR}/../../reference/tolerances.json
   WORKING_DIRECTORY ${WORK}/cwd
   RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_VARIABLE out)

@@ -55,7 +55,7 @@ function(validate expect_rc path out)
     set(_subset "")
   endif()
   execute_process(COMMAND ${CMAKE_COMMAND} -E env "PATH=${path}:/usr/bin:/bin"
-                          ${XVAL} validate ${ARGN} ${_subset} -o ${WORK}/${out} --jobs 2 --timeout 60
+                          ${XVAL} validate ${ARGN} ${_subset} -o ${WORK}/${out} --jobs 2 --timeout 60 --batch 1
                   RESULT_VARIABLE rc ERROR_VARIABLE err TIMEOUT 300)
   message("xval validate ${ARGN}: exit ${rc}\n${err}")
   if(NOT rc EQUAL expect_rc)

@@ -1,6 +1,7 @@
 // process/job_pool.h: every job runs once, on at most `workers` threads,
 // and an exception comes out after every job ran.
 #include <gtest/gtest.h>
+#include <algorithm>
 
 #include <atomic>
 #include <chrono>
@@ -60,4 +61,42 @@ TEST(JobPool, FirstExceptionIsRethrownAfterEveryJobRan) {
     EXPECT_STREQ(e.what(), "job 7 failed");
   }
   EXPECT_EQ(ran.load(), 50);
+}
+
+// The weighted pool: jobs of weight 1/4 run four at once in a capacity of
+// one, a job of weight 1 never runs beside another, and every job runs once.
+TEST(JobPool, WeightedJobsFillTheCapacityAndNeverExceedIt) {
+  const size_t n = 24;
+  std::vector<std::atomic<int>> runs(n);
+  std::mutex m;
+  double used = 0.0, most_used = 0.0;
+  int running_heavy_with_others = 0, most_light = 0, light = 0;
+  auto weight = [](size_t i) { return i % 6 == 5 ? 1.0 : 0.25; };
+  runWeightedJobPool(n, 1.0, weight, [&](size_t i) {
+    {
+      std::lock_guard<std::mutex> g(m);
+      used += weight(i);
+      most_used = std::max(most_used, used);
+      if (weight(i) < 1.0) most_light = std::max(most_light, ++light);
+      if (weight(i) == 1.0 && used > 1.0) ++running_heavy_with_others;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    {
+      std::lock_guard<std::mutex> g(m);
+      used -= weight(i);
+      if (weight(i) < 1.0) --light;
+    }
+    ++runs[i];
+  });
+  for (size_t i = 0; i < n; ++i) EXPECT_EQ(runs[i].load(), 1) << "job " << i;
+  EXPECT_LE(most_used, 1.0 + 1e-9);
+  EXPECT_EQ(most_light, 4);  // the light jobs did run side by side
+  EXPECT_EQ(running_heavy_with_others, 0);
+}
+
+TEST(JobPool, WeightedJobHeavierThanTheCapacityRunsAlone) {
+  std::atomic<int> c{0};
+  runWeightedJobPool(3, 1.0, [](size_t) { return 5.0; }, [&](size_t) { ++c; });
+  EXPECT_EQ(c.load(), 3);
+  EXPECT_THROW(runWeightedJobPool(2, 1.0, [](size_t) { return 0.0; }, [](size_t) {}), std::invalid_argument);
 }

@@ -1,9 +1,12 @@
 // The render jobs of `xval validate` (run_job.h).
 #include "validate/validation/run_job.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdint>
 #include <mutex>
+#include <optional>
 
 #include "files/output_folder.h"
 #include "image/image.h"
@@ -21,9 +24,11 @@ using Clock = std::chrono::steady_clock;
 
 constexpr int kPreviewSide = 360;  // report images: 8-bit, at most 360 px
 
-// Renders the job's scene and writes its EXR and preview PNG; returns the
-// render's own seconds (-1: not reported). Throws on any failure.
-double renderImages(const Plan& plan, const RenderJob& job, const Scene& scene, const renderers::Renderer& renderer) {
+// The render request of a job; an outside tool's work folder is made
+// fresh: nothing planted or left there by an earlier attempt is read or
+// written through.
+renderers::RenderRequest requestFor(const Plan& plan, const RenderJob& job, const Scene& scene,
+                                    const renderers::Renderer& renderer) {
   renderers::RenderRequest request;
   request.timeout_seconds = plan.timeout_seconds;
   if (renderer.reference) {
@@ -33,33 +38,41 @@ double renderImages(const Plan& plan, const RenderJob& job, const Scene& scene, 
     request.options = o;
   }
   if (renderer.external()) {
-    // A fresh work folder per attempt: nothing planted or left there by
-    // an earlier attempt is read or written through.
     request.work_dir = plan.dir / job.scene / (job.renderer + ".work");
     makeFreshFolder(request.work_dir);
   }
-  renderers::RenderInfo info;
-  Image image = renderer.render(scene, request, &info);
-  writeImage(image, plan.dir / job.exr());
-  writePreviewPng(image, plan.dir / job.png(), kPreviewSide);
-  return info.render_seconds;
+  return request;
 }
 
-}  // namespace
+void writeImages(const Plan& plan, const RenderJob& job, const Image& image) {
+  writeImage(image, plan.dir / job.exr());
+  writePreviewPng(image, plan.dir / job.png(), kPreviewSide);
+}
 
-JobRecord runJob(const Plan& plan, const RenderJob& job) {
+// A job between its start and its record.
+struct StartedJob {
+  JobRecord rec;
+  Clock::time_point t0;
+  std::optional<Scene> scene;  // set while it is still to be rendered
+  bool no_record = false;      // its case folder was refused: nothing is written
+};
+
+// Everything before the render: the case folder, the old record removed,
+// the scene loaded and checked against the plan, the renderer's refusal.
+StartedJob startJob(const Plan& plan, const RenderJob& job) {
+  StartedJob s;
+  s.rec.input_hash = job.input_hash;
+  s.t0 = Clock::now();
   const fs::path cdir = plan.dir / job.scene;
   const fs::path record = plan.dir / job.record();
-  JobRecord rec;
-  rec.input_hash = job.input_hash;
-  const auto t0 = Clock::now();
   // The case folder must be a real folder (never a link to elsewhere):
   // otherwise nothing, not even the record, is written into it.
   try {
     makeRealFolder(plan.dir, cdir);
   } catch (const std::exception& e) {
-    rec.error = e.what();
-    return rec;
+    s.rec.error = e.what();
+    s.no_record = true;
+    return s;
   }
   try {
     // The record is written last: remove the old one first, so that an
@@ -75,12 +88,19 @@ JobRecord runJob(const Plan& plan, const RenderJob& job) {
     const renderers::Renderer& renderer = renderers::registry().at(job.renderer);
     // A renderer that declares it cannot express the scene renders nothing:
     // its record says why (a verdict; compare_step.h leaves its pairs out).
-    if (renderer.cannot_express) rec.not_expressible = renderer.cannot_express(scene);
-    if (rec.not_expressible.empty()) rec.render_seconds = renderImages(plan, job, scene, renderer);
+    if (renderer.cannot_express) s.rec.not_expressible = renderer.cannot_express(scene);
+    if (s.rec.not_expressible.empty()) s.scene = std::move(scene);
   } catch (const std::exception& e) {
-    rec.error = e.what();
+    s.rec.error = e.what();
   }
-  rec.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  return s;
+}
+
+// The record, written last; `seconds` counts from the job's start.
+JobRecord endJob(const Plan& plan, const RenderJob& job, const StartedJob& s) {
+  JobRecord rec = s.rec;
+  if (s.no_record) return rec;
+  rec.seconds = std::chrono::duration<double>(Clock::now() - s.t0).count();
   try {
     writeRecord(plan, job, rec);
     rec.present = true;
@@ -92,6 +112,82 @@ JobRecord runJob(const Plan& plan, const RenderJob& job) {
   return rec;
 }
 
+}  // namespace
+
+JobRecord runJob(const Plan& plan, const RenderJob& job) {
+  StartedJob s = startJob(plan, job);
+  if (s.scene) {
+    try {
+      const renderers::Renderer& renderer = renderers::registry().at(job.renderer);
+      renderers::RenderInfo info;
+      const Image image = renderer.render(*s.scene, requestFor(plan, job, *s.scene, renderer), &info);
+      writeImages(plan, job, image);
+      s.rec.render_seconds = info.render_seconds;
+    } catch (const std::exception& e) {
+      s.rec.error = e.what();
+    }
+  }
+  return endJob(plan, job, s);
+}
+
+std::vector<JobRecord> runJobBatch(const Plan& plan, const std::vector<size_t>& jobs) {
+  std::vector<StartedJob> started;
+  std::vector<renderers::BatchItem> items;
+  std::vector<size_t> item_of;  // started[k]'s item, or SIZE_MAX for none
+  const renderers::Renderer* renderer = nullptr;
+  // The items point at the started jobs' scenes: `started` never reallocates.
+  started.reserve(jobs.size());
+  for (size_t index : jobs) {
+    const RenderJob& job = plan.jobs.at(index);
+    started.push_back(startJob(plan, job));
+    StartedJob& s = started.back();
+    item_of.push_back(SIZE_MAX);
+    if (!s.scene) continue;
+    try {
+      const renderers::Renderer& r = renderers::registry().at(job.renderer);
+      if (!r.render_batch) throw std::invalid_argument("runJobBatch: " + r.id + " renders no batches");
+      if (renderer && renderer != &r)
+        throw std::invalid_argument("runJobBatch: the jobs of a batch must share their renderer (" +
+                                    renderer->id + ", " + r.id + ")");
+      renderer = &r;
+      items.push_back({&*s.scene, requestFor(plan, job, *s.scene, r)});
+      item_of.back() = items.size() - 1;
+    } catch (const std::exception& e) {
+      s.rec.error = e.what();
+    }
+  }
+  std::vector<renderers::BatchOutcome> outcomes;
+  std::string batch_error;
+  if (!items.empty()) {
+    try {
+      outcomes = renderer->render_batch(items);
+      if (outcomes.size() != items.size())
+        throw std::runtime_error(renderer->id + ": the batch returned " + std::to_string(outcomes.size()) +
+                                 " outcomes for " + std::to_string(items.size()) + " scenes");
+    } catch (const std::exception& e) {
+      batch_error = e.what();
+    }
+  }
+  std::vector<JobRecord> records;
+  for (size_t k = 0; k < started.size(); ++k) {
+    StartedJob& s = started[k];
+    const RenderJob& job = plan.jobs.at(jobs[k]);
+    if (item_of[k] != SIZE_MAX) {
+      try {
+        if (!batch_error.empty()) throw std::runtime_error(batch_error);
+        const renderers::BatchOutcome& o = outcomes[item_of[k]];
+        if (!o.image) throw std::runtime_error(o.error);
+        writeImages(plan, job, *o.image);
+        s.rec.render_seconds = o.info.render_seconds;
+      } catch (const std::exception& e) {
+        s.rec.error = e.what();
+      }
+    }
+    records.push_back(endJob(plan, job, s));
+  }
+  return records;
+}
+
 // The jobs not yet done (all of them unless resuming), in plan order.
 std::vector<size_t> jobsToRun(const Plan& plan, bool resume) {
   std::vector<size_t> todo;
@@ -100,33 +196,86 @@ std::vector<size_t> jobsToRun(const Plan& plan, bool resume) {
   return todo;
 }
 
-// Runs the given jobs, `workers` at a time (process/job_pool.h), with a
-// progress line each.
-void runJobs(const Plan& plan, const std::vector<size_t>& todo, int workers) {
+namespace {
+
+// The pool's tasks: first the batches (each the jobs of one renderer that
+// renders batches), then one task per other job; `batches` is how many
+// tasks are batches.
+std::vector<std::vector<size_t>> runTasks(const Plan& plan, const std::vector<size_t>& todo,
+                                          const RunSettings& settings, size_t* batches) {
+  std::vector<std::vector<size_t>> batched, single;
+  // Per renderer that renders batches: its jobs, in plan order.
+  std::vector<std::pair<std::string, std::vector<size_t>>> by_renderer;
+  for (size_t index : todo) {
+    const RenderJob& job = plan.jobs.at(index);
+    const renderers::Renderer* r = renderers::registry().find(job.renderer);
+    if (settings.batch == 1 || !r || !r->render_batch) {
+      single.push_back({index});
+      continue;
+    }
+    auto it = std::find_if(by_renderer.begin(), by_renderer.end(),
+                           [&](const auto& e) { return e.first == job.renderer; });
+    if (it == by_renderer.end()) it = by_renderer.insert(by_renderer.end(), {job.renderer, {}});
+    it->second.push_back(index);
+  }
+  for (const auto& [id, jobs] : by_renderer) {
+    // Automatic: each worker gets a share, in batches of at most kMaxBatch.
+    const size_t workers = size_t(std::max(1, settings.workers));
+    const size_t size = settings.batch > 0 ? settings.batch
+                                           : std::clamp<size_t>((jobs.size() + workers - 1) / workers, 1, kMaxBatch);
+    for (size_t at = 0; at < jobs.size(); at += size)
+      batched.emplace_back(jobs.begin() + long(at), jobs.begin() + long(std::min(jobs.size(), at + size)));
+  }
+  // The long batches first, so that the short jobs fill in beside them.
+  *batches = batched.size();
+  batched.insert(batched.end(), single.begin(), single.end());
+  return batched;
+}
+
+}  // namespace
+
+// Runs the given jobs (process/job_pool.h), with a progress line each.
+void runJobs(const Plan& plan, const std::vector<size_t>& todo, const RunSettings& settings) {
   const auto t_start = Clock::now();
   size_t done = 0;
   std::mutex lock;
-  runJobPool(todo.size(), workers, [&](size_t k) {
-    const RenderJob& job = plan.jobs[todo[k]];
+  size_t batches = 0;
+  const std::vector<std::vector<size_t>> tasks = runTasks(plan, todo, settings, &batches);
+  auto weight = [&](size_t t) {
+    if (!settings.by_load) return 1.0;
+    const renderers::Renderer* r = renderers::registry().find(plan.jobs.at(tasks[t].front()).renderer);
+    return r ? std::clamp(r->cpu_share, 1.0 / 16.0, 1.0) : 1.0;
+  };
+  runWeightedJobPool(tasks.size(), double(std::max(1, settings.workers)), weight, [&](size_t t) {
+    const std::vector<size_t>& task = tasks[t];
     // A job's exception is this job's error, and the compare step finds
     // the job not done; the other jobs go on.
-    JobRecord rec;
+    std::vector<JobRecord> recs;
     try {
-      rec = runJob(plan, job);
+      if (t < batches)
+        recs = runJobBatch(plan, task);
+      else
+        recs.push_back(runJob(plan, plan.jobs[task.front()]));
     } catch (const std::exception& e) {
-      rec.error = e.what();
+      recs.assign(task.size(), JobRecord{});
+      for (auto& rec : recs) rec.error = e.what();
     } catch (...) {
-      rec.error = "unknown exception";
+      recs.assign(task.size(), JobRecord{});
+      for (auto& rec : recs) rec.error = "unknown exception";
     }
     std::lock_guard<std::mutex> g(lock);
-    const size_t n = ++done;
-    const double el = std::chrono::duration<double>(Clock::now() - t_start).count();
-    std::fprintf(stderr, "[%zu/%zu] %-32s %-9s %s %6.2f s   elapsed %.0f s, ~%.0f s left\n", n,
-                 todo.size(), job.scene.c_str(), job.renderer.c_str(),
-                 !rec.error.empty() ? "ERROR" : !rec.not_expressible.empty() ? "not expressible" : "ok   ",
-                 rec.seconds, el, el * double(todo.size() - n) / double(n));
-    if (!rec.error.empty()) std::fprintf(stderr, "  %s\n", rec.error.c_str());
-    if (!rec.not_expressible.empty()) std::fprintf(stderr, "  %s\n", rec.not_expressible.c_str());
+    for (size_t k = 0; k < task.size(); ++k) {
+      const RenderJob& job = plan.jobs[task[k]];
+      const JobRecord& rec = recs.at(k);
+      const size_t n = ++done;
+      const double el = std::chrono::duration<double>(Clock::now() - t_start).count();
+      std::fprintf(stderr, "[%zu/%zu] %-32s %-9s %s %6.2f s   elapsed %.0f s, ~%.0f s left\n", n,
+                   todo.size(), job.scene.c_str(), job.renderer.c_str(),
+                   !rec.error.empty() ? "ERROR" : !rec.not_expressible.empty() ? "not expressible" : "ok   ",
+                   rec.seconds, el, el * double(todo.size() - n) / double(n));
+      if (!rec.error.empty()) std::fprintf(stderr, "  %s\n", rec.error.c_str());
+      if (!rec.not_expressible.empty()) std::fprintf(stderr, "  %s\n", rec.not_expressible.c_str());
+    }
   });
 }
 

@@ -1,5 +1,6 @@
-// Running the render jobs of `xval validate` (plan.h): one job, or a list
-// of them side by side in the job pool (process/job_pool.h).
+// Running the render jobs of `xval validate` (plan.h): one job, a batch of
+// one renderer's jobs in one outside process, or a list of them side by
+// side in the job pool (process/job_pool.h), weighted by what they use.
 #pragma once
 
 #include <cstddef>
@@ -19,8 +20,29 @@ JobRecord runJob(const Plan& plan, const RenderJob& job);
 // The jobs not yet done (all of them unless resuming), in plan order.
 std::vector<size_t> jobsToRun(const Plan& plan, bool resume);
 
-// Runs the given jobs (indices into plan.jobs), `workers` at a time, with a
+// Renders several jobs of one renderer that renders batches
+// (Renderer::render_batch: Blender's persistent worker) together, each job
+// with the same steps, checks and record as runJob; one record per job, in
+// order. Never throws for a job's failure.
+std::vector<JobRecord> runJobBatch(const Plan& plan, const std::vector<size_t>& jobs);
+
+// How runJobs schedules.
+struct RunSettings {
+  // The cores to keep busy: `workers` CPU-bound jobs at once.
+  int workers = 1;
+  // Scenes per batch for a renderer that renders batches: 0 automatic (the
+  // renderer's jobs split evenly over the workers, at most kMaxBatch per
+  // batch), 1 none (one process per scene, as every job once was).
+  size_t batch = 0;
+  // true: a job takes its renderer's cpu_share of a core
+  // (renderers/renderer.h), so tools that mostly wait run more at once;
+  // false: `workers` jobs at once whatever they use.
+  bool by_load = true;
+};
+inline constexpr size_t kMaxBatch = 32;
+
+// Runs the given jobs (indices into plan.jobs) as `settings` says, with a
 // progress line each on stderr. A job's exception is its record's error.
-void runJobs(const Plan& plan, const std::vector<size_t>& todo, int workers);
+void runJobs(const Plan& plan, const std::vector<size_t>& todo, const RunSettings& settings);
 
 }  // namespace xval::validation
