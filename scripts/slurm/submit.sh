@@ -13,7 +13,7 @@
 #   --max-array-size N   at most N jobs per array (default and upper bound:
 #                        the cluster's MaxArraySize); more jobs are
 #                        submitted as several arrays, one after another
-#   --tolerances FILE    --timeout S    passed to `xval validate`
+#   --tolerances FILE    --timeout S    --renderers LIST    passed to `xval validate`
 #   --sbatch-arg ARG     an sbatch option for every job (repeatable), e.g.
 #                        --sbatch-arg=--partition=render
 #   --render-arg ARG     an sbatch option for the render tasks only, e.g.
@@ -56,8 +56,8 @@ while [ $# -gt 0 ]; do
     --max-parallel=*) max=${1#*=}; shift ;;
     --max-array-size) need "$@"; arraysize=$2; shift 2 ;;
     --max-array-size=*) arraysize=${1#*=}; shift ;;
-    --tolerances|--timeout) need "$@"; validate_args+=("$1" "$2"); shift 2 ;;
-    --tolerances=*|--timeout=*) validate_args+=("${1%%=*}" "${1#*=}"); shift ;;
+    --tolerances|--timeout|--renderers) need "$@"; validate_args+=("$1" "$2"); shift 2 ;;
+    --tolerances=*|--timeout=*|--renderers=*) validate_args+=("${1%%=*}" "${1#*=}"); shift ;;
     --sbatch-arg) need "$@"; common+=("$2"); shift 2 ;;
     --sbatch-arg=*) common+=("${1#*=}"); shift ;;
     --render-arg) need "$@"; render_extra+=("$2"); shift 2 ;;

@@ -40,7 +40,9 @@ source "$state/env.sh"
 cd "$src"  # both runs from the checkout: same provenance (git commit)
 scenes=("$src/reference/scenes/light_spot.json" "$src/reference/scenes/forsyth_lambert.json"
         "$src/reference/scenes/forsyth_hemispherical.json")
-common=(--tolerances "$src/reference/tolerances.json")
+# The three renderers the job counts below are written for (every pair of
+# them compared, as with five).
+common=(--tolerances "$src/reference/tolerances.json" --renderers reference,povray,blender)
 submit=(bash "$src/scripts/slurm/submit.sh" --xval "$xval" --wait "${common[@]}")
 now() { date +%s.%N; }
 
