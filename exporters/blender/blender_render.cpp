@@ -279,7 +279,7 @@ std::vector<BlenderBatchResult> renderBlenderBatch(const std::vector<BlenderBatc
         progressed = true;
         out.info = {0.0, p.log, -1.0};
         out.error = tool + " (" + p.gltf.string() + "): the worker process " +
-                    (r.ok() ? std::string("exited 0 without finishing the scene") : r.describe()) +
+                    (r.ok() ? std::string("exited 0 without finishing the scene") : "ended: " + r.describe()) +
                     " while rendering this scene" + logTail(p.log) + logTail(log);
       } else {
         left.push_back(i);
@@ -291,7 +291,7 @@ std::vector<BlenderBatchResult> renderBlenderBatch(const std::vector<BlenderBatc
       for (size_t i : left) {
         results[i].info = {0.0, log, -1.0};
         results[i].error = tool + " (" + prepared[i]->gltf.string() + "): the worker process " +
-                           (r.ok() ? std::string("exited 0 without rendering this scene") : r.describe()) +
+                           (r.ok() ? std::string("exited 0 without rendering this scene") : "ended: " + r.describe()) +
                            logTail(log);
       }
       left.clear();
