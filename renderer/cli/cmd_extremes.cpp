@@ -1,14 +1,14 @@
 // xval extremes -o DIR/ [--size N] [--only NAME,...] [--no-external]
-//               [--renderers povray,blender] [--jobs N] [--timeout S] [--threads N]
+//               [--renderers povray,blender,gl] [--jobs N] [--timeout S] [--threads N]
 //
 // The options of validate/extremes/run.h, which documents the run, what it
-// writes, the defaults (--size 160, --only all cases, --renderers
-// povray,blender, --jobs = hardware threads, --timeout 600 s, --threads =
+// writes, the defaults (--size 160, --only all cases, --jobs = hardware threads, --timeout 600 s, --threads =
 // hardware threads) and the exit status: 0 no NaN/Inf in the reference
 // renderer and no external error; 1 the reference renderer produced a
 // NaN/Inf; 2 an error (bad option, a case that cannot be written or
 // loaded, an external renderer that failed, timed out or is missing: an
-// error, never a pass).
+// error, never a pass). --renderers: povray,blender,gl by default; eevee
+// (a Blender process per case) only when named.
 #include <cstdio>
 #include <memory>
 #include <sstream>
@@ -22,7 +22,7 @@ namespace xval::cli {
 
 void addExtremesCommand(CLI::App& app, std::function<int()>& run) {
   struct Args {
-    std::string dir, only, renderers = "povray,blender";
+    std::string dir, only, renderers = "povray,blender,gl";
     int size = 160, jobs = 0, threads = 0;
     double timeout = kDefaultToolTimeoutSeconds;
     bool no_external = false;
@@ -45,7 +45,8 @@ void addExtremesCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_flag("--no-external", args->no_external,
                 "Reference renderer only (float and double); no POV-Ray or Blender");
   cmd->add_option("--renderers", args->renderers,
-                  "External renderers, comma-separated: povray, blender (default: both)");
+                  "External renderers, comma-separated, of povray, blender, eevee and gl (default: povray,blender,gl; "
+                  "eevee adds a Blender process per case)");
   cmd->add_option("--jobs", args->jobs, "External renders in parallel (default: the core count)")
       ->check(CLI::Range(1, 256));
   cmd->add_option("--timeout", args->timeout, "Seconds before an external renderer is killed (600)")
@@ -67,7 +68,9 @@ void addExtremesCommand(CLI::App& app, std::function<int()>& run) {
         }
         r.jobs = args->jobs, r.threads = args->threads, r.timeout = args->timeout;
         r.command = "xval extremes -o " + args->dir + (args->size != 160 ? " --size " + std::to_string(args->size) : "") +
-                    (args->no_external ? " --no-external" : "");
+                    (args->no_external ? " --no-external"
+                     : args->renderers != "povray,blender,gl" ? " --renderers " + args->renderers
+                                                              : "");
         return extremes::runExtremes(r);
       } catch (const std::exception& e) {
         std::fprintf(stderr, "xval extremes: error: %s\n", e.what());
