@@ -1,7 +1,9 @@
 # The report is a view of results.json and the files it names
 # (validate/report.h):
 #   - `xval validate` on a small scene, with stand-in POV-Ray and Blender
-#     that write the reference render (Blender's darkened by 2%), writes a
+#     that write the reference render (Blender's darkened by 2%; one scene
+#     per Blender process, --batch 1: the stand-in speaks only that
+#     protocol), writes a
 #     heat map per pair and names it in results.json; with --junit, a JUnit
 #     XML file valid against tests/junit/junit.xsd (2 failures of 3 pairs);
 #   - `xval report` on a copy of the output folder without any EXR (as a
@@ -31,7 +33,7 @@ stand_in(blender "while [ $# -gt 0 ]; do if [ \"$1\" = --out ]; then out=$2; fi;
          "'${_oiiotool}' '${WORK}/ref.exr' --mulc 0.98,0.98,0.98,1 -d float -o \"$out.exr\" && /bin/mv \"$out.exr\" \"$out\"")
 
 execute_process(COMMAND ${CMAKE_COMMAND} -E env "PATH=${WORK}/bin:/usr/bin:/bin"
-                        ${XVAL} validate ${SCENE} -o ${WORK}/out --jobs 2 --timeout 60 --junit ${WORK}/junit.xml
+                        ${XVAL} validate ${SCENE} -o ${WORK}/out --jobs 2 --timeout 60 --batch 1 --junit ${WORK}/junit.xml
                         --renderers reference,povray,blender
                 RESULT_VARIABLE rc ERROR_VARIABLE err TIMEOUT 300)
 message("xval validate: exit ${rc}\n${err}")
