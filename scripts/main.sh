@@ -2,7 +2,8 @@
 # The main job, from a fresh Debian 12 machine: install what is missing,
 # build, render the default reference scene set (reference/scenes/) with
 # the reference renderer into results/renders/ (EXR + 16-bit PNG per scene,
-# and timings.tsv), then validate it against POV-Ray and Blender into
+# and timings.tsv), run the extremes matrix and the trade-off, then validate
+# the set against every other renderer (POV-Ray, Blender, EEVEE, gl) into
 # results/validation/ (results.json; exit 1 if a case is outside its
 # tolerance, 2 on an error).
 set -euo pipefail
