@@ -23,20 +23,8 @@ set(_text "{\"format\": \"xval-renderer/1\",
  \"version_command\": [\"./standin_renderer.sh\", \"--version\"]}\n")
 file(WRITE ${_def} "${_text}")
 
-function(run_xval expect_rc out_var)
-  execute_process(COMMAND ${CMAKE_COMMAND} -E env XVAL=${XVAL} ${XVAL} ${ARGN}
-                  RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err
-                  WORKING_DIRECTORY ${WORK}/elsewhere TIMEOUT 120)
-  if(NOT _rc EQUAL expect_rc)
-    message(FATAL_ERROR "xval ${ARGN}: exit ${_rc}, expected ${expect_rc}\n${_out}\n${_err}")
-  endif()
-  set(${out_var} "${_out}${_err}" PARENT_SCOPE)
-endfunction()
-function(expect text regex what)
-  if(NOT text MATCHES "${regex}")
-    message(FATAL_ERROR "${what}: expected \"${regex}\" in:\n${text}")
-  endif()
-endfunction()
+set(XVAL_RUN_DIR ${WORK}/elsewhere)
+include(${CMAKE_CURRENT_LIST_DIR}/xval_run.cmake)
 
 set(_out ${WORK}/out)
 run_xval(0 _o validate ${SCENE} --renderers reference,standin --renderer-file ${_def} -o ${_out} --plan-only)
