@@ -3,11 +3,14 @@
 
 #include <assimp/BaseImporter.h>
 #include <assimp/DefaultIOSystem.h>
+#include <assimp/Exporter.hpp>
 #include <assimp/Importer.hpp>
 #include <assimp/ai_assert.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <nlohmann/json.hpp>
+
+#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -19,6 +22,7 @@
 #include <sstream>
 
 #include "geometry/transform.h"
+#include "process/run_process.h"
 
 // Debian's Assimp 5.2.5 is built with its internal assertions on, and a
 // failed one calls this hook, whose library definition prints and calls
@@ -519,6 +523,140 @@ std::optional<ModelTexture> baseColorTexture(const aiScene* scene, const aiMesh*
   return std::nullopt;
 }
 
+// --- Assimp in a child process -------------------------------------------
+//
+// Assimp's readers are not safe on hostile files: the fuzz smoke test
+// (tests/fuzz, fuzz.model.smoke) found, in Debian's 5.2.5 under
+// AddressSanitizer, a heap-buffer-overflow in the GLB reader and a bus
+// error in a post-processing step on a PLY file, past every check above
+// (tests/unit/model_file_test.cpp keeps both inputs). So Assimp reads the
+// file in a forked child (process/run_process.h, runForked: its own
+// process group, a time-out, killed on an interrupt), with everything of
+// Assimp's that touches the file's bytes: the reader and the
+// post-processing steps. The child writes back, as fields of an 8-byte
+// little-endian length and the bytes:
+//   error      Assimp's error string (empty: it read a scene)
+//   refusals   count, then each: the files GuardedIO refused
+//   opened     count, then each: the files it opened, canonical
+//   assbin     the scene in Assimp's own binary dump format (floats
+//              bit for bit, every mesh, node, material and embedded
+//              texture; empty with an error)
+// and this process reads the scene back from the dump with Assimp's
+// assbin reader: a format Assimp itself wrote, not the hostile file. A
+// crash, a sanitizer report or a hang of the child is this file's
+// ModelFileError, naming what happened.
+
+struct ChildRead {
+  std::string error;
+  std::vector<std::string> refusals;
+  std::vector<fs::path> opened;
+  std::string assbin;
+};
+
+void putField(std::string& out, const std::string& bytes) {
+  const uint64_t n = bytes.size();
+  for (int k = 0; k < 8; ++k) out.push_back(char((n >> (8 * k)) & 0xff));
+  out += bytes;
+}
+
+// The next field of `in` from `at`; false if it runs past the end.
+bool takeField(const std::string& in, size_t& at, std::string& field) {
+  if (in.size() - at < 8) return false;
+  uint64_t n = 0;
+  for (int k = 0; k < 8; ++k) n |= uint64_t((unsigned char)in[at + k]) << (8 * k);
+  at += 8;
+  if (n > in.size() - at) return false;
+  field.assign(in, at, size_t(n));
+  at += size_t(n);
+  return true;
+}
+
+ChildRead readInChildProcess(const fs::path& real, const ModelLimits& lim) {
+  const std::string file = real.string();
+  auto work = [&](int out_fd) {
+    RestrictedImporter ri;
+    Assimp::Importer& imp = ri.importer;
+    auto io_owner = std::make_unique<GuardedIO>(real.parent_path(), lim);
+    GuardedIO* io = io_owner.get();
+    imp.SetIOHandler(io_owner.release());  // the Importer owns it now
+    imp.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    const aiScene* scene = nullptr;
+    std::string error;
+    try {
+      scene = imp.ReadFile(file, aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_SortByPType);
+    } catch (const std::exception& e) {  // should ReadFile let one through
+      error = e.what();
+    }
+    if (!scene && error.empty()) error = imp.GetErrorString();
+    if (!scene && error.empty()) error = "Assimp read no scene and gave no reason";
+    std::string assbin;
+    if (scene) {
+      Assimp::Exporter exporter;
+      const aiExportDataBlob* blob = exporter.ExportToBlob(scene, "assbin");
+      if (!blob || blob->next) {
+        error = std::string("Assimp could not write the scene it read as assbin: ") + exporter.GetErrorString();
+      } else {
+        assbin.assign(static_cast<const char*>(blob->data), blob->size);
+      }
+    }
+    std::string out;
+    putField(out, error);
+    putField(out, std::to_string(io->refusals().size()));
+    for (const auto& r : io->refusals()) putField(out, r);
+    putField(out, std::to_string(io->opened().size()));
+    for (const auto& o : io->opened()) putField(out, o.string());
+    putField(out, assbin);
+    size_t done = 0;
+    while (done < out.size()) {
+      const ssize_t w = write(out_fd, out.data() + done, out.size() - done);
+      if (w < 0 && errno == EINTR) continue;
+      if (w <= 0) throw std::runtime_error(std::string("writing the result: ") + std::strerror(errno));
+      done += size_t(w);
+    }
+  };
+  // The dump holds every vertex with its attributes as floats, which can
+  // be several times the files' bytes (an OBJ corner's indices become a
+  // vertex of its own).
+  const size_t max_output = size_t(16 * lim.max_total_bytes + (64ll << 20));
+  const ForkedResult f = runForked(work, lim.max_import_seconds, max_output);
+  if (!f.process.ok()) {
+    std::string what = f.process.describe();
+    const std::string summary = f.summary();
+    if (!summary.empty()) what += ": " + summary;
+    if (f.process.timed_out)
+      throw ModelFileError(file + ": Assimp did not finish reading it: its child process " + what +
+                           " (ModelLimits::max_import_seconds)");
+    throw ModelFileError(file + ": Assimp failed reading it, in its child process (" + what +
+                         "): the file is malformed in a way Assimp's reader does not check");
+  }
+  ChildRead r;
+  size_t at = 0;
+  std::string count;
+  auto bad = [&](const char* field) {
+    return ModelFileError(file + ": the result Assimp's child process wrote is cut or malformed at field '" +
+                          field + "' (" + std::to_string(f.output.size()) + " bytes)");
+  };
+  auto takeCount = [&](const char* field) {
+    if (!takeField(f.output, at, count) || count.empty() || count.size() > 9 ||
+        count.find_first_not_of("0123456789") != std::string::npos)
+      throw bad(field);
+    return std::stoul(count);
+  };
+  if (!takeField(f.output, at, r.error)) throw bad("error");
+  for (unsigned long k = takeCount("refusals"); k > 0; --k) {
+    r.refusals.emplace_back();
+    if (!takeField(f.output, at, r.refusals.back())) throw bad("refusals");
+  }
+  for (unsigned long k = takeCount("opened"); k > 0; --k) {
+    std::string o;
+    if (!takeField(f.output, at, o)) throw bad("opened");
+    r.opened.emplace_back(o);
+  }
+  if (!takeField(f.output, at, r.assbin) || at != f.output.size()) throw bad("assbin");
+  if (r.error.empty() && r.assbin.empty()) throw bad("assbin");
+  return r;
+}
+
 }  // namespace
 
 const std::vector<std::string>& modelFileExtensions() {
@@ -558,32 +696,26 @@ Model loadModelFile(const fs::path& file_in, const ModelLoadOptions& options) {
   const fs::path real = fs::canonical(file_in, ec);
   if (ec) throw ModelFileError(file + ": " + ec.message());
 
-  auto io_owner = std::make_unique<GuardedIO>(real.parent_path(), lim);
-  GuardedIO* io = io_owner.get();
+  GuardedIO io(real.parent_path(), lim);
   if (ext == ".ply") checkPlyHeader(real, size, lim);
   if (ext == ".off") checkOffHeader(real, size, lim);
   long long gltf_triangles = -1;
-  if (ext == ".gltf") gltf_triangles = checkGltf(real, size, lim, *io);
-  if (ext == ".glb") gltf_triangles = checkGlb(real, size, lim, *io);
+  if (ext == ".gltf") gltf_triangles = checkGltf(real, size, lim, io);
+  if (ext == ".glb") gltf_triangles = checkGlb(real, size, lim, io);
 
-  RestrictedImporter ri;
-  Assimp::Importer& imp = ri.importer;
-  imp.SetIOHandler(io_owner.release());  // the Importer owns it now
-  imp.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const aiScene* scene = nullptr;
-  try {
-    scene = imp.ReadFile(real.string(), aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_SortByPType);
-  } catch (const std::exception& e) {  // should ReadFile let one through
-    throw ModelFileError(file + ": cannot read: " + e.what());
-  }
-  const auto& refused = io->refusals();
-  if (!refused.empty()) throw ModelFileError(file + ": refers to a file that cannot be read: " + refused.front());
-  if (!scene) {
-    const std::string why = imp.GetErrorString();
-    if (why.find("No meshes remaining") != std::string::npos)  // aiProcess_SortByPType removed them all
+  const ChildRead child = readInChildProcess(real, lim);
+  if (!child.refusals.empty())
+    throw ModelFileError(file + ": refers to a file that cannot be read: " + child.refusals.front());
+  if (!child.error.empty()) {
+    if (child.error.find("No meshes remaining") != std::string::npos)  // aiProcess_SortByPType removed them all
       throw ModelFileError(file + ": no triangles (the file has only points or lines)");
-    throw ModelFileError(file + ": cannot read: " + why);
+    throw ModelFileError(file + ": cannot read: " + child.error);
   }
+  Assimp::Importer back;
+  const aiScene* scene = back.ReadFileFromMemory(child.assbin.data(), child.assbin.size(), 0, "assbin");
+  if (!scene)
+    throw ModelFileError(file + ": cannot read back the scene Assimp's child process wrote (" +
+                         std::to_string(child.assbin.size()) + " bytes of assbin): " + back.GetErrorString());
   if (!scene->mRootNode || scene->mNumMeshes == 0 || !scene->mMeshes)
     throw ModelFileError(file + ": no triangles (the file has no surface meshes)");
 
@@ -602,7 +734,7 @@ Model loadModelFile(const fs::path& file_in, const ModelLoadOptions& options) {
   model.file = real;
   model.format = ext.substr(1);
   model.files = {real};
-  for (const fs::path& f : io->opened())
+  for (const fs::path& f : child.opened)
     if (f != real) model.files.push_back(f);
   const std::vector<Placed> nodes = placeNodes(scene, file, lim);
 
@@ -707,7 +839,7 @@ Model loadModelFile(const fs::path& file_in, const ModelLoadOptions& options) {
       p.texture = baseColorTexture(scene, m, where, lim);
       if (p.texture && !p.texture->embedded() && options.uvs == UvRequirement::ModelTextures) {
         std::string why;
-        auto path = io->allowed(p.texture->name, &why);
+        auto path = io.allowed(p.texture->name, &why);
         if (!path) throw ModelFileError(where + ": base-colour texture " + why);
         p.texture->file = *path;
       } else if (p.texture && !p.texture->embedded()) {
@@ -720,7 +852,7 @@ Model loadModelFile(const fs::path& file_in, const ModelLoadOptions& options) {
       if (needs_uvs && !p.has_uvs)
         throw ModelFileError(where + ": a texture is applied to it, but the mesh has no uv coordinates");
       if (p.texture && !p.texture->embedded())
-        if (auto inside = io->allowed(p.texture->name, nullptr))
+        if (auto inside = io.allowed(p.texture->name, nullptr))
           if (std::find(model.files.begin(), model.files.end(), *inside) == model.files.end())
             model.files.push_back(*inside);
       p.mesh = std::move(tm);

@@ -29,6 +29,10 @@
 //     against the model's folder, or an image embedded in the file. Every
 //     other material datum (PBR factors, specular maps, colours) is ignored.
 //
+// Assimp reads the file in a child process of its own (model_file.cpp,
+// "Assimp in a child process"): a crash or a hang of its reader on a
+// malformed file is that file's ModelFileError, not the end of xval.
+//
 // Every failure throws ModelFileError with a message naming the file, the
 // element (mesh index and name, node, vertex or face index, field) and the
 // value or limit. Limits (ModelLimits) are checked before the memory they
@@ -66,6 +70,7 @@ struct ModelLimits {
   long long max_nodes = 1 << 20;                // nodes visited
   int max_node_depth = 256;                     // root = depth 0
   long long max_texture_bytes = 256ll << 20;    // one embedded image
+  double max_import_seconds = 600.0;            // Assimp's read, in its child process (then killed)
 };
 
 // Which primitives must carry uvs (a texture on a mesh without uvs is an

@@ -3,11 +3,14 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -18,6 +21,18 @@
 #include <vector>
 
 extern char** environ;
+
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(undefined_behavior_sanitizer)
+#define XVAL_HAS_SANITIZER 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__)
+#define XVAL_HAS_SANITIZER 1
+#endif
+#ifdef XVAL_HAS_SANITIZER
+#include <sanitizer/common_interface_defs.h>
+#endif
 
 namespace xval {
 
@@ -220,6 +235,172 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const std::filesy
   if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
   if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
   return r;
+}
+
+namespace {
+
+// Writes all of [data, data + n) to fd; false on an error (the child then
+// exits with a code of its own).
+bool writeAll(int fd, const char* data, size_t n) {
+  while (n > 0) {
+    const ssize_t w = write(fd, data, n);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) return false;
+    data += w, n -= size_t(w);
+  }
+  return true;
+}
+
+// The bytes of an in-memory file from `from` to its end (at most `cap`).
+std::string readBack(int fd, off_t from, size_t cap) {
+  struct stat st;
+  if (fstat(fd, &st) != 0 || st.st_size <= from) return {};
+  std::string s(std::min<size_t>(size_t(st.st_size - from), cap), '\0');
+  size_t got = 0;
+  while (got < s.size()) {
+    const ssize_t n = pread(fd, s.data() + got, s.size() - got, from + off_t(got));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    got += size_t(n);
+  }
+  s.resize(got);
+  return s;
+}
+
+[[noreturn]] void childMain(const std::function<void(int)>& work, int out_fd, int err_fd) {
+  setpgid(0, 0);
+  sigset_t none;
+  sigemptyset(&none);
+  sigprocmask(SIG_SETMASK, &none, nullptr);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGSEGV, SIGBUS, SIGABRT, SIGILL, SIGFPE, SIGALRM})
+    signal(sig, SIG_DFL);
+#ifdef XVAL_HAS_SANITIZER
+  __sanitizer_set_death_callback(nullptr);
+#endif
+  const int null_fd = open("/dev/null", O_RDONLY | O_CLOEXEC);
+  if (null_fd >= 0) dup2(null_fd, 0);
+  dup2(err_fd, 1);
+  dup2(err_fd, 2);
+  try {
+    work(out_fd);
+  } catch (const std::exception& e) {
+    const std::string m = std::string("exception: ") + e.what() + "\n";
+    writeAll(2, m.data(), m.size());
+    _exit(70);
+  } catch (...) {
+    _exit(70);
+  }
+  _exit(0);
+}
+
+}  // namespace
+
+std::string ForkedResult::summary() const {
+  std::string last;
+  size_t start = 0;
+  while (start < diagnostics.size()) {
+    size_t end = diagnostics.find('\n', start);
+    if (end == std::string::npos) end = diagnostics.size();
+    std::string line = diagnostics.substr(start, end - start);
+    start = end + 1;
+    const size_t at = line.find("ERROR: ");
+    if (at != std::string::npos && line.find("Sanitizer") != std::string::npos) return line.substr(at + 7);
+    if (line.find("runtime error:") != std::string::npos) return line;
+    if (line.find_first_not_of(" \t") != std::string::npos) last = line;
+  }
+  return last;
+}
+
+ForkedResult runForked(const std::function<void(int out_fd)>& work, double timeout_seconds,
+                       size_t max_output_bytes) {
+  ForkedResult f;
+  ProcessResult& r = f.process;
+  r.timeout_seconds = timeout_seconds;
+  const int out_fd = memfd_create("xval-forked-output", MFD_CLOEXEC);
+  const int err_fd = memfd_create("xval-forked-stderr", MFD_CLOEXEC);
+  if (out_fd < 0 || err_fd < 0) {
+    r.error = std::string("memfd_create: ") + std::strerror(errno);
+    if (out_fd >= 0) close(out_fd);
+    if (err_fd >= 0) close(err_fd);
+    return f;
+  }
+  // Nothing buffered may be written twice (the child's own stdio is not
+  // flushed: it leaves with _exit).
+  std::fflush(nullptr);
+  pid_t pid = -1;
+  int fork_errno = 0;
+  const auto t0 = std::chrono::steady_clock::now();
+  {
+    std::lock_guard<std::mutex> g(g_children_lock);
+    if (g_interrupted) {
+      fork_errno = EINTR;
+    } else {
+      pid = fork();
+      if (pid == 0) childMain(work, out_fd, err_fd);
+      if (pid < 0) fork_errno = errno;
+      else g_children.insert(pid);
+    }
+  }
+  if (pid < 0) {
+    r.error = fork_errno == EINTR ? "not started: xval is being interrupted"
+                                  : std::string("fork: ") + std::strerror(fork_errno);
+    close(out_fd);
+    close(err_fd);
+    return f;
+  }
+  // Also here, so the group exists before a kill: the child's own call may
+  // not have run yet (whichever runs first, the result is the same).
+  setpgid(pid, pid);
+  r.started = true;
+  int status = 0;
+  auto pause_for = std::chrono::microseconds(100);
+  for (;;) {
+    const pid_t w = waitpid(pid, &status, WNOHANG);
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (w == pid) break;
+    if (r.seconds > timeout_seconds) {
+      r.timed_out = true;
+      kill(-pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      break;
+    }
+    std::this_thread::sleep_for(pause_for);
+    pause_for = std::min(pause_for * 2, std::chrono::microseconds(20000));
+  }
+  kill(-pid, SIGKILL);  // anything the child left in its group
+  forget(pid);
+  waitIfInterrupted();
+  if (!r.timed_out) {
+    if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
+    if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
+  }
+  struct stat st;
+  const off_t err_size = fstat(err_fd, &st) == 0 ? st.st_size : 0;
+  const off_t err_from = err_size > off_t(kLogTailBytes) ? err_size - off_t(kLogTailBytes) : 0;
+  f.diagnostics = readBack(err_fd, err_from, kLogTailBytes);
+  for (char& c : f.diagnostics)
+    if ((unsigned char)c < 0x20 && c != '\t' && c != '\n') c = ' ';
+  if (r.ok()) {
+    if (fstat(out_fd, &st) != 0) {
+      r.exit_code = 71;
+      f.diagnostics += "\nxval: cannot read the child's output: " + std::string(std::strerror(errno));
+    } else if (size_t(st.st_size) > max_output_bytes) {
+      r.exit_code = 71;
+      f.diagnostics += "\nxval: the child's output is " + std::to_string(st.st_size) + " bytes; the limit is " +
+                       std::to_string(max_output_bytes);
+    } else {
+      f.output = readBack(out_fd, 0, size_t(st.st_size));
+      if (f.output.size() != size_t(st.st_size)) {
+        r.exit_code = 71;
+        f.diagnostics += "\nxval: read " + std::to_string(f.output.size()) + " of the child's " +
+                         std::to_string(st.st_size) + " output bytes";
+        f.output.clear();
+      }
+    }
+  }
+  close(out_fd);
+  close(err_fd);
+  return f;
 }
 
 std::string tailOfFile(const std::filesystem::path& file, int lines) {

@@ -4,8 +4,9 @@
 //   bvh f  building the float path's Accel (Embree triangles)
 //   bvh d  building the double path's Accel (Embree user geometry)
 // (load also as CPU time, user + system: the loader is single-threaded, so
-// on a loaded machine this is what it costs) and the peak resident memory
-// (ru_maxrss) after the load and at the end.
+// on a loaded machine this is what it costs; it includes the child process
+// Assimp reads in) and the peak resident memory (ru_maxrss): of that child
+// ("peak import"), of the run after the load and at the end.
 // With --frame instead, the scene path of `xval render`: the file as the one
 // mesh object of a 720 x 720 scene (camera on +z, 4.5 from the origin; the
 // knot of scripts/make-scale-meshes.py lies within 1.52 of it; Phong
@@ -47,7 +48,7 @@ namespace {
 
 struct Run {
   double load = 0, load_cpu = 0, bvh_float = 0, bvh_double = 0;
-  long peak_load_kib = 0, peak_kib = 0;
+  long peak_load_kib = 0, peak_kib = 0, peak_import_kib = 0;
   long long triangles = 0;
   double setup_float = 0, frame_float = 0, setup_double = 0, frame_double = 0;  // --frame
   double frame_float_cpu = 0;  // --frame: CPU time (all threads) of the median-wall float frame
@@ -58,10 +59,18 @@ struct Run {
 double now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
-double cpuSeconds() {  // user + system time of this process, all threads
+double cpuSeconds(int who) {
   rusage u{};
-  getrusage(RUSAGE_SELF, &u);
+  getrusage(who, &u);
   return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+// User + system time of this process (all threads) and of its reaped
+// children (the loader's Assimp child).
+double cpuSeconds() { return cpuSeconds(RUSAGE_SELF) + cpuSeconds(RUSAGE_CHILDREN); }
+long childMaxrssKiB() {  // the largest reaped child's peak
+  rusage u{};
+  getrusage(RUSAGE_CHILDREN, &u);
+  return u.ru_maxrss;
 }
 long maxrssKiB() {
   rusage u{};
@@ -83,6 +92,7 @@ Run measure(const char* file) {
     r.load = now() - t0;
     r.load_cpu = cpuSeconds() - c0;
     r.peak_load_kib = maxrssKiB();
+    r.peak_import_kib = childMaxrssKiB();
     for (const auto& t : meshes) r.triangles += (long long)t.triangleCount();
     t0 = now();
     { xval::Accel a(meshes, xval::Precision::Float); }
@@ -152,6 +162,7 @@ Run measureFrame(const char* file) {
 bool inChild(const char* file, Run& out, bool frame) {
   int fd[2];
   if (pipe(fd) != 0) return false;
+  std::fflush(nullptr);  // the child must not write this process's buffered output again
   const pid_t pid = fork();
   if (pid < 0) return false;
   if (pid == 0) {
@@ -193,11 +204,11 @@ int main(int argc, char** argv) {
     std::printf("%-24s %10s %5s %9s %9s %9s %9s %9s %9s %12s\n", "file", "triangles", "runs", "scene s", "setup f",
                 "frame f", "f cpu", "setup d", "frame d", "peak");
   else
-    std::printf("%-24s %10s %5s %9s %9s %9s %9s %12s %12s\n", "file", "triangles", "runs", "load s", "load cpu",
-                "bvh f s", "bvh d s", "peak load", "peak all");
+    std::printf("%-24s %10s %5s %9s %9s %9s %9s %12s %12s %12s\n", "file", "triangles", "runs", "load s", "load cpu",
+                "bvh f s", "bvh d s", "peak import", "peak load", "peak all");
   int status = 0;
   for (const char* f : files) {
-    std::vector<double> load, cpu, bf, bd, pl, pa, sf, ff, fc, sd, fd, pk;
+    std::vector<double> load, cpu, bf, bd, pi, pl, pa, sf, ff, fc, sd, fd, pk;
     Run r;
     for (int k = 0; k < repeat; ++k) {
       if (!inChild(f, r, frame) || r.error[0]) {
@@ -206,7 +217,7 @@ int main(int argc, char** argv) {
         break;
       }
       load.push_back(r.load), cpu.push_back(r.load_cpu), bf.push_back(r.bvh_float), bd.push_back(r.bvh_double);
-      pl.push_back(r.peak_load_kib / 1024.0), pa.push_back(r.peak_kib / 1024.0);
+      pi.push_back(r.peak_import_kib / 1024.0), pl.push_back(r.peak_load_kib / 1024.0), pa.push_back(r.peak_kib / 1024.0);
       sf.push_back(r.setup_float), ff.push_back(r.frame_float), sd.push_back(r.setup_double);
       fd.push_back(r.frame_double), pk.push_back(r.peak_frame_kib / 1024.0), fc.push_back(r.frame_float_cpu);
     }
@@ -216,8 +227,8 @@ int main(int argc, char** argv) {
       std::printf("%-24s %10lld %5d %9.3f %9.3f %9.4f %9.4f %9.3f %9.4f %8.0f MiB\n", base, r.triangles, repeat,
                   median(load), median(sf), median(ff), median(fc), median(sd), median(fd), median(pk));
     else
-      std::printf("%-24s %10lld %5d %9.3f %9.3f %9.3f %9.3f %8.0f MiB %8.0f MiB\n", base, r.triangles, repeat,
-                  median(load), median(cpu), median(bf), median(bd), median(pl), median(pa));
+      std::printf("%-24s %10lld %5d %9.3f %9.3f %9.3f %9.3f %8.0f MiB %8.0f MiB %8.0f MiB\n", base, r.triangles,
+                  repeat, median(load), median(cpu), median(bf), median(bd), median(pi), median(pl), median(pa));
     std::fflush(stdout);
   }
   return status;

@@ -43,6 +43,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   o.limits.max_total_bytes = 4 << 20;
   o.limits.max_triangles = 1 << 16;
   o.limits.max_vertices = 1 << 16;
+  o.limits.max_import_seconds = 20;  // under libFuzzer's -timeout=25 of smoke.cmake
   o.uvs = xval::UvRequirement::ModelTextures;
   xval::Model m;
   try {

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -225,6 +226,41 @@ TEST_F(ModelFile, AssimpAssertionIsAnError) {
                        "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n"
                        "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0\n3 0 1 2\n");
   expectError(f, "Assimp internal check failed");
+}
+
+// Files on which Assimp 5.2.5 itself crashes (found by fuzz.model.smoke):
+// read in its child process, each is this file's error and xval goes on.
+// assimp_bus_error.ply: a bus error in a post-processing step, in every
+// build (the release build's loader died of SIGBUS before the child
+// process); assimp_heap_overflow.glb: a heap-buffer-overflow in the GLB
+// reader, which only AddressSanitizer sees (without it the file loads, from
+// memory Assimp read past its buffer: what the child wrote, the parent
+// checks as any other model).
+TEST_F(ModelFile, AssimpCrashIsAnError) {
+  const fs::path dir = XVAL_MODEL_CRASH_DIR;
+  const fs::path ply = write("bus.ply", [&] {
+    std::ifstream in(dir / "assimp_bus_error.ply", std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }());
+  ASSERT_GT(fs::file_size(ply), 1000u);
+  expectError(ply, "Assimp failed reading it, in its child process (killed by signal");
+  try {
+    const Model m = loadModelFile(dir / "assimp_heap_overflow.glb");
+    for (const auto& p : m.primitives) EXPECT_EQ(p.mesh.positions.size(), p.mesh.normals.size()) << p.label;
+  } catch (const ModelFileError& e) {
+    EXPECT_NE(std::string(e.what()).find("Assimp failed reading it, in its child process"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST_F(ModelFile, AssimpHangIsTimedOut) {
+  // A model Assimp reads in well under a second, with no time for it: the
+  // child is killed at the time-out and the error says so.
+  std::string obj;
+  for (int k = 0; k < 200000; ++k) obj += "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n";
+  ModelLoadOptions o;
+  o.limits.max_import_seconds = 0.001;
+  expectError(write("slow.obj", obj), "Assimp did not finish reading it: its child process timed out after 0.001 s", o);
 }
 
 // --- STL, OFF -------------------------------------------------------------
