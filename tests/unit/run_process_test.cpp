@@ -11,11 +11,12 @@
 #include <string>
 
 #include "process/run_process.h"
+#include "support/temp_files.h"
 
 using namespace xval;
 
 TEST(RunProcess, SubSecondTimeOutIsReportedAsGiven) {
-  const auto dir = std::filesystem::temp_directory_path() / "xval_run_process_test";
+  const auto dir = xval::test::freshTempDir("xval_run_process_test");
   std::filesystem::create_directories(dir);
   ProcessResult r = runProcess({"sleep", "20"}, dir, dir / "sleep.log", 0.3);
   ASSERT_TRUE(r.started) << r.error;
