@@ -18,7 +18,8 @@
 #   slurm after    submit.sh --max-parallel NPROC   (batches: the jobs split
 #                  over NPROC array tasks of one CPU each)
 # Prints per run: wall seconds, the sum of the jobs' own `seconds` (their
-# records), the load average before and after, and Slurm / local wall per
+# records; a batched job's count from its batch's start, so this sum only
+# compares runs of one variant), the load average before and after, and Slurm / local wall per
 # pair; checks with tests/cluster/compare_runs.py that every run's results
 # equal the first's, timings aside. Exit 0 when they do, 1 when not, 2 on
 # an error.
