@@ -119,10 +119,10 @@ struct TextureSpec {
   // Source::Image: the image file, resolved against the scene file; for an
   // image embedded in a model file, that model file (for messages only).
   std::filesystem::path path;
+  TextureFilter filter = TextureFilter::Bilinear;
   // Source::Image from an image embedded in a model file: its encoded
   // bytes (PNG, JPEG, ...), decoded instead of reading `path`.
   std::shared_ptr<const std::vector<std::uint8_t>> embedded;
-  TextureFilter filter = TextureFilter::Bilinear;
 };
 
 // --- lighting models (docs/models.md) -----------------------------------

@@ -33,7 +33,12 @@ Texture readTextureImage(const std::filesystem::path& file, const std::vector<st
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
   std::unique_ptr<OIIO::Filesystem::IOMemReader> memory;
-  if (embedded) memory = std::make_unique<OIIO::Filesystem::IOMemReader>(embedded->data(), embedded->size());
+  if (embedded) {
+    memory = std::make_unique<OIIO::Filesystem::IOMemReader>(embedded->data(), embedded->size());
+    // The readers take the proxy from the configuration.
+    void* proxy = memory.get();
+    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+  }
   auto in = embedded ? OIIO::ImageInput::open(embeddedImageName(*embedded), &config, memory.get())
                      : OIIO::ImageInput::open(file.string(), &config);
   const std::string what = embedded ? file.string() + " (embedded image)" : file.string();
