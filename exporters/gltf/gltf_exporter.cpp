@@ -15,6 +15,7 @@
 #include "common/supersample.h"
 #include "geometry/float_rounding.h"
 #include "geometry/mesh.h"
+#include "geometry/model_textures.h"
 #include "geometry/scene_meshes.h"
 #include "common/export_common.h"
 #include "files/atomic_write.h"
@@ -121,7 +122,10 @@ tinygltf::Value attenuationExtras(const Attenuation& a) {
 
 }  // namespace
 
-GltfExport exportGltf(const Scene& scene, const std::filesystem::path& dir) {
+GltfExport exportGltf(const Scene& input, const std::filesystem::path& dir) {
+  // Texture source "model": one object, so one mesh and material, per
+  // primitive (geometry/model_textures.h).
+  const Scene scene = resolveModelTextures(input);
   // The resolution Blender renders: n W x n H for render.spp = n^2, one
   // sample through each pixel centre (common/supersample.h); checked first.
   const SubpixelGrid grid = subpixelGrid(scene);

@@ -10,6 +10,7 @@
 #include "common/supersample.h"
 #include "files/atomic_write.h"
 #include "geometry/mesh.h"
+#include "geometry/model_textures.h"
 #include "geometry/scene_meshes.h"
 #include "povray/gouraud_image.h"
 #include "povray/pigment_tree.h"
@@ -73,7 +74,10 @@ void writeMesh(std::ostream& o, const TriangleMesh& m, const Scene& s, bool text
 
 }  // namespace
 
-PovExport exportPov(const Scene& scene, const std::filesystem::path& dir, const std::string& output_name) {
+PovExport exportPov(const Scene& input, const std::filesystem::path& dir, const std::string& output_name) {
+  // Texture source "model": one object, so one mesh2 and texture, per
+  // primitive (geometry/model_textures.h).
+  const Scene scene = resolveModelTextures(input);
   // render.spp = n^2: n x n sub-pixels, one sample through each centre
   // (common/supersample.h); POV-Ray's own antialiasing stays off, as it
   // averages unsaturated samples.

@@ -18,6 +18,7 @@
 #include "common/export_common.h"
 #include "common/supersample.h"
 #include "geometry/mesh.h"
+#include "geometry/model_textures.h"
 #include "geometry/scene_meshes.h"
 #include "gl/egl_context.h"
 #include "gl/glsl_models.h"
@@ -222,7 +223,10 @@ struct GlScene::Impl {
   }
 };
 
-GlScene::GlScene(const Scene& scene) : impl_(new Impl) {
+GlScene::GlScene(const Scene& input) : impl_(new Impl) {
+  // Texture source "model": one object, so one draw and texture, per
+  // primitive (geometry/model_textures.h).
+  const Scene scene = resolveModelTextures(input);
   const auto t0 = std::chrono::steady_clock::now();
   Impl& d = *impl_;
   const SubpixelGrid grid = subpixelGrid(scene);  // checked before anything is allocated

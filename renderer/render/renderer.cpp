@@ -17,6 +17,7 @@
 #include "camera/triangle_edge.h"
 #include "geometry/front_faces.h"
 #include "geometry/mesh.h"
+#include "geometry/model_textures.h"
 #include "process/job_pool.h"
 #include "geometry/scene_meshes.h"
 #include "render/accel.h"
@@ -537,8 +538,11 @@ struct PreparedScene::Impl {
                     Progress& progress) const;
 };
 
-PreparedScene::PreparedScene(const Scene& scene, Precision precision, bool cull_back_faces)
+PreparedScene::PreparedScene(const Scene& input, Precision precision, bool cull_back_faces)
     : impl_(new Impl) {
+  // Texture source "model": one object, so one texture, per primitive
+  // (geometry/model_textures.h).
+  const Scene scene = resolveModelTextures(input);
   auto t0 = Clock::now();
   Impl& d = *impl_;
   // Numbers this precision cannot compute with are an error naming the field

@@ -64,7 +64,8 @@ void materialNumbers(const Visit& f, const std::string& prefix, const Material& 
         }
       },
       mat.model);
-  if (!mat.texture) vec(f, prefix + ".base_color", mat.base_color, Kind::Number);
+  if (!mat.texture || mat.texture->source == TextureSpec::Source::Model)
+    vec(f, prefix + ".base_color", mat.base_color, Kind::Number);
 }
 
 void forEachNumber(const Scene& s, const Visit& f) {
@@ -150,6 +151,9 @@ Bound shadingFactors(const Scene& s, const Material& mat, const std::string& pre
   if (mat.texture) {
     if (mat.texture->source == TextureSpec::Source::Image)
       b.C = {kMaxTexelValue, prefix + ".texture.path"};
+    else if (mat.texture->source == TextureSpec::Source::Model)
+      b.C = maxChannel(mat.base_color) > kMaxTexelValue ? Factor{maxChannel(mat.base_color), prefix + ".base_color"}
+                                                          : Factor{kMaxTexelValue, prefix + ".texture.source"};
   } else if (maxChannel(mat.base_color) > 1.0) {
     b.C = {maxChannel(mat.base_color), prefix + ".base_color"};
   }

@@ -13,6 +13,7 @@
 
 #include <array>
 #include <concepts>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -106,11 +107,22 @@ struct ObjectTransform {
 // (texture/mip_chain.h states the chain, the level and the blend).
 enum class TextureFilter { Nearest, Bilinear, Trilinear };
 
+// Source::Model: each primitive of the object's model file is textured
+// with the base-colour texture its own material assigns (geometry/
+// model_file.h); a primitive whose material assigns none has the
+// material's base_color. Only a "mesh" object may use it. The renderers
+// never see it: scene/model_textures.h turns such an object into one
+// object per primitive with a Source::Image texture (or none).
 struct TextureSpec {
-  enum class Source { Brick, Image };
+  enum class Source { Brick, Image, Model };
   Source source = Source::Brick;
-  std::filesystem::path path;  // Source::Image: resolved against the scene file
+  // Source::Image: the image file, resolved against the scene file; for an
+  // image embedded in a model file, that model file (for messages only).
+  std::filesystem::path path;
   TextureFilter filter = TextureFilter::Bilinear;
+  // Source::Image from an image embedded in a model file: its encoded
+  // bytes (PNG, JPEG, ...), decoded instead of reading `path`.
+  std::shared_ptr<const std::vector<std::uint8_t>> embedded;
 };
 
 // --- lighting models (docs/models.md) -----------------------------------
@@ -146,6 +158,8 @@ using LightingModel = std::variant<ClassicPhong, YiqLuma, Lambert, WrapAround,
 struct Material {
   LightingModel model = ClassicPhong{};
   std::optional<TextureSpec> texture;  // none: every point has base_color
+  // Without a texture: the colour of every point; with source model: of
+  // the primitives whose material assigns no texture.
   dvec3 base_color{1.0};
 };
 

@@ -221,7 +221,7 @@ void checkTextureImage(JsonReader& r, const std::filesystem::path& file, const s
 
 TextureSpec readTexture(JsonReader r, const std::filesystem::path& scene_dir) {
   TextureSpec t;
-  std::string source = r.requireChoice("source", {"brick", "image"});
+  std::string source = r.requireChoice("source", {"brick", "image", "model"});
   std::string filter = r.choice("filter", "bilinear", {"nearest", "bilinear", "trilinear"});
   t.filter = filter == "nearest"     ? TextureFilter::Nearest
              : filter == "trilinear" ? TextureFilter::Trilinear
@@ -230,6 +230,10 @@ TextureSpec readTexture(JsonReader r, const std::filesystem::path& scene_dir) {
     t.source = TextureSpec::Source::Image;
     t.path = readInputPath(r, scene_dir, "texture file");
     checkTextureImage(r, t.path, quotedPath(t.path.string()));
+  } else if (source == "model") {
+    // The model file's own textures: checked when the mesh is read
+    // (readMeshFile), whose object names the file.
+    t.source = TextureSpec::Source::Model;
   } else {
     t.source = TextureSpec::Source::Brick;
   }
@@ -241,7 +245,8 @@ Material readMaterial(JsonReader r, const std::filesystem::path& scene_dir) {
   Material m;
   m.model = readModel(r.requireObject("model"));
   if (auto t = r.object("texture")) m.texture = readTexture(*t, scene_dir);
-  if (r.has("base_color") && m.texture)
+  // With source model, base_color colours the primitives without a texture.
+  if (r.has("base_color") && m.texture && m.texture->source != TextureSpec::Source::Model)
     r.fail("base_color", "is not used when material.texture is set; remove one of them");
   m.base_color = r.vec3("base_color", m.base_color, Range::nonNegative());
   r.finish();
@@ -272,13 +277,17 @@ ObjectTransform readTransform(JsonReader r) {
 
 // "shape": "mesh": the model file at "path", read now (geometry/
 // model_file.h) within the scene budget's triangle limit; a textured
-// object needs uvs on every primitive. Its errors name the field.
-MeshFile readMeshFile(JsonReader& r, const std::filesystem::path& scene_dir, bool textured, const Budget& budget) {
+// object needs uvs on every primitive, one of texture source "model" on
+// every primitive its file textures. Its errors name the field.
+MeshFile readMeshFile(JsonReader& r, const std::filesystem::path& scene_dir, const Material& material,
+                      const Budget& budget) {
   MeshFile m;
   m.path = readInputPath(r, scene_dir, "model file");
   ModelLoadOptions options;
   options.limits.max_triangles = std::min(options.limits.max_triangles, budget.max_triangles);
-  options.uvs = textured ? UvRequirement::All : UvRequirement::None;
+  options.uvs = !material.texture                                         ? UvRequirement::None
+                : material.texture->source == TextureSpec::Source::Model ? UvRequirement::ModelTextures
+                                                                          : UvRequirement::All;
   try {
     m.model = std::make_shared<const Model>(loadModelFile(m.path, options));
   } catch (const ModelFileError& e) {
@@ -299,10 +308,16 @@ SceneObject readObject(JsonReader r, const std::filesystem::path& scene_dir, con
     r.fail("material", "required field is missing (the scene has no top-level \"material\" to fall back on)");
   if (auto t = r.object("transform")) out.transform = readTransform(*t);
   const Material& mat = out.material ? *out.material : *fallback;
+  if (shape != "mesh" && mat.texture && mat.texture->source == TextureSpec::Source::Model) {
+    const std::string why = "texture source \"model\" takes the textures a model file assigns, so only a "
+                            "\"mesh\" object can use it; this object's shape is \"" + shape + "\"";
+    if (out.material) r.fail("material", why);
+    r.fail("shape", why + " and it has the scene's material; give it a \"material\" of its own");
+  }
   if (shape == "torus_knot") out.shape = readKnot(r);
   else if (shape == "sphere") out.shape = readSphere(r);
   else if (shape == "plane") out.shape = readPlane(r);
-  else out.shape = readMeshFile(r, scene_dir, mat.texture.has_value(), budget);
+  else out.shape = readMeshFile(r, scene_dir, mat, budget);
   r.finish();
   return out;
 }

@@ -58,13 +58,14 @@ J material(const Material& m, const std::string* texture_path) {
   J mat = {{"model", model(m.model)}};
   if (m.texture) {
     const TextureSpec& t = *m.texture;
-    J tex = {{"source", t.source == TextureSpec::Source::Brick ? "brick" : "image"}};
+    J tex = {{"source", t.source == TextureSpec::Source::Brick   ? "brick"
+                        : t.source == TextureSpec::Source::Model ? "model"
+                                                                 : "image"}};
     if (t.source == TextureSpec::Source::Image) tex["path"] = texture_path ? *texture_path : t.path.string();
     tex["filter"] = toString(t.filter);
     mat["texture"] = tex;
-  } else {
-    mat["base_color"] = v3(m.base_color);
   }
+  if (!m.texture || m.texture->source == TextureSpec::Source::Model) mat["base_color"] = v3(m.base_color);
   return mat;
 }
 

@@ -1,7 +1,9 @@
 // Texture image I/O through OpenImageIO.
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 #include "files/atomic_write.h"
@@ -15,21 +17,39 @@ namespace xval {
 
 namespace OIIO = OIIO_NAMESPACE;
 
-Texture loadTextureImage(const std::filesystem::path& file) {
+namespace {
+// The file name OpenImageIO chooses an embedded image's reader by: from
+// its first bytes (JPEG's FF D8 FF, else PNG: a PNG reader refuses
+// anything that does not start with PNG's signature).
+std::string embeddedImageName(const std::vector<std::uint8_t>& b) {
+  return b.size() >= 3 && b[0] == 0xFF && b[1] == 0xD8 && b[2] == 0xFF ? "embedded.jpg" : "embedded.png";
+}
+
+// `file` names the image in messages; `embedded`, when given, holds its
+// encoded bytes, read instead of the file.
+Texture readTextureImage(const std::filesystem::path& file, const std::vector<std::uint8_t>* embedded) {
   // Stored values: OpenImageIO multiplies colour by alpha on reading unless
   // told that the caller wants the file's unassociated values.
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
-  auto in = OIIO::ImageInput::open(file.string(), &config);
+  std::unique_ptr<OIIO::Filesystem::IOMemReader> memory;
+  if (embedded) {
+    memory = std::make_unique<OIIO::Filesystem::IOMemReader>(embedded->data(), embedded->size());
+    // The readers take the proxy from the configuration.
+    void* proxy = memory.get();
+    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+  }
+  auto in = embedded ? OIIO::ImageInput::open(embeddedImageName(*embedded), &config, memory.get())
+                     : OIIO::ImageInput::open(file.string(), &config);
+  const std::string what = embedded ? file.string() + " (embedded image)" : file.string();
   if (!in)
-    throw std::runtime_error(file.string() + ": cannot read texture image: " +
-                             OIIO::geterror());
+    throw std::runtime_error(what + ": cannot read texture image: " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
   // The header is checked before anything is allocated (the scene loader
   // checked it too; the file may have changed since).
   const std::string problem = imageHeaderProblem({spec.width, spec.height, spec.depth, spec.nchannels},
                                                  textureLimits());
-  if (!problem.empty()) throw std::runtime_error(file.string() + ": texture image " + problem);
+  if (!problem.empty()) throw std::runtime_error(what + ": texture image " + problem);
   Texture t;
   t.width = spec.width;
   t.height = spec.height;
@@ -39,7 +59,7 @@ Texture loadTextureImage(const std::filesystem::path& file) {
   const size_t texels = size_t(t.width) * t.height;
   auto read = [&](OIIO::TypeDesc type, void* data) {
     if (!in->read_image(0, 0, 0, nc, type, data))
-      throw std::runtime_error(file.string() + ": cannot decode texture image: " + in->geterror());
+      throw std::runtime_error(what + ": cannot decode texture image: " + in->geterror());
   };
   // Replicates grey (and grey + alpha) to R, G, B.
   auto rgb = [nc](const auto& px, auto& out) {
@@ -67,12 +87,15 @@ Texture loadTextureImage(const std::filesystem::path& file) {
   // Integer codes are finite and at most 1; a float image may hold anything.
   for (size_t i = 0; i < t.rgb.size(); ++i)
     if (!(std::abs(t.rgb[i]) <= kMaxTexelValue))
-      throw std::runtime_error(file.string() + ": texel (" + std::to_string(i / 3 % t.width) + ", " +
+      throw std::runtime_error(what + ": texel (" + std::to_string(i / 3 % t.width) + ", " +
                                std::to_string(i / 3 / t.width) + ") has the value " + std::to_string(t.rgb[i]) +
                                "; expected a finite value of magnitude at most " +
                                std::to_string(kMaxTexelValue));
   return t;
 }
+}  // namespace
+
+Texture loadTextureImage(const std::filesystem::path& file) { return readTextureImage(file, nullptr); }
 
 void Texture::pack() {
   packed.clear();
@@ -95,7 +118,11 @@ void Texture::pack() {
 }
 
 Texture loadTexture(const TextureSpec& spec) {
+  if (spec.source == TextureSpec::Source::Model)
+    throw std::runtime_error("texture source \"model\" has no one texture: it is resolved per primitive of the "
+                             "model file (geometry/model_textures.h) before textures are loaded");
   Texture t = spec.source == TextureSpec::Source::Brick ? makeBrickTexture()
+              : spec.embedded                           ? readTextureImage(spec.path, spec.embedded.get())
                                                         : loadTextureImage(spec.path);
   t.pack();
   return t;
