@@ -57,6 +57,7 @@
 #include "cli/renderer_file_option.h"
 #include "files/atomic_write.h"
 #include "process/job_pool.h"
+#include "renderers/export_cache.h"
 #include "renderers/registry.h"
 #include "scene/json_reader.h"
 #include "scene/scene_loader.h"
@@ -94,7 +95,8 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
     size_t batch = 0;
     std::string schedule = "load";
     long run_job = -1;
-    bool resume = false, plan_only = false, compare_only = false;
+    bool resume = false, plan_only = false, compare_only = false, no_export_cache = false;
+    std::string export_cache;
     double timeout = kDefaultToolTimeoutSeconds;
     BudgetOptions budget;
   };
@@ -170,6 +172,15 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
       "--compare-only", args->compare_only,
       "Compare and report from the plan's EXRs and job records (a job without a usable "
       "record is an error); render nothing");
+  auto* export_cache = cmd->add_option(
+      "--export-cache", args->export_cache,
+      "Folder of the export cache: POV-Ray's and Blender's exports (and exporters' refusals) stored by a "
+      "SHA-256 of the scene's files, its textures' and model files' bytes and this xval executable, so a "
+      "scene exported for one run is copied, not exported, for the next; a partial or altered entry is "
+      "exported again (default: $XDG_CACHE_HOME/xval/exports, else ~/.cache/xval/exports; at most 2 GiB, "
+      "least recently used entries removed)");
+  cmd->add_flag("--no-export-cache", args->no_export_cache, "Export every scene, read and store no cache")
+      ->excludes(export_cache);
   run_job->needs(plan);
   compare_only->needs(plan);
   run_job->excludes(compare_only);
@@ -186,6 +197,10 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
                                    ": the renderer files come from the plan (recorded with their SHA-256 when it "
                                    "was made); give no --renderer-file");
         renderers::registerRendererFiles(*renderer_files);
+        if (!args->no_export_cache)
+          renderers::setExportCache({args->export_cache.empty() ? renderers::defaultExportCacheFolder()
+                                                                : std::filesystem::path(args->export_cache),
+                                     renderers::kDefaultExportCacheBytes});
         if (!args->plan.empty()) {
           if (args->run_job < 0 && !args->compare_only)
             throw std::runtime_error("--plan " + args->plan + ": say what to do: --run-job K or --compare-only");

@@ -22,6 +22,7 @@
 // (--batch).
 #include "blender/blender_render.h"
 #include "gltf/gltf_exporter.h"
+#include "renderers/export_cache.h"
 #include "renderers/renderer.h"
 
 namespace xval::renderers {
@@ -49,7 +50,7 @@ std::string blenderRefusal(const Scene& scene) { return blenderEngineRefusal(sce
 // renderBlenderBatch); the time-out is the first item's, per scene.
 std::vector<BatchOutcome> blenderBatch(const std::vector<BatchItem>& items, BlenderEngine engine) {
   std::vector<BlenderBatchScene> scenes;
-  for (const BatchItem& item : items) scenes.push_back({item.scene, item.request.work_dir});
+  for (const BatchItem& item : items) scenes.push_back({item.scene, item.request.work_dir, cachedExport("gltf", item.request.export_key)});
   const double timeout = items.empty() ? kDefaultToolTimeoutSeconds : items.front().request.timeout_seconds;
   std::vector<BatchOutcome> out;
   for (BlenderBatchResult& r : renderBlenderBatch(scenes, timeout, engine)) {
@@ -73,7 +74,8 @@ Renderer blenderRenderer() {
   r.cannot_express = blenderRefusal;
   r.render = [](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
     ExternalRenderInfo tool;
-    Image image = renderWithBlender(scene, request.work_dir, request.timeout_seconds, &tool);
+    Image image = renderWithBlender(scene, request.work_dir, request.timeout_seconds, &tool, BlenderMode::Model,
+                                    BlenderEngine::Cycles, cachedExport("gltf", request.export_key));
     setInfo(info, tool);
     return image;
   };

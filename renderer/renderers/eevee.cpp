@@ -18,6 +18,7 @@
 // script); same version line. render_seconds: the log's render Time.
 // Batches as the blender renderer's (renderers/blender.cpp).
 #include "blender/blender_render.h"
+#include "renderers/export_cache.h"
 #include "renderers/renderer.h"
 
 namespace xval::renderers {
@@ -38,7 +39,7 @@ Renderer eeveeRenderer() {
   r.render = [](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
     ExternalRenderInfo tool;
     Image image = renderWithBlender(scene, request.work_dir, request.timeout_seconds, &tool, BlenderMode::Model,
-                                    BlenderEngine::Eevee);
+                                    BlenderEngine::Eevee, cachedExport("gltf", request.export_key));
     setInfo(info, tool);
     return image;
   };

@@ -15,6 +15,7 @@
 // `povray --version`. render_seconds: the log's Trace Time.
 #include "povray/pov_exporter.h"
 #include "povray/pov_render.h"
+#include "renderers/export_cache.h"
 #include "renderers/renderer.h"
 
 namespace xval::renderers {
@@ -36,7 +37,8 @@ Renderer povrayRenderer() {
   };
   r.render = [](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
     ExternalRenderInfo tool;
-    Image image = renderWithPovray(scene, request.work_dir, request.timeout_seconds, &tool);
+    Image image = renderWithPovray(scene, request.work_dir, request.timeout_seconds, &tool,
+                                   cachedExport("pov", request.export_key));
     setInfo(info, tool);
     return image;
   };

@@ -38,6 +38,9 @@ struct RenderRequest {
   // The reference renderer's options; without them it renders the scene's
   // own settings (defaultOptions) on the exact double-precision path.
   std::optional<RenderOptions> options;
+  // The scene's inputs key for the export cache (renderers/export_cache.h);
+  // empty: the export is written, never cached.
+  std::string export_key = {};
 };
 
 // What a render took.

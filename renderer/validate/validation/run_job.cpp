@@ -12,6 +12,7 @@
 #include "image/image.h"
 #include "process/job_pool.h"
 #include "render/renderer.h"
+#include "renderers/export_cache.h"
 #include "renderers/registry.h"
 #include "scene/scene_loader.h"
 
@@ -38,6 +39,7 @@ renderers::RenderRequest requestFor(const Plan& plan, const RenderJob& job, cons
     request.options = o;
   }
   if (renderer.external()) {
+    request.export_key = exportInputsKey(scene, job.path);
     request.work_dir = plan.dir / job.scene / (job.renderer + ".work");
     makeFreshFolder(request.work_dir);
   }
@@ -88,7 +90,11 @@ StartedJob startJob(const Plan& plan, const RenderJob& job) {
     const renderers::Renderer& renderer = renderers::registry().at(job.renderer);
     // A renderer that declares it cannot express the scene renders nothing:
     // its record says why (a verdict; compare_step.h leaves its pairs out).
-    if (renderer.cannot_express) s.rec.not_expressible = renderer.cannot_express(scene);
+    // (Through the export cache: the refusal of a scene checked before is
+    // read back, renderers/export_cache.h.)
+    if (renderer.cannot_express)
+      s.rec.not_expressible = renderers::cachedRefusal(renderer.id, exportInputsKey(scene, job.path),
+                                                       [&] { return renderer.cannot_express(scene); });
     if (s.rec.not_expressible.empty()) s.scene = std::move(scene);
   } catch (const std::exception& e) {
     s.rec.error = e.what();
