@@ -42,6 +42,11 @@
 // --compare-only alone, --run-job shared), and a new run removes the old
 // results.json and report.html before it plans.
 //
+// Exports (POV-Ray's, the glTF for Blender) and the exporters' refusals go
+// through the export cache (renderers/export_cache.h): --export-cache DIR,
+// default $XDG_CACHE_HOME/xval/exports or ~/.cache/xval/exports;
+// --no-export-cache exports every scene.
+//
 // Scenes into a folder that holds an earlier run: those cases are updated
 // and the folder's other cases kept (compared again from their renders,
 // not rendered again), or dropped with the reason on stderr when their
