@@ -43,21 +43,8 @@ SPEC = os.path.join(ROOT, "reference", "specs", "throughput_sweep.json")
 COMPARE = os.path.join(ROOT, "tests", "cluster", "compare_runs.py")
 VARIANTS = {"before": ["--batch", "1", "--schedule", "count"], "after": []}
 
-# "  Parse Time:  0 hours  0 minutes  0 seconds (0.108 seconds)"
-POV_TIME = re.compile(r"^\s*(Parse|Bounding|Trace|Photon|Radiosity) Time:.*\(([0-9.]+) seconds\)")
 # Blender: " Time: 00:00.27 (Saving: 00:00.00)"
 BLENDER_TIME = re.compile(r" Time: (\d+):([0-9.]+)")
-
-
-def povray_busy(log):
-    total, found = 0.0, False
-    with open(log, errors="replace") as f:
-        for line in f:
-            m = POV_TIME.match(line)
-            if m:
-                total += float(m.group(2))
-                found = True
-    return total if found else None
 
 
 def blender_busy(log):
@@ -84,8 +71,11 @@ def busy_of_run(out):
         rec = json.load(open(rec_file))
         work = os.path.join(out, scene, renderer + ".work")
         value = None
-        if renderer == "povray" and os.path.exists(os.path.join(work, "povray.log")):
-            value = povray_busy(os.path.join(work, "povray.log"))
+        if renderer == "povray":
+            # The job record has POV-Ray's log figures (read by xval):
+            # parse (with bounding) and trace; either missing: no figure.
+            if "parse_seconds" in rec and "render_seconds" in rec:
+                value = rec["parse_seconds"] + rec["render_seconds"]
         elif renderer in ("blender", "eevee") and os.path.exists(os.path.join(work, renderer + ".log")):
             value = blender_busy(os.path.join(work, renderer + ".log"))
         elif renderer not in ("povray", "blender", "eevee"):

@@ -32,6 +32,7 @@ struct ExternalRenderInfo {
   double seconds = 0.0;          // the tool's whole process, wall time
   std::filesystem::path log;
   double render_seconds = -1.0;  // the render alone, as the tool reports it (-1: not reported)
+  double parse_seconds = -1.0;   // reading the scene, as the tool reports it (-1: not reported)
 };
 
 inline constexpr double kDefaultToolTimeoutSeconds = 600.0;

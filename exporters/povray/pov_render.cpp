@@ -1,33 +1,12 @@
 #include "povray/pov_render.h"
 
-#include <cstdio>
-#include <fstream>
 #include <string>
 
 #include "process/run_process.h"
 #include "povray/pov_exporter.h"
+#include "povray/pov_log.h"
 
 namespace xval {
-
-namespace {
-// POV-Ray 3.7's statistics end with
-//   "  Trace Time:       0 hours  0 minutes  0 seconds (0.665 seconds)";
-// the figure in brackets is the trace alone (parsing is reported apart).
-double traceTimeFromLog(const std::filesystem::path& log) {
-  std::ifstream in(log);
-  std::string line;
-  double found = -1.0;
-  while (std::getline(in, line)) {
-    const auto at = line.find("Trace Time:");
-    const auto open = line.rfind('(');
-    double s;
-    if (at != std::string::npos && open != std::string::npos &&
-        std::sscanf(line.c_str() + open, "(%lf seconds)", &s) == 1)
-      found = s;
-  }
-  return found;
-}
-}  // namespace
 
 Image renderWithPovray(const Scene& scene, const std::filesystem::path& work_dir,
                        double timeout_seconds, ExternalRenderInfo* info, const ExportThrough& through) {
@@ -40,7 +19,15 @@ Image renderWithPovray(const Scene& scene, const std::filesystem::path& work_dir
   const std::filesystem::path out = work_dir / ex.output_name;
   const std::filesystem::path log = work_dir / "povray.log";
   ProcessResult r = runProcess({"povray", "scene.ini", "+O" + ex.output_name}, work_dir, log, timeout_seconds);
-  if (info) *info = {r.seconds, log, traceTimeFromLog(log)};
+  if (info) {
+    // parse_seconds: the scene's preparation before the trace, Parse Time
+    // plus Bounding Time (the exports use no photons or radiosity).
+    const PovLogTimes t = povLogTimesOfFile(log);
+    const double prep = t.parse_seconds < 0    ? -1.0
+                        : t.bounding_seconds < 0 ? t.parse_seconds
+                                                 : t.parse_seconds + t.bounding_seconds;
+    *info = {r.seconds, log, t.trace_seconds, prep};
+  }
   requireToolOutput("povray", ex.pov, r, out);
   const SubpixelGrid& g = ex.grid;
   Image fine;

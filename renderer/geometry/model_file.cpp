@@ -3,7 +3,6 @@
 
 #include <assimp/BaseImporter.h>
 #include <assimp/DefaultIOSystem.h>
-#include <assimp/Exporter.hpp>
 #include <assimp/Importer.hpp>
 #include <assimp/ai_assert.h>
 #include <assimp/postprocess.h>
@@ -20,7 +19,9 @@
 #include <memory>
 #include <set>
 #include <sstream>
+#include <string_view>
 
+#include "geometry/assimp_dump.h"
 #include "geometry/transform.h"
 #include "process/run_process.h"
 
@@ -529,7 +530,7 @@ std::optional<ModelTexture> baseColorTexture(const aiScene* scene, const aiMesh*
 // (tests/fuzz, fuzz.model.smoke) found, in Debian's 5.2.5 under
 // AddressSanitizer, a heap-buffer-overflow in the GLB reader and a bus
 // error in a post-processing step on a PLY file, past every check above
-// (tests/unit/model_file_test.cpp keeps both inputs). So Assimp reads the
+// (kept in tests/fuzz/seeds/model; ModelFile.AssimpCrashIsAnError). So Assimp reads the
 // file in a forked child (process/run_process.h, runForked: its own
 // process group, a time-out, killed on an interrupt), with everything of
 // Assimp's that touches the file's bytes: the reader and the
@@ -538,19 +539,20 @@ std::optional<ModelTexture> baseColorTexture(const aiScene* scene, const aiMesh*
 //   error      Assimp's error string (empty: it read a scene)
 //   refusals   count, then each: the files GuardedIO refused
 //   opened     count, then each: the files it opened, canonical
-//   assbin     the scene in Assimp's own binary dump format (floats
-//              bit for bit, every mesh, node, material and embedded
-//              texture; empty with an error)
-// and this process reads the scene back from the dump with Assimp's
-// assbin reader: a format Assimp itself wrote, not the hostile file. A
-// crash, a sanitizer report or a hang of the child is this file's
-// ModelFileError, naming what happened.
+//   scene      the part of the scene the loader reads (assimp_dump.h;
+//              empty with an error)
+// and this process rebuilds the aiScene from the dump, checking every
+// count of it (a defect of Assimp's may have corrupted the child's
+// memory). A crash, a sanitizer report or a hang of the child is this
+// file's ModelFileError, naming what happened.
 
 struct ChildRead {
   std::string error;
   std::vector<std::string> refusals;
   std::vector<fs::path> opened;
-  std::string assbin;
+  std::string output;   // what the child wrote
+  size_t scene_at = 0;  // where writeAssimpDump's bytes begin in it (they run to its end)
+  std::string_view scene() const { return std::string_view(output).substr(scene_at); }
 };
 
 void putField(std::string& out, const std::string& bytes) {
@@ -589,23 +591,14 @@ ChildRead readInChildProcess(const fs::path& real, const ModelLimits& lim) {
     }
     if (!scene && error.empty()) error = imp.GetErrorString();
     if (!scene && error.empty()) error = "Assimp read no scene and gave no reason";
-    std::string assbin;
-    if (scene) {
-      Assimp::Exporter exporter;
-      const aiExportDataBlob* blob = exporter.ExportToBlob(scene, "assbin");
-      if (!blob || blob->next) {
-        error = std::string("Assimp could not write the scene it read as assbin: ") + exporter.GetErrorString();
-      } else {
-        assbin.assign(static_cast<const char*>(blob->data), blob->size);
-      }
-    }
+    const std::string dump = scene ? writeAssimpDump(*scene) : std::string();
     std::string out;
     putField(out, error);
     putField(out, std::to_string(io->refusals().size()));
     for (const auto& r : io->refusals()) putField(out, r);
     putField(out, std::to_string(io->opened().size()));
     for (const auto& o : io->opened()) putField(out, o.string());
-    putField(out, assbin);
+    putField(out, dump);
     size_t done = 0;
     while (done < out.size()) {
       const ssize_t w = write(out_fd, out.data() + done, out.size() - done);
@@ -618,7 +611,7 @@ ChildRead readInChildProcess(const fs::path& real, const ModelLimits& lim) {
   // be several times the files' bytes (an OBJ corner's indices become a
   // vertex of its own).
   const size_t max_output = size_t(16 * lim.max_total_bytes + (64ll << 20));
-  const ForkedResult f = runForked(work, lim.max_import_seconds, max_output);
+  ForkedResult f = runForked(work, lim.max_import_seconds, max_output);
   if (!f.process.ok()) {
     std::string what = f.process.describe();
     const std::string summary = f.summary();
@@ -652,8 +645,15 @@ ChildRead readInChildProcess(const fs::path& real, const ModelLimits& lim) {
     if (!takeField(f.output, at, o)) throw bad("opened");
     r.opened.emplace_back(o);
   }
-  if (!takeField(f.output, at, r.assbin) || at != f.output.size()) throw bad("assbin");
-  if (r.error.empty() && r.assbin.empty()) throw bad("assbin");
+  // The scene's bytes stay where they are (the dump is the size of the mesh).
+  if (f.output.size() - at < 8) throw bad("scene");
+  uint64_t n = 0;
+  for (int k = 0; k < 8; ++k) n |= uint64_t((unsigned char)f.output[at + k]) << (8 * k);
+  at += 8;
+  if (n != f.output.size() - at) throw bad("scene");
+  if (r.error.empty() && n == 0) throw bad("scene");
+  r.output = std::move(f.output);
+  r.scene_at = at;
   return r;
 }
 
@@ -711,11 +711,8 @@ Model loadModelFile(const fs::path& file_in, const ModelLoadOptions& options) {
       throw ModelFileError(file + ": no triangles (the file has only points or lines)");
     throw ModelFileError(file + ": cannot read: " + child.error);
   }
-  Assimp::Importer back;
-  const aiScene* scene = back.ReadFileFromMemory(child.assbin.data(), child.assbin.size(), 0, "assbin");
-  if (!scene)
-    throw ModelFileError(file + ": cannot read back the scene Assimp's child process wrote (" +
-                         std::to_string(child.assbin.size()) + " bytes of assbin): " + back.GetErrorString());
+  const std::unique_ptr<aiScene> rebuilt = readAssimpDump(child.scene(), file, lim.max_node_depth);
+  const aiScene* scene = rebuilt.get();
   if (!scene->mRootNode || scene->mNumMeshes == 0 || !scene->mMeshes)
     throw ModelFileError(file + ": no triangles (the file has no surface meshes)");
 

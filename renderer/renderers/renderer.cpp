@@ -28,6 +28,7 @@ void setInfo(RenderInfo* info, const ExternalRenderInfo& tool) {
   if (!info) return;
   info->seconds = tool.seconds;
   info->render_seconds = tool.render_seconds;
+  info->parse_seconds = tool.parse_seconds;
   info->log = tool.log;
 }
 

@@ -47,6 +47,7 @@ struct RenderRequest {
 struct RenderInfo {
   double seconds = 0.0;          // the whole render (an outside tool: its whole process)
   double render_seconds = -1.0;  // the render alone, as the tool reports it (-1: not reported)
+  double parse_seconds = -1.0;   // reading the scene, as the tool reports it (-1: not reported)
   std::filesystem::path log;     // an outside tool's log (empty for none)
   RenderStats stats;             // the reference renderer's figures (default for the others)
 };

@@ -8,7 +8,7 @@ with RUN_B/report.html. Everything must be equal except what legitimately
 differs between two runs of the same scenes:
 
   results.json  wall_seconds (the run's wall time), and each render's
-                `seconds` and `render_seconds` (how long it took);
+                `seconds`, `render_seconds`, `process_seconds`, `parse_seconds` (how long it took);
   report.html   the same figures where the report prints them: "Wall time
                 X s" and each render's caption "RENDERER, X s (render Y s)".
 
@@ -25,7 +25,7 @@ import json
 import re
 import sys
 
-TIMING_KEYS = {"seconds", "render_seconds", "wall_seconds"}
+TIMING_KEYS = {"seconds", "render_seconds", "process_seconds", "parse_seconds", "wall_seconds"}
 
 
 def strip_timings(node, path="", dropped=None):

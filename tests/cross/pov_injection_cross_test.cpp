@@ -13,6 +13,7 @@
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "texture/brick.h"
+#include "support/temp_files.h"
 
 using namespace xval;
 namespace fs = std::filesystem;
@@ -36,9 +37,10 @@ Scene hostileScene(const fs::path& dir) {
 }  // namespace
 
 TEST(PovrayCross, HostileTexturePathAndNameRenderCorrectly) {
-  Scene s = hostileScene(fs::temp_directory_path() / "xval_cross_inject_pov");
+  const fs::path dir = test::freshTempDir("xval_cross_inject_pov");
+  Scene s = hostileScene(dir);
   Image ref = renderScene(s, RenderOptions{});
-  Image pov = renderWithPovray(s, fs::temp_directory_path() / "xval_cross_inject_pov" / "work", 600.0);
+  Image pov = renderWithPovray(s, dir / "work", 600.0);
   // The default tolerance (reference/tolerances.json, the toolkit's own).
   const Tolerance t = loadTolerances(toolkitToleranceFile()).default_tolerance;
   CompareMetrics m = compareImages(ref, pov, t);
@@ -47,9 +49,10 @@ TEST(PovrayCross, HostileTexturePathAndNameRenderCorrectly) {
 }
 
 TEST(BlenderCross, HostileTexturePathAndNameRenderCorrectly) {
-  Scene s = hostileScene(fs::temp_directory_path() / "xval_cross_inject_blender");
+  const fs::path dir = test::freshTempDir("xval_cross_inject_blender");
+  Scene s = hostileScene(dir);
   Image ref = renderScene(s, RenderOptions{});
-  Image bl = renderWithBlender(s, fs::temp_directory_path() / "xval_cross_inject_blender" / "work", 600.0);
+  Image bl = renderWithBlender(s, dir / "work", 600.0);
   // The default tolerance (reference/tolerances.json, the toolkit's own).
   const Tolerance t = loadTolerances(toolkitToleranceFile()).default_tolerance;
   CompareMetrics m = compareImages(ref, bl, t);

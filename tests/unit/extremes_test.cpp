@@ -27,6 +27,7 @@
 #include "shading/shader.h"
 #include "validate/extremes/matrix.h"
 #include "validate/extremes/measure.h"
+#include "support/temp_files.h"
 
 using namespace xval;
 namespace m = xval::models;
@@ -208,7 +209,7 @@ TEST(Extremes, MatrixHasNoNanOrInfAndFloatFollowsDouble) {
       "eye_at_vertex_phong",    // float accepts the hit at t = 0 on the cap around the eye
       "eye_at_vertex_gouraud",  // (the same)
       "degenerate_sphere_far"};  // coincident twin triangles: which one is hit is rounding
-  const auto dir = std::filesystem::temp_directory_path() / "xval_extremes_test";
+  const auto dir = xval::test::freshTempDir("xval_extremes_test");
   std::filesystem::remove_all(dir);
   const auto cases = extremes::extremesMatrix({40});
   const auto files = extremes::writeCaseScenes(cases, dir / "scenes");

@@ -5,6 +5,7 @@
 
 #include "image/image.h"
 #include "image/image_header.h"
+#include "support/temp_files.h"
 
 using namespace xval;
 
@@ -16,7 +17,8 @@ Image sample() {
   return img;
 }
 std::filesystem::path tmp(const char* name) {
-  return std::filesystem::temp_directory_path() / name;
+  static const std::filesystem::path dir = xval::test::freshTempDir("xval_image_io");
+  return dir / name;
 }
 }  // namespace
 
@@ -29,7 +31,7 @@ TEST(ImageIo, ExrRoundTripIsExactAndUnclamped) {
   EXPECT_EQ(a.rgba, b.rgba);
   EXPECT_EQ(a.raw, b.raw);
   // No temporary (files/atomic_write.h: xval_rt.exr.partial-<pid>-<n>/) is left.
-  for (const auto& e : std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
+  for (const auto& e : std::filesystem::directory_iterator(tmp("xval_rt.exr").parent_path()))
     EXPECT_NE(e.path().filename().string().rfind("xval_rt.exr.partial", 0), 0u) << e.path();
 }
 

@@ -8,6 +8,7 @@
 
 #include "process/run_process.h"
 #include "validate/junit_report.h"
+#include "support/temp_files.h"
 
 using namespace xval;
 using J = nlohmann::json;
@@ -37,8 +38,7 @@ J results() {
 }
 
 std::filesystem::path dir() {
-  auto d = std::filesystem::temp_directory_path() / "xval_junit_test";
-  std::filesystem::create_directories(d);
+  static const std::filesystem::path d = xval::test::freshTempDir("xval_junit_test");
   return d;
 }
 

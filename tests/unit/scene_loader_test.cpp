@@ -12,6 +12,7 @@
 #include "texture/texture.h"
 
 #include <sstream>
+#include "support/temp_files.h"
 
 using namespace xval;
 
@@ -176,7 +177,7 @@ TEST(SceneLoader, CameraLookingAlongUp) {
 
 TEST(SceneLoader, MissingFileAndRelativeTexturePath) {
   EXPECT_THROW(loadScene("/no/such/scene.json"), SceneError);
-  auto dir = std::filesystem::temp_directory_path() / "xval_loader_test";
+  auto dir = xval::test::freshTempDir("xval_loader_test");
   std::filesystem::create_directories(dir);
   writeTexturePng(makeBrickTexture(), dir / "tex.png");  // the loader checks the header
   std::string text = kValid;
@@ -228,7 +229,7 @@ TEST(SceneGenerator, Fig1SpecGeneratesTheCommittedScenes) {
 }
 
 TEST(SceneGenerator, InvalidCombinationNamesTheSpecAndTheField) {
-  auto dir = std::filesystem::temp_directory_path() / "xval_gen_test";
+  auto dir = xval::test::freshTempDir("xval_gen_test");
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "spec.json") << R"({"format": "xval-generate/1",
     "base": {"camera": {"position": [0,0,4], "target": [0,0,0]}, "objects": [{"shape": "sphere"}],

@@ -8,6 +8,7 @@
 
 #include "validate/common/number_text.h"
 #include "validate/common/provenance.h"
+#include "support/temp_files.h"
 
 using namespace xval;
 
@@ -49,7 +50,7 @@ TEST(Provenance, NamesTheRealCompiler) {
 }
 
 TEST(Provenance, CollectsTheRecord) {
-  const auto scratch = std::filesystem::temp_directory_path() / "xval_provenance_test.log";
+  const auto scratch = xval::test::freshTempDir("xval_provenance_test") / "provenance.log";
   const Provenance p = collectProvenance(scratch);
   EXPECT_EQ(p.date_utc.size(), 20u) << p.date_utc;  // 2026-12-01T11:46:44Z
   EXPECT_EQ(p.date_utc.back(), 'Z');

@@ -76,6 +76,8 @@ J renderJson(const RenderJob& job, const Render& r) {
   if (notExpressible(r)) jr["not_expressible"] = r.rec.not_expressible;
   else jr["image"] = job.png();
   if (r.rec.render_seconds >= 0) jr["render_seconds"] = r.rec.render_seconds;
+  if (r.rec.process_seconds >= 0) jr["process_seconds"] = r.rec.process_seconds;
+  if (r.rec.parse_seconds >= 0) jr["parse_seconds"] = r.rec.parse_seconds;
   if (!r.error.empty()) jr["error"] = r.error;
   return jr;
 }

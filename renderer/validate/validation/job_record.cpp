@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "files/atomic_write.h"
+#include "renderers/renderer.h"
 #include "scene/json_reader.h"
 #include "validate/validation/file_fields.h"
 
@@ -23,6 +24,13 @@ std::string hostName() {
 }
 
 }  // namespace
+
+void JobRecord::setToolTimes(const renderers::RenderInfo& info) {
+  render_seconds = info.render_seconds;
+  parse_seconds = info.parse_seconds;
+  // RenderInfo::seconds is a process's wall time only for an outside tool (one with a log).
+  process_seconds = info.log.empty() ? -1.0 : info.seconds;
+}
 
 JobRecord readRecord(const Plan& plan, const RenderJob& job) {
   JobRecord rec;
@@ -44,6 +52,8 @@ JobRecord readRecord(const Plan& plan, const RenderJob& job) {
     rec.input_hash = rd.str(j, "input_hash");
     rec.seconds = rd.num(j, "seconds");
     if (j.contains("render_seconds")) rec.render_seconds = rd.num(j, "render_seconds");
+    if (j.contains("process_seconds")) rec.process_seconds = rd.num(j, "process_seconds");
+    if (j.contains("parse_seconds")) rec.parse_seconds = rd.num(j, "parse_seconds");
     if (j.contains("error")) rec.error = rd.str(j, "error");
     if (j.contains("not_expressible")) rec.not_expressible = rd.str(j, "not_expressible");
     if (!rec.error.empty() && !rec.not_expressible.empty())
@@ -81,6 +91,8 @@ void writeRecord(const Plan& plan, const RenderJob& job, const JobRecord& rec) {
   j["input_hash"] = job.input_hash;
   j["seconds"] = rec.seconds;
   if (rec.render_seconds >= 0) j["render_seconds"] = rec.render_seconds;
+  if (rec.process_seconds >= 0) j["process_seconds"] = rec.process_seconds;
+  if (rec.parse_seconds >= 0) j["parse_seconds"] = rec.parse_seconds;
   if (!rec.error.empty()) j["error"] = rec.error;
   if (!rec.not_expressible.empty()) j["not_expressible"] = rec.not_expressible;
   j["host"] = hostName();

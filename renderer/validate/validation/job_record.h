@@ -10,6 +10,10 @@
 
 #include "validate/validation/plan.h"
 
+namespace xval::renderers {
+struct RenderInfo;
+}
+
 namespace xval::validation {
 
 // The record's "format" (also hashed into every input_hash).
@@ -19,6 +23,11 @@ struct JobRecord {
   bool present = false;    // a readable record exists
   std::string input_hash;  // what it was rendered from
   double seconds = 0.0, render_seconds = -1.0;
+  // An outside tool's own figures (-1: not reported): its whole process
+  // (wall) and the scene's parsing as its log reports it, so
+  // process - parse - render is its start-up and writing.
+  double process_seconds = -1.0, parse_seconds = -1.0;
+  void setToolTimes(const renderers::RenderInfo& info);
   std::string error;       // empty when the render succeeded
   // Why the renderer cannot express the scene, as it declared before
   // rendering (Renderer::cannot_express): a verdict, not an error; the job

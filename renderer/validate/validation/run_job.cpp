@@ -128,7 +128,7 @@ JobRecord runJob(const Plan& plan, const RenderJob& job) {
       renderers::RenderInfo info;
       const Image image = renderer.render(*s.scene, requestFor(plan, job, *s.scene, renderer), &info);
       writeImages(plan, job, image);
-      s.rec.render_seconds = info.render_seconds;
+      s.rec.setToolTimes(info);
     } catch (const std::exception& e) {
       s.rec.error = e.what();
     }
@@ -184,7 +184,7 @@ std::vector<JobRecord> runJobBatch(const Plan& plan, const std::vector<size_t>& 
         const renderers::BatchOutcome& o = outcomes[item_of[k]];
         if (!o.image) throw std::runtime_error(o.error);
         writeImages(plan, job, *o.image);
-        s.rec.render_seconds = o.info.render_seconds;
+        s.rec.setToolTimes(o.info);
       } catch (const std::exception& e) {
         s.rec.error = e.what();
       }
