@@ -44,6 +44,11 @@ inline constexpr double kDefaultToolTimeoutSeconds = 600.0;
 // harness calls write(dir) itself.
 using ExportThrough =
     std::function<void(const std::filesystem::path& dir, const std::function<void(const std::filesystem::path&)>& write)>;
+// The ExportThrough of a folder that already holds the export (its caller
+// wrote it there): nothing is written.
+inline ExportThrough exportedAlready() {
+  return [](const std::filesystem::path&, const std::function<void(const std::filesystem::path&)>&) {};
+}
 inline void exportThrough(const ExportThrough& through, const std::filesystem::path& dir,
                           const std::function<void(const std::filesystem::path&)>& write) {
   if (through) through(dir, write);
