@@ -1,18 +1,43 @@
 #include "povray/sdl.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 namespace xval::pov {
 
+namespace {
+// Significant digits of the shortest decimal that reads back as v
+// (std::to_chars without a precision: "d.ddde+x").
+int shortestDigits(double v) {
+  char buf[40];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::scientific);
+  int digits = 0;
+  for (const char* c = buf; c < r.ptr && *c != 'e'; ++c) digits += (*c >= '0' && *c <= '9');
+  return digits;
+}
+}  // namespace
+
+// The text is the first of "%.6g", "%.7g", ..., "%.17g" that reads back as
+// v. No precision below P, the digit count of the shortest decimal that
+// reads back (shortestDigits), can: %.{p}g prints a p-digit decimal. So
+// the search starts at max(6, P), where it nearly always ends at once
+// (%.{P}g prints the p-digit decimal nearest to v, which is the shortest
+// one unless v is a power of two whose shortest decimal lies above it in
+// the wider upper half of its rounding interval). This costs one printf
+// and one parse per number instead of up to twelve of each; the text is
+// the same (PovSdl.NumIsTheFirstPrecisionThatRoundTrips).
 std::string num(double v) {
   if (v == 0.0) return std::signbit(v) ? "-0" : "0";  // the sign of a zero normal component too
   char buf[40];
-  // The shortest %.*g that round-trips.
-  for (int prec = 6; prec <= 17; ++prec) {
-    std::snprintf(buf, sizeof buf, "%.*g", prec, v);
-    if (std::strtod(buf, nullptr) == v) break;
+  const int first = std::isfinite(v) ? std::max(6, shortestDigits(v)) : 6;
+  for (int prec = first; prec <= 17; ++prec) {
+    const int n = std::snprintf(buf, sizeof buf, "%.*g", prec, v);
+    double back = 0.0;
+    const auto r = std::from_chars(buf, buf + n, back);
+    if (r.ec == std::errc() && r.ptr == buf + n && back == v) break;
   }
   return buf;
 }

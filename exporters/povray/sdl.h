@@ -7,7 +7,8 @@
 
 namespace xval::pov {
 
-// Shortest text that reads back as the same double ("%.17g", trimmed).
+// The first of "%.6g" .. "%.17g" that reads back as the same double
+// (so at least six significant digits, at most seventeen).
 std::string num(double v);
 // <x, y, z>
 std::string vec(glm::dvec3 v);

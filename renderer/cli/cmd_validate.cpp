@@ -3,6 +3,7 @@
 //               [--renderers LIST] [--tolerances FILE] [--extremes DIR] [--tradeoff DIR]
 // xval validate [SCENES or DIRS...] -o OUT --plan-only [--resume]
 // xval validate --plan OUT/jobs.json --run-job K
+// xval validate --plan OUT/jobs.json --run-jobs LIST [--jobs N] [--batch N] [--schedule load|count]
 // xval validate --plan OUT/jobs.json --compare-only
 //
 // Renders every scene with every every-scene renderer of the registry
@@ -16,7 +17,9 @@
 // fixed), render jobs, and the compare/report step. A plain run does all
 // three in this process (the render jobs in a thread pool); --plan-only,
 // --run-job and --compare-only do one step each, which is how a cluster
-// runs it (scripts/slurm/submit.sh, docs/cluster.md).
+// runs it (scripts/slurm/submit.sh, docs/cluster.md). --run-jobs renders
+// a list of the plan's jobs (a Slurm array task's batch) the way a plain
+// run renders all of them, with the same scheduling.
 //
 // Scheduling (validate/validation/run_job.h): Blender's jobs (blender,
 // eevee) go to persistent workers, one Blender process per --batch scenes
@@ -35,7 +38,8 @@
 // Exit 0: every compared pair within tolerance; 1: some case outside; 2: an error
 // (bad scene, renderer missing or broken, a job not run). --plan-only
 // exits 0 when it wrote the plan; --run-job exits 0 when the render
-// succeeded and 2 when it failed (the failure is in the job's record).
+// succeeded and 2 when it failed (the failure is in the job's record);
+// --run-jobs 0 when every job of the list succeeded, 2 when any failed.
 // Files are written whole or not at all (files/atomic_write.h), so an
 // interrupted run leaves no file that looks complete; the output folder is
 // locked (files/output_folder.h: a plain run, --plan-only and
@@ -51,6 +55,7 @@
 // and the folder's other cases kept (compared again from their renders,
 // not rendered again), or dropped with the reason on stderr when their
 // scene file is gone or changed (validate/validation/plan_update.h).
+#include <algorithm>
 #include <cstdio>
 #include <functional>
 #include <memory>
@@ -100,6 +105,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
     size_t batch = 0;
     std::string schedule = "load";
     long run_job = -1;
+    std::string run_jobs;
     bool resume = false, plan_only = false, compare_only = false, no_export_cache = false;
     std::string export_cache;
     double timeout = kDefaultToolTimeoutSeconds;
@@ -125,7 +131,8 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
       "reason, and the case is decided on the other pairs.\n"
       "Exit 0 when every compared pair passes, 1 when any fails, 2 on an error (bad scene, renderer "
       "missing or broken, a job not run). --plan-only exits 0 once the plan is written; "
-      "--run-job exits 0 when its render succeeded, 2 when it failed.");
+      "--run-job exits 0 when its render succeeded, 2 when it failed; --run-jobs likewise for every "
+      "job of its list.");
   cmd->add_option("scenes", args->inputs, "Scene files or folders (default: reference/scenes)");
   cmd->add_option("-o,--output", args->dir,
                   "Output folder, e.g. results/<run>/ (required unless --plan is given)");
@@ -173,6 +180,10 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
                                   "Run render job K (0-based index into the plan) and write its "
                                   "EXR, PNG and record, whether or not it was done before")
                       ->check(CLI::NonNegativeNumber);
+  auto* run_jobs = cmd->add_option("--run-jobs", args->run_jobs,
+                                   "Run the listed render jobs (plan indices and ranges, e.g. 0-3,7,9-11: "
+                                   "a Slurm array task's batch) as a plain run renders them (--jobs, "
+                                   "--batch, --schedule), whether or not they were done before");
   auto* compare_only = cmd->add_flag(
       "--compare-only", args->compare_only,
       "Compare and report from the plan's EXRs and job records (a job without a usable "
@@ -189,13 +200,24 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
   run_job->needs(plan);
   compare_only->needs(plan);
   run_job->excludes(compare_only);
+  run_jobs->needs(plan);
+  run_jobs->excludes(compare_only)->excludes(run_job);
   plan->excludes(plan_only)->excludes(resume);
   auto renderer_files = addRendererFileOption(cmd);
   cmd->callback([args, &run, cmd, sections, renderer_files]() {
-    const bool local_options_given = cmd->count("--jobs") + cmd->count("--batch") + cmd->count("--schedule") + cmd->count("--renderers") + cmd->count("--timeout") + cmd->count("--max-triangles") +
+    // Scheduling: for a plain run and --run-jobs.
+    const bool schedule_given = cmd->count("--jobs") + cmd->count("--batch") + cmd->count("--schedule") > 0;
+    const bool local_options_given = cmd->count("--renderers") + cmd->count("--timeout") + cmd->count("--max-triangles") +
                                          cmd->count("--max-samples") + cmd->count("--max-memory-mb") +
                                          cmd->count("--allow-large") > 0;
-    run = [args, local_options_given, sections, renderer_files]() -> int {
+    run = [args, schedule_given, local_options_given, sections, renderer_files]() -> int {
+      auto settingsOf = [](const Args& a) {
+        v::RunSettings settings;
+        settings.workers = a.jobs > 0 ? a.jobs : defaultWorkers();
+        settings.batch = a.batch;
+        settings.by_load = a.schedule == "load";
+        return settings;
+      };
       try {
         if (!args->plan.empty() && !renderer_files->empty())
           throw std::runtime_error("--plan " + args->plan +
@@ -207,13 +229,14 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
                                                                 : std::filesystem::path(args->export_cache),
                                      renderers::kDefaultExportCacheBytes});
         if (!args->plan.empty()) {
-          if (args->run_job < 0 && !args->compare_only)
-            throw std::runtime_error("--plan " + args->plan + ": say what to do: --run-job K or --compare-only");
+          if (args->run_job < 0 && args->run_jobs.empty() && !args->compare_only)
+            throw std::runtime_error("--plan " + args->plan +
+                                     ": say what to do: --run-job K, --run-jobs LIST or --compare-only");
           if (!args->inputs.empty() || !args->dir.empty() || !args->tolerances.empty() ||
-              local_options_given)
+              local_options_given || (schedule_given && args->run_jobs.empty()))
             throw std::runtime_error("--plan " + args->plan +
                                      ": scenes, -o, --renderers, --tolerances, --timeout and the budget options come from the plan "
-                                     "(and --jobs is for a plain run); give none of them");
+                                     "(and --jobs, --batch and --schedule are for a plain run or --run-jobs); give none of them");
           const v::Plan plan = v::readPlan(args->plan);
           // Jobs of one plan run side by side (a cluster array): they share
           // the folder; a plain run, --plan-only or --compare-only excludes
@@ -225,6 +248,15 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
           if (!args->extremes.empty() || !args->tradeoff.empty())
             throw std::runtime_error("--extremes and --tradeoff are for the compare step (a plain run or "
                                      "--compare-only), not --run-job");
+          if (!args->run_jobs.empty()) {
+            const std::vector<size_t> list = v::parseJobList(args->run_jobs, plan.jobs.size());
+            const std::vector<v::JobRecord> recs = v::runJobs(plan, list, settingsOf(*args));
+            const size_t failed = size_t(std::count_if(recs.begin(), recs.end(),
+                                                       [](const v::JobRecord& r) { return !r.error.empty(); }));
+            std::fprintf(stderr, "xval validate: jobs %s: %zu of %zu ok, %zu failed (errors in their records)\n",
+                         args->run_jobs.c_str(), list.size() - failed, list.size(), failed);
+            return failed == 0 ? 0 : 2;
+          }
           if (size_t(args->run_job) >= plan.jobs.size())
             throw std::runtime_error("--run-job " + std::to_string(args->run_job) + ": " + args->plan +
                                      " has jobs 0 to " + std::to_string(plan.jobs.size() - 1));
@@ -272,11 +304,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
         if (args->resume && todo.size() < plan.jobs.size())
           std::fprintf(stderr, "xval validate: --resume: %zu of %zu jobs done before, %zu to run\n",
                        plan.jobs.size() - todo.size(), plan.jobs.size(), todo.size());
-        v::RunSettings settings;
-        settings.workers = args->jobs > 0 ? args->jobs : defaultWorkers();
-        settings.batch = args->batch;
-        settings.by_load = args->schedule == "load";
-        v::runJobs(plan, todo, settings);
+        v::runJobs(plan, todo, settingsOf(*args));
         return withJunit(plan, v::compareAndReport(plan, sections(*args)), args->junit);
       } catch (const std::exception& e) {
         std::fprintf(stderr, "xval validate: error: %s\n", e.what());

@@ -561,21 +561,29 @@ void putField(std::string& out, const std::string& bytes) {
   out += bytes;
 }
 
-// The next field of `in` from `at`; false if it runs past the end.
-bool takeField(const std::string& in, size_t& at, std::string& field) {
+// The next field of `in` from `at`: its bytes are [begin, at) afterwards;
+// false if it runs past the end.
+bool skipField(const std::string& in, size_t& at, size_t& begin) {
   if (in.size() - at < 8) return false;
   uint64_t n = 0;
   for (int k = 0; k < 8; ++k) n |= uint64_t((unsigned char)in[at + k]) << (8 * k);
   at += 8;
   if (n > in.size() - at) return false;
-  field.assign(in, at, size_t(n));
+  begin = at;
   at += size_t(n);
+  return true;
+}
+// The same, copying the field.
+bool takeField(const std::string& in, size_t& at, std::string& field) {
+  size_t begin = 0;
+  if (!skipField(in, at, begin)) return false;
+  field.assign(in, begin, at - begin);
   return true;
 }
 
 ChildRead readInChildProcess(const fs::path& real, const ModelLimits& lim) {
   const std::string file = real.string();
-  auto work = [&](int out_fd) {
+  auto work = [&]() {
     RestrictedImporter ri;
     Assimp::Importer& imp = ri.importer;
     auto io_owner = std::make_unique<GuardedIO>(real.parent_path(), lim);
@@ -599,13 +607,7 @@ ChildRead readInChildProcess(const fs::path& real, const ModelLimits& lim) {
     putField(out, std::to_string(io->opened().size()));
     for (const auto& o : io->opened()) putField(out, o.string());
     putField(out, dump);
-    size_t done = 0;
-    while (done < out.size()) {
-      const ssize_t w = write(out_fd, out.data() + done, out.size() - done);
-      if (w < 0 && errno == EINTR) continue;
-      if (w <= 0) throw std::runtime_error(std::string("writing the result: ") + std::strerror(errno));
-      done += size_t(w);
-    }
+    return out;
   };
   // The dump holds every vertex with its attributes as floats, which can
   // be several times the files' bytes (an OBJ corner's indices become a
@@ -645,15 +647,13 @@ ChildRead readInChildProcess(const fs::path& real, const ModelLimits& lim) {
     if (!takeField(f.output, at, o)) throw bad("opened");
     r.opened.emplace_back(o);
   }
-  // The scene's bytes stay where they are (the dump is the size of the mesh).
-  if (f.output.size() - at < 8) throw bad("scene");
-  uint64_t n = 0;
-  for (int k = 0; k < 8; ++k) n |= uint64_t((unsigned char)f.output[at + k]) << (8 * k);
-  at += 8;
-  if (n != f.output.size() - at) throw bad("scene");
-  if (r.error.empty() && n == 0) throw bad("scene");
+  // The scene's bytes stay where they are (the dump is the size of the
+  // mesh); they are the last field.
+  size_t scene_at = 0;
+  if (!skipField(f.output, at, scene_at) || at != f.output.size()) throw bad("scene");
+  if (r.error.empty() && scene_at == at) throw bad("scene");
   r.output = std::move(f.output);
-  r.scene_at = at;
+  r.scene_at = scene_at;
   return r;
 }
 

@@ -267,7 +267,7 @@ std::string readBack(int fd, off_t from, size_t cap) {
   return s;
 }
 
-[[noreturn]] void childMain(const std::function<void(int)>& work, int out_fd, int err_fd) {
+[[noreturn]] void childMain(const std::function<std::string()>& work, int out_fd, int err_fd) {
   setpgid(0, 0);
   sigset_t none;
   sigemptyset(&none);
@@ -282,7 +282,12 @@ std::string readBack(int fd, off_t from, size_t cap) {
   dup2(err_fd, 1);
   dup2(err_fd, 2);
   try {
-    work(out_fd);
+    const std::string result = work();
+    if (!writeAll(out_fd, result.data(), result.size())) {
+      const std::string m = std::string("writing the result: ") + std::strerror(errno) + "\n";
+      writeAll(2, m.data(), m.size());
+      _exit(72);
+    }
   } catch (const std::exception& e) {
     const std::string m = std::string("exception: ") + e.what() + "\n";
     writeAll(2, m.data(), m.size());
@@ -311,7 +316,7 @@ std::string ForkedResult::summary() const {
   return last;
 }
 
-ForkedResult runForked(const std::function<void(int out_fd)>& work, double timeout_seconds,
+ForkedResult runForked(const std::function<std::string()>& work, double timeout_seconds,
                        size_t max_output_bytes) {
   ForkedResult f;
   ProcessResult& r = f.process;

@@ -47,22 +47,22 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const std::filesy
 // the interrupt and crash signals at their default action and, in a
 // sanitizer build, no death callback (a fuzzer's crash report is about
 // the parent's input, not a child's); stdin is /dev/null, stdout and
-// stderr go to a buffer the parent keeps the end of. `work` writes its
-// result to `out_fd` (an in-memory file: writing never blocks on the
-// parent); the child then leaves with _exit(0), running no atexit
-// handler or static destructor of the parent's. An exception out of
-// `work` makes it exit with code 70 after printing the exception's
-// message to its stderr.
+// stderr go to a buffer the parent keeps the end of. `work` returns its
+// result, which the child writes to an in-memory file (writing never
+// blocks on the parent); the child then leaves with _exit(0), running no
+// atexit handler or static destructor of the parent's. An exception out
+// of `work` makes it exit with code 70 after printing the exception's
+// message to its stderr; a failed write of the result, code 72.
 struct ForkedResult {
   ProcessResult process;    // how the child ended (`log` is unused)
-  std::string output;       // what `work` wrote, when the child exited with 0
+  std::string output;       // what `work` returned, when the child exited with 0
   std::string diagnostics;  // the end of its stderr (at most kLogTailBytes), control characters blanked
   // The line of `diagnostics` saying what went wrong: a sanitizer's
   // "ERROR: ..." line, else the last non-empty one; empty if none.
   std::string summary() const;
 };
 // `max_output_bytes`: a larger output is an error (exit code 71), not read.
-ForkedResult runForked(const std::function<void(int out_fd)>& work, double timeout_seconds,
+ForkedResult runForked(const std::function<std::string()>& work, double timeout_seconds,
                        size_t max_output_bytes);
 
 // SIGINT, SIGTERM and SIGHUP (unless SIGHUP was ignored, as under nohup)

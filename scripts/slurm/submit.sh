@@ -10,8 +10,14 @@
 #                        (default: build/renderer/xval of this checkout)
 #   --max-parallel N     at most N render tasks at once (the array's %N;
 #                        default 16)
-#   --max-array-size N   at most N jobs per array (default and upper bound:
-#                        the cluster's MaxArraySize); more jobs are
+#   --jobs-per-task N    render N of the plan's jobs per array task (a
+#                        batch: Blender's in one persistent worker per
+#                        task CPU, the others side by side as a local run
+#                        does); 1: one job per task. Default: the jobs to
+#                        run split evenly over --max-parallel tasks, at
+#                        most 96 per task
+#   --max-array-size N   at most N tasks per array (default and upper bound:
+#                        the cluster's MaxArraySize); more tasks are
 #                        submitted as several arrays, one after another
 #   --tolerances FILE    --timeout S    --renderers LIST    passed to `xval validate`
 #   --sbatch-arg ARG     an sbatch option for every job (repeatable), e.g.
@@ -25,10 +31,13 @@
 #   --wait               wait for the compare job; exit with its status
 #
 # What it does: `xval validate --plan-only [--resume]` writes OUT/jobs.json
-# and lists the jobs to run; those go to `sbatch --array=LIST%N
-# render-task.sh XVAL PLAN OFFSET` (SLURM_ARRAY_TASK_ID + OFFSET picks the
-# job); then `sbatch --dependency=afterok:ARRAY --kill-on-invalid-dep=yes
-# compare-task.sh XVAL PLAN`. A failed render task fails its array job, so
+# and lists the jobs to run; those are cut into tasks of --jobs-per-task
+# jobs, in plan order, one job list per line of OUT/slurm/tasks-STAMP.txt,
+# and go to `sbatch --array=RANGE%N render-task.sh XVAL PLAN TASKS OFFSET`
+# (line SLURM_ARRAY_TASK_ID + OFFSET is the task's list, rendered by
+# `xval validate --plan PLAN --run-jobs LIST`); then `sbatch
+# --dependency=afterok:ARRAY --kill-on-invalid-dep=yes compare-task.sh
+# XVAL PLAN`. A failed render task fails its array job, so
 # the compare job is cancelled instead of reporting; run the same command
 # again and only the jobs without an ok record are submitted. Paths and
 # scene names reach the jobs as arguments and through the plan file, never
@@ -43,7 +52,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 repo=$(cd "$here/../.." && pwd)
 die() { echo "submit: $*" >&2; exit 2; }
 
-out="" xval="$repo/build/renderer/xval" max=16 arraysize="" fresh=0 wait=0
+out="" xval="$repo/build/renderer/xval" max=16 arraysize="" per_task="" fresh=0 wait=0
 validate_args=() common=() render_extra=() compare_extra=() scenes=()
 need() { [ $# -ge 2 ] || die "$1 needs a value"; }
 while [ $# -gt 0 ]; do
@@ -56,6 +65,8 @@ while [ $# -gt 0 ]; do
     --max-parallel=*) max=${1#*=}; shift ;;
     --max-array-size) need "$@"; arraysize=$2; shift 2 ;;
     --max-array-size=*) arraysize=${1#*=}; shift ;;
+    --jobs-per-task) need "$@"; per_task=$2; shift 2 ;;
+    --jobs-per-task=*) per_task=${1#*=}; shift ;;
     --tolerances|--timeout|--renderers) need "$@"; validate_args+=("$1" "$2"); shift 2 ;;
     --tolerances=*|--timeout=*|--renderers=*) validate_args+=("${1%%=*}" "${1#*=}"); shift ;;
     --sbatch-arg) need "$@"; common+=("$2"); shift 2 ;;
@@ -75,6 +86,7 @@ done
 [ -n "$out" ] || die "-o OUT is required (see --help)"
 case "$max" in ''|*[!0-9]*|0) die "--max-parallel $max: expected a positive whole number" ;; esac
 case "$arraysize" in *[!0-9]*|0) die "--max-array-size $arraysize: expected a positive whole number" ;; esac
+case "$per_task" in *[!0-9]*|0) die "--jobs-per-task $per_task: expected a positive whole number" ;; esac
 [ -x "$xval" ] || die "$xval: not an executable (build it with scripts/build.sh, or give --xval PATH)"
 xval=$(cd "$(dirname "$xval")" && pwd)/$(basename "$xval")
 for c in sbatch scontrol squeue; do
@@ -94,41 +106,60 @@ mkdir -p "$out/slurm"
 log="$out/slurm/submitted.log"
 ntodo=$(printf '%s\n' "$todo" | grep -c '^[0-9]' || true)
 
-# 2. The render array(s). Array indices must be below MaxArraySize, so a
-# long plan is split into arrays of at most MaxArraySize (or
-# --max-array-size) jobs, each with an offset; they run one after another
-# (afterany), each at most N tasks at once.
+# 2. The render tasks and array(s). The jobs to run, in plan order, are
+# cut into tasks of per_task jobs; the task file holds one job list per
+# line (written whole before any task can read it). Array indices must be
+# below MaxArraySize, so many tasks are split into arrays of at most
+# MaxArraySize (or --max-array-size) tasks, each with an offset into the
+# task file; they run one after another (afterany), each at most N tasks
+# at once.
 arrays=()
 if [ "$ntodo" -gt 0 ]; then
   maxsize=$(scontrol show config | awk '$1 == "MaxArraySize" {print $3}')
   case "$maxsize" in ''|*[!0-9]*) die "cannot read MaxArraySize from 'scontrol show config'" ;; esac
   [ -n "$arraysize" ] && [ "$arraysize" -lt "$maxsize" ] && maxsize=$arraysize
-  # "chunk<TAB>ranges" per chunk, ranges relative to the chunk's offset.
-  specs=$(printf '%s\n' "$todo" | awk -v m="$maxsize" '
-    /^[0-9]+$/ {
-      c = int($1 / m); i = $1 - c * m
-      if (c != cur || !started) { flush(); cur = c; started = 1; lo = hi = i; next }
-      if (i == hi + 1) { hi = i; next }
-      add(); lo = hi = i
+  # Default: one task per --max-parallel slot, at most 96 jobs each (so a
+  # task's time stays bounded on a large plan).
+  if [ -z "$per_task" ]; then
+    per_task=$(( (ntodo + max - 1) / max ))
+    [ "$per_task" -le 96 ] || per_task=96
+  fi
+  tasks="$out/slurm/tasks-$(date -u +%Y%m%dT%H%M%SZ)-$$.txt"
+  # The task file, and "chunk<TAB>task range<TAB>job ranges" per array.
+  specs=$(printf '%s\n' "$todo" | awk -v per="$per_task" -v m="$maxsize" -v tf="$tasks.partial" '
+    function rg(lo, hi) { return lo == hi ? lo : lo "-" hi }
+    function ranges(s,   a, k, i, v, lo, hi, r) {
+      k = split(s, a, " "); r = ""
+      for (i = 1; i <= k; i++) {
+        v = a[i] + 0
+        if (i == 1) { lo = hi = v; continue }
+        if (v == hi + 1) { hi = v; continue }
+        r = r (r == "" ? "" : ",") rg(lo, hi); lo = hi = v
+      }
+      if (k > 0) r = r (r == "" ? "" : ",") rg(lo, hi)
+      return r
     }
-    function add() { s = s (s == "" ? "" : ",") (lo == hi ? lo : lo "-" hi) }
-    function flush() { if (started) { add(); print cur "\t" s; s = "" } }
-    END { flush() }')
+    function endtask() { print ranges(task) > tf; cjobs = cjobs task; nt++; task = ""; n = 0; if (nt == m) endchunk() }
+    function endchunk() { print c + 0 "\t" rg(0, nt - 1) "\t" ranges(cjobs); c++; cjobs = ""; nt = 0 }
+    /^[0-9]+$/ { task = task " " $1; if (++n == per) endtask() }
+    END { if (n > 0) endtask(); if (nt > 0) endchunk(); close(tf) }') ||
+    die "cannot write the task file $tasks"
+  mv "$tasks.partial" "$tasks"
   prev=""
-  while IFS=$'\t' read -r chunk ranges; do
+  while IFS=$'\t' read -r chunk range jobs; do
     offset=$((chunk * maxsize))
     dep=()
     [ -n "$prev" ] && dep=("--dependency=afterany:$prev")
-    id=$(sbatch --parsable --job-name=xval-render --array="$ranges%$max" \
+    id=$(sbatch --parsable --job-name=xval-render --array="$range%$max" \
            --output="$out/slurm/render-%A_%a.log" --chdir="$PWD" \
            "${dep[@]}" "${common[@]}" "${render_extra[@]}" \
-           "$here/render-task.sh" "$xval" "$plan" "$offset") ||
+           "$here/render-task.sh" "$xval" "$plan" "$tasks" "$offset") ||
       die "sbatch of the render array failed (exit $?)"
     id=${id%%;*}
     case "$id" in ''|*[!0-9]*) die "sbatch --parsable printed '$id': expected a job id" ;; esac
     arrays+=("$id")
     prev=$id
-    echo "render array $id: plan jobs $ranges (offset $offset), at most $max at once" | tee -a "$log"
+    echo "render array $id: tasks $range (offset $offset) of $(basename "$tasks"), $per_task jobs per task: plan jobs $jobs, at most $max at once" | tee -a "$log"
   done <<< "$specs"
 fi
 

@@ -69,6 +69,26 @@ expect "its record holds the error" \
 run "$xval" validate "$scene" --renderers reference,povray,blender --tolerances "$tol" -o "$o" --plan-only --resume
 expect "a failed job is listed again on resume (got: $out)" [ "$out" = $'1\n2' ]
 
+# A job list (a Slurm array task's batch): every listed job runs and gets
+# its record, a failing one is that job's error, the others are ok.
+rm -f "$o/light_spot/reference.job.json"
+run env PATH="$work/fakebin:$PATH" "$xval" validate --plan "$o/jobs.json" --run-jobs 1,0 --jobs 1
+expect "run-jobs 1,0 with a failing povray exits 2 (got $rc)" [ "$rc" -eq 2 ]
+expect "run-jobs says 1 of 2 ok, 1 failed (stderr: $err)" eval '[[ $err == *"jobs 1,0: 1 of 2 ok, 1 failed"* ]]'
+expect "run-jobs: the povray record holds the stand-in's failure" \
+  python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); sys.exit("failing on purpose" not in r.get("error",""))' "$o/light_spot/povray.job.json"
+expect "run-jobs: the reference job of the same list is ok" \
+  python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); sys.exit("error" in r or r["seconds"] <= 0)' "$o/light_spot/reference.job.json"
+run "$xval" validate --plan "$o/jobs.json" --run-jobs 0 --jobs 1 --schedule count
+expect "run-jobs 0 exits 0 (stderr: $err)" eval '[ "$rc" -eq 0 ] && [[ $err == *"jobs 0: 1 of 1 ok, 0 failed"* ]]'
+for bad in "0,0|job 0 is given twice" "0-3|job 3 is not in the plan (it has jobs 0 to 2)" "2-1|the range ends before it starts" \
+           "0,,1|item \"\": expected a job index" "x|item \"x\": expected a job index" "-1|item \"-1\": expected"; do
+  run "$xval" validate --plan "$o/jobs.json" --run-jobs="${bad%%|*}"
+  expect "run-jobs '${bad%%|*}' is refused naming the item (stderr: $err)" eval '[ "$rc" -eq 2 ] && [[ $err == *"${bad#*|}"* ]]'
+done
+run "$xval" validate --plan "$o/jobs.json" --run-job 0 --jobs 2
+expect "--jobs with --run-job is refused" eval '[ "$rc" -eq 2 ] && [[ $err == *"come from the plan"* ]]'
+
 # Bad requests name what is wrong.
 run "$xval" validate --plan "$o/jobs.json" --run-job 3
 expect "run-job out of range exits 2 naming the range" eval '[ "$rc" -eq 2 ] && [[ $err == *"has jobs 0 to 2"* ]]'

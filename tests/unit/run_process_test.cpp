@@ -37,18 +37,16 @@ TEST(RunProcess, WholeSecondTimeOutHasNoFraction) {
 // goes on.
 TEST(RunForked, OutputComesBack) {
   const std::string text(200000, 'x');  // more than a pipe holds
-  const ForkedResult f = runForked([&](int fd) {
-    size_t done = 0;
-    while (done < text.size()) done += size_t(write(fd, text.data() + done, text.size() - done));
-  }, 30, 1 << 20);
+  const ForkedResult f = runForked([&] { return text; }, 30, 1 << 20);
   ASSERT_TRUE(f.process.ok()) << f.process.describe() << "\n" << f.diagnostics;
   EXPECT_EQ(f.output, text);
 }
 
 TEST(RunForked, CrashIsTheChildsSignal) {
-  const ForkedResult f = runForked([](int) {
+  const ForkedResult f = runForked([]() -> std::string {
     std::fputs("about to crash\n", stderr);
     raise(SIGSEGV);
+    return "not reached";
   }, 30, 1024);
   EXPECT_FALSE(f.process.ok());
   EXPECT_EQ(f.process.signal, SIGSEGV) << f.process.describe();
@@ -57,23 +55,20 @@ TEST(RunForked, CrashIsTheChildsSignal) {
 }
 
 TEST(RunForked, ExceptionIsExitCode70WithItsMessage) {
-  const ForkedResult f = runForked([](int) { throw std::runtime_error("the reader gave up"); }, 30, 1024);
+  const ForkedResult f = runForked([]() -> std::string { throw std::runtime_error("the reader gave up"); }, 30, 1024);
   EXPECT_EQ(f.process.exit_code, 70) << f.process.describe();
   EXPECT_EQ(f.summary(), "exception: the reader gave up");
 }
 
 TEST(RunForked, HangIsKilledAtTheTimeOut) {
-  const ForkedResult f = runForked([](int) { for (;;) pause(); }, 0.2, 1024);
+  const ForkedResult f = runForked([]() -> std::string { for (;;) pause(); }, 0.2, 1024);
   EXPECT_TRUE(f.process.timed_out);
   EXPECT_LT(f.process.seconds, 10.0);
   EXPECT_EQ(f.process.describe(), "timed out after 0.2 s and was killed");
 }
 
 TEST(RunForked, OversizedOutputIsNotRead) {
-  const ForkedResult f = runForked([](int fd) {
-    const std::string s(5000, 'y');
-    (void)!write(fd, s.data(), s.size());
-  }, 30, 4096);
+  const ForkedResult f = runForked([] { return std::string(5000, 'y'); }, 30, 4096);
   EXPECT_EQ(f.process.exit_code, 71);
   EXPECT_TRUE(f.output.empty());
   EXPECT_NE(f.diagnostics.find("the child's output is 5000 bytes; the limit is 4096"), std::string::npos)

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
+#include <string>
 
 #include "files/output_folder.h"
 #include "image/image.h"
@@ -250,10 +252,13 @@ std::vector<std::vector<size_t>> runTasks(const Plan& plan, const std::vector<si
 }  // namespace
 
 // Runs the given jobs (process/job_pool.h), with a progress line each.
-void runJobs(const Plan& plan, const std::vector<size_t>& todo, const RunSettings& settings) {
+std::vector<JobRecord> runJobs(const Plan& plan, const std::vector<size_t>& todo, const RunSettings& settings) {
   const auto t_start = Clock::now();
   size_t done = 0;
   std::mutex lock;
+  std::vector<JobRecord> out(todo.size());
+  std::vector<size_t> position(plan.jobs.size(), SIZE_MAX);  // a job's place in todo
+  for (size_t k = 0; k < todo.size(); ++k) position.at(todo[k]) = k;
   size_t batches = 0;
   const std::vector<std::vector<size_t>> tasks = runTasks(plan, todo, settings, &batches);
   auto weight = [&](size_t t) {
@@ -282,6 +287,7 @@ void runJobs(const Plan& plan, const std::vector<size_t>& todo, const RunSetting
     for (size_t k = 0; k < task.size(); ++k) {
       const RenderJob& job = plan.jobs[task[k]];
       const JobRecord& rec = recs.at(k);
+      out.at(position.at(task[k])) = rec;
       const size_t n = ++done;
       const double el = std::chrono::duration<double>(Clock::now() - t_start).count();
       std::fprintf(stderr, "[%zu/%zu] %-32s %-9s %s %6.2f s   elapsed %.0f s, ~%.0f s left\n", n,
@@ -292,6 +298,41 @@ void runJobs(const Plan& plan, const std::vector<size_t>& todo, const RunSetting
       if (!rec.not_expressible.empty()) std::fprintf(stderr, "  %s\n", rec.not_expressible.c_str());
     }
   });
+  return out;
+}
+
+std::vector<size_t> parseJobList(const std::string& list, size_t job_count) {
+  // A whole non-negative number below job_count, or an error naming item.
+  auto index = [&](const std::string& text, const std::string& item) {
+    if (text.empty() || text.size() > 18 || text.find_first_not_of("0123456789") != std::string::npos)
+      throw std::runtime_error("job list \"" + list + "\": item \"" + item +
+                               "\": expected a job index or a range LO-HI of them");
+    const size_t k = std::stoull(text);
+    if (k >= job_count)
+      throw std::runtime_error("job list \"" + list + "\": item \"" + item + "\": job " + text +
+                               " is not in the plan (it has jobs 0 to " + std::to_string(job_count - 1) + ")");
+    return k;
+  };
+  if (job_count == 0) throw std::runtime_error("job list \"" + list + "\": the plan has no jobs");
+  std::vector<size_t> jobs;
+  std::vector<bool> seen(job_count, false);
+  size_t at = 0;
+  while (true) {
+    const size_t comma = list.find(',', at);
+    const std::string item = list.substr(at, comma == std::string::npos ? std::string::npos : comma - at);
+    const size_t dash = item.find('-');
+    const size_t lo = index(item.substr(0, dash), item);
+    const size_t hi = dash == std::string::npos ? lo : index(item.substr(dash + 1), item);
+    if (hi < lo) throw std::runtime_error("job list \"" + list + "\": item \"" + item + "\": the range ends before it starts");
+    for (size_t k = lo; k <= hi; ++k) {
+      if (seen[k]) throw std::runtime_error("job list \"" + list + "\": job " + std::to_string(k) + " is given twice");
+      seen[k] = true;
+      jobs.push_back(k);
+    }
+    if (comma == std::string::npos) break;
+    at = comma + 1;
+  }
+  return jobs;
 }
 
 }  // namespace xval::validation

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "validate/validation/job_record.h"
@@ -43,6 +44,15 @@ inline constexpr size_t kMaxBatch = 32;
 
 // Runs the given jobs (indices into plan.jobs) as `settings` says, with a
 // progress line each on stderr. A job's exception is its record's error.
-void runJobs(const Plan& plan, const std::vector<size_t>& todo, const RunSettings& settings);
+// Returns the jobs' records, in the order of `todo`.
+std::vector<JobRecord> runJobs(const Plan& plan, const std::vector<size_t>& todo, const RunSettings& settings);
+
+// The jobs of a job list as `validate --run-jobs` takes it (what a Slurm
+// array task renders, scripts/slurm/submit.sh): plan indices and ranges
+// separated by commas, "0-3,7,9-11", in the order given. Throws
+// std::runtime_error naming the item for an item that is not a number or
+// a range LO-HI with LO <= HI, an index not below job_count, or an index
+// given twice.
+std::vector<size_t> parseJobList(const std::string& list, size_t job_count);
 
 }  // namespace xval::validation
