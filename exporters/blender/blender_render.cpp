@@ -97,7 +97,8 @@ const char* toolName(BlenderEngine engine) { return engine == BlenderEngine::Eev
 
 // Checks the scene and the paths, exports the glTF into work_dir and names
 // this attempt's image. Throws ExportError / ExternalToolError.
-PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& work_dir, BlenderEngine engine) {
+PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& work_dir, BlenderEngine engine,
+                           const ExportThrough& through) {
   PreparedScene p;
   // Checked before anything is written.
   checkBlenderScene(scene, engine);
@@ -113,7 +114,8 @@ PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& work
     if (path.string().find('\\') != std::string::npos)
       throw ExternalToolError(path.string() + ": contains '\\', which Blender reads as a folder separator; "
                               "choose a folder without it");
-  p.gltf = exportGltf(scene, work_dir).gltf;
+  exportThrough(through, work_dir, [&](const std::filesystem::path& dir) { exportGltf(scene, dir); });
+  p.gltf = work_dir / "scene.gltf";
   // The image's name is this attempt's own: a Blender left from an earlier
   // attempt cannot supply it.
   const std::string tool = toolName(engine);
@@ -161,10 +163,10 @@ std::vector<std::string> blenderCommand() {
 
 Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_dir,
                         double timeout_seconds, ExternalRenderInfo* info, BlenderMode mode,
-                        BlenderEngine engine) {
+                        BlenderEngine engine, const ExportThrough& through) {
   if (engine == BlenderEngine::Eevee && mode != BlenderMode::Model)
     throw std::invalid_argument("renderWithBlender: EEVEE renders the model mode only");
-  const PreparedScene p = prepareScene(scene, work_dir, engine);
+  const PreparedScene p = prepareScene(scene, work_dir, engine, through);
   std::vector<std::string> argv = blenderCommand();
   for (const std::string& a :
        {std::string("--gltf"), std::filesystem::absolute(p.gltf).string(), std::string("--out"), p.out.string(),
@@ -228,7 +230,7 @@ std::vector<BlenderBatchResult> renderBlenderBatch(const std::vector<BlenderBatc
   std::vector<size_t> pending;
   for (size_t i = 0; i < scenes.size(); ++i) {
     try {
-      prepared[i] = prepareScene(*scenes[i].scene, scenes[i].work_dir, engine);
+      prepared[i] = prepareScene(*scenes[i].scene, scenes[i].work_dir, engine, scenes[i].through);
       pending.push_back(i);
     } catch (const std::exception& e) {
       results[i].error = e.what();

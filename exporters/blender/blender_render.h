@@ -42,7 +42,8 @@ void checkBlenderScene(const Scene& scene, BlenderEngine engine = BlenderEngine:
 Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_dir,
                         double timeout_seconds, ExternalRenderInfo* info = nullptr,
                         BlenderMode mode = BlenderMode::Model,
-                        BlenderEngine engine = BlenderEngine::Cycles);
+                        BlenderEngine engine = BlenderEngine::Cycles,
+                        const ExportThrough& through = {});
 
 // The persistent worker: many scenes (model mode) rendered by one Blender
 // process (render_gltf.py --batch), each from factory settings, so each
@@ -61,6 +62,7 @@ Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_di
 struct BlenderBatchScene {
   const Scene* scene = nullptr;
   std::filesystem::path work_dir;  // a fresh folder per scene
+  ExportThrough through;           // how its glTF export is written (empty: exported)
 };
 struct BlenderBatchResult {
   std::optional<Image> image;   // set when the scene rendered

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -35,6 +36,24 @@ struct ExternalRenderInfo {
 };
 
 inline constexpr double kDefaultToolTimeoutSeconds = 600.0;
+
+// How a render harness gets its export into a folder: through(dir, write)
+// leaves in `dir` exactly the files write(dir) writes (it may call write,
+// or restore the same files it stored before: renderers/export_cache.h),
+// and throws what write throws (ExportError for a refusal). Empty: the
+// harness calls write(dir) itself.
+using ExportThrough =
+    std::function<void(const std::filesystem::path& dir, const std::function<void(const std::filesystem::path&)>& write)>;
+// The ExportThrough of a folder that already holds the export (its caller
+// wrote it there): nothing is written.
+inline ExportThrough exportedAlready() {
+  return [](const std::filesystem::path&, const std::function<void(const std::filesystem::path&)>&) {};
+}
+inline void exportThrough(const ExportThrough& through, const std::filesystem::path& dir,
+                          const std::function<void(const std::filesystem::path&)>& write) {
+  if (through) through(dir, write);
+  else write(dir);
+}
 
 // Loads the material's texture and writes it as DIR/texture.png (its 8-bit
 // or 16-bit codes, RGB as stored; the exporters never pass the user's path

@@ -9,13 +9,16 @@
 namespace xval {
 
 Image renderWithPovray(const Scene& scene, const std::filesystem::path& work_dir,
-                       double timeout_seconds, ExternalRenderInfo* info) {
-  // The image's name is this attempt's own: a POV-Ray left from an earlier
-  // attempt cannot supply it.
-  PovExport ex = exportPov(scene, work_dir, "povray-" + attemptToken() + ".png");
+                       double timeout_seconds, ExternalRenderInfo* info, const ExportThrough& through) {
+  exportThrough(through, work_dir, [&](const std::filesystem::path& dir) { exportPov(scene, dir); });
+  const PovExport ex{work_dir / "scene.pov", work_dir / "scene.ini", work_dir,
+                 // The image's name is this attempt's own (+O on the command
+                 // line overrides the ini's): a POV-Ray left from an earlier
+                 // attempt cannot supply it.
+                 "povray-" + attemptToken() + ".png", subpixelGrid(scene)};
   const std::filesystem::path out = work_dir / ex.output_name;
   const std::filesystem::path log = work_dir / "povray.log";
-  ProcessResult r = runProcess({"povray", "scene.ini"}, work_dir, log, timeout_seconds);
+  ProcessResult r = runProcess({"povray", "scene.ini", "+O" + ex.output_name}, work_dir, log, timeout_seconds);
   if (info) {
     // parse_seconds: the scene's preparation before the trace, Parse Time
     // plus Bounding Time (the exports use no photons or radiosity).

@@ -15,8 +15,11 @@
 
 namespace xval {
 
-// work_dir receives the export, the tool's log and its raw output.
+// work_dir receives the export (through `through`: the export's scene.ini
+// names scene.png; this attempt's own output name is given to povray on its
+// command line, after the ini), the tool's log and its raw output.
 Image renderWithPovray(const Scene& scene, const std::filesystem::path& work_dir,
-                       double timeout_seconds, ExternalRenderInfo* info = nullptr);
+                       double timeout_seconds, ExternalRenderInfo* info = nullptr,
+                       const ExportThrough& through = {});
 
 }  // namespace xval

@@ -46,6 +46,11 @@
 // --compare-only alone, --run-job shared), and a new run removes the old
 // results.json and report.html before it plans.
 //
+// Exports (POV-Ray's, the glTF for Blender) and the exporters' refusals go
+// through the export cache (renderers/export_cache.h): --export-cache DIR,
+// default $XDG_CACHE_HOME/xval/exports or ~/.cache/xval/exports;
+// --no-export-cache exports every scene.
+//
 // Scenes into a folder that holds an earlier run: those cases are updated
 // and the folder's other cases kept (compared again from their renders,
 // not rendered again), or dropped with the reason on stderr when their
@@ -62,6 +67,7 @@
 #include "cli/renderer_file_option.h"
 #include "files/atomic_write.h"
 #include "process/job_pool.h"
+#include "renderers/export_cache.h"
 #include "renderers/registry.h"
 #include "scene/json_reader.h"
 #include "scene/scene_loader.h"
@@ -100,7 +106,8 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
     std::string schedule = "load";
     long run_job = -1;
     std::string run_jobs;
-    bool resume = false, plan_only = false, compare_only = false;
+    bool resume = false, plan_only = false, compare_only = false, no_export_cache = false;
+    std::string export_cache;
     double timeout = kDefaultToolTimeoutSeconds;
     BudgetOptions budget;
   };
@@ -181,6 +188,15 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
       "--compare-only", args->compare_only,
       "Compare and report from the plan's EXRs and job records (a job without a usable "
       "record is an error); render nothing");
+  auto* export_cache = cmd->add_option(
+      "--export-cache", args->export_cache,
+      "Folder of the export cache: POV-Ray's and Blender's exports (and exporters' refusals) stored by a "
+      "SHA-256 of the scene's files, its textures' and model files' bytes and this xval executable, so a "
+      "scene exported for one run is copied, not exported, for the next; a partial or altered entry is "
+      "exported again (default: $XDG_CACHE_HOME/xval/exports, else ~/.cache/xval/exports; at most 2 GiB, "
+      "least recently used entries removed)");
+  cmd->add_flag("--no-export-cache", args->no_export_cache, "Export every scene, read and store no cache")
+      ->excludes(export_cache);
   run_job->needs(plan);
   compare_only->needs(plan);
   run_job->excludes(compare_only);
@@ -208,6 +224,10 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
                                    ": the renderer files come from the plan (recorded with their SHA-256 when it "
                                    "was made); give no --renderer-file");
         renderers::registerRendererFiles(*renderer_files);
+        if (!args->no_export_cache)
+          renderers::setExportCache({args->export_cache.empty() ? renderers::defaultExportCacheFolder()
+                                                                : std::filesystem::path(args->export_cache),
+                                     renderers::kDefaultExportCacheBytes});
         if (!args->plan.empty()) {
           if (args->run_job < 0 && args->run_jobs.empty() && !args->compare_only)
             throw std::runtime_error("--plan " + args->plan +

@@ -12,6 +12,8 @@
 //   work_dir         the export (scene.gltf, scene.bin, texture.png), the
 //                    log (blender.log) and the raw EXR
 //   timeout_seconds  default kDefaultToolTimeoutSeconds (600)
+//   exported         the work folder holds the export already (exporter
+//                    "gltf": the check, then exportGltf's files)
 // Needs `blender` on PATH and the harness script (blenderScript():
 // $XVAL_BLENDER_SCRIPT, else the source tree's exporters/blender/
 // render_gltf.py); version: the "Blender ..." line of `blender --version`.
@@ -22,6 +24,7 @@
 // (--batch).
 #include "blender/blender_render.h"
 #include "gltf/gltf_exporter.h"
+#include "renderers/export_cache.h"
 #include "renderers/renderer.h"
 
 namespace xval::renderers {
@@ -33,23 +36,25 @@ std::string blenderScriptMissing() {
   return "Blender script " + script.string() + " not found (set XVAL_BLENDER_SCRIPT)";
 }
 
-// The Blender harness's refusal of a scene with that engine, "" when it can
-// render it.
-std::string blenderEngineRefusal(const Scene& scene, BlenderEngine engine) {
-  try {
-    checkBlenderScene(scene, engine);
-  } catch (const ExportError& e) {
-    return e.what();
-  }
-  return exportRefusal([&](const std::filesystem::path& dir) { exportGltf(scene, dir); });
+// The Blender harness's export with that engine: its check, then the glTF.
+RendererExport blenderExport(BlenderEngine engine) {
+  return {"gltf", [engine](const Scene& scene) { checkBlenderScene(scene, engine); },
+          [](const Scene& scene, const std::filesystem::path& dir) { exportGltf(scene, dir); }};
 }
-std::string blenderRefusal(const Scene& scene) { return blenderEngineRefusal(scene, BlenderEngine::Cycles); }
+
+// The Cycles harness's refusal of a scene, "" when it can render it.
+std::string blenderRefusal(const Scene& scene) { return refusalOf(blenderExport(BlenderEngine::Cycles), scene); }
+
+// The ExportThrough of a request: its work folder's export, or the cache's.
+ExportThrough blenderThrough(const RenderRequest& request) {
+  return request.exported ? exportedAlready() : cachedExport(blenderExport(BlenderEngine::Cycles).name, request.export_key);
+}
 
 // Many scenes in one Blender process (blender/blender_render.h
 // renderBlenderBatch); the time-out is the first item's, per scene.
 std::vector<BatchOutcome> blenderBatch(const std::vector<BatchItem>& items, BlenderEngine engine) {
   std::vector<BlenderBatchScene> scenes;
-  for (const BatchItem& item : items) scenes.push_back({item.scene, item.request.work_dir});
+  for (const BatchItem& item : items) scenes.push_back({item.scene, item.request.work_dir, blenderThrough(item.request)});
   const double timeout = items.empty() ? kDefaultToolTimeoutSeconds : items.front().request.timeout_seconds;
   std::vector<BatchOutcome> out;
   for (BlenderBatchResult& r : renderBlenderBatch(scenes, timeout, engine)) {
@@ -70,10 +75,12 @@ Renderer blenderRenderer() {
   r.version_command = {"blender", "--version"};
   r.version_marker = "Blender";
   r.missing = blenderScriptMissing;
-  r.cannot_express = blenderRefusal;
+  r.exporter = blenderExport(BlenderEngine::Cycles);
+  r.cannot_express = [ex = *r.exporter](const Scene& scene) { return refusalOf(ex, scene); };
   r.render = [](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
     ExternalRenderInfo tool;
-    Image image = renderWithBlender(scene, request.work_dir, request.timeout_seconds, &tool);
+    Image image = renderWithBlender(scene, request.work_dir, request.timeout_seconds, &tool, BlenderMode::Model,
+                                    BlenderEngine::Cycles, blenderThrough(request));
     setInfo(info, tool);
     return image;
   };

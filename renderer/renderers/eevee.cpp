@@ -18,12 +18,14 @@
 // script); same version line. render_seconds: the log's render Time.
 // Batches as the blender renderer's (renderers/blender.cpp).
 #include "blender/blender_render.h"
+#include "renderers/export_cache.h"
 #include "renderers/renderer.h"
 
 namespace xval::renderers {
 
 std::string blenderScriptMissing();              // renderers/blender.cpp
-std::string blenderEngineRefusal(const Scene& scene, BlenderEngine engine);  // renderers/blender.cpp
+RendererExport blenderExport(BlenderEngine engine);                 // renderers/blender.cpp
+ExportThrough blenderThrough(const RenderRequest& request);        // renderers/blender.cpp
 std::vector<BatchOutcome> blenderBatch(const std::vector<BatchItem>& items, BlenderEngine engine);  // renderers/blender.cpp
 
 Renderer eeveeRenderer() {
@@ -34,11 +36,12 @@ Renderer eeveeRenderer() {
   r.version_command = {"blender", "--version"};
   r.version_marker = "Blender";
   r.missing = blenderScriptMissing;
-  r.cannot_express = [](const Scene& scene) { return blenderEngineRefusal(scene, BlenderEngine::Eevee); };
+  r.exporter = blenderExport(BlenderEngine::Eevee);
+  r.cannot_express = [ex = *r.exporter](const Scene& scene) { return refusalOf(ex, scene); };
   r.render = [](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
     ExternalRenderInfo tool;
     Image image = renderWithBlender(scene, request.work_dir, request.timeout_seconds, &tool, BlenderMode::Model,
-                                    BlenderEngine::Eevee);
+                                    BlenderEngine::Eevee, blenderThrough(request));
     setInfo(info, tool);
     return image;
   };

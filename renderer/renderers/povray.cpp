@@ -11,10 +11,13 @@
 //   work_dir         the export (scene.pov, scene.ini, texture.png), the
 //                    log (povray.log) and the raw image
 //   timeout_seconds  default kDefaultToolTimeoutSeconds (600)
+//   exported         the work folder holds the export already (exporter
+//                    "pov": exportPov's files), else it is written there
 // Needs `povray` on PATH; version: the "POV-Ray ..." line of
 // `povray --version`. render_seconds: the log's Trace Time.
 #include "povray/pov_exporter.h"
 #include "povray/pov_render.h"
+#include "renderers/export_cache.h"
 #include "renderers/renderer.h"
 
 namespace xval::renderers {
@@ -31,12 +34,12 @@ Renderer povrayRenderer() {
   r.summary = "POV-Ray 3.7: the scene exported as SDL, rendered by `povray` with a time-out";
   r.version_command = {"povray", "--version"};
   r.version_marker = "POV-Ray";
-  r.cannot_express = [](const Scene& scene) {
-    return exportRefusal([&](const std::filesystem::path& dir) { exportPov(scene, dir); });
-  };
-  r.render = [](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
+  r.exporter = RendererExport{"pov", {}, [](const Scene& scene, const std::filesystem::path& dir) { exportPov(scene, dir); }};
+  r.cannot_express = [ex = *r.exporter](const Scene& scene) { return refusalOf(ex, scene); };
+  r.render = [name = r.exporter->name](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
     ExternalRenderInfo tool;
-    Image image = renderWithPovray(scene, request.work_dir, request.timeout_seconds, &tool);
+    Image image = renderWithPovray(scene, request.work_dir, request.timeout_seconds, &tool,
+                                   request.exported ? exportedAlready() : cachedExport(name, request.export_key));
     setInfo(info, tool);
     return image;
   };

@@ -24,6 +24,17 @@ std::string exportRefusal(const std::function<void(const std::filesystem::path& 
   return "";
 }
 
+std::string refusalOf(const RendererExport& ex, const Scene& scene) {
+  if (ex.check) {
+    try {
+      ex.check(scene);
+    } catch (const ExportError& e) {
+      return e.what();
+    }
+  }
+  return exportRefusal([&](const std::filesystem::path& dir) { ex.write(scene, dir); });
+}
+
 void setInfo(RenderInfo* info, const ExternalRenderInfo& tool) {
   if (!info) return;
   info->seconds = tool.seconds;

@@ -38,6 +38,13 @@ struct RenderRequest {
   // The reference renderer's options; without them it renders the scene's
   // own settings (defaultOptions) on the exact double-precision path.
   std::optional<RenderOptions> options;
+  // The scene's inputs key for the export cache (renderers/export_cache.h);
+  // empty: the export is written, never cached.
+  std::string export_key = {};
+  // work_dir already holds the renderer's export (Renderer::exporter's
+  // files, written there by the caller: renderers/job_export.h): the render
+  // reads it and exports nothing.
+  bool exported = false;
 };
 
 // What a render took.
@@ -68,6 +75,23 @@ struct BatchOutcome {
   std::optional<Image> image;  // set when it rendered
   std::string error;           // else why not (as render's exception would say)
   RenderInfo info;
+};
+
+// The export an outside renderer's render reads (its scene files), for a
+// caller that decides the refusal by writing it into the work folder and
+// hands it on to the render (RenderRequest::exported, renderers/
+// job_export.h): a job exports its scene once.
+struct RendererExport {
+  // The exporter's name ("pov", "gltf"): renderers of one exporter share
+  // the export cache's entries.
+  std::string name;
+  // Throws ExportError for what the harness refuses before it exports
+  // (empty: nothing).
+  std::function<void(const Scene&)> check;
+  // Writes into `dir` exactly the files the render writes into its work
+  // folder before running the tool; throws ExportError for what the
+  // exporter refuses (a function of the scene alone).
+  std::function<void(const Scene&, const std::filesystem::path& dir)> write;
 };
 
 struct Renderer {
@@ -101,6 +125,9 @@ struct Renderer {
   // exporter's refusal (ExportError), found without rendering. Optional
   // (absent: it can express every scene).
   std::function<std::string(const Scene&)> cannot_express;
+  // The export its render reads (set for the renderers that export):
+  // cannot_express must say what its check and write refuse (refusalOf).
+  std::optional<RendererExport> exporter;
   // Renders the scene. Throws ExportError when it cannot express it,
   // ExternalToolError when an outside tool is missing, fails, hangs or
   // writes garbage, std::runtime_error otherwise; never returns a partial
@@ -133,6 +160,9 @@ struct Renderer {
 // the ExportError's message, "" when `write_export` succeeds. Other errors
 // (a full disk) propagate.
 std::string exportRefusal(const std::function<void(const std::filesystem::path& dir)>& write_export);
+// An export's refusal of a scene: its check's ExportError message, else
+// its write's into a temporary folder (exportRefusal); "" when neither refuses.
+std::string refusalOf(const RendererExport& ex, const Scene& scene);
 // The golden-image renderers (renderers/golden.cpp): the stored set of
 // the renderer `made_by` (id "golden" for the reference's, else
 // "golden-<made_by>"); goldenAlias("golden:NAME") is that id ("" for an id

@@ -13,6 +13,7 @@
 #include "image/compare.h"
 #include "image/perceptual.h"
 #include "render/renderer.h"
+#include "renderers/job_export.h"
 #include "renderers/registry.h"
 #include "scene/scene_loader.h"
 #include "validate/tolerances.h"
@@ -38,8 +39,13 @@ int crosscheck(const CrosscheckRequest& request) {
     throw std::runtime_error(request.scene_file + ": renderers: the scene is meant for " +
                              renderers::joinNames(scene.renderers) + " only, not " + renderer.id);
   // A renderer that declares it cannot express the scene: the verdict, with
-  // its reason, and nothing rendered (no pair to compare, no failure).
-  if (const std::string why = renderer.cannot_express ? renderer.cannot_express(scene) : ""; !why.empty()) {
+  // its reason, and nothing rendered (no pair to compare, no failure). The
+  // refusal of a renderer that exports is decided by writing the export its
+  // render then reads (renderers/job_export.h).
+  const std::filesystem::path work = dir / (request.renderer + ".work");
+  makeFreshFolder(work);  // nothing from an earlier attempt, no planted link
+  renderers::RenderRequest render_request{work, request.timeout_seconds, {}};
+  if (const std::string why = renderers::refuseOrExport(renderer, scene, render_request); !why.empty()) {
     const nlohmann::json j = {{"scene", scene.name},
                               {"renderer", request.renderer},
                               {"not_expressible", why},
@@ -57,9 +63,7 @@ int crosscheck(const CrosscheckRequest& request) {
   const double ref_s = ref_info.seconds;
   writeImage(ref, dir / (reference.id + ".exr"));
   renderers::RenderInfo info;
-  const std::filesystem::path work = dir / (request.renderer + ".work");
-  makeFreshFolder(work);  // nothing from an earlier attempt, no planted link
-  Image ext = renderer.render(scene, {work, request.timeout_seconds, {}}, &info);
+  Image ext = renderer.render(scene, render_request, &info);
   writeImage(ext, dir / (request.renderer + ".exr"));
   CompareMetrics m = compareImages(ref, ext, tol);
   writeImage(differenceImage(ref, ext), dir / "diff.exr");

@@ -15,7 +15,7 @@ run(0 ${XVAL} render ${SCENE} -o ${WORK}/ref.exr --precision double -q)
 function(povray_stand_in make)
   file(WRITE ${WORK}/bin/povray
     "#!/bin/sh\nif [ \"$1\" = --version ]; then echo 'stand-in povray 0.0'; exit 0; fi\n"
-    "out=$(/bin/sed -n 's/^Output_File_Name=//p' scene.ini)\n${make}\n")
+    "out=$(/bin/sed -n 's/^Output_File_Name=//p' scene.ini)\nfor a in \"$@\"; do o=$(echo \"$a\" | /bin/sed -n 's/^+O//p'); [ -z \"$o\" ] || out=$o; done\n${make}\n")
   file(CHMOD ${WORK}/bin/povray PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
 endfunction()
 

@@ -219,7 +219,7 @@ elseif(CASE STREQUAL "resume_ignores_orphan")
   # is killed (SIGKILL: nothing can stop the stand-in) once it runs. Second run
   # (--resume): povray writes nothing, sleeps past the orphan's write, and
   # exits 0.
-  stand_in(povray "out=$(sed -n 's/^Output_File_Name=//p' scene.ini)\nif [ ! -e '${WORK}/first' ]; then echo started > '${WORK}/first'; sleep 3; cp '${WORK}/image.png' \"$out\" && touch '${WORK}/orphan-wrote'; exit 0; fi\nsleep 5\nexit 0")
+  stand_in(povray "out=$(sed -n 's/^Output_File_Name=//p' scene.ini)\nfor a in \"$@\"; do o=$(echo \"$a\" | /bin/sed -n 's/^+O//p'); [ -z \"$o\" ] || out=$o; done\nif [ ! -e '${WORK}/first' ]; then echo started > '${WORK}/first'; sleep 3; cp '${WORK}/image.png' \"$out\" && touch '${WORK}/orphan-wrote'; exit 0; fi\nsleep 5\nexit 0")
   stand_in(blender "echo 'stand-in blender: not under test'\nexit 9")
   run_sh("${WAIT_FOR}; ${ENVPATH} ${V} -o '${WORK}/out' --jobs 3 --timeout 60 & p=$!; wait_for '${WORK}/first' 1; kill -KILL $p; wait $p; ${ENVPATH} ${V} -o '${WORK}/out' --jobs 3 --timeout 60 --resume")
   require_exit(2)

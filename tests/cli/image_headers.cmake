@@ -44,7 +44,7 @@ expect_in("${err}" "rgb.png has no alpha channel")
 
 # The stand-in writes where the real POV-Ray would: the Output_File_Name
 # of the scene.ini it is given (a fresh name for every attempt).
-file(WRITE ${WORK}/bin/povray "#!/bin/sh\nout=$(/bin/sed -n 's/^Output_File_Name=//p' scene.ini)\ncp '${CLAIMS}' \"$out\"\n")
+file(WRITE ${WORK}/bin/povray "#!/bin/sh\nout=$(/bin/sed -n 's/^Output_File_Name=//p' scene.ini)\nfor a in \"$@\"; do o=$(echo \"$a\" | /bin/sed -n 's/^+O//p'); [ -z \"$o\" ] || out=$o; done\ncp '${CLAIMS}' \"$out\"\n")
 file(CHMOD ${WORK}/bin/povray PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
 execute_process(COMMAND ${CMAKE_COMMAND} -E env PATH=${WORK}/bin:/usr/bin:/bin
                         ${XVAL} render ${SCENE} -o ${WORK}/pov.exr --renderer povray --timeout 20 -q

@@ -81,8 +81,9 @@ function(read_args tool prefix)
   set(${prefix}_N ${_argc} PARENT_SCOPE)
 endfunction()
 read_args(povray _pov)
-if(NOT _pov_N EQUAL 1 OR NOT _pov_1 STREQUAL "scene.ini")
-  message(FATAL_ERROR "povray was started with ${_pov_N} arguments, the first ${_pov_1}")
+# scene.ini, then the attempt's output name (+O, xval's own: no scene string).
+if(NOT _pov_N EQUAL 2 OR NOT _pov_1 STREQUAL "scene.ini" OR NOT _pov_2 MATCHES "^\\+Opovray-[0-9a-f]+\\.png$")
+  message(FATAL_ERROR "povray was started with ${_pov_N} arguments, the first ${_pov_1}, the second ${_pov_2}")
 endif()
 read_args(blender _bl)
 # Blender runs twice (Cycles and EEVEE, in either order: validate's jobs

@@ -40,7 +40,7 @@ function(stand_in dir tool find make)
     "#!/bin/sh\nif [ \"$1\" = --version ]; then echo 'stand-in ${tool} 0.0'; exit 0; fi\n${find}\n${make}\n")
   file(CHMOD ${dir}/${tool} PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
 endfunction()
-stand_in(${WORK}/bin povray "out=$(/bin/sed -n 's/^Output_File_Name=//p' scene.ini); s=$(${_scene_of})"
+stand_in(${WORK}/bin povray "out=$(/bin/sed -n 's/^Output_File_Name=//p' scene.ini)\nfor a in \"$@\"; do o=$(echo \"$a\" | /bin/sed -n 's/^+O//p'); [ -z \"$o\" ] || out=$o; done; s=$(${_scene_of})"
          "/bin/cp \"${WORK}/ref_$s.exr\" \"$out\"")
 stand_in(${WORK}/bin blender "while [ $# -gt 0 ]; do if [ \"$1\" = --out ]; then out=$2; fi; shift; done; s=$(${_scene_of})"
          "/bin/cp \"${WORK}/ref_$s.exr\" \"$out\"")

@@ -27,7 +27,7 @@ function(stand_in tool find make)
     "#!/bin/sh\nif [ \"$1\" = --version ]; then echo 'stand-in ${tool} 0.0'; exit 0; fi\n${find}\n${make}\n")
   file(CHMOD ${WORK}/bin/${tool} PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
 endfunction()
-stand_in(povray "out=$(/bin/sed -n 's/^Output_File_Name=//p' scene.ini)"
+stand_in(povray "out=$(/bin/sed -n 's/^Output_File_Name=//p' scene.ini)\nfor a in \"$@\"; do o=$(echo \"$a\" | /bin/sed -n 's/^+O//p'); [ -z \"$o\" ] || out=$o; done"
          "/bin/cp '${WORK}/ref.exr' \"$out\"")
 stand_in(blender "while [ $# -gt 0 ]; do if [ \"$1\" = --out ]; then out=$2; fi; shift; done"
          "'${_oiiotool}' '${WORK}/ref.exr' --mulc 0.98,0.98,0.98,1 -d float -o \"$out.exr\" && /bin/mv \"$out.exr\" \"$out\"")

@@ -194,7 +194,7 @@ class FakePovray : public ::testing::Test {
   void TearDown() override { setenv("PATH", old_path_.c_str(), 1); }
   void installCopying(const fs::path& image) {
     fs::path p = bin_ / "povray";
-    std::ofstream(p) << "#!/bin/sh\nout=$(sed -n 's/^Output_File_Name=//p' scene.ini)\ncp '" << image.string()
+    std::ofstream(p) << "#!/bin/sh\nout=$(sed -n 's/^Output_File_Name=//p' scene.ini)\nfor a in \"$@\"; do o=$(echo \"$a\" | /bin/sed -n 's/^+O//p'); [ -z \"$o\" ] || out=$o; done\ncp '" << image.string()
                      << "' \"$out\"\n";
     fs::permissions(p, fs::perms::owner_all);
   }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <cstdio>
 #include <map>
 #include <stdexcept>
@@ -254,28 +255,45 @@ std::vector<RendererFile> readRendererFiles(const FieldReader& rd, const J& j) {
 
 }  // namespace
 
+void forEachInput(const Scene& scene, const fs::path& scene_file, const std::function<void(const std::string&)>& add) {
+  add(readBytes(scene_file));
+  if (scene.material.texture && scene.material.texture->source == TextureSpec::Source::Image)
+    add(readBytes(scene.material.texture->path));
+  // Each object's own image texture and model file with every file the
+  // model file is made of (geometry/model_file.h, Model::files: an OBJ's
+  // mtl and images, a glTF's buffers), each under its name.
+  for (const SceneObject& o : scene.objects) {
+    if (o.material && o.material->texture && o.material->texture->source == TextureSpec::Source::Image)
+      add(readBytes(o.material->texture->path));
+    if (const auto* m = std::get_if<MeshFile>(&o.shape))
+      for (const fs::path& file : m->model->files) {
+        add(file.filename().string());
+        add(readBytes(file));
+      }
+  }
+}
+
 std::string inputHash(const Scene& scene, const fs::path& scene_file, const std::string& renderer) {
   Fnv f;
   f.add(kRecordFormat);
   f.add(renderer);
   if (const renderers::Renderer* r = renderers::registry().find(renderer); r && !r->definition_file.empty())
     f.add(readBytes(r->definition_file));
-  f.add(readBytes(scene_file));
-  if (scene.material.texture && scene.material.texture->source == TextureSpec::Source::Image)
-    f.add(readBytes(scene.material.texture->path));
-  // Each object's own image texture and model file with every file the
-  // model file is made of (geometry/model_file.h, Model::files: an OBJ's
-  // mtl and images, a glTF's buffers), each under its name.
-  for (const SceneObject& o : scene.objects) {
-    if (o.material && o.material->texture && o.material->texture->source == TextureSpec::Source::Image)
-      f.add(readBytes(o.material->texture->path));
-    if (const auto* m = std::get_if<MeshFile>(&o.shape))
-      for (const fs::path& file : m->model->files) {
-        f.add(file.filename().string());
-        f.add(readBytes(file));
-      }
-  }
+  forEachInput(scene, scene_file, [&](const std::string& bytes) { f.add(bytes); });
   return f.hex();
+}
+
+std::string exportInputsKey(const Scene& scene, const fs::path& scene_file) {
+  return golden::sha256Pieces([&](const std::function<void(const char*, size_t)>& update) {
+    // Each piece with its length, so no two sequences of pieces feed the same bytes.
+    auto add = [&](const std::string& bytes) {
+      const std::string n = std::to_string(bytes.size()) + ":";
+      update(n.data(), n.size());
+      update(bytes.data(), bytes.size());
+    };
+    add(fs::absolute(scene_file).lexically_normal().string());
+    forEachInput(scene, scene_file, add);
+  });
 }
 
 std::vector<std::string> jobRenderers() { return renderers::registry().everySceneIds(); }

@@ -32,6 +32,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -139,5 +140,16 @@ Plan readPlan(const std::filesystem::path& file);
 // bytes and every file of its model files (Model::files: an OBJ's mtl and
 // images, a glTF's buffers) (the plan's and a record's input_hash).
 std::string inputHash(const Scene& scene, const std::filesystem::path& scene_file, const std::string& renderer);
+
+// The bytes those hashes cover, piece by piece (the scene file's, its image
+// textures', and each model file's name and bytes), for inputHash and
+// exportInputsKey alike.
+void forEachInput(const Scene& scene, const std::filesystem::path& scene_file,
+                  const std::function<void(const std::string&)>& add);
+
+// What an export of the scene depends on besides the exporter, as a
+// SHA-256: the scene file's absolute path and forEachInput's pieces, each
+// with its length (renderers/export_cache.h: the inputs key).
+std::string exportInputsKey(const Scene& scene, const std::filesystem::path& scene_file);
 
 }  // namespace xval::validation

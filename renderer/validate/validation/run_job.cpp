@@ -14,6 +14,7 @@
 #include "image/image.h"
 #include "process/job_pool.h"
 #include "render/renderer.h"
+#include "renderers/job_export.h"
 #include "renderers/registry.h"
 #include "scene/scene_loader.h"
 
@@ -40,6 +41,7 @@ renderers::RenderRequest requestFor(const Plan& plan, const RenderJob& job, cons
     request.options = o;
   }
   if (renderer.external()) {
+    request.export_key = exportInputsKey(scene, job.path);
     request.work_dir = plan.dir / job.scene / (job.renderer + ".work");
     makeFreshFolder(request.work_dir);
   }
@@ -56,11 +58,14 @@ struct StartedJob {
   JobRecord rec;
   Clock::time_point t0;
   std::optional<Scene> scene;  // set while it is still to be rendered
+  renderers::RenderRequest request;  // its render's (with the export, when its renderer exports)
   bool no_record = false;      // its case folder was refused: nothing is written
 };
 
 // Everything before the render: the case folder, the old record removed,
-// the scene loaded and checked against the plan, the renderer's refusal.
+// the scene loaded and checked against the plan, the request, the
+// renderer's refusal, decided from the export the render then reads
+// (renderers/job_export.h: one export a job).
 StartedJob startJob(const Plan& plan, const RenderJob& job) {
   StartedJob s;
   s.rec.input_hash = job.input_hash;
@@ -90,8 +95,18 @@ StartedJob startJob(const Plan& plan, const RenderJob& job) {
     const renderers::Renderer& renderer = renderers::registry().at(job.renderer);
     // A renderer that declares it cannot express the scene renders nothing:
     // its record says why (a verdict; compare_step.h leaves its pairs out).
-    if (renderer.cannot_express) s.rec.not_expressible = renderer.cannot_express(scene);
-    if (s.rec.not_expressible.empty()) s.scene = std::move(scene);
+    // (Through the export cache: the refusal of a scene checked before is
+    // read back, renderers/export_cache.h.)
+    renderers::RenderRequest request = requestFor(plan, job, scene, renderer);
+    s.rec.not_expressible = renderers::refuseOrExport(renderer, scene, request);
+    if (s.rec.not_expressible.empty()) {
+      s.scene = std::move(scene);
+      s.request = std::move(request);
+    } else if (!request.work_dir.empty()) {
+      // What the exporter wrote before it refused is no export.
+      std::error_code ec;
+      fs::remove_all(request.work_dir, ec);
+    }
   } catch (const std::exception& e) {
     s.rec.error = e.what();
   }
@@ -122,7 +137,7 @@ JobRecord runJob(const Plan& plan, const RenderJob& job) {
     try {
       const renderers::Renderer& renderer = renderers::registry().at(job.renderer);
       renderers::RenderInfo info;
-      const Image image = renderer.render(*s.scene, requestFor(plan, job, *s.scene, renderer), &info);
+      const Image image = renderer.render(*s.scene, s.request, &info);
       writeImages(plan, job, image);
       s.rec.setToolTimes(info);
     } catch (const std::exception& e) {
@@ -152,7 +167,7 @@ std::vector<JobRecord> runJobBatch(const Plan& plan, const std::vector<size_t>& 
         throw std::invalid_argument("runJobBatch: the jobs of a batch must share their renderer (" +
                                     renderer->id + ", " + r.id + ")");
       renderer = &r;
-      items.push_back({&*s.scene, requestFor(plan, job, *s.scene, r)});
+      items.push_back({&*s.scene, s.request});
       item_of.back() = items.size() - 1;
     } catch (const std::exception& e) {
       s.rec.error = e.what();
