@@ -111,7 +111,7 @@ enum class TextureFilter { Nearest, Bilinear, Trilinear };
 // with the base-colour texture its own material assigns (geometry/
 // model_file.h); a primitive whose material assigns none has the
 // material's base_color. Only a "mesh" object may use it. The renderers
-// never see it: scene/model_textures.h turns such an object into one
+// never see it: geometry/model_textures.h turns such an object into one
 // object per primitive with a Source::Image texture (or none).
 struct TextureSpec {
   enum class Source { Brick, Image, Model };

@@ -136,7 +136,7 @@ TEST(PovExport, ListingOptionsAreRefusedWhereNotExpressible) {
     return "";
   };
   Scene tri = smallScene();
-  tri.material.texture = TextureSpec{TextureSpec::Source::Brick, {}, TextureFilter::Trilinear};
+  tri.material.texture = TextureSpec{TextureSpec::Source::Brick, {}, TextureFilter::Trilinear, {}};
   Scene raw = smallScene();
   raw.normalize_normal = false;
   const fs::path dir = freshDir("refuse_listing");
