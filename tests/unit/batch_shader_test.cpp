@@ -121,7 +121,7 @@ TEST(BatchShader, DeclinesWhatItDoesNotCover) {
   s.material.model = Trilight{};
   EXPECT_FALSE(batchShading(s, nullptr, eye).has_value());
   s.material.model = ClassicPhong{};
-  s.material.texture = TextureSpec{TextureSpec::Source::Brick, {}, TextureFilter::Trilinear};
+  s.material.texture = TextureSpec{TextureSpec::Source::Brick, {}, TextureFilter::Trilinear, {}};
   EXPECT_FALSE(batchShading(s, nullptr, eye).has_value());  // the level needs each hit's footprint
   s.material.texture.reset();
   s.normalize_normal = false;

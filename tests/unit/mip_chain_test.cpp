@@ -75,7 +75,7 @@ Scene headOnPlane(int size, double fill, TextureFilter f) {
   s.camera.position = {0, 0, 1.0 / fill};
   s.objects = {Plane{}};
   s.material.model = Lambert{};
-  s.material.texture = TextureSpec{TextureSpec::Source::Brick, {}, f};
+  s.material.texture = TextureSpec{TextureSpec::Source::Brick, {}, f, {}};
   s.lights = {AmbientLight{glm::dvec3(1.0)}};
   return s;
 }
