@@ -161,7 +161,7 @@ TEST_F(ModelTextures, SourceModelIsReadAndWritten) {
   // The writer keeps the source and the colour of untextured primitives.
   const auto j = sceneToJson(s);
   EXPECT_EQ(j["material"]["texture"]["source"], "model");
-  EXPECT_EQ(j["material"]["base_color"], nlohmann::json::array({0.0, 0.0, 1.0}));
+  EXPECT_EQ(j["material"]["base_color"], nlohmann::ordered_json::array({0.0, 0.0, 1.0}));
   EXPECT_EQ(j["material"]["texture"].count("path"), 0u);
   // An object's own material may use it too.
   const Scene own = parseScene(sceneText(std::string(R"([{"shape": "sphere"}, {"shape": "mesh", "path": "squares.gltf",
