@@ -6,7 +6,7 @@ set bmargin at screen 0.09
 set tmargin at screen 0.93
 set logscale xy
 set grid xtics ytics mxtics mytics lc rgb '#dddddd'
-set xrange [0.00998719:15.5092]
+set xrange [0.0062595:9.50346]
 set yrange [20.1684:10918.2]
 set xlabel 'frame time, median (s)'
 set ylabel 'RMSE (1/65535) against the converged reference'
@@ -14,21 +14,21 @@ set title 'table2_knot_yiq 720x720: error against frame time (Pareto-optimal in 
 set key top right box opaque
 set arrow from graph 0, first 32.2694 to graph 1, first 32.2694 nohead dt 2 lc rgb '#3060c0'
 set label "converged reference's residual (errors closer than this are not resolved)" at graph 0.01, first 36.1417 tc rgb '#3060c0'
-set label "corner:fast-gouraud" at graph 0.0741918, graph 0.901516 left font ',9:Bold' tc rgb '#c02020' front
-set label "corner:fast" at graph 0.103452, graph 0.764515 left font ',9:Bold' tc rgb '#c02020' front
-set label "precision=float" at graph 0.135344, graph 0.670958 left font ',9:Bold' tc rgb '#c02020' front
-set label "corner:float-4spp" at graph 0.296048, graph 0.52404 right font ',9:Bold' tc rgb '#c02020' front
-set label "corner:float-16spp" at graph 0.459238, graph 0.472788 right font ',9:Bold' tc rgb '#c02020' front
-set label "corner:accurate" at graph 0.656269, graph 0.30175 right font ',9:Bold' tc rgb '#c02020' front
-set label "tess=0.25" at graph 0.28274, graph 0.873117 right font ',8' tc rgb '#606060' front
-set label "shading=gouraud" at graph 0.33106, graph 0.855042 left font ',8' tc rgb '#606060' front
-set label "tess=0.5" at graph 0.296326, graph 0.770829 left font ',8' tc rgb '#606060' front
-set label "shading=flat" at graph 0.37129, graph 0.74969 left font ',8' tc rgb '#606060' front
-set label "filter=nearest" at graph 0.346577, graph 0.733309 right font ',8' tc rgb '#606060' front
-set label "base" at graph 0.315603, graph 0.694768 left font ',8' tc rgb '#606060' front
-set label "tess=2" at graph 0.395427, graph 0.685194 left font ',8' tc rgb '#606060' front
-set label "spp=4" at graph 0.470713, graph 0.54785 left font ',8' tc rgb '#606060' front
-set label "spp=16" at graph 0.668356, graph 0.496598 left font ',8' tc rgb '#606060' front
-set label "spp=64" at graph 0.821561, graph 0.490389 left font ',8' tc rgb '#606060' front
+set label "corner:fast-gouraud" at graph 0.0743889, graph 0.901516 left font ',9:Bold' tc rgb '#c02020' front
+set label "corner:fast" at graph 0.103156, graph 0.764515 left font ',9:Bold' tc rgb '#c02020' front
+set label "precision=float" at graph 0.123327, graph 0.670958 left font ',9:Bold' tc rgb '#c02020' front
+set label "corner:float-4spp" at graph 0.288734, graph 0.52404 right font ',9:Bold' tc rgb '#c02020' front
+set label "corner:float-16spp" at graph 0.458424, graph 0.472788 right font ',9:Bold' tc rgb '#c02020' front
+set label "corner:accurate" at graph 0.653696, graph 0.30175 right font ',9:Bold' tc rgb '#c02020' front
+set label "tess=0.25" at graph 0.309811, graph 0.873117 left font ',8' tc rgb '#606060' front
+set label "shading=gouraud" at graph 0.283823, graph 0.855042 right font ',8' tc rgb '#606060' front
+set label "tess=0.5" at graph 0.306394, graph 0.770829 left font ',8' tc rgb '#606060' front
+set label "shading=flat" at graph 0.355341, graph 0.74969 left font ',8' tc rgb '#606060' front
+set label "filter=nearest" at graph 0.31883, graph 0.733309 right font ',8' tc rgb '#606060' front
+set label "base" at graph 0.333243, graph 0.694768 left font ',8' tc rgb '#606060' front
+set label "tess=2" at graph 0.391687, graph 0.685194 left font ',8' tc rgb '#606060' front
+set label "spp=4" at graph 0.482634, graph 0.54785 left font ',8' tc rgb '#606060' front
+set label "spp=16" at graph 0.647562, graph 0.496598 left font ',8' tc rgb '#606060' front
+set label "spp=64" at graph 0.82098, graph 0.490389 left font ',8' tc rgb '#606060' front
 plot 'pareto.dat' index 0 using 2:3 with points pt 7 ps 1.1 lc rgb '#909090' title 'configuration', \
      '' index 1 using 2:3 with linespoints pt 7 ps 1.4 lw 1.5 lc rgb '#c02020' title 'Pareto-optimal'
