@@ -22,6 +22,7 @@
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_writer.h"
+#include "support/scene_errors.h"
 #include "support/temp_files.h"
 #include "texture/texture.h"
 
@@ -129,14 +130,7 @@ const char* kModelMaterial =
     R"({"model": {"type": "lambert"}, "texture": {"source": "model", "filter": "nearest"}, "base_color": [0, 0, 1]})";
 
 void expectError(const fs::path& file, const std::string& text, std::initializer_list<std::string> needles) {
-  try {
-    parseScene(text, file);
-    ADD_FAILURE() << "no error for: " << text;
-  } catch (const SceneError& e) {
-    const std::string msg = e.what();
-    EXPECT_NE(msg.find(file.string()), std::string::npos) << msg;
-    for (const auto& n : needles) EXPECT_NE(msg.find(n), std::string::npos) << "'" << n << "' not in: " << msg;
-  }
+  test::expectSceneError(file, text, needles);
 }
 
 class ModelTextures : public ::testing::Test {

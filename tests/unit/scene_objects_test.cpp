@@ -18,6 +18,7 @@
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_writer.h"
+#include "support/scene_errors.h"
 #include "support/temp_files.h"
 
 using namespace xval;
@@ -58,14 +59,7 @@ std::string sceneText(const std::string& objects, const std::string& material =
 
 // Expects parseScene to fail with a message holding the file and every needle.
 void expectError(const fs::path& file, const std::string& text, std::initializer_list<std::string> needles) {
-  try {
-    parseScene(text, file);
-    ADD_FAILURE() << "no error for: " << text;
-  } catch (const SceneError& e) {
-    const std::string msg = e.what();
-    EXPECT_NE(msg.find(file.string()), std::string::npos) << msg;
-    for (const auto& n : needles) EXPECT_NE(msg.find(n), std::string::npos) << "'" << n << "' not in: " << msg;
-  }
+  test::expectSceneError(file, text, needles);
 }
 
 class SceneObjects : public ::testing::Test {
