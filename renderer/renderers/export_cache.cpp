@@ -2,6 +2,7 @@
 #include "renderers/export_cache.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -23,6 +24,7 @@ namespace fs = std::filesystem;
 constexpr const char* kEntryFormat = "xval-export-cache/1";
 constexpr const char* kManifest = "manifest.json";
 constexpr std::uintmax_t kMaxManifestBytes = 1 << 20;
+constexpr const char* kTempPrefix = ".tmp-";
 
 std::mutex g_lock;
 ExportCache g_cache;
@@ -135,7 +137,7 @@ void storeEntry(const ExportCache& cache, const fs::path& entry, const std::stri
   const std::vector<StoredFile> files = exportedFiles(dir, &why);
   if (!why.empty()) throw std::runtime_error(why);
   fs::create_directories(cache.dir);
-  const fs::path tmp = cache.dir / (".tmp-" + attemptToken());
+  const fs::path tmp = cache.dir / (kTempPrefix + attemptToken());
   struct Cleanup {
     fs::path p;
     ~Cleanup() {
@@ -156,8 +158,27 @@ void storeEntry(const ExportCache& cache, const fs::path& entry, const std::stri
   if (!ec) cleanup.p.clear();
 }
 
+// Removes the temporaries of stores that ended without renaming them (a
+// process killed while storing) once they are older than
+// kStaleTempSeconds: a live store writes into its temporary all the time,
+// so its folder's time is at most the time one file takes to copy.
+void removeStaleTemporaries(const ExportCache& cache) {
+  std::error_code ec;
+  const auto now = fs::file_time_type::clock::now();
+  for (const auto& e : fs::directory_iterator(cache.dir, ec)) {
+    const std::string n = e.path().filename().string();
+    if (n.rfind(kTempPrefix, 0) != 0 || !e.is_directory(ec) || e.is_symlink(ec)) continue;
+    const auto written = fs::last_write_time(e.path(), ec);
+    if (ec || now - written < std::chrono::seconds(kStaleTempSeconds)) continue;
+    const std::uintmax_t removed = fs::remove_all(e.path(), ec);
+    if (!ec) std::fprintf(stderr, "export cache: removed %s, an interrupted store (%ju files)\n", e.path().c_str(),
+                          removed);
+  }
+}
+
 // Removes least recently used entries until the cache holds at most max_bytes.
 void prune(const ExportCache& cache) {
+  removeStaleTemporaries(cache);
   struct Entry {
     fs::path dir;
     fs::file_time_type used;

@@ -20,7 +20,9 @@
 // is never used; a refusal is stored the same way (refusal.txt).
 //
 // Size: after a store, the least recently used entries (manifest time) are
-// removed until the cache holds at most ExportCache::max_bytes.
+// removed until the cache holds at most ExportCache::max_bytes, and so are
+// temporaries (.tmp-*) untouched for kStaleTempSeconds: what a store
+// killed before its rename leaves behind.
 //
 // Every use says on stderr what it did: "export cache: cached", "stored",
 // or "corrupt ... exported again" with the exporter and the key's start.
@@ -36,6 +38,9 @@
 namespace xval::renderers {
 
 inline constexpr std::uintmax_t kDefaultExportCacheBytes = std::uintmax_t(2) << 30;  // 2 GiB
+// A temporary of a store not written to for this long belongs to no live
+// store (one file's copy takes seconds, not an hour).
+inline constexpr long kStaleTempSeconds = 3600;
 
 struct ExportCache {
   std::filesystem::path dir;  // empty: no cache

@@ -3,6 +3,7 @@
 // a partial, altered or planted entry is never used but exported again.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -118,6 +119,24 @@ TEST_F(ExportCacheTest, SizeIsBounded) {
     if (f.is_regular_file()) total += f.file_size();
   EXPECT_LE(total, cache.max_bytes);
   EXPECT_TRUE(fs::exists(entryFolder(cache, "pov", exportKey("pov", "inputs-4"))));  // the newest stays
+}
+
+// A store killed before its rename leaves CACHE/.tmp-*; the next store
+// removes such a temporary once it is stale, and never a live one.
+TEST_F(ExportCacheTest, StaleTemporariesOfKilledStoresAreRemoved) {
+  fs::create_directories(cache.dir);
+  const fs::path stale = cache.dir / ".tmp-killedstore", live = cache.dir / ".tmp-livestore";
+  for (const fs::path& t : {stale, live}) {
+    fs::create_directories(t);
+    writeFileAtomically(t / "scene.pov", "half an export");
+  }
+  const auto now = fs::file_time_type::clock::now();
+  fs::last_write_time(stale, now - std::chrono::seconds(kStaleTempSeconds + 60));
+  fs::last_write_time(live, now - std::chrono::seconds(kStaleTempSeconds - 60));
+  run(exportKey("pov", "inputs-a"), "a");
+  EXPECT_FALSE(fs::exists(stale)) << "a temporary untouched for over kStaleTempSeconds stays";
+  EXPECT_TRUE(fs::exists(live / "scene.pov")) << "a temporary written to recently was removed";
+  EXPECT_TRUE(fs::exists(entryFolder(cache, "pov", exportKey("pov", "inputs-a")) / "manifest.json"));
 }
 
 // The inputs key changes with one byte of the scene file or of a texture.
