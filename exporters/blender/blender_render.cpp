@@ -115,7 +115,7 @@ PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& work
       throw ExternalToolError(path.string() + ": contains '\\', which Blender reads as a folder separator; "
                               "choose a folder without it");
   exportThrough(through, work_dir, [&](const std::filesystem::path& dir) { exportGltf(scene, dir); });
-  p.gltf = work_dir / "scene.gltf";
+  p.gltf = work_dir / kGltfFileName;
   // The image's name is this attempt's own: a Blender left from an earlier
   // attempt cannot supply it.
   const std::string tool = toolName(engine);

@@ -130,7 +130,7 @@ GltfExport exportGltf(const Scene& input, const std::filesystem::path& dir) {
   // sample through each pixel centre (common/supersample.h); checked first.
   const SubpixelGrid grid = subpixelGrid(scene);
   std::filesystem::create_directories(dir);
-  GltfExport ex{dir / "scene.gltf", dir};
+  GltfExport ex{dir / kGltfFileName, dir};
   tinygltf::Model m;
   m.asset.version = "2.0";
   m.asset.generator = "xval export gltf";

@@ -38,6 +38,9 @@
 
 namespace xval {
 
+// The glTF file's name inside the export folder.
+inline constexpr const char* kGltfFileName = "scene.gltf";
+
 struct GltfExport {
   std::filesystem::path gltf, dir;
 };

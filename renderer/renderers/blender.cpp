@@ -39,7 +39,7 @@ std::string blenderScriptMissing() {
 // The Blender harness's export with that engine: its check, then the glTF.
 RendererExport blenderExport(BlenderEngine engine) {
   return {"gltf", [engine](const Scene& scene) { checkBlenderScene(scene, engine); },
-          [](const Scene& scene, const std::filesystem::path& dir) { exportGltf(scene, dir); }};
+          [](const Scene& scene, const std::filesystem::path& dir) { exportGltf(scene, dir); }, ""};
 }
 
 // The Cycles harness's refusal of a scene, "" when it can render it.

@@ -27,11 +27,12 @@ std::string refuseOrExport(const Renderer& renderer, const Scene& scene, RenderR
   const RendererExport& ex = *renderer.exporter;
   const ExportThrough through = cachedExport(ex.name, request.export_key);
   auto write = [&](const std::filesystem::path& dir) { ex.write(scene, dir); };
+  const std::filesystem::path dir = ex.folder.empty() ? request.work_dir : request.work_dir / ex.folder;
   bool written = false;
   const std::string why = cachedRefusal(renderer.id, key, [&]() -> std::string {
     try {
       if (ex.check) ex.check(scene);
-      exportThrough(through, request.work_dir, write);
+      exportThrough(through, dir, write);
     } catch (const ExportError& e) {
       return e.what();
     }
@@ -40,7 +41,7 @@ std::string refuseOrExport(const Renderer& renderer, const Scene& scene, RenderR
   });
   if (!why.empty()) return why;
   // The refusal was read back: the export is still to be written.
-  if (!written) exportThrough(through, request.work_dir, write);
+  if (!written) exportThrough(through, dir, write);
   request.exported = true;
   return "";
 }

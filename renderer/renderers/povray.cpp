@@ -34,7 +34,8 @@ Renderer povrayRenderer() {
   r.summary = "POV-Ray 3.7: the scene exported as SDL, rendered by `povray` with a time-out";
   r.version_command = {"povray", "--version"};
   r.version_marker = "POV-Ray";
-  r.exporter = RendererExport{"pov", {}, [](const Scene& scene, const std::filesystem::path& dir) { exportPov(scene, dir); }};
+  r.exporter =
+      RendererExport{"pov", {}, [](const Scene& scene, const std::filesystem::path& dir) { exportPov(scene, dir); }, ""};
   r.cannot_express = [ex = *r.exporter](const Scene& scene) { return refusalOf(ex, scene); };
   r.render = [name = r.exporter->name](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
     ExternalRenderInfo tool;

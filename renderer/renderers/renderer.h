@@ -92,6 +92,9 @@ struct RendererExport {
   // folder before running the tool; throws ExportError for what the
   // exporter refuses (a function of the scene alone).
   std::function<void(const Scene&, const std::filesystem::path& dir)> write;
+  // The folder of the work folder the render reads the export from, as a
+  // relative name ("gltf"); empty: the work folder itself.
+  std::string folder;
 };
 
 struct Renderer {

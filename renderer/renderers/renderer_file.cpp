@@ -4,12 +4,14 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "files/atomic_write.h"
 #include "gltf/gltf_exporter.h"
 #include "image/image_header.h"
 #include "povray/pov_exporter.h"
 #include "process/run_process.h"
+#include "renderers/export_cache.h"
 #include "renderers/registry.h"
 #include "scene/json_reader.h"
 #include "scene/scene_loader.h"
@@ -74,6 +76,17 @@ struct Definition {
   fs::path file;
 };
 
+// The export of input "gltf" or "pov" (nullopt for "scene"): the same
+// files under the same cache name as the blender and povray renderers'
+// exports, in the work folder's gltf/ or pov/.
+std::optional<RendererExport> definedExport(const std::string& input) {
+  if (input == "gltf")
+    return RendererExport{"gltf", {}, [](const Scene& s, const fs::path& dir) { exportGltf(s, dir); }, "gltf"};
+  if (input == "pov")
+    return RendererExport{"pov", {}, [](const Scene& s, const fs::path& dir) { exportPov(s, dir); }, "pov"};
+  return std::nullopt;
+}
+
 Image renderDefined(const Definition& d, const Scene& scene, const RenderRequest& request, RenderInfo* info) {
   if (request.work_dir.empty()) throw std::runtime_error(d.name + ": no work folder given");
   const fs::path work = fs::absolute(request.work_dir).lexically_normal();
@@ -83,8 +96,13 @@ Image renderDefined(const Definition& d, const Scene& scene, const RenderRequest
   const fs::path scene_json = work / "scene.json";
   writeFileAtomically(scene_json, sceneToJson(scene).dump(2) + "\n");
   fs::path input = scene_json;
-  if (d.input == "gltf") input = exportGltf(scene, work / "gltf").gltf;
-  if (d.input == "pov") input = exportPov(scene, work / "pov").dir;
+  if (const std::optional<RendererExport> ex = definedExport(d.input)) {
+    // The export refuseOrExport wrote (request.exported), else the cache's or a new one.
+    const fs::path dir = work / ex->folder;
+    exportThrough(request.exported ? exportedAlready() : cachedExport(ex->name, request.export_key), dir,
+                  [&](const fs::path& to) { ex->write(scene, to); });
+    input = d.input == "gltf" ? dir / kGltfFileName : dir;
+  }
   // A name no earlier attempt used: an image left by one is never taken.
   const fs::path output = work / ("output-" + token + ".exr");
   const int w = scene.camera.width, h = scene.camera.height;
@@ -152,10 +170,8 @@ Renderer loadRendererFile(const fs::path& file) {
   out.definition_file = fs::absolute(d.file).lexically_normal();
   const std::string program = programPath(d.command.front(), d.file);
   out.missing = [program, file = d.file] { return programProblem(program, file); };
-  if (d.input == "gltf")
-    out.cannot_express = [](const Scene& s) { return exportRefusal([&](const fs::path& dir) { exportGltf(s, dir); }); };
-  if (d.input == "pov")
-    out.cannot_express = [](const Scene& s) { return exportRefusal([&](const fs::path& dir) { exportPov(s, dir); }); };
+  out.exporter = definedExport(d.input);
+  if (out.exporter) out.cannot_express = [ex = *out.exporter](const Scene& s) { return refusalOf(ex, s); };
   out.render = [d](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
     return renderDefined(d, scene, request, info);
   };

@@ -8,9 +8,13 @@
 #include <filesystem>
 #include <string>
 
+#include <sys/stat.h>
+
 #include "files/atomic_write.h"
 #include "renderers/export_cache.h"
 #include "renderers/job_export.h"
+#include "renderers/renderer_file.h"
+#include "scene/scene_loader.h"
 
 namespace fs = std::filesystem;
 using namespace xval;
@@ -46,7 +50,8 @@ struct JobExportTest : ::testing::Test {
           ++writes;
           if (!refuse_write.empty()) throw ExportError(refuse_write);
           writeFileAtomically(dir / "scene.txt", "exported");
-        }};
+        },
+        ""};
     r.cannot_express = [ex = *r.exporter](const Scene& s) { return refusalOf(ex, s); };
     return r;
   }
@@ -124,3 +129,28 @@ TEST_F(JobExportTest, ARestoredExportNeverSkipsTheRenderersOwnCheck) {
 }
 
 }  // namespace
+
+// A renderer defined by a file (renderers/renderer_file.h) exports once
+// too: after refuseOrExport, its render hands the program the very files
+// the check wrote (the same inodes: an export writes each file anew, by
+// rename), in the documented place <work>/pov.
+TEST_F(JobExportTest, ARendererDefinedByAFileRendersTheExportItsCheckWrote) {
+  const fs::path def = root / "defined.json";
+  writeFileAtomically(def, R"({"format": "xval-renderer/1", "name": "defined-pov", "input": "pov",
+    "command": ["true", "{input}", "{output}"], "version_command": ["true"]})");
+  const Renderer r = loadRendererFile(def);
+  ASSERT_TRUE(r.exporter.has_value());
+  const Scene s = loadScene(fs::path(XVAL_REFERENCE_DIR) / "scenes" / "texture16_bilinear_37x23.json");
+  RenderRequest request;
+  request.work_dir = root / "job";
+  fs::create_directories(request.work_dir);
+  ASSERT_EQ(refuseOrExport(r, s, request), "");
+  ASSERT_TRUE(request.exported);
+  const fs::path pov = request.work_dir / "pov" / "scene.pov";
+  struct stat before{}, after{};
+  ASSERT_EQ(::stat(pov.c_str(), &before), 0) << pov << ": the check's export is not where the render reads it";
+  // `true` writes no image: the render fails after handing over its input.
+  EXPECT_THROW(r.render(s, request, nullptr), ExternalToolError);
+  ASSERT_EQ(::stat(pov.c_str(), &after), 0);
+  EXPECT_EQ(before.st_ino, after.st_ino) << "the render exported the scene again";
+}
