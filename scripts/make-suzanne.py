@@ -1,6 +1,7 @@
 # Writes Blender's own Suzanne (bpy.ops.mesh.primitive_monkey_add, with its
 # uv map) as OBJ and as glTF 2.0 with Blender 3.4's own exporters, for the
-# reference scenes mesh_suzanne_obj and mesh_suzanne_gltf:
+# reference scenes mesh_suzanne_obj_untextured and mesh_suzanne_gltf_untextured
+# (and the textured scenes of tests/cross, mesh_suzanne_obj and _gltf):
 #
 #   blender -b --factory-startup --python-exit-code 1 -P scripts/make-suzanne.py -- OUT_DIR
 #
