@@ -4,7 +4,7 @@
 //
 // The renderers are listed in one place, the registry (renderers/registry.h);
 // each built-in renderer is one file beside it (reference.cpp, povray.cpp,
-// blender.cpp, blender_native.cpp, eevee.cpp, gl.cpp) whose doc block says
+// blender.cpp, blender_native.cpp, blender_import.cpp, eevee.cpp, gl.cpp) whose doc block says
 // what it is and its parameters and defaults.
 #pragma once
 
@@ -114,6 +114,10 @@ struct Renderer {
   // each scene with it and compares it with every other such renderer.
   // False: a check for a restricted class of scenes, run by crosscheck.
   bool every_scene = true;
+  // True: its image is geometry passes (render/geometry_passes.h), not a
+  // render: crosscheck compares it with the reference's passes of the same
+  // scene (validate/geometry_check.h), not with the reference's render.
+  bool geometry_passes = false;
   // The command printing the outside tool's version, e.g. {"povray",
   // "--version"}; its first word must be on PATH for the renderer to be
   // available. Empty: it runs no outside tool (version: kXvalVersion).

@@ -17,6 +17,8 @@
 #include "renderers/registry.h"
 #include "scene/scene_loader.h"
 #include "validate/tolerances.h"
+#include "validate/geometry_check.h"
+#include "render/geometry_passes.h"
 
 namespace xval::validation {
 
@@ -54,6 +56,30 @@ int crosscheck(const CrosscheckRequest& request) {
     std::printf("%s vs %s: NOT EXPRESSIBLE (not compared): %s\n", scene.name.c_str(), request.renderer.c_str(),
                 why.c_str());
     return 0;
+  }
+
+  if (renderer.geometry_passes) {
+    // Geometry passes (validate/geometry_check.h): the reference's passes
+    // of our loaded triangles against the renderer's; not the image
+    // tolerances.
+    const GeometryPasses ref = referenceGeometryPasses(scene);
+    writeImage(toImage(ref), dir / "reference-passes.exr");
+    renderers::RenderInfo info;
+    const Image ext = renderer.render(scene, render_request, &info);
+    writeImage(ext, dir / (request.renderer + ".exr"));
+    const GeometryMetrics m = compareGeometry(ref, geometryPassesFromImage(ext));
+    nlohmann::json j = toJson(m, kGeometryTolerance);
+    j["scene"] = scene.name;
+    j["renderer"] = request.renderer;
+    j["seconds"] = {{request.renderer, info.seconds}};
+    writeFileAtomically(dir / "metrics.json", j.dump(2) + "\n");
+    std::printf(
+        "%s vs %s: %s  covered %lld  masks: %lld off (%lld on silhouettes)  depth: max rel %.3g (all %.3g)  "
+        "uv: max %.3g over %lld (all %.3g)  depth edges %lld, edge pixels over: %lld%s%s\n",
+        scene.name.c_str(), request.renderer.c_str(), m.pass ? "PASS" : "FAIL", m.covered, m.mask_off,
+        m.mask_off_silhouette, m.max_depth_rel, m.max_depth_rel_all, m.max_uv, m.uv_compared, m.max_uv_all,
+        m.depth_edges, m.edge_over, m.pass ? "" : ": ", m.why.c_str());
+    return m.pass ? 0 : 1;
   }
 
   // The reference on its exact double-precision path.

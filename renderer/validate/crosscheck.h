@@ -8,6 +8,11 @@
 // reason, the seconds of each render); prints a one-line verdict on
 // stdout. The folder is locked for the run (files/output_folder.h).
 //
+// A renderer of geometry passes (Renderer::geometry_passes: blender-import)
+// is compared instead with the reference's passes of the same scene
+// (validate/geometry_check.h, its own bounds): DIR/reference-passes.exr,
+// DIR/<renderer>.exr and DIR/metrics.json (that comparison's metrics).
+//
 // When the renderer declares that it cannot express the scene
 // (Renderer::cannot_express, the exporter's refusal), nothing is rendered:
 // metrics.json says "not_expressible" with the reason, the verdict line

@@ -34,6 +34,9 @@ const renderers::Renderer& sourceRenderer(const std::string& id) {
   const renderers::Renderer& r = renderers::registry().at(id);
   if (r.id == "golden" || r.id.rfind("golden-", 0) == 0)
     throw std::runtime_error("--renderer " + id + ": a golden set cannot store golden images of itself");
+  if (r.geometry_passes)
+    throw std::runtime_error("--renderer " + id + ": its images are geometry passes, compared only by crosscheck "
+                             "with the reference's passes: no golden set");
   return r;
 }
 
