@@ -141,7 +141,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
                   "Render and compare only these renderers, comma-separated, at least two (default: " +
                       renderers::joinNames(v::jobRenderers()) + "; xval renderers lists them)")
       ->delimiter(',');
-  cmd->add_option("--jobs", args->jobs, "Renders in parallel (default: the core count)")
+  cmd->add_option("--jobs", args->jobs, "Renders in parallel, and cases compared in parallel in the compare step (default: the core count)")
       ->check(CLI::Range(1, 256));
   cmd->add_option("--batch", args->batch,
                   "Scenes per Blender process (blender, eevee: one persistent worker renders a batch; "
@@ -207,10 +207,12 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
   cmd->callback([args, &run, cmd, sections, renderer_files]() {
     // Scheduling: for a plain run and --run-jobs.
     const bool schedule_given = cmd->count("--jobs") + cmd->count("--batch") + cmd->count("--schedule") > 0;
+    // --compare-only takes --jobs (cases compared at once), not the others.
+    const bool only_jobs_given = cmd->count("--jobs") > 0 && cmd->count("--batch") + cmd->count("--schedule") == 0;
     const bool local_options_given = cmd->count("--renderers") + cmd->count("--timeout") + cmd->count("--max-triangles") +
                                          cmd->count("--max-samples") + cmd->count("--max-memory-mb") +
                                          cmd->count("--allow-large") > 0;
-    run = [args, schedule_given, local_options_given, sections, renderer_files]() -> int {
+    run = [args, schedule_given, only_jobs_given, local_options_given, sections, renderer_files]() -> int {
       auto settingsOf = [](const Args& a) {
         v::RunSettings settings;
         settings.workers = a.jobs > 0 ? a.jobs : defaultWorkers();
@@ -233,10 +235,11 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
             throw std::runtime_error("--plan " + args->plan +
                                      ": say what to do: --run-job K, --run-jobs LIST or --compare-only");
           if (!args->inputs.empty() || !args->dir.empty() || !args->tolerances.empty() ||
-              local_options_given || (schedule_given && args->run_jobs.empty()))
+              local_options_given ||
+              (schedule_given && args->run_jobs.empty() && !(args->compare_only && only_jobs_given)))
             throw std::runtime_error("--plan " + args->plan +
                                      ": scenes, -o, --renderers, --tolerances, --timeout and the budget options come from the plan "
-                                     "(and --jobs, --batch and --schedule are for a plain run or --run-jobs); give none of them");
+                                     "(and --jobs, --batch and --schedule are for a plain run or --run-jobs, --jobs also for --compare-only); give none of them");
           const v::Plan plan = v::readPlan(args->plan);
           // Jobs of one plan run side by side (a cluster array): they share
           // the folder; a plain run, --plan-only or --compare-only excludes
@@ -244,7 +247,8 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
           const FolderLock folder_lock(plan.dir,
                                        args->compare_only ? FolderLock::Mode::Exclusive : FolderLock::Mode::Shared,
                                        "xval validate");
-          if (args->compare_only) return withJunit(plan, v::compareAndReport(plan, sections(*args)), args->junit);
+          if (args->compare_only)
+            return withJunit(plan, v::compareAndReport(plan, sections(*args), settingsOf(*args).workers), args->junit);
           if (!args->extremes.empty() || !args->tradeoff.empty())
             throw std::runtime_error("--extremes and --tradeoff are for the compare step (a plain run or "
                                      "--compare-only), not --run-job");
@@ -305,7 +309,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
           std::fprintf(stderr, "xval validate: --resume: %zu of %zu jobs done before, %zu to run\n",
                        plan.jobs.size() - todo.size(), plan.jobs.size(), todo.size());
         v::runJobs(plan, todo, settingsOf(*args));
-        return withJunit(plan, v::compareAndReport(plan, sections(*args)), args->junit);
+        return withJunit(plan, v::compareAndReport(plan, sections(*args), settingsOf(*args).workers), args->junit);
       } catch (const std::exception& e) {
         std::fprintf(stderr, "xval validate: error: %s\n", e.what());
         return 2;

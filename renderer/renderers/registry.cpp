@@ -98,14 +98,21 @@ std::vector<const Renderer*> Registry::everySceneRenderers() const {
 
 std::string Registry::version(std::string_view id) const {
   const Renderer& r = at(id);
+  // Cached by what is probed: renderers of one tool (blender, eevee) run
+  // its version command once.
+  std::string key(id);
+  if (r.external()) {
+    key = r.version_marker;
+    for (const std::string& w : r.version_command) key += '\0' + w;
+  }
   {
     std::lock_guard<std::mutex> g(cache_lock_);
-    if (auto it = versions_.find(id); it != versions_.end()) return it->second;
+    if (auto it = versions_.find(key); it != versions_.end()) return it->second;
   }
   const std::string v = r.external() ? probeToolVersion(r.version_command, r.version_marker, kVersionTimeoutSeconds)
                                      : std::string(kXvalVersion);
   std::lock_guard<std::mutex> g(cache_lock_);
-  return versions_.emplace(std::string(id), v).first->second;
+  return versions_.emplace(key, v).first->second;
 }
 
 Availability Registry::availability(std::string_view id) const {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <exception>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -16,6 +17,7 @@
 #include "image/heat_map.h"
 #include "image/image.h"
 #include "image/perceptual.h"
+#include "process/job_pool.h"
 #include "renderers/registry.h"
 #include "scene/scene_loader.h"
 #include "validate/colour_stats.h"
@@ -227,7 +229,7 @@ int entriesWith(const J& entries, const char* key) {
 
 }  // namespace
 
-int compareAndReport(const Plan& plan, const ReportSections& sections) {
+int compareAndReport(const Plan& plan, const ReportSections& sections, int workers) {
   const fs::path& dir = plan.dir;
   const J jsections = sectionsJson(sections, dir);  // fails early on a folder with no results
   // The old verdict must not outlive this run: whatever stops it from here
@@ -238,9 +240,24 @@ int compareAndReport(const Plan& plan, const ReportSections& sections) {
   int not_expressible = 0, not_compared = 0;  // renders, and their pairs
   J jcases = J::array();
   std::vector<fs::path> setting_files{plan.tolerances_path};
+  // The cases are independent (each reads its own renders and writes into
+  // its own folder): compared side by side, kept in plan order.
+  // A case that throws stops the step as before: the first such case in
+  // plan order (whichever finished first) is the error.
+  std::vector<J> compared(plan.scenes.size());
+  std::vector<std::exception_ptr> failed(plan.scenes.size());
+  runJobPool(plan.scenes.size(), workers, [&](size_t k) {
+    try {
+      compared[k] = compareCase(cx, k);
+    } catch (...) {
+      failed[k] = std::current_exception();
+    }
+  });
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
   for (size_t k = 0; k < plan.scenes.size(); ++k) {
     setting_files.push_back(plan.scenes[k].path);
-    J jc = compareCase(cx, k);
+    J jc = std::move(compared[k]);
     any_error |= entriesWith(jc["renders"], "error") > 0;
     not_expressible += entriesWith(jc["renders"], "not_expressible");
     not_compared += entriesWith(jc["pairs"], "not_expressible");

@@ -27,6 +27,8 @@ namespace xval::validation {
 // status of `xval validate`: 0 every compared pair passes (a renderer that
 // cannot express a scene is no failure), 1 some case outside its
 // tolerance, 2 an error (a render failed or a job has no usable record).
-int compareAndReport(const Plan& plan, const ReportSections& sections = {});
+// `workers` cases are compared at once (process/job_pool.h); the results
+// do not depend on it.
+int compareAndReport(const Plan& plan, const ReportSections& sections = {}, int workers = 1);
 
 }  // namespace xval::validation
