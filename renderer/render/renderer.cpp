@@ -653,7 +653,8 @@ void PreparedScene::Impl::renderRasterised(const Shading<float>& sh, const Rende
   const int n = samplesPerSide(opt);
   const Accumulation<float> acc{sh, img, opt.diagnostics && !img.raw.empty(), 1.0f / float(n * n), 1.0 / n, cam};
   stats.visibility = "rasterised";
-  const Rasteriser raster(meshes, cam, kBand, opt.cull_back_faces ? back_faces_hidden : std::vector<bool>{});
+  const Rasteriser raster(meshes, cam, kBand, opt.cull_back_faces ? back_faces_hidden : std::vector<bool>{},
+                          threadCount(opt));
   stats.culled_triangles = raster.culledTriangles();
   const BatchShading* kernel = batch && opt.batch_shading && !acc.diag ? &*batch : nullptr;
   if (kernel) stats.shading = std::string("SIMD, ") + batchShaderTarget();
