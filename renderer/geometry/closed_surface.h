@@ -52,7 +52,10 @@
 //     corners at v overlap exactly when one holds an edge direction of
 //     the other. Either suffices.
 // Candidate pairs: the triangles whose bounding boxes (grown by the gap)
-// overlap, found through a uniform grid; the others are disjoint.
+// overlap, found through a uniform grid; the others are disjoint. The work
+// is bounded (at most 256 n + 2^24 pairs of triangles in common cells, 64
+// n + 2^20 cell entries, n < 2^24): a mesh beyond that is "not checked",
+// i.e. not claimed.
 #pragma once
 
 #include <string>

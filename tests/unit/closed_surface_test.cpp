@@ -132,6 +132,27 @@ TEST(ClosedSurface, FoldedOrDegenerateIsNot) {
   EXPECT_NE(whyNotAnOutwardSolid(f), "");
 }
 
+// A closed cone of 20,000 sides: every side meets the apex, so their
+// boxes share the apex's cell (2e8 candidate pairs): the check gives up
+// instead of taking quadratic time, and claims nothing.
+TEST(ClosedSurface, QuadraticWorkIsRefused) {
+  TriangleMesh m;
+  const int n = 20000;
+  m.positions.push_back({0, 0, 1});  // apex
+  m.positions.push_back({0, 0, 0});  // base centre
+  for (int i = 0; i < n; ++i) {
+    const double a = 2.0 * std::numbers::pi * i / n;
+    m.positions.push_back(glm::dvec3(glm::vec3(std::cos(a), std::sin(a), 0.0f)));
+  }
+  for (uint32_t i = 0; i < uint32_t(n); ++i) {
+    const uint32_t a = 2 + i, b = 2 + (i + 1) % n;
+    m.triangles.push_back({0, a, b});  // side, outwards
+    m.triangles.push_back({1, b, a});  // base, downwards
+  }
+  m.normals.assign(m.positions.size(), glm::dvec3(0, 0, 1));
+  expectFailsWith(m, "not checked");
+}
+
 TEST(ClosedSurface, EyeMustBeOutsideTheBox) {
   const TriangleMesh m = torus(1.0, 0.3, 64, 24);
   EXPECT_TRUE(closedMeshBackFacesNeverFirstHit(m, {0, 0, 4}));
