@@ -6,6 +6,7 @@
 #include <numbers>
 #include <variant>
 
+#include "geometry/closed_surface.h"
 #include "geometry/torus_knot.h"
 
 namespace xval {
@@ -82,7 +83,18 @@ bool backFacesNeverFirstHit(const Shape& shape, const TriangleMesh& mesh, glm::d
   return outside && windingAgreesWithNormals(mesh, rounding);
 }
 
+bool eyeOutsideBox(const TriangleMesh& mesh, glm::dvec3 eye) {
+  glm::dvec3 lo(INFINITY), hi(-INFINITY);
+  for (const glm::dvec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  return eye.x < lo.x || eye.y < lo.y || eye.z < lo.z || eye.x > hi.x || eye.y > hi.y || eye.z > hi.z;
+}
+
+bool closedMeshBackFacesNeverFirstHit(const TriangleMesh& mesh, glm::dvec3 eye) {
+  return eyeOutsideBox(mesh, eye) && whyNotAnOutwardSolid(mesh).empty();  // condition C (cheap) first
+}
+
 bool objectBackFacesNeverFirstHit(const SceneObject& object, const TriangleMesh& mesh, glm::dvec3 eye) {
+  if (std::holds_alternative<MeshFile>(object.shape)) return closedMeshBackFacesNeverFirstHit(mesh, eye);
   return object.transform.isIdentity() && backFacesNeverFirstHit(object.shape, mesh, eye);
 }
 

@@ -11,8 +11,8 @@
 // other (a knotted tube that crosses itself): the ray still enters some
 // piece first. Three conditions, all checked here:
 //   1. the shape is a closed solid: a torus knot tube or a sphere (a plane
-//      is open, and its back is visible: never; a model file's mesh is
-//      not known to be closed: never);
+//      is open, and its back is visible: never; a model file's mesh:
+//      never here, see closedMeshBackFacesNeverFirstHit below);
 //   2. every triangle's winding normal agrees with its vertex normals
 //      (g . (n0 + n1 + n2) > 0; the tessellators promise outward normals,
 //      and this checks the winding against them), and rounding the
@@ -54,9 +54,53 @@ bool backFacesNeverFirstHit(const Shape& shape, const TriangleMesh& mesh, glm::d
 // identity, else false. Condition 3's tests are stated in the shape's own
 // coordinates (centre, radii); a transformed object (an ellipsoid, a
 // mirrored knot) is not yet given its own test, so its back faces are
-// kept: slower, never a different image. A mesh from a model file: false
-// (condition 1: a file is not known to bound a solid).
+// kept: slower, never a different image. A mesh from a model file:
+// closedMeshBackFacesNeverFirstHit (below), whatever its transform.
 bool objectBackFacesNeverFirstHit(const SceneObject& object, const TriangleMesh& mesh, glm::dvec3 eye);
+
+// The same for any mesh, from its triangles alone (an object's mesh from
+// a model file, whatever its transform: the mesh is taken as the renderers
+// get it, transformed, mirrored and re-wound, rounded to float32):
+//   A. the mesh is the surface of a solid, oriented outwards
+//      (geometry/closed_surface.h: no degenerate triangle; every edge,
+//      by vertex index, in exactly two triangles running it opposite
+//      ways; no two triangles meeting except as their indices say; every
+//      component of positive signed volume). Then its winding number w
+//      is 0 or 1 per component, so w >= 0 everywhere;
+//   B. (no condition on the vertex normals: visibility does not use them);
+//   C. the eye is outside the mesh's bounding box (strictly, compared
+//      exactly: the vertices are the doubles of the mesh), so w(eye) = 0.
+// Why: a ray from the eye meets the surface first at q. Before q it
+// crosses nothing, so w = 0 up to q. If q lies inside one triangle and the
+// ray crossed it along g (a back face), w would be -1 just past q: not
+// possible. A ray that meets a back face first at an edge or a vertex
+// meets the triangles sharing it at the same depth, a front one among
+// them (the same argument, one ray beside it). So every first hit is on a
+// front face, or at a depth a front face shares.
+// Open meshes, inconsistent winding, self-intersections (they may leave
+// w < 0 somewhere: a figure-eight tube), inside-out components, an eye in
+// the box: false, nothing is skipped.
+bool closedMeshBackFacesNeverFirstHit(const TriangleMesh& mesh, glm::dvec3 eye);
+
+// In the rasteriser's arithmetic (render/raster.h): culling there drops
+// the triangles whose screen-space signed area, computed by the very
+// expression the band rasteriser computes, is > 0, so a dropped triangle
+// would have been rasterised as a back face, and a kept one is rasterised
+// exactly as without culling. Coverage is watertight across an edge shared
+// by index (both triangles evaluate the edge function from its lower index,
+// bit-identical values of opposite sign, the tie going to one of them), so
+// each sample sees the same sequence of crossings as the exact surface,
+// up to which of two triangles sharing an edge it falls into. The images
+// are then equal bit for bit unless, at some sample, a back face's
+// computed 1/z is at least the nearest front face's although the exact
+// values are the other way round. That needs the two depths to agree to
+// within the rounding of 1/z (a few ulp, relative 1e-15): only at a
+// sample within about 1e-15 of a triangle's size from a silhouette edge,
+// where the front and the back face sharing the edge both cover it (a
+// tie at equal computed 1/z goes to the triangle binned first). There the
+// culled image shows the front face, the exact first hit; without culling
+// the back face may win by rounding. The tests (front_faces_test) check
+// bit identity on whole frames of closed meshes.
 
 // The ray paths' twin of the rasteriser's back-face test: which triangles
 // of `mesh` the BVH must hold so that every camera ray from `eye` finds

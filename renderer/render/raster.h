@@ -53,12 +53,15 @@ class Rasteriser {
   static bool applicable(const std::vector<TriangleMesh>& meshes, const CameraRays& cam);
 
   // Projects the vertices and bins the triangles into bands of band_rows
-  // rows (done once per frame; cheap next to shading).
-  // cull_back: per mesh, empty for none.
+  // rows (done once per frame).
+  // cull_back: per mesh, empty for none. threads: how many threads may
+  // share the work (the result is the same on any number).
   Rasteriser(const std::vector<TriangleMesh>& meshes, const CameraRays& cam, int band_rows,
-             const std::vector<bool>& cull_back = {});
+             const std::vector<bool>& cull_back = {}, int threads = 1);
 
   int bands() const { return int(bins_.size()); }
+  // Band b's triangles, (mesh << 32) | triangle, in the order rasterised.
+  const std::vector<std::uint64_t>& bin(int band) const { return bins_[band]; }
   size_t culledTriangles() const { return culled_; }
 
   // The first hit of every sample (i + ox, j + oy) of band b's rows (ox, oy

@@ -520,6 +520,7 @@ struct PreparedScene::Impl {
   std::vector<const MipChain*> object_chain;  // per object (null: none)
   std::optional<Accel> accel;
   std::vector<bool> back_faces_hidden;  // per mesh: geometry/front_faces.h, from the camera
+  bool rasterisable = false;            // Rasteriser::applicable for the scene's camera (fixed)
   size_t bvh_culled = 0;                // back faces left out of the BVH
   std::variant<std::monostate, Shading<float>, Shading<double>> shading;
   // Float only: the SIMD kernel, when it covers the scene (shading/batch_shader.h).
@@ -555,6 +556,7 @@ PreparedScene::PreparedScene(const Scene& input, Precision precision, bool cull_
   d.mesh_object = std::move(sm.object);
   for (const auto& m : d.meshes) d.triangles += m.triangles.size();
   const glm::dvec3 eye = CameraRays(scene.camera).origin;
+  d.rasterisable = Rasteriser::applicable(d.meshes, CameraRays(scene.camera));
   for (size_t k = 0; k < d.meshes.size(); ++k)
     d.back_faces_hidden.push_back(objectBackFacesNeverFirstHit(scene.objects[d.mesh_object[k]], d.meshes[k], eye));
   const Texture* default_texture = nullptr;
@@ -633,7 +635,7 @@ void PreparedScene::Impl::renderT(const Shading<T>& sh, const RenderOptions& opt
                                   RenderStats& stats) const {
   Progress progress(opt.progress);
   if constexpr (std::is_same_v<T, float>) {
-    if (opt.rasterise && Rasteriser::applicable(meshes, CameraRays(scene.camera)))
+    if (opt.rasterise && rasterisable)
       renderRasterised(sh, opt, img, stats, progress);
     else
       renderTraced(sh, opt, img, stats, progress);
@@ -653,7 +655,8 @@ void PreparedScene::Impl::renderRasterised(const Shading<float>& sh, const Rende
   const int n = samplesPerSide(opt);
   const Accumulation<float> acc{sh, img, opt.diagnostics && !img.raw.empty(), 1.0f / float(n * n), 1.0 / n, cam};
   stats.visibility = "rasterised";
-  const Rasteriser raster(meshes, cam, kBand, opt.cull_back_faces ? back_faces_hidden : std::vector<bool>{});
+  const Rasteriser raster(meshes, cam, kBand, opt.cull_back_faces ? back_faces_hidden : std::vector<bool>{},
+                          threadCount(opt));
   stats.culled_triangles = raster.culledTriangles();
   const BatchShading* kernel = batch && opt.batch_shading && !acc.diag ? &*batch : nullptr;
   if (kernel) stats.shading = std::string("SIMD, ") + batchShaderTarget();
