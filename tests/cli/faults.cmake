@@ -177,7 +177,8 @@ elseif(CASE STREQUAL "reserved_scene_names")
 
 elseif(CASE STREQUAL "interrupt")
   # Every tool records its pid, sleeps, then writes a file (its own and
-  # one in the output folder); SIGINT reaches xval once both run.
+  # one in the output folder); SIGINT reaches xval once two run (POV-Ray's
+  # job and a Blender worker; EEVEE's worker may have started too).
   foreach(_t povray blender)
     stand_in(${_t} "echo $$ >> '${WORK}/pids'\nsleep 4\ntouch '${WORK}/late-${_t}-'$$ late-${_t}\nexit 0")
   endforeach()
@@ -187,8 +188,8 @@ elseif(CASE STREQUAL "interrupt")
   execute_process(COMMAND sleep 5)  # past the stand-ins' sleep
   file(STRINGS ${WORK}/pids _pids)
   list(LENGTH _pids _n)
-  if(NOT _n EQUAL 2)
-    message(FATAL_ERROR "expected both stand-ins to have started, got pids: ${_pids}")
+  if(_n LESS 2)
+    message(FATAL_ERROR "expected at least two stand-ins to have started, got pids: ${_pids}")
   endif()
   foreach(_p ${_pids})
     execute_process(COMMAND kill -0 ${_p} RESULT_VARIABLE _alive ERROR_QUIET)

@@ -84,7 +84,7 @@ TEST(BlenderImportCross, WrongLoaderFailsWhereTheRightOnePasses) {
 
 TEST(BlenderImportCross, SkippedPrimitiveFails) {
   const fs::path dir = test::freshTempDir("xval_cross_blender_import_spider");
-  const Scene spider = loadScene((fs::path(XVAL_TESTS_DIR) / "cross/scenes/mesh_spider_obj.json").string());
+  const Scene spider = loadScene((fs::path(XVAL_REFERENCE_DIR) / "scenes/mesh_spider_obj.json").string());
   fs::create_directories(dir / "spider");
   const GeometryPasses blender = renderModelImport(spider, dir / "spider", 600.0);
   const auto right = againstBlender(spider, blender);

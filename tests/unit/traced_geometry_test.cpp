@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/scene_meshes.h"
 #include "gltf/gltf_exporter.h"
 #include "povray/pov_exporter.h"
 #include "render/renderer.h"
@@ -172,10 +173,13 @@ TEST_P(TracedGeometry, PovMesh2HoldsTheTracedAttributes) {
     const PovExport ex = exportPov(scene, dir);
     const std::vector<Mesh2> pov = readMesh2(ex.pov);
     ASSERT_EQ(pov.size(), prepared.meshes().size()) << file;
+    const std::vector<size_t> owner = sceneMeshes(scene).object;  // the object each mesh belongs to
+    ASSERT_EQ(owner.size(), prepared.meshes().size()) << file;
     Mismatches bad{file.stem().string()};
     for (size_t k = 0; k < pov.size(); ++k) {
       const TriangleMesh& m = prepared.meshes()[k];
       const Mesh2& p = pov[k];
+      const Material& material = materialOf(scene, owner[k]);  // the object's own, else the scene's
       ASSERT_EQ(p.vertices.size(), m.positions.size()) << file;
       ASSERT_EQ(p.faces, m.triangles) << file;
       // POV-Ray stores vertices and normals in single precision: the text
@@ -188,7 +192,7 @@ TEST_P(TracedGeometry, PovMesh2HoldsTheTracedAttributes) {
           for (int c = 0; c < 3; ++c) bad.value("normal", m.normals[i][c], p.normals[i][c]);
       }
       // uv: POV-Ray keeps mesh uv in double; the text holds (u, 1 - v).
-      if (scene.material.texture && scene.shading != ShadingMode::Gouraud) {
+      if (material.texture && scene.shading != ShadingMode::Gouraud) {
         ASSERT_EQ(p.uvs.size(), m.uvs.size()) << file;
         for (size_t i = 0; i < m.uvs.size(); ++i) {
           bad.value("u", m.uvs[i].x, p.uvs[i].x);
@@ -214,9 +218,12 @@ TEST_P(TracedGeometry, GltfBuffersHoldTheTracedAttributes) {
     std::string err, warn;
     ASSERT_TRUE(loader.LoadASCIIFromFile(&model, &err, &warn, ex.gltf.string())) << file << ": " << err;
     ASSERT_EQ(model.meshes.size(), prepared.meshes().size()) << file;
+    const std::vector<size_t> owner = sceneMeshes(scene).object;  // the object each mesh belongs to
+    ASSERT_EQ(owner.size(), prepared.meshes().size()) << file;
     Mismatches bad{file.stem().string()};
     for (size_t k = 0; k < model.meshes.size(); ++k) {
       const TriangleMesh& m = prepared.meshes()[k];
+      const Material& material = materialOf(scene, owner[k]);  // the object's own, else the scene's
       const tinygltf::Primitive& prim = model.meshes[k].primitives.at(0);
       const std::vector<double> pos = floats(model, prim.attributes.at("POSITION"));
       const std::vector<double> nrm = floats(model, prim.attributes.at("NORMAL"));
@@ -227,7 +234,7 @@ TEST_P(TracedGeometry, GltfBuffersHoldTheTracedAttributes) {
           bad.value("position", m.positions[i][c], pos[3 * i + c]);
           bad.value("normal", m.normals[i][c], nrm[3 * i + c]);
         }
-      if (scene.material.texture) {
+      if (material.texture) {
         const std::vector<double> uv = floats(model, prim.attributes.at("TEXCOORD_0"));
         ASSERT_EQ(uv.size(), 2 * m.uvs.size()) << file;
         for (size_t i = 0; i < m.uvs.size(); ++i)
