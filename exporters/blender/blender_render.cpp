@@ -1,6 +1,5 @@
 #include "blender/blender_render.h"
 
-#include <OpenImageIO/imageio.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -8,15 +7,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "blender/multilayer_exr.h"
 #include "files/atomic_write.h"
 #include "process/run_process.h"
 #include "common/supersample.h"
 #include "gltf/gltf_exporter.h"
-#include "image/image_header.h"
 
 namespace xval {
-
-namespace OIIO = OIIO_NAMESPACE;
 
 std::filesystem::path blenderScript() {
   if (const char* env = std::getenv("XVAL_BLENDER_SCRIPT")) return env;
@@ -28,30 +25,11 @@ namespace {
 // The diffuse-direct pass of a multilayer EXR (channels "<layer>.DiffDir.R"
 // ...), with alpha from the combined pass.
 Image readDiffDir(const std::filesystem::path& file, int width, int height) {
-  requireRegularImageFile(file);
-  auto in = OIIO::ImageInput::open(file.string());
-  if (!in) throw ExternalToolError(file.string() + ": cannot open: " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  // The header must claim the camera's size before any pixel is allocated.
-  const std::string problem =
-      imageHeaderProblem({spec.width, spec.height, spec.depth, spec.nchannels}, readImageLimits(width, height));
-  if (!problem.empty()) throw ExternalToolError(file.string() + ": the image " + problem);
-  const int nc = spec.nchannels;
-  std::vector<float> buf(size_t(spec.width) * spec.height * nc);
-  if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, buf.data()))
-    throw ExternalToolError(file.string() + ": cannot read: " + in->geterror());
-  auto find = [&](const std::string& suffix) {
-    for (int i = 0; i < nc; ++i) {
-      const std::string& n = spec.channelnames[i];
-      if (n.size() >= suffix.size() && n.compare(n.size() - suffix.size(), suffix.size(), suffix) == 0)
-        return i;
-    }
-    throw ExternalToolError(file.string() + ": no channel *" + suffix);
-  };
-  int ch[4] = {find("DiffDir.R"), find("DiffDir.G"), find("DiffDir.B"), find("Combined.A")};
-  Image img(spec.width, spec.height, false);
-  for (size_t i = 0; i < size_t(spec.width) * spec.height; ++i)
-    for (int c = 0; c < 4; ++c) img.rgba[i * 4 + c] = buf[i * nc + ch[c]];
+  const MultilayerChannels in =
+      readMultilayerChannels(file, width, height, {"DiffDir.R", "DiffDir.G", "DiffDir.B", "Combined.A"});
+  Image img(in.width, in.height, false);
+  for (size_t i = 0; i < size_t(in.width) * size_t(in.height); ++i)
+    for (size_t c = 0; c < 4; ++c) img.rgba[i * 4 + c] = in.at(i, c);
   return img;
 }
 

@@ -1,23 +1,20 @@
 #include "blender/model_import.h"
 
-#include <OpenImageIO/imageio.h>
 
 #include <cmath>
 
 #include <nlohmann/json.hpp>
 
 #include "blender/blender_render.h"
+#include "blender/multilayer_exr.h"
 #include "camera/camera.h"
 #include "files/atomic_write.h"
 #include "geometry/model_file.h"
 #include "geometry/transform.h"
 #include "image/image.h"
-#include "image/image_header.h"
 #include "process/run_process.h"
 
 namespace xval {
-
-namespace OIIO = OIIO_NAMESPACE;
 
 std::filesystem::path modelImportScript() { return blenderScript().parent_path() / "import_model.py"; }
 
@@ -87,25 +84,11 @@ nlohmann::json jobOf(const Scene& scene, const std::filesystem::path& out) {
 // of another size, without a pass, or with values no render gives.
 GeometryPasses readPasses(const std::filesystem::path& file, const Scene& scene) {
   const int width = scene.camera.width, height = scene.camera.height;
-  requireRegularImageFile(file);
-  auto in = OIIO::ImageInput::open(file.string());
-  if (!in) throw ExternalToolError(file.string() + ": cannot open: " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  const std::string problem =
-      imageHeaderProblem({spec.width, spec.height, spec.depth, spec.nchannels}, readImageLimits(width, height));
-  if (!problem.empty()) throw ExternalToolError(file.string() + ": the image " + problem);
-  const int nc = spec.nchannels;
-  std::vector<float> buf(size_t(spec.width) * spec.height * nc);
-  if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, buf.data()))
-    throw ExternalToolError(file.string() + ": cannot read: " + in->geterror());
-  auto find = [&](const std::string& suffix) {
-    for (int i = 0; i < nc; ++i) {
-      const std::string& n = spec.channelnames[i];
-      if (n.size() >= suffix.size() && n.compare(n.size() - suffix.size(), suffix.size(), suffix) == 0) return i;
-    }
-    throw ExternalToolError(file.string() + ": no channel *" + suffix);
-  };
-  const int a = find("Combined.A"), z = find("Depth.Z"), u = find("UV.U"), v = find("UV.V"), ob = find("IndexOB.X");
+  const MultilayerChannels in =
+      readMultilayerChannels(file, width, height, {"Combined.A", "Depth.Z", "UV.U", "UV.V", "IndexOB.X"});
+  const int nc = in.nchannels;
+  const std::vector<float>& buf = in.pixels;
+  const int a = in.index[0], z = in.index[1], u = in.index[2], v = in.index[3], ob = in.index[4];
   GeometryPasses g(width, height);
   for (size_t p = 0; p < g.size(); ++p) {
     const float* px = &buf[p * nc];
