@@ -557,8 +557,11 @@ PreparedScene::PreparedScene(const Scene& input, Precision precision, bool cull_
   for (const auto& m : d.meshes) d.triangles += m.triangles.size();
   const glm::dvec3 eye = CameraRays(scene.camera).origin;
   d.rasterisable = Rasteriser::applicable(d.meshes, CameraRays(scene.camera));
+  // Not culling: the conditions are not checked (the closed-surface check
+  // of a model mesh is the costly one) and no mesh counts as hidden.
   for (size_t k = 0; k < d.meshes.size(); ++k)
-    d.back_faces_hidden.push_back(objectBackFacesNeverFirstHit(scene.objects[d.mesh_object[k]], d.meshes[k], eye));
+    d.back_faces_hidden.push_back(cull_back_faces &&
+                                  objectBackFacesNeverFirstHit(scene.objects[d.mesh_object[k]], d.meshes[k], eye));
   const Texture* default_texture = nullptr;
   if (scene.material.texture) {
     d.textures.push_back(std::make_unique<Texture>(loadTexture(*scene.material.texture)));

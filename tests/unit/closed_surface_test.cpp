@@ -234,6 +234,25 @@ TEST_F(ClosedModelMesh, SkippingBackFacesLeavesTheImageUnchanged) {
   EXPECT_GT(expectSameWithAndWithoutCulling(s, 4, Precision::Float), 10000u);
 }
 
+// A scene prepared without culling (`xval render --keep-back-faces`) does
+// not run the conditions' checks at all, so neither path culls, whatever
+// the frame's options say; prepared with culling, the same frame culls.
+TEST_F(ClosedModelMesh, PreparedWithoutCullingChecksAndCullsNothing) {
+  const Scene s = meshScene(dir, R"([{"shape": "mesh", "path": "torus.ply"}])");
+  RenderOptions frame;  // cull_back_faces true
+  frame.precision = Precision::Float;
+  for (bool cull : {false, true}) {
+    PreparedScene prepared(s, Precision::Float, cull);
+    Image img(s.camera.width, s.camera.height, false);
+    RenderStats stats;
+    prepared.render(frame, img, &stats);
+    if (cull)
+      EXPECT_GT(stats.culled_triangles, 10000u);
+    else
+      EXPECT_EQ(stats.culled_triangles, 0u);
+  }
+}
+
 // Transformed (mirrored, rotated, scaled non-uniformly, moved) next to an
 // untransformed copy: the check is on the mesh as rendered.
 TEST_F(ClosedModelMesh, MirroredAndTransformedObjectsToo) {
