@@ -18,6 +18,7 @@
 #include "scene/scene_loader.h"
 #include "validate/tolerances.h"
 #include "validate/geometry_check.h"
+#include "validate/validation/geometry_checks.h"
 #include "render/geometry_passes.h"
 
 namespace xval::validation {
@@ -143,6 +144,27 @@ nlohmann::json crosscheckAsResults(const CrosscheckRequest& request, const std::
   if (!problem.empty()) {
     p = {{"pair", pair}, {"error", problem}};
     c["renders"][request.renderer] = {{"error", problem}};
+  }
+  const renderers::Renderer* r = renderers::registry().find(request.renderer);
+  if (r && r->geometry_passes) {
+    // A geometry check (validate/validation/geometry_checks.h), as validate
+    // records it: no image pair.
+    J g;
+    if (!problem.empty()) g = geometryCheckError(request.renderer, reference, problem);
+    else {
+      const J& m = p["metrics"];
+      g = {{"renderer", request.renderer},
+           {"against", reference},
+           {"verdict", m.at("pass").get<bool>() ? "pass" : "fail"}};
+      if (!m.at("pass").get<bool>()) g["reason"] = m.at("why");
+      g["metrics"] = J::object();
+      const J keys = metricsJson(GeometryMetrics{});  // the metrics' names
+      for (auto it = keys.begin(); it != keys.end(); ++it) g["metrics"][it.key()] = m.at(it.key());
+      g["bounds"] = m.at("tolerance");
+    }
+    c["pairs"] = J::array();
+    c["geometry_checks"] = J::array({g});
+    return {{"cases", J::array({c})}};
   }
   c["pairs"] = J::array({p});
   return {{"cases", J::array({c})}};

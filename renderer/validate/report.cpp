@@ -336,7 +336,9 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   if (extremes_dir) requireSectionFile(*extremes_dir, "extremes.json", "extremes");
   if (tradeoff_dir) requireSectionFile(*tradeoff_dir, "tradeoff.json", "tradeoff");
   writeHeatScalePng(dir / "heat_scale.png");
-  writePlot(cases, pairs, dir);
+  // No image pair at all (a run of the reference and a geometry check
+  // only): nothing to plot.
+  if (!pairs.empty()) writePlot(cases, pairs, dir);
 
   // A case: error when a pair is; not expressible when no pair could be
   // compared; else the case's verdict (decided on the comparable pairs).
@@ -434,8 +436,10 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
     }
     h << "</tr>\n";
   }
-  h << "</table>\n<figure><img src=\"p999.png\" alt=\"p99.9 error per scene and pair\">"
-       "<figcaption>p99.9 error per scene and pair (log scale; gnuplot)</figcaption></figure>\n";
+  h << "</table>\n";
+  if (!pairs.empty())
+    h << "<figure><img src=\"p999.png\" alt=\"p99.9 error per scene and pair\">"
+         "<figcaption>p99.9 error per scene and pair (log scale; gnuplot)</figcaption></figure>\n";
 
   h << "<h2>Cases</h2>\n<p>Heat maps (full resolution): largest channel difference per pixel, "
        "<img src=\"heat_scale.png\" alt=\"scale\" style=\"width:300px;height:12px;vertical-align:middle\">"
