@@ -7,13 +7,15 @@
 #                  summary counts it and its case shows the check's table;
 #                  JUnit has it as a passing testcase; --plan-only --resume
 #                  finds nothing to redo, --compare-only gives the same
-#                  verdict.
+#                  verdict; validating SECOND into the same folder keeps
+#                  the case, its check compared again.
 #   MODE builtin   a scene with built-in shapes beside its model files
 #                  (mesh_objects_transformed_untextured) with renderers
 #                  reference,povray,blender-import: exit 0, the check not
 #                  expressible with Blender's reason (a built-in shape), the
 #                  case decided on reference-povray, which passes.
 # -DXVAL=... -DSCENE=... -DRENDERERS=a,b,... -DTOLERANCES=... -DOUT=... -DMODE=pass|builtin
+# [-DSECOND=... (MODE pass: another scene of model files)]
 include(${CMAKE_CURRENT_LIST_DIR}/../cli/cli_run.cmake)
 require_defined(blender_import_validate.cmake XVAL SCENE RENDERERS TOLERANCES OUT MODE)
 file(REMOVE_RECURSE ${OUT})
@@ -77,6 +79,25 @@ if(MODE STREQUAL "pass")
   file(READ ${OUT}/results.json results)
   get(_again cases 0 geometry_checks 0 metrics max_uv)
   expect_eq("max uv after --compare-only" "${_again}" "${_max_uv}")
+  # Another scene into the same folder: the earlier case is kept (its
+  # check compared again from its job's passes, not rendered), the new one
+  # checked too.
+  execute_process(COMMAND ${XVAL} validate ${SECOND} --renderers ${RENDERERS} --tolerances ${TOLERANCES} -o ${OUT}
+                  RESULT_VARIABLE rc ERROR_VARIABLE err TIMEOUT 800)
+  message("xval validate ${SECOND}: exit ${rc}\n${err}")
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "xval validate of a second scene into the folder exited ${rc}, expected 0")
+  endif()
+  expect_in("${err}" "keeping 1 earlier cases")
+  file(READ ${OUT}/results.json results)
+  string(JSON _n LENGTH "${results}" cases)
+  expect_eq("cases after the second scene" "${_n}" "2")
+  foreach(_k 0 1)
+    get(_v cases ${_k} geometry_checks 0 verdict)
+    expect_eq("case ${_k}'s check" "${_v}" "pass")
+  endforeach()
+  get(_kept cases 1 geometry_checks 0 metrics max_uv)
+  expect_eq("the kept case's max uv" "${_kept}" "${_max_uv}")
 elseif(MODE STREQUAL "builtin")
   expect_eq("the check's verdict" "${_verdict}" "not_expressible")
   get(_why cases 0 geometry_checks 0 reason)
