@@ -262,3 +262,41 @@ TEST(BlenderImportValidate, LoaderDefectFailsTheCase) {
     EXPECT_NE(xml.find("geometry outside its bounds: uv error"), std::string::npos) << what << xml;
   }
 }
+
+// In validate, a Blender import that fails is the check's error (exit 2),
+// never a pass or a not-expressible; so are the reference's passes gone
+// from the job's folder.
+TEST(BlenderImportValidate, FailingImportOrMissingPassesIsAnError) {
+  const fs::path dir = test::freshTempDir("xval_cross_blender_import_validate_error");
+  const fs::path scene_file = fs::path(XVAL_REFERENCE_DIR) / "scenes/mesh_wuson_stl.json";
+  const validation::Plan plan =
+      validation::makePlan({scene_file.string()}, (fs::path(XVAL_REFERENCE_DIR) / "tolerances.json").string(),
+                           dir / "out", 600.0, Budget{}, {"reference", "blender-import"});
+  validation::writePlan(plan);
+  ASSERT_EQ(plan.jobs.size(), 2u);
+  auto check = [&] {
+    const nlohmann::json r = nlohmann::json::parse(std::ifstream(plan.dir / "results.json"));
+    EXPECT_FALSE(r["cases"][0]["pass"].get<bool>());
+    return r["cases"][0]["geometry_checks"][0];
+  };
+  {
+    FakeScript f(dir / "fails", "import sys\nsys.exit(3)\n");
+    const auto recs = validation::runJobs(plan, validation::jobsToRun(plan, false), {});
+    EXPECT_FALSE(recs[1].error.empty());
+  }
+  EXPECT_EQ(validation::compareAndReport(plan), 2);
+  {
+    const nlohmann::json g = check();
+    EXPECT_EQ(g["verdict"], "error") << g.dump(2);
+    EXPECT_NE(g.value("reason", "").find("blender-import"), std::string::npos) << g.dump(2);
+  }
+  // The real script: the check passes; then without the reference's passes
+  // the compare step cannot compare: an error naming the file.
+  validation::runJobs(plan, {1}, {});
+  EXPECT_EQ(validation::compareAndReport(plan), 0);
+  fs::remove(plan.dir / plan.jobs[1].reference_passes());
+  EXPECT_EQ(validation::compareAndReport(plan), 2);
+  const nlohmann::json g = check();
+  EXPECT_EQ(g["verdict"], "error") << g.dump(2);
+  EXPECT_NE(g.value("reason", "").find("reference-passes.exr"), std::string::npos) << g.dump(2);
+}
