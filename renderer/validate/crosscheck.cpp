@@ -128,15 +128,22 @@ nlohmann::json crosscheckAsResults(const CrosscheckRequest& request, const std::
          {"renders", J::object()}};
   J p = {{"pair", pair}};
   std::string problem = error;
+  std::string refusal;  // the renderer's, when it cannot express the scene
   const std::filesystem::path metrics_file = std::filesystem::path(request.dir) / "metrics.json";
   if (problem.empty()) {
     try {
       const J m = J::parse(readJsonFile(metrics_file, "crosscheck metrics"));
       c["scene"] = m.at("scene");
-      for (const auto& [who, seconds] : m.at("seconds").items())
-        if (who == reference || who == request.renderer) c["renders"][who] = {{"seconds", seconds}};
-      p["pass"] = m.at("pass");
-      p["metrics"] = m;
+      if (m.contains("not_expressible")) {
+        // The renderer's refusal: a verdict (JUnit <skipped>), nothing rendered.
+        refusal = m.at("not_expressible").get<std::string>();
+        p["not_expressible"] = request.renderer + ": " + refusal;
+      } else {
+        for (const auto& [who, seconds] : m.at("seconds").items())
+          if (who == reference || who == request.renderer) c["renders"][who] = {{"seconds", seconds}};
+        p["pass"] = m.at("pass");
+        p["metrics"] = m;
+      }
     } catch (const std::exception& e) {
       problem = metrics_file.string() + ": no usable metrics (" + e.what() + ")";
     }
@@ -151,6 +158,8 @@ nlohmann::json crosscheckAsResults(const CrosscheckRequest& request, const std::
     // records it: no image pair.
     J g;
     if (!problem.empty()) g = geometryCheckError(request.renderer, reference, problem);
+    else if (!refusal.empty())
+      g = geometryCheckNotExpressible(request.renderer, reference, refusal);
     else {
       const J& m = p["metrics"];
       g = {{"renderer", request.renderer},
