@@ -5,7 +5,9 @@
 # and timings.tsv), run the extremes matrix and the trade-off, then validate
 # the set against every other renderer (POV-Ray, Blender, EEVEE, gl) into
 # results/validation/ (results.json; exit 1 if a case is outside its
-# tolerance, 2 on an error).
+# tolerance, 2 on an error), with the Blender-import check of the model
+# files as each mesh case's geometry check (validate's default renderers
+# include blender-import; docs/model-files.md, "The Blender-import check").
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh

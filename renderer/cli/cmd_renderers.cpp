@@ -24,7 +24,7 @@ void addRenderersCommand(CLI::App& app, std::function<int()>& run) {
           "): id, name, version, and whether each is available on this machine and, if not, why.");
   cmd->add_flag("--json", *json,
                 "Print JSON instead: {\"renderers\": [{id, display_name, summary, reference, every_scene, "
-                "version, available, reason}]}");
+                "geometry_passes, validate (run by `xval validate` by default), version, available, reason}]}");
   auto renderer_files = addRendererFileOption(cmd);
   cmd->callback([json, renderer_files, &run]() {
     run = [json, renderer_files]() -> int {
@@ -41,6 +41,8 @@ void addRenderersCommand(CLI::App& app, std::function<int()>& run) {
                                       {"summary", r.summary},
                                       {"reference", r.reference},
                                       {"every_scene", r.every_scene},
+                                      {"geometry_passes", r.geometry_passes},
+                                      {"validate", r.every_scene || r.geometry_passes},
                                       {"version", version},
                                       {"available", a.available},
                                       {"reason", a.reason}});
@@ -51,7 +53,9 @@ void addRenderersCommand(CLI::App& app, std::function<int()>& run) {
         std::printf("%-16s %s%s%s\n", "", a.available ? "available" : "UNAVAILABLE: ", a.reason.c_str(),
                     r.reference      ? " (the reference: every other renderer is compared with it)"
                     : r.every_scene ? ""
-                                    : " (for some scenes only: crosscheck, not validate)");
+                    : r.geometry_passes
+                        ? " (a geometry check: validate runs it on the scenes it can take, against the reference's passes)"
+                        : " (for some scenes only: crosscheck, not validate)");
       }
       if (*json) std::printf("%s\n", out.dump(2).c_str());
       return 0;

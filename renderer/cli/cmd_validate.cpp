@@ -29,6 +29,13 @@
 // waits, runs several jobs per core, while CPU-bound jobs never exceed
 // --jobs; --schedule count runs --jobs jobs at once whatever they use.
 //
+// The Blender-import check (blender-import: Blender imports the scene's
+// original model files itself) runs by default as each case's geometry
+// check: its passes against the reference's, with their own bounds, not an
+// image pair (validate/validation/geometry_checks.h); a scene it cannot
+// take (a built-in shape, an OFF file) records it as not expressible, with
+// the reason. --renderers leaves it out unless it names blender-import.
+//
 // --renderers LIST renders and compares only those renderers; a scene's
 // `renderers` field leaves out the others for that scene (each said on
 // stderr and in results.json); a renderer that declares it cannot express
@@ -122,7 +129,8 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
       "validate",
       "Render scenes with the reference renderer, POV-Ray and Blender, compare every pair with "
       "the declared tolerances, attribute each disagreement, and write results.json and "
-      "report.html.\n"
+      "report.html. Scenes made of model files also get the Blender-import check (Blender imports "
+      "the original files; its hit mask, depth and uv against the reference's).\n"
       "The work is one render job per scene and renderer, listed in OUT/jobs.json (outputs: "
       "OUT/<scene>/<renderer>.exr, .png and .job.json, the job's record), then one compare step. "
       "A plain run does it all here; --plan-only, --run-job and --compare-only do one step each, "
@@ -139,7 +147,9 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--tolerances", args->tolerances, kToleranceFileHelp);
   cmd->add_option("--renderers", args->renderers,
                   "Render and compare only these renderers, comma-separated, at least two (default: " +
-                      renderers::joinNames(v::jobRenderers()) + "; xval renderers lists them)")
+                      renderers::joinNames(v::jobRenderers()) +
+                      "; xval renderers lists them). blender-import is the geometry check of model-file scenes "
+                      "(its passes against the reference's, not an image pair): name it to keep it")
       ->delimiter(',');
   cmd->add_option("--jobs", args->jobs, "Renders in parallel, and cases compared in parallel in the compare step (default: the core count)")
       ->check(CLI::Range(1, 256));
@@ -162,8 +172,9 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
                   "results.json, relative to it; default: no trade-off section)");
   cmd->add_option("--junit", args->junit,
                   "Also write JUnit XML to this file after the compare step: one testcase per scene "
-                  "and pair (classname = scene, name = pair), <failure> with the metrics and the "
-                  "tolerance, <error> for a failed render (validate/junit_report.h)");
+                  "and pair (classname = scene, name = pair) and per geometry check (name "
+                  "\"reference-blender-import (geometry)\"), <failure> with the metrics and the "
+                  "tolerance or bounds, <error> for a failed render (validate/junit_report.h)");
   auto* resume = cmd->add_flag(
       "--resume", args->resume,
       "Keep the renders of an earlier run into the same folder whose record says ok, whose "

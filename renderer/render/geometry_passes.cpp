@@ -1,6 +1,7 @@
 #include "render/geometry_passes.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "camera/camera.h"
@@ -70,6 +71,20 @@ Image toImage(const GeometryPasses& g) {
     img.raw[p * 3 + 0] = float(g.object[p] + 1);
     img.raw[p * 3 + 1] = g.has_uv[p];
     img.raw[p * 3 + 2] = g.edge[p];
+  }
+  return img;
+}
+
+Image passesPreview(const GeometryPasses& g) {
+  Image img(g.width, g.height, false);
+  auto wrap = [](float x) { return x - std::floor(x); };
+  for (size_t p = 0; p < g.size(); ++p) {
+    float* px = &img.rgba[p * 4];
+    const bool hit = g.hit[p] > 0.5f, uv = g.has_uv[p] > 0.5f;
+    px[0] = !hit ? 0.0f : uv ? wrap(g.u[p]) : 0.5f;
+    px[1] = !hit ? 0.0f : uv ? wrap(g.v[p]) : 0.5f;
+    px[2] = !hit ? 0.0f : uv ? 0.0f : 0.5f;
+    px[3] = hit ? 1.0f : 0.0f;
   }
   return img;
 }

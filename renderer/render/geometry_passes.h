@@ -48,4 +48,10 @@ GeometryPasses referenceGeometryPasses(const Scene& scene);
 Image toImage(const GeometryPasses& passes);
 GeometryPasses geometryPassesFromImage(const Image& image);
 
+// A picture of the passes for a report (validate's preview PNG of a
+// geometry check's job): where a pixel hits, red = u and green = v, each
+// wrapped to [0, 1) (a repeating uv stays visible), blue 0; grey 0.5 where
+// the primitive has no uvs; alpha = hit.
+Image passesPreview(const GeometryPasses& passes);
+
 }  // namespace xval

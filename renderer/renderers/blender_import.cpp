@@ -8,8 +8,11 @@
 // model loader independently of every exporter.
 //
 // Only for scenes whose every object is a model file of a format Blender
-// imports (every_scene = false: `xval crosscheck --renderer blender-import`
-// runs it); anything else is refused with the reason.
+// imports; anything else is refused with the reason (not expressible: a
+// verdict, not an error). every_scene = false, as it renders no image to
+// pair with the others; geometry_passes = true, so `xval validate` runs it
+// by default as each case's geometry check (validate/validation/
+// geometry_checks.h) and `xval crosscheck --renderer blender-import` as one.
 //
 // Parameters (RenderRequest):
 //   work_dir         the job (blender-import-*.json), blender-import.log, the EXR

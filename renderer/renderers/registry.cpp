@@ -96,6 +96,13 @@ std::vector<const Renderer*> Registry::everySceneRenderers() const {
   return out;
 }
 
+std::vector<std::string> Registry::validateIds() const {
+  std::vector<std::string> out;
+  for (const auto& e : entries_)
+    if (e.every_scene || e.geometry_passes) out.push_back(e.id);
+  return out;
+}
+
 std::string Registry::version(std::string_view id) const {
   const Renderer& r = at(id);
   // Cached by what is probed: renderers of one tool (blender, eevee) run

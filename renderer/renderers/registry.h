@@ -61,6 +61,12 @@ class Registry {
   std::vector<std::string> comparedIds() const;
   std::vector<std::string> everySceneIds() const;
   std::vector<const Renderer*> everySceneRenderers() const;
+  // What `xval validate` runs by default, in registry order: the
+  // every-scene renderers and the geometry checks (Renderer::
+  // geometry_passes: blender-import), which validate runs on every scene
+  // and records as not expressible, with the reason, where they cannot
+  // take it.
+  std::vector<std::string> validateIds() const;
 
   // The version line of the renderer's outside tool (kXvalVersion when it
   // runs none), probed once with a time-out and cached; "unavailable (...)"

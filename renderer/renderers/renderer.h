@@ -115,8 +115,11 @@ struct Renderer {
   // False: a check for a restricted class of scenes, run by crosscheck.
   bool every_scene = true;
   // True: its image is geometry passes (render/geometry_passes.h), not a
-  // render: crosscheck compares it with the reference's passes of the same
-  // scene (validate/geometry_check.h), not with the reference's render.
+  // render: crosscheck and validate compare it with the reference's passes
+  // of the same scene (validate/geometry_check.h), not with any render; it
+  // is in no image pair and in no attribution. validate runs it by default
+  // (Registry::validateIds) as the case's geometry check
+  // (validate/validation/geometry_checks.h).
   bool geometry_passes = false;
   // The command printing the outside tool's version, e.g. {"povray",
   // "--version"}; its first word must be on PATH for the renderer to be

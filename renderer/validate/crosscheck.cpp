@@ -18,6 +18,7 @@
 #include "scene/scene_loader.h"
 #include "validate/tolerances.h"
 #include "validate/geometry_check.h"
+#include "validate/validation/geometry_checks.h"
 #include "render/geometry_passes.h"
 
 namespace xval::validation {
@@ -127,15 +128,22 @@ nlohmann::json crosscheckAsResults(const CrosscheckRequest& request, const std::
          {"renders", J::object()}};
   J p = {{"pair", pair}};
   std::string problem = error;
+  std::string refusal;  // the renderer's, when it cannot express the scene
   const std::filesystem::path metrics_file = std::filesystem::path(request.dir) / "metrics.json";
   if (problem.empty()) {
     try {
       const J m = J::parse(readJsonFile(metrics_file, "crosscheck metrics"));
       c["scene"] = m.at("scene");
-      for (const auto& [who, seconds] : m.at("seconds").items())
-        if (who == reference || who == request.renderer) c["renders"][who] = {{"seconds", seconds}};
-      p["pass"] = m.at("pass");
-      p["metrics"] = m;
+      if (m.contains("not_expressible")) {
+        // The renderer's refusal: a verdict (JUnit <skipped>), nothing rendered.
+        refusal = m.at("not_expressible").get<std::string>();
+        p["not_expressible"] = request.renderer + ": " + refusal;
+      } else {
+        for (const auto& [who, seconds] : m.at("seconds").items())
+          if (who == reference || who == request.renderer) c["renders"][who] = {{"seconds", seconds}};
+        p["pass"] = m.at("pass");
+        p["metrics"] = m;
+      }
     } catch (const std::exception& e) {
       problem = metrics_file.string() + ": no usable metrics (" + e.what() + ")";
     }
@@ -143,6 +151,29 @@ nlohmann::json crosscheckAsResults(const CrosscheckRequest& request, const std::
   if (!problem.empty()) {
     p = {{"pair", pair}, {"error", problem}};
     c["renders"][request.renderer] = {{"error", problem}};
+  }
+  const renderers::Renderer* r = renderers::registry().find(request.renderer);
+  if (r && r->geometry_passes) {
+    // A geometry check (validate/validation/geometry_checks.h), as validate
+    // records it: no image pair.
+    J g;
+    if (!problem.empty()) g = geometryCheckError(request.renderer, reference, problem);
+    else if (!refusal.empty())
+      g = geometryCheckNotExpressible(request.renderer, reference, refusal);
+    else {
+      const J& m = p["metrics"];
+      g = {{"renderer", request.renderer},
+           {"against", reference},
+           {"verdict", m.at("pass").get<bool>() ? "pass" : "fail"}};
+      if (!m.at("pass").get<bool>()) g["reason"] = m.at("why");
+      g["metrics"] = J::object();
+      const J keys = metricsJson(GeometryMetrics{});  // the metrics' names
+      for (auto it = keys.begin(); it != keys.end(); ++it) g["metrics"][it.key()] = m.at(it.key());
+      g["bounds"] = m.at("tolerance");
+    }
+    c["pairs"] = J::array();
+    c["geometry_checks"] = J::array({g});
+    return {{"cases", J::array({c})}};
   }
   c["pairs"] = J::array({p});
   return {{"cases", J::array({c})}};

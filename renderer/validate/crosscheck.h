@@ -49,9 +49,13 @@ int crosscheck(const CrosscheckRequest& request);
 // One crosscheck run in the form of a results.json (one case, one pair
 // "reference-<renderer>"), for the JUnit writer (validate/junit_report.h):
 // with `error` empty, the verdict and metrics of DIR/metrics.json (which
-// crosscheck writes last, so a run that did not finish has none); else a
-// pair that is that error. The case is named by the scene's name, or by
-// the scene file's stem when the scene could not be loaded.
+// crosscheck writes last, so a run that did not finish has none), or its
+// not_expressible (a pair not compared: JUnit <skipped>); else a pair that
+// is that error. The case is named by the scene's name, or by
+// the scene file's stem when the scene could not be loaded. A renderer of
+// geometry passes (blender-import) gives no pair but the case's
+// geometry_checks record, as validate writes it
+// (validate/validation/geometry_checks.h).
 nlohmann::json crosscheckAsResults(const CrosscheckRequest& request, const std::string& error);
 
 }  // namespace xval::validation

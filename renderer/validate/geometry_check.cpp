@@ -96,10 +96,8 @@ GeometryMetrics compareGeometry(const GeometryPasses& r, const GeometryPasses& b
   return m;
 }
 
-nlohmann::json toJson(const GeometryMetrics& m, const GeometryTolerance& tol) {
-  return {{"pass", m.pass},
-          {"why", m.why},
-          {"covered", m.covered},
+nlohmann::json metricsJson(const GeometryMetrics& m) {
+  return {{"covered", m.covered},
           {"mask_disagree", m.mask_off},
           {"mask_disagree_silhouette", m.mask_off_silhouette},
           {"compared", m.compared},
@@ -109,13 +107,22 @@ nlohmann::json toJson(const GeometryMetrics& m, const GeometryTolerance& tol) {
           {"max_uv", m.max_uv},
           {"max_uv_all", m.max_uv_all},
           {"depth_edges", m.depth_edges},
-          {"edge_over", m.edge_over},
-          {"tolerance",
-           {{"max_silhouette_fraction", tol.max_silhouette_fraction},
-            {"max_depth_rel", tol.max_depth_rel},
-            {"max_uv", tol.max_uv},
-            {"max_edge_fraction", tol.max_edge_fraction},
-            {"reason", tol.reason}}}};
+          {"edge_over", m.edge_over}};
+}
+
+nlohmann::json boundsJson(const GeometryTolerance& tol) {
+  return {{"max_silhouette_fraction", tol.max_silhouette_fraction},
+          {"max_depth_rel", tol.max_depth_rel},
+          {"max_uv", tol.max_uv},
+          {"max_edge_fraction", tol.max_edge_fraction},
+          {"reason", tol.reason}};
+}
+
+nlohmann::json toJson(const GeometryMetrics& m, const GeometryTolerance& tol) {
+  nlohmann::json j = {{"pass", m.pass}, {"why", m.why}};
+  j.update(metricsJson(m));
+  j["tolerance"] = boundsJson(tol);
+  return j;
 }
 
 }  // namespace xval::validation

@@ -70,6 +70,14 @@ struct GeometryMetrics {
 GeometryMetrics compareGeometry(const GeometryPasses& reference, const GeometryPasses& other,
                                 const GeometryTolerance& tol = kGeometryTolerance);
 
+// crosscheck's metrics.json: pass, why, the metrics and, as "tolerance",
+// the bounds.
 nlohmann::json toJson(const GeometryMetrics& m, const GeometryTolerance& tol);
+// The counts and maxima alone (covered, mask_disagree, ..., edge_over), and
+// the bounds alone (max_silhouette_fraction, max_depth_rel, max_uv,
+// max_edge_fraction, reason): what toJson and validate's results.json
+// (validate/validation/geometry_checks.h) both say.
+nlohmann::json metricsJson(const GeometryMetrics& m);
+nlohmann::json boundsJson(const GeometryTolerance& tol);
 
 }  // namespace xval::validation

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "validate/validation/geometry_checks.h"
+
 namespace xval {
 
 using J = nlohmann::json;
@@ -68,6 +70,18 @@ std::string describeMetrics(const J& m) {
   return s;
 }
 
+// "covered 19553, 0 hit/object disagreements off silhouettes (3 on them),
+// max depth rel. error 3.3e-06 (bound 2e-05), max uv error 0.84 (bound
+// 0.0001), 0 edge pixels over"
+std::string describeGeometry(const J& m, const J& b) {
+  auto get = [](const J& j, const char* k) { return j.contains(k) && j[k].is_number() ? j[k].get<double>() : 0.0; };
+  return "covered " + num(get(m, "covered")) + ", " + num(get(m, "mask_disagree") - get(m, "mask_disagree_silhouette")) +
+         " hit/object disagreements off silhouettes (" + num(get(m, "mask_disagree_silhouette")) +
+         " on them), max depth rel. error " + num(get(m, "max_depth_rel")) + " (bound " + num(get(b, "max_depth_rel")) +
+         "), max uv error " + num(get(m, "max_uv")) + " (bound " + num(get(b, "max_uv")) + "), " +
+         num(get(m, "edge_over")) + " edge pixels over";
+}
+
 double seconds(const J& renders, const std::string& name) {
   if (!renders.is_object() || !renders.contains(name)) return 0.0;
   const J& r = renders[name];
@@ -130,6 +144,43 @@ std::string junitXml(const J& results, const std::string& suite_name) {
                 "\" type=\"outside_tolerance\"/>\n    </testcase>\n";
       } else {
         throw std::runtime_error(pw + ": neither \"pass\" (with \"metrics\"), \"error\" nor \"not_expressible\"");
+      }
+    }
+    // The case's geometry checks (validate/validation/geometry_checks.h):
+    // one testcase each, "reference-blender-import (geometry)".
+    const J checks = c.value("geometry_checks", J::array());
+    for (size_t g = 0; g < checks.size(); ++g) {
+      const J& jg = checks[g];
+      const std::string gw = where + ".geometry_checks[" + std::to_string(g) + "]";
+      const J& renderer = field(jg, "renderer", gw);
+      const J& against = field(jg, "against", gw);
+      const J& verdict = field(jg, "verdict", gw);
+      if (!renderer.is_string() || !against.is_string() || !verdict.is_string())
+        throw std::runtime_error(gw + ": \"renderer\", \"against\" and \"verdict\" must be strings");
+      const std::string v = verdict.get<std::string>();
+      const std::string reason = jg.contains("reason") && jg["reason"].is_string() ? jg["reason"].get<std::string>() : "";
+      const double t = seconds(renders, renderer.get<std::string>());
+      ++n.tests;
+      n.time += t;
+      body += "    <testcase classname=\"" + xmlEscape(scene.get<std::string>()) + "\" name=\"" +
+              xmlEscape(validation::geometryCheckName(against.get<std::string>(), renderer.get<std::string>())) +
+              "\" time=\"" + secondsText(t) + "\"";
+      if (v == "pass") {
+        body += "/>\n";
+      } else if (v == "not_expressible") {
+        ++n.skipped;
+        body += ">\n      <skipped message=\"" + xmlEscape("not expressible: " + reason) + "\"/>\n    </testcase>\n";
+      } else if (v == "error") {
+        ++n.errors;
+        body += ">\n      <error message=\"" + xmlEscape(reason) + "\" type=\"error\">" + xmlEscape(renderErrors(renders)) +
+                "</error>\n    </testcase>\n";
+      } else if (v == "fail" && jg.contains("metrics")) {
+        ++n.failures;
+        body += ">\n      <failure message=\"" + xmlEscape("geometry outside its bounds: " + reason + "; " +
+                                                          describeGeometry(jg["metrics"], jg.value("bounds", J::object()))) +
+                "\" type=\"outside_tolerance\"/>\n    </testcase>\n";
+      } else {
+        throw std::runtime_error(gw + ": verdict \"" + v + "\": expected pass, fail (with \"metrics\"), error or not_expressible");
       }
     }
   }

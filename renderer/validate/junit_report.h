@@ -11,7 +11,12 @@
 //   error             <error message="..."> (a render failed, a job has no
 //                     usable record, ...), the renderers' errors in the text
 //   not expressible   <skipped message="..."> with the renderer's reason
-// time = the seconds of the two renders compared (their records). Every
+// Then one <testcase> per geometry check of the case (results.json
+// cases[].geometry_checks, validate/validation/geometry_checks.h), name =
+// "reference-blender-import (geometry)": pass empty, fail <failure> with
+// the metrics against the bounds, error <error>, not expressible <skipped>.
+// time = the seconds of the two renders compared (their records; a
+// geometry check: its job's). Every
 // string is XML-escaped; control characters other than tab and newline,
 // which XML 1.0 cannot carry, become U+FFFD.
 // tests/junit/junit.xsd is the schema the output is checked against.

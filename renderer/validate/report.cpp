@@ -4,6 +4,7 @@
 #include "image/heat_map.h"
 
 #include <glm/glm.hpp>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 
 #include "image/image.h"
 #include "process/run_process.h"
+#include "renderers/registry.h"
 #include "scene/json_reader.h"
 #include "scene/scene_loader.h"
 #include "validate/common/number_text.h"
@@ -25,6 +27,7 @@
 #include "validate/report_pixels.h"
 #include "validate/tolerances.h"
 #include "validate/tradeoff/report_section.h"
+#include "validate/validation/geometry_checks.h"
 
 namespace xval {
 
@@ -70,11 +73,50 @@ std::vector<std::string> pairIds(const J& cases) {
   return ids;
 }
 
-// A case whose every pair has a renderer that cannot express the scene.
+// A case whose every pair has a renderer that cannot express the scene,
+// and whose every geometry check is not expressible.
 bool nothingCompared(const J& c) {
   for (const auto& p : c["pairs"])
     if (!p.contains("not_expressible")) return false;
+  for (const auto& g : c.value("geometry_checks", J::array()))
+    if (g["verdict"] != "not_expressible") return false;
   return true;
+}
+
+// A case's geometry checks (validate/validation/geometry_checks.h) as
+// "verdict" with a space for the underscore, as the pairs' verdicts read.
+std::string checkVerdict(const J& g) {
+  std::string v = g["verdict"].get<std::string>();
+  std::replace(v.begin(), v.end(), '_', ' ');
+  return v;
+}
+
+std::string checkName(const J& g) {
+  return validation::geometryCheckName(g["against"].get<std::string>(), g["renderer"].get<std::string>());
+}
+
+// The geometry checks of the run, by name, in the order of their first appearance.
+std::vector<std::string> checkIds(const J& cases) {
+  std::vector<std::string> ids;
+  for (const auto& c : cases)
+    for (const auto& g : c.value("geometry_checks", J::array()))
+      if (std::find(ids.begin(), ids.end(), checkName(g)) == ids.end()) ids.push_back(checkName(g));
+  return ids;
+}
+
+const J* findCheck(const J& c, const std::string& name) {
+  if (!c.contains("geometry_checks")) return nullptr;
+  for (const auto& g : c["geometry_checks"])
+    if (checkName(g) == name) return &g;
+  return nullptr;
+}
+
+// A small number in two significant digits ("3.3e-06", "0.84").
+std::string twoDigits(const J& v) {
+  if (!v.is_number()) return "n/a";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.2g", v.get<double>());
+  return b;
 }
 
 const J* findPair(const J& c, const std::string& id) {
@@ -140,6 +182,51 @@ void writePlot(const J& cases, const std::vector<std::string>& pairs, const std:
     requireDecodable(tmp_png, 1100, 460);
     return true;
   });
+}
+
+// A verdict's table cell, from its class attribute on: "class="l pass">PASS".
+std::string verdictCell(const std::string& v) {
+  const char* cls = v == "pass" ? "pass" : v == "fail" ? "fail" : v == "error" ? "err" : "nexp";
+  std::string upper;
+  for (char ch : v) upper += char(std::toupper(static_cast<unsigned char>(ch)));
+  return std::string("class=\"l ") + cls + "\">" + upper;
+}
+
+// A case's geometry checks: per check, each metric beside the bound it is
+// held to (validate/geometry_check.h), the verdict and its reason.
+std::string geometryChecksTable(const J& c) {
+  if (!c.contains("geometry_checks")) return "";
+  std::ostringstream h;
+  h << "<table class=\"geometry\"><tr><th class=\"l\">geometry check</th><th>verdict</th><th>covered</th>"
+       "<th>hit/object off the silhouette (bound)</th><th>on the silhouette (bound)</th>"
+       "<th>max depth rel. error (bound; all pixels)</th><th>uv pixels</th><th>max uv error (bound; all pixels)</th>"
+       "<th>edge pixels over (bound)</th></tr>\n";
+  for (const auto& g : c["geometry_checks"]) {
+    h << "<tr><td class=\"l\">" << htmlEscape(checkName(g)) << "</td>";
+    if (!g.contains("metrics")) {
+      const bool nx = g["verdict"] == "not_expressible";
+      h << "<td class=\"" << (nx ? "nexp" : "err") << "\" colspan=\"8\">" << (nx ? "not expressible: " : "error: ")
+        << htmlEscape(g.value("reason", "")) << "</td></tr>\n";
+      continue;
+    }
+    const J& m = g["metrics"];
+    const J& b = g["bounds"];
+    const double covered = double(m["covered"].get<long long>());
+    const long long off = m["mask_disagree"].get<long long>() - m["mask_disagree_silhouette"].get<long long>();
+    h << "<td " << verdictCell(checkVerdict(g)) << "</td><td>" << m["covered"].get<long long>() << "</td><td>" << off
+      << " (0)</td><td>" << m["mask_disagree_silhouette"].get<long long>() << " ("
+      << static_cast<long long>(std::floor(b["max_silhouette_fraction"].get<double>() * covered)) << ")</td><td>"
+      << twoDigits(m["max_depth_rel"]) << " (" << twoDigits(b["max_depth_rel"]) << "; "
+      << twoDigits(m["max_depth_rel_all"]) << ")</td><td>" << m["uv_compared"].get<long long>() << "</td><td>"
+      << twoDigits(m["max_uv"]) << " (" << twoDigits(b["max_uv"]) << "; " << twoDigits(m["max_uv_all"])
+      << ")</td><td>" << m["edge_over"].get<long long>() << " ("
+      << static_cast<long long>(std::floor(b["max_edge_fraction"].get<double>() * covered)) << ")</td></tr>\n";
+    if (g.contains("reason"))
+      h << "<tr><td class=\"l\"></td><td class=\"l fail\" colspan=\"8\">" << htmlEscape(g["reason"].get<std::string>())
+        << "</td></tr>\n";
+  }
+  h << "</table>\n";
+  return h.str();
 }
 
 const J* findCase(const J& cases, const std::string& name) {
@@ -249,25 +336,26 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   if (extremes_dir) requireSectionFile(*extremes_dir, "extremes.json", "extremes");
   if (tradeoff_dir) requireSectionFile(*tradeoff_dir, "tradeoff.json", "tradeoff");
   writeHeatScalePng(dir / "heat_scale.png");
-  writePlot(cases, pairs, dir);
+  // No image pair at all (a run of the reference and a geometry check
+  // only): nothing to plot.
+  if (!pairs.empty()) writePlot(cases, pairs, dir);
 
   // A case: error when a pair is; not expressible when no pair could be
   // compared; else the case's verdict (decided on the comparable pairs).
   auto caseVerdict = [](const J& c) -> std::string {
     for (const auto& p : c["pairs"])
       if (pairVerdict(p) == "error") return "error";
+    for (const auto& g : c.value("geometry_checks", J::array()))
+      if (g["verdict"] == "error") return "error";
     if (nothingCompared(c)) return "not expressible";
     return c["pass"].get<bool>() ? "pass" : "fail";
   };
-  auto verdictCell = [](const std::string& v) {
-    const char* cls = v == "pass" ? "pass" : v == "fail" ? "fail" : v == "error" ? "err" : "nexp";
-    std::string upper;
-    for (char ch : v) upper += char(std::toupper(static_cast<unsigned char>(ch)));
-    return std::string("class=\"l ") + cls + "\">" + upper;
-  };
   int pass = 0, fail = 0, nexp = 0, err = 0, nexp_pairs = 0;
+  std::map<std::string, int> checks;  // geometry checks by verdict
+  const std::vector<std::string> check_ids = checkIds(cases);
   for (const auto& c : cases) {
     for (const auto& p : c["pairs"]) nexp_pairs += p.contains("not_expressible");
+    for (const auto& g : c.value("geometry_checks", J::array())) ++checks[checkVerdict(g)];
     const std::string v = caseVerdict(c);
     (v == "error" ? err : v == "fail" ? fail : v == "pass" ? pass : nexp)++;
   }
@@ -299,6 +387,14 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
     << " s. Failures are listed first. Errors are in 1/65535 of the full scale. A pair passes when its "
        "pixels are within the tolerance on the declared fraction and no pixel that no known cause explains "
        "differs by more than the cap on unexplained error (max_unexplained_16bit).</p>\n";
+  if (!check_ids.empty())
+    h << "<p>Geometry checks (" << htmlEscape(renderers::joinNames(check_ids))
+      << "; docs/model-files.md, \"The Blender-import check\"): <span class=\"pass\">" << checks["pass"]
+      << " pass</span>, <span class=\"fail\">" << checks["fail"] << " fail</span>, <span class=\"err\">"
+      << checks["error"] << " errors</span>, <span class=\"nexp\">" << checks["not expressible"]
+      << " not expressible</span>. Blender imports the scene's original model files itself; its hit mask, "
+         "object, depth and uv at the pixel centres are compared with the reference renderer's of our loaded "
+         "triangles, within the check's own bounds (not the image tolerances). A failing check fails its case.</p>\n";
   h << "<table><tr><th class=\"l\">provenance</th><th class=\"l\"></th></tr>";
   for (auto it = r["provenance"].begin(); it != r["provenance"].end(); ++it)
     h << "<tr><td class=\"l\">" << htmlEscape(it.key()) << "</td><td class=\"l\">"
@@ -307,6 +403,7 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   h << "<h2>Summary</h2>\n<table><tr><th class=\"l\">scene</th><th class=\"l\">verdict</th>"
        "<th class=\"l\">who deviates</th>";
   for (const auto& p : pairs) h << "<th>" << htmlEscape(p) << "<br>verdict, max unexplained</th>";
+  for (const auto& g : check_ids) h << "<th>" << htmlEscape(g) << "<br>verdict</th>";
   h << "</tr>\n";
   for (const auto& c : cases) {
     const std::string id = htmlEscape(c["scene"].get<std::string>());
@@ -331,10 +428,18 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
       const J& m = p["metrics"];
       h << "<td " << verdictCell(pairVerdict(p)) << " " << fixed(m.value("max_unexplained_16bit", J()), 2) << "</td>";
     }
+    for (const auto& id : check_ids) {
+      const J* g = findCheck(c, id);
+      if (!g) h << "<td></td>";
+      else if ((*g)["verdict"] == "not_expressible") h << "<td class=\"nexp\">not expressible</td>";
+      else h << "<td " << verdictCell(checkVerdict(*g)) << "</td>";
+    }
     h << "</tr>\n";
   }
-  h << "</table>\n<figure><img src=\"p999.png\" alt=\"p99.9 error per scene and pair\">"
-       "<figcaption>p99.9 error per scene and pair (log scale; gnuplot)</figcaption></figure>\n";
+  h << "</table>\n";
+  if (!pairs.empty())
+    h << "<figure><img src=\"p999.png\" alt=\"p99.9 error per scene and pair\">"
+         "<figcaption>p99.9 error per scene and pair (log scale; gnuplot)</figcaption></figure>\n";
 
   h << "<h2>Cases</h2>\n<p>Heat maps (full resolution): largest channel difference per pixel, "
        "<img src=\"heat_scale.png\" alt=\"scale\" style=\"width:300px;height:12px;vertical-align:middle\">"
@@ -409,6 +514,7 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
         << "e-3 / " << fixed(m["yiq_delta"]["max"].get<double>() * 1e3, 3) << "e-3</td></tr>\n";
     }
     h << "</table>\n";
+    h << geometryChecksTable(c);
     for (const auto& p : c["pairs"])
       if (p.contains("metrics") && !p["metrics"].value("tolerance_reason", "").empty())
         h << "<p class=\"reason\"><b>" << htmlEscape(p["pair"].get<std::string>())

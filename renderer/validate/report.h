@@ -9,8 +9,13 @@
 // validate/paper_claims.h), and the extremes and trade-off sections from
 // the folders `sections` names (or the ones given to writeReport). It
 // regenerates only what it can from results.json alone: the summary plot
-// (p999.png, drawn by gnuplot through process/run_process.h) and the heat
-// map's scale (heat_scale.png). Every string from the results is
+// (p999.png, drawn by gnuplot through process/run_process.h; none when the
+// run has no image pair) and the heat
+// map's scale (heat_scale.png). A case's geometry checks (results.json
+// geometry_checks, validate/validation/geometry_checks.h) are a column of
+// the summary, a count beside it, and a table of metrics against bounds in
+// the case; a failing or erring check makes the case's verdict FAIL or
+// ERROR. Every string from the results is
 // HTML-escaped. The page checks on load that every image decoded and says
 // so in its title ("xval report: N images OK" or "xval report: BROKEN
 // ..."), which the report's test reads.

@@ -160,7 +160,7 @@ expect_eq("pov_refuses pairs with --renderers reference,blender" "${_np}" "1")
 get_json(_pass "${_c}" pass)
 expect_eq("pov_refuses pass" "${_pass}" "ON")
 validate(2 ${WORK}/bin out_bad ${SCENES}/tiny.json --renderers reference,pov)
-expect_in("${err}" "--renderers: \"pov\": not a renderer validate runs (expected reference, povray, blender, eevee and gl")
+expect_in("${err}" "--renderers: \"pov\": not a renderer validate runs (expected reference, povray, blender, blender-import, eevee and gl")
 validate(2 ${WORK}/bin out_bad ${SCENES}/tiny.json --renderers reference)
 expect_in("${err}" "--renderers: expected at least two renderers")
 

@@ -48,7 +48,9 @@ set(every "")
 foreach(k RANGE ${last})
   string(JSON _id GET "${json}" renderers ${k} id)
   string(JSON _ref GET "${json}" renderers ${k} reference)
-  string(JSON _every GET "${json}" renderers ${k} every_scene)
+  # What validate runs by default: the every-scene renderers and the
+  # geometry checks (blender-import).
+  string(JSON _every GET "${json}" renderers ${k} validate)
   list(APPEND ids ${_id})
   if(NOT _ref)
     list(APPEND compared ${_id})
@@ -96,7 +98,7 @@ list(POP_BACK ids _final)
 list(JOIN ids ", " _head)
 expect_in("${err}" "unknown renderer 'no-such-renderer', expected ${_head} and ${_final}")
 
-# validate plans one job per every-scene renderer, in registry order.
+# validate plans one job per renderer it runs by default, in registry order.
 run(0 ${XVAL} validate ${SCENE} -o ${WORK}/plan --plan-only --tolerances ${TOLERANCES})
 file(READ ${WORK}/plan/jobs.json _plan)
 string(JSON _jobs LENGTH "${_plan}" jobs)

@@ -66,7 +66,7 @@ def diff(a, b, path, out):
 # a render caption's "reference, 0.13 s" / "(render 0.45 s)".
 REPORT_TIMINGS = [
     (re.compile(r"Wall time [0-9.eE+-]+ s"), "Wall time T s"),
-    (re.compile(r"(<figcaption>[a-z]+), [0-9.eE+-]+ s"), r"\1, T s"),
+    (re.compile(r"(<figcaption>[a-z0-9-]+), [0-9.eE+-]+ s"), r"\1, T s"),  # ids: [a-z0-9-]
     (re.compile(r"\(render [0-9.eE+-]+ s\)"), "(render T s)"),
 ]
 

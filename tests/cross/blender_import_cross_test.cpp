@@ -4,12 +4,18 @@
 // deliberately wrong loader (the loaded model changed in memory the way a
 // loader defect would change it: a v flip, a wrong node transform, a
 // skipped primitive). Also: a model file whose name is Python passes as
-// data; a failing or hanging Blender is an error, never a pass.
+// data; a failing or hanging Blender is an error, never a pass; and in
+// `xval validate`, the same defects fail the case through its geometry
+// check (BlenderImportValidate).
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "blender/blender_render.h"
 #include "blender/model_import.h"
@@ -18,6 +24,10 @@
 #include "scene/scene_loader.h"
 #include "support/temp_files.h"
 #include "validate/geometry_check.h"
+#include "validate/junit_report.h"
+#include "validate/validation/compare_step.h"
+#include "validate/validation/plan.h"
+#include "validate/validation/run_job.h"
 
 using namespace xval;
 namespace fs = std::filesystem;
@@ -180,4 +190,113 @@ TEST(BlenderImportCross, FailingHangingOrSilentBlenderIsAnError) {
     const std::string e = errorOf(s, dir / "w3", 8.0);
     EXPECT_NE(e.find("timed out"), std::string::npos) << e;
   }
+}
+
+// xval validate runs the check as the case's geometry check (validate/
+// validation/geometry_checks.h): with renderers reference and
+// blender-import, mesh_boxtextured_glb passes as loaded. Then the defects
+// above (the v flip, the node turn undone), made in memory as above, are
+// put where validate reads our loader's view of the scene: the reference's
+// passes its job wrote (OUT/<scene>/blender-import.reference-passes.exr)
+// are replaced by the passes of the defective load, and the compare step
+// runs again from the plan (as `validate --compare-only` does): the check
+// fails, the case fails (exit 1), the report and JUnit say so.
+TEST(BlenderImportValidate, LoaderDefectFailsTheCase) {
+  const fs::path dir = test::freshTempDir("xval_cross_blender_import_validate");
+  const fs::path scene_file = fs::path(XVAL_REFERENCE_DIR) / "scenes/mesh_boxtextured_glb.json";
+  const validation::Plan plan =
+      validation::makePlan({scene_file.string()}, (fs::path(XVAL_REFERENCE_DIR) / "tolerances.json").string(),
+                           dir / "out", 600.0, Budget{}, {"reference", "blender-import"});
+  validation::writePlan(plan);
+  ASSERT_EQ(plan.jobs.size(), 2u);
+  ASSERT_EQ(plan.jobs[1].renderer, "blender-import");
+  for (const auto& rec : validation::runJobs(plan, validation::jobsToRun(plan, false), {}))
+    ASSERT_TRUE(rec.error.empty() && rec.not_expressible.empty()) << rec.error << rec.not_expressible;
+  auto results = [&] { return nlohmann::json::parse(std::ifstream(plan.dir / "results.json")); };
+  auto report = [&] {
+    std::ifstream in(plan.dir / "report.html");
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string name = "reference-blender-import (geometry)";
+
+  ASSERT_EQ(validation::compareAndReport(plan), 0);
+  {
+    const nlohmann::json r = results();
+    const nlohmann::json& c = r["cases"][0];
+    ASSERT_EQ(c["geometry_checks"].size(), 1u) << c.dump(2);
+    EXPECT_EQ(c["geometry_checks"][0]["verdict"], "pass") << c["geometry_checks"].dump(2);
+    EXPECT_GT(c["geometry_checks"][0]["metrics"]["uv_compared"].get<long long>(), 10000);
+    EXPECT_TRUE(c["pass"].get<bool>());
+    EXPECT_EQ(c["pairs"].size(), 0u);  // a check is no image pair
+    const std::string xml = junitXml(r, "t");
+    EXPECT_NE(xml.find("tests=\"1\" failures=\"0\" errors=\"0\" skipped=\"0\""), std::string::npos) << xml;
+    EXPECT_NE(xml.find("name=\"" + name + "\""), std::string::npos) << xml;
+  }
+
+  const Scene box = loadScene(scene_file.string());
+  const std::vector<std::pair<std::string, Scene>> defects = {
+      {"v flipped", withModel(box, 0, [](Model& m) {
+         for (auto& p : m.primitives)
+           for (auto& uv : p.mesh.uvs) uv.y = 1.0 - uv.y;
+       })},
+      {"node turn undone", withModel(box, 0, [](Model& m) {
+         for (auto& p : m.primitives)
+           for (auto& q : p.mesh.positions) q = {q.x, -q.z, q.y};
+       })}};
+  for (const auto& [what, loaded] : defects) {
+    writeImage(toImage(referenceGeometryPasses(loaded)), plan.dir / plan.jobs[1].reference_passes());
+    EXPECT_EQ(validation::compareAndReport(plan), 1) << what;
+    const nlohmann::json r = results();
+    const nlohmann::json& c = r["cases"][0];
+    EXPECT_FALSE(c["pass"].get<bool>()) << what;
+    EXPECT_EQ(c["geometry_checks"][0]["verdict"], "fail") << what << ": " << c["geometry_checks"].dump(2);
+    EXPECT_NE(c["geometry_checks"][0].value("reason", "").find("uv error"), std::string::npos) << what;
+    EXPECT_NE(c["attribution"].get<std::string>().find("disagree in geometry"), std::string::npos) << what;
+    const std::string html = report();
+    EXPECT_NE(html.find("<span class=\"fail\">1 fail</span>, <span class=\"err\">0 errors</span>"), std::string::npos)
+        << what;
+    EXPECT_NE(html.find("<td class=\"l\">" + htmlEscape(name) + "</td><td class=\"l fail\">FAIL"), std::string::npos)
+        << what;
+    const std::string xml = junitXml(r, "t");
+    EXPECT_NE(xml.find("tests=\"1\" failures=\"1\""), std::string::npos) << what << xml;
+    EXPECT_NE(xml.find("geometry outside its bounds: uv error"), std::string::npos) << what << xml;
+  }
+}
+
+// In validate, a Blender import that fails is the check's error (exit 2),
+// never a pass or a not-expressible; so are the reference's passes gone
+// from the job's folder.
+TEST(BlenderImportValidate, FailingImportOrMissingPassesIsAnError) {
+  const fs::path dir = test::freshTempDir("xval_cross_blender_import_validate_error");
+  const fs::path scene_file = fs::path(XVAL_REFERENCE_DIR) / "scenes/mesh_wuson_stl.json";
+  const validation::Plan plan =
+      validation::makePlan({scene_file.string()}, (fs::path(XVAL_REFERENCE_DIR) / "tolerances.json").string(),
+                           dir / "out", 600.0, Budget{}, {"reference", "blender-import"});
+  validation::writePlan(plan);
+  ASSERT_EQ(plan.jobs.size(), 2u);
+  auto check = [&] {
+    const nlohmann::json r = nlohmann::json::parse(std::ifstream(plan.dir / "results.json"));
+    EXPECT_FALSE(r["cases"][0]["pass"].get<bool>());
+    return r["cases"][0]["geometry_checks"][0];
+  };
+  {
+    FakeScript f(dir / "fails", "import sys\nsys.exit(3)\n");
+    const auto recs = validation::runJobs(plan, validation::jobsToRun(plan, false), {});
+    EXPECT_FALSE(recs[1].error.empty());
+  }
+  EXPECT_EQ(validation::compareAndReport(plan), 2);
+  {
+    const nlohmann::json g = check();
+    EXPECT_EQ(g["verdict"], "error") << g.dump(2);
+    EXPECT_NE(g.value("reason", "").find("blender-import"), std::string::npos) << g.dump(2);
+  }
+  // The real script: the check passes; then without the reference's passes
+  // the compare step cannot compare: an error naming the file.
+  validation::runJobs(plan, {1}, {});
+  EXPECT_EQ(validation::compareAndReport(plan), 0);
+  fs::remove(plan.dir / plan.jobs[1].reference_passes());
+  EXPECT_EQ(validation::compareAndReport(plan), 2);
+  const nlohmann::json g = check();
+  EXPECT_EQ(g["verdict"], "error") << g.dump(2);
+  EXPECT_NE(g.value("reason", "").find("reference-passes.exr"), std::string::npos) << g.dump(2);
 }

@@ -24,7 +24,7 @@ Scene referenceScene(const std::string& name) {
 }
 }  // namespace
 
-TEST(GeometryCheck, RegistryEntryIsACrosscheckTierWithoutGoldenSet) {
+TEST(GeometryCheck, RegistryEntryIsAGeometryCheckWithoutGoldenSet) {
   const auto& reg = renderers::registry();
   const renderers::Renderer* r = reg.find("blender-import");
   ASSERT_NE(r, nullptr);

@@ -23,6 +23,9 @@
 #include "validate/colour_stats.h"
 #include "validate/pixel_crops.h"
 #include "validate/tolerances.h"
+#include "render/geometry_passes.h"
+#include "validate/geometry_check.h"
+#include "validate/validation/geometry_checks.h"
 #include "validate/validation/job_record.h"
 #include "validate/validation/next_steps.h"
 #include "validate/validation/results_file.h"
@@ -135,7 +138,10 @@ J comparePair(const CompareContext& cx, const Scene& scene, const renderers::Ren
   writeImage(diff, cx.plan.dir / scene.name / ("diff_" + key + ".exr"));
   jp["heat_map"] = writeHeatMapPng(diff, cx.plan.dir, scene.name, key);  // the report only shows it
   std::map<std::string, const Image*> images;
-  for (const auto& [id, rr] : renders) images[id] = rr.error.empty() && !notExpressible(rr) ? &rr.image : nullptr;
+  // The renders of the scene (a geometry check's passes are no render of it).
+  for (const auto& [id, rr] : renders)
+    if (!renderers::registry().at(id).geometry_passes)
+      images[id] = rr.error.empty() && !notExpressible(rr) ? &rr.image : nullptr;
   jp["crops"] = writePairCrops(A.image, B.image, images, heatMap(diff), m, cx.plan.dir, scene.name, key);
   J jm = J::parse(toJson(m, tol, &pm));
   jm["tolerance_reason"] = reason;
@@ -182,6 +188,29 @@ std::string attribution(const std::vector<const renderers::Renderer*>& rs, const
   return not_expr.empty() ? who : who + "; " + not_expr;
 }
 
+// A geometry check (geometry_checks.h): the job's passes against the
+// reference's passes its job wrote beside them (plan.h), with the check's
+// bounds. Both are read here, never rendered: the compare step compares.
+J geometryCheck(const Plan& plan, const RenderJob& job, const Render& r) {
+  const std::string against = renderers::registry().reference().id;
+  if (!r.error.empty()) return geometryCheckError(job.renderer, against, r.error);
+  if (notExpressible(r)) return geometryCheckNotExpressible(job.renderer, against, r.rec.not_expressible);
+  const fs::path ref_file = plan.dir / job.reference_passes();
+  GeometryPasses ref, other;
+  try {
+    ref = geometryPassesFromImage(readImage(ref_file));
+  } catch (const std::exception& e) {
+    return geometryCheckError(job.renderer, against,
+                              ref_file.string() + ": the reference's passes cannot be read: " + e.what());
+  }
+  try {
+    other = geometryPassesFromImage(r.image);
+    return geometryCheckCompared(job.renderer, against, compareGeometry(ref, other), kGeometryTolerance);
+  } catch (const std::exception& e) {
+    return geometryCheckError(job.renderer, against, (plan.dir / job.exr()).string() + ": " + e.what());
+  }
+}
+
 // The case of plan.scenes[k]: its renders, every pair of them, who deviates.
 J compareCase(const CompareContext& cx, size_t k) {
   const Plan& plan = cx.plan;
@@ -193,11 +222,17 @@ J compareCase(const CompareContext& cx, size_t k) {
   makeRealFolder(plan.dir, plan.dir / ps.name);  // the diff images go there: never through a link
   J jc = {{"scene", ps.name}, {"file", ps.file}};
   Renders renders;
-  std::vector<const renderers::Renderer*> rs;  // the case's renderers, in job (registry) order
+  // The case's image renderers, in job (registry) order: its pairs and the
+  // attribution are theirs. Its geometry checks (geometry_checks.h) are
+  // compared apart, each with the reference's passes.
+  std::vector<const renderers::Renderer*> rs;
+  std::vector<const RenderJob*> geometry_jobs;
   jc["renders"] = J::object();
   for (size_t j : sceneJobs(plan, k)) {
     const RenderJob& job = plan.jobs[j];
-    rs.push_back(&renderers::registry().at(job.renderer));
+    const renderers::Renderer& r = renderers::registry().at(job.renderer);
+    if (r.geometry_passes) geometry_jobs.push_back(&job);
+    else rs.push_back(&r);
     renders[job.renderer] = loadRender(plan, job);
     jc["renders"][job.renderer] = renderJson(job, renders[job.renderer]);
   }
@@ -214,9 +249,25 @@ J compareCase(const CompareContext& cx, size_t k) {
   const auto ref = renders.find(renderers::registry().reference().id);
   if (ref != renders.end() && ref->second.error.empty() && !notExpressible(ref->second))
     jc["colour_stats"] = colourStatsJson(ref->second.image);
-  jc["attribution"] = attribution(rs, verdict, renders);
-  // Decided on the pairs that could be compared: every one passes.
-  jc["pass"] = std::all_of(verdict.begin(), verdict.end(), [](int v) { return v == kPass || v == kNotExpressible; });
+  J checks = J::array();
+  for (const RenderJob* job : geometry_jobs) checks.push_back(geometryCheck(plan, *job, renders[job->renderer]));
+  if (!geometry_jobs.empty()) jc["geometry_checks"] = checks;
+  // Who deviates among the image renderers, then each geometry check that
+  // failed (it says nothing about the image renderers: it checks what they
+  // all read, the loaded model, against Blender's own import).
+  std::string who = attribution(rs, verdict, renders);
+  const std::string nothing = "nothing to compare";
+  if (who.rfind(nothing, 0) == 0 && geometryChecksWith(checks, "pass") + geometryChecksWith(checks, "fail") > 0)
+    who = "no image pair to compare" + who.substr(nothing.size());
+  for (const J& c : checks)
+    if (c["verdict"] == "fail")
+      who += "; " + renderers::registry().at(c["renderer"].get<std::string>()).display_name +
+             " and the reference disagree in geometry (the model loader or the import)";
+  jc["attribution"] = who;
+  // Decided on the pairs that could be compared (every one passes) and on
+  // the geometry checks that could (every one passes).
+  jc["pass"] = std::all_of(verdict.begin(), verdict.end(), [](int v) { return v == kPass || v == kNotExpressible; }) &&
+               geometryChecksPass(checks);
   return jc;
 }
 
@@ -237,7 +288,8 @@ int compareAndReport(const Plan& plan, const ReportSections& sections, int worke
   removeVerdict(plan);
   const CompareContext cx{plan, loadTolerances(plan.tolerances_path)};
   bool any_error = false, any_fail = false;
-  int not_expressible = 0, not_compared = 0;  // renders, and their pairs
+  int not_expressible = 0, not_compared = 0;  // image renders, and their pairs
+  int checks_pass = 0, checks_fail = 0, checks_error = 0, checks_nexp = 0;  // geometry checks
   J jcases = J::array();
   std::vector<fs::path> setting_files{plan.tolerances_path};
   // The cases are independent (each reads its own renders and writes into
@@ -261,15 +313,30 @@ int compareAndReport(const Plan& plan, const ReportSections& sections, int worke
     any_error |= entriesWith(jc["renders"], "error") > 0;
     not_expressible += entriesWith(jc["renders"], "not_expressible");
     not_compared += entriesWith(jc["pairs"], "not_expressible");
+    if (jc.contains("geometry_checks")) {
+      const J& checks = jc["geometry_checks"];
+      // A check's not-expressible render is the check's verdict, counted
+      // with the checks, not with the image renders.
+      not_expressible -= geometryChecksWith(checks, "not_expressible");
+      checks_pass += geometryChecksWith(checks, "pass");
+      checks_fail += geometryChecksWith(checks, "fail");
+      checks_error += geometryChecksWith(checks, "error");
+      checks_nexp += geometryChecksWith(checks, "not_expressible");
+    }
     any_fail |= !jc["pass"].get<bool>();
     jcases.push_back(std::move(jc));
   }
   writeFileAtomically(dir / "results.json", resultsJson(plan, jcases, setting_files, jsections).dump(2) + "\n");
   writeReport(dir / "results.json", dir / "report.html");
   printNextSteps(plan, jcases);
-  const std::string apart = not_expressible ? " (" + std::to_string(not_expressible) + " renders not expressible, " +
-                                                  std::to_string(not_compared) + " pairs not compared)"
-                                            : "";
+  any_error |= checks_error > 0;
+  std::string apart = not_expressible ? " (" + std::to_string(not_expressible) + " renders not expressible, " +
+                                            std::to_string(not_compared) + " pairs not compared)"
+                                      : "";
+  if (checks_pass + checks_fail + checks_error + checks_nexp > 0)
+    apart += "; geometry checks: " + std::to_string(checks_pass) + " pass, " + std::to_string(checks_fail) +
+             " fail, " + std::to_string(checks_error) + " errors, " + std::to_string(checks_nexp) +
+             " not expressible";
   std::fprintf(stderr, "xval validate: %zu scenes, %s%s; wrote %s\n", jcases.size(),
                any_error ? "ERRORS" : any_fail ? "some cases FAIL" : "all pass", apart.c_str(),
                (dir / "report.html").c_str());

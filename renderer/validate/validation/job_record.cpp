@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "files/atomic_write.h"
+#include "renderers/registry.h"
 #include "renderers/renderer.h"
 #include "scene/json_reader.h"
 #include "validate/validation/file_fields.h"
@@ -77,7 +78,11 @@ bool isDone(const Plan& plan, const RenderJob& job, std::string* why) {
     return no((plan.dir / job.record()).string() + ": rendered from other inputs (input_hash " +
               rec.input_hash + ", the plan's is " + job.input_hash + ")");
   if (!rec.not_expressible.empty()) return true;  // a verdict: nothing was rendered
-  for (const std::string& f : {job.exr(), job.png()})
+  std::vector<std::string> outputs{job.exr(), job.png()};
+  // A geometry check's job also made the reference's passes (plan.h).
+  if (const renderers::Renderer* r = renderers::registry().find(job.renderer); r && r->geometry_passes)
+    outputs.push_back(job.reference_passes());
+  for (const std::string& f : outputs)
     if (!fs::exists(plan.dir / f)) return no((plan.dir / f).string() + ": missing");
   return true;
 }

@@ -296,12 +296,13 @@ std::string exportInputsKey(const Scene& scene, const fs::path& scene_file) {
   });
 }
 
-std::vector<std::string> jobRenderers() { return renderers::registry().everySceneIds(); }
+std::vector<std::string> jobRenderers() { return renderers::registry().validateIds(); }
 
 std::vector<std::string> runRenderers(const std::vector<std::string>& names) {
   const std::vector<std::string> every = jobRenderers();
   if (names.empty()) return every;
-  // Besides the every-scene renderers, the golden sets when named
+  // Besides validate's renderers (the every-scene ones and the geometry
+  // checks: a run leaves a check out by not naming it), the golden sets when named
   // (renderers/golden.cpp: `golden`, `golden-NAME`, also spelled golden:NAME).
   std::vector<std::string> named = names;
   for (std::string& n : named)

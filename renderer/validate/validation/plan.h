@@ -3,8 +3,9 @@
 // execute the same code:
 //
 //   plan     (plan.h) the render jobs (one scene x one renderer each: the
-//            run's renderers, validate --renderers or every every-scene
-//            renderer of the registry, renderers/registry.h, in its order,
+//            run's renderers, validate --renderers or every renderer
+//            validate runs by default, Registry::validateIds: the
+//            every-scene renderers and the geometry checks, in registry order,
 //            less those the scene's `renderers` field leaves out, recorded
 //            with the reason), written to OUT/jobs.json; every output path
 //            is fixed by the plan: OUT/<scene>/<renderer>.exr, .png and
@@ -17,6 +18,18 @@
 //            (every unordered pair of those renderers, in registry order),
 //            attributes each disagreement (renderers::attribute), and
 //            writes results.json and report.html
+//
+// A geometry check's job (Renderer::geometry_passes: blender-import) writes
+// the renderer's geometry passes as its EXR and, beside them, the
+// reference renderer's passes of the same scene,
+// OUT/<scene>/<renderer>.reference-passes.exr (RenderJob::
+// reference_passes): the two sides of that one comparison, so the compare
+// step only compares (validate/validation/geometry_checks.h) and the check
+// is done, resumed or kept as one job. They are made in the check's job
+// rather than in the reference's so that the reference job's outputs do
+// not depend on which renderers the run has, and the check needs no other
+// job: the passes cost one ray per pixel (under a second) beside Blender's
+// import (seconds).
 //
 // A local run is plan + every job in a thread pool + compare, so a local
 // and a cluster run of the same scenes give the same verdicts and metrics
@@ -53,6 +66,8 @@ struct RenderJob {
   std::string exr() const { return scene + "/" + renderer + ".exr"; }
   std::string png() const { return scene + "/" + renderer + ".png"; }
   std::string record() const { return scene + "/" + renderer + ".job.json"; }
+  // A geometry check's job (see above) only: the reference's passes.
+  std::string reference_passes() const { return scene + "/" + renderer + ".reference-passes.exr"; }
 };
 
 // A renderer of the run that a scene is not meant for (its `renderers`
@@ -94,8 +109,9 @@ struct Plan {
                                           // the scene is meant for, in that order
 };
 
-// The renderers every scene goes through, in job order: the registry's
-// every-scene renderers (for the built-in ones: reference, povray, blender).
+// The renderers every scene goes through by default, in job order:
+// Registry::validateIds (for the built-in ones: reference, povray,
+// blender, blender-import, eevee, gl).
 std::vector<std::string> jobRenderers();
 
 // The run's renderers from `validate --renderers` (empty: jobRenderers()),

@@ -37,6 +37,10 @@ J provenanceJson(const Plan& plan, const std::vector<fs::path>& setting_files) {
   // The outside tools' versions (probed with a time-out, renderers/registry.h).
   for (const renderers::Renderer* r : renderers::registry().everySceneRenderers())
     if (r->external()) p[r->id] = renderers::registry().version(r->id);
+  // And those of the run's geometry checks (blender-import: Blender's).
+  for (const std::string& id : plan.renderers)
+    if (const renderers::Renderer& r = renderers::registry().at(id); r.geometry_passes && r.external())
+      p[r.id] = renderers::registry().version(r.id);
   // The one provenance record (validate/common/provenance.h): the compiler
   // that built this xval, the commit (with -dirty) it ran in.
   const Provenance prov = collectProvenance(plan.dir / "version.log");
@@ -57,7 +61,7 @@ J resultsJson(const Plan& plan, const J& cases, const std::vector<fs::path>& set
   // From the plan's making to now: on a cluster this includes the time the
   // jobs waited in the queue.
   results["wall_seconds"] = std::max(0.0, nowUnix() - plan.created_unix);
-  results["renderers"] = plan.renderers;  // the run's (validate --renderers, else every every-scene one)
+  results["renderers"] = plan.renderers;  // the run's (validate --renderers, else Registry::validateIds)
   results["cases"] = cases;
   if (J claims = paperClaims(cases); !claims.is_null()) results["paper_claims"] = claims;
   if (!sections.empty()) results["sections"] = sections;

@@ -13,6 +13,7 @@
 #include "files/output_folder.h"
 #include "image/image.h"
 #include "process/job_pool.h"
+#include "render/geometry_passes.h"
 #include "render/renderer.h"
 #include "renderers/job_export.h"
 #include "renderers/registry.h"
@@ -48,7 +49,17 @@ renderers::RenderRequest requestFor(const Plan& plan, const RenderJob& job, cons
   return request;
 }
 
-void writeImages(const Plan& plan, const RenderJob& job, const Image& image) {
+// The job's images: its EXR and preview PNG. A geometry check's job
+// (plan.h) first writes the reference's passes of the same scene beside
+// them, and its preview is a picture of its passes (passesPreview).
+void writeImages(const Plan& plan, const RenderJob& job, const Scene& scene, const Image& image) {
+  const renderers::Renderer& renderer = renderers::registry().at(job.renderer);
+  if (renderer.geometry_passes) {
+    writeImage(toImage(referenceGeometryPasses(scene)), plan.dir / job.reference_passes());
+    writeImage(image, plan.dir / job.exr());
+    writePreviewPng(passesPreview(geometryPassesFromImage(image)), plan.dir / job.png(), kPreviewSide);
+    return;
+  }
   writeImage(image, plan.dir / job.exr());
   writePreviewPng(image, plan.dir / job.png(), kPreviewSide);
 }
@@ -138,7 +149,7 @@ JobRecord runJob(const Plan& plan, const RenderJob& job) {
       const renderers::Renderer& renderer = renderers::registry().at(job.renderer);
       renderers::RenderInfo info;
       const Image image = renderer.render(*s.scene, s.request, &info);
-      writeImages(plan, job, image);
+      writeImages(plan, job, *s.scene, image);
       s.rec.setToolTimes(info);
     } catch (const std::exception& e) {
       s.rec.error = e.what();
@@ -194,7 +205,7 @@ std::vector<JobRecord> runJobBatch(const Plan& plan, const std::vector<size_t>& 
         if (!batch_error.empty()) throw std::runtime_error(batch_error);
         const renderers::BatchOutcome& o = outcomes[item_of[k]];
         if (!o.image) throw std::runtime_error(o.error);
-        writeImages(plan, job, *o.image);
+        writeImages(plan, job, *s.scene, *o.image);
         s.rec.setToolTimes(o.info);
       } catch (const std::exception& e) {
         s.rec.error = e.what();
