@@ -23,6 +23,8 @@ case "$list" in
   ''|*[!0-9,-]*) echo "render-task: $tasks line $((line + 1)) (task $line) is '$list': expected a job list such as 0-3,7" >&2; exit 2 ;;
 esac
 # The CPUs Slurm gave this task (--cpus-per-task, else the allocation).
+# (Inline, as in compare-task.sh: sbatch runs a copy of this script from
+# its spool folder, so a file beside it cannot be sourced.)
 cpus=${SLURM_CPUS_PER_TASK:-${SLURM_CPUS_ON_NODE:-1}}
 case "$cpus" in ''|*[!0-9]*|0) cpus=1 ;; esac
 echo "render-task: task $line, jobs $list of $plan on $(hostname), $cpus CPUs (Slurm ${SLURM_ARRAY_JOB_ID:-?}_$task)"
