@@ -78,12 +78,9 @@ Renderer blenderRenderer() {
   // (process CPU over wall: 10.8 s of 39.2 s and 8.3 s of 30.4 s for the
   // two batches of the reference set at load average 6-8): most of its
   // time is Blender's start-up, the factory reset and the glTF import per
-  // scene, on one thread. A quarter of a core, what it uses: with the
-  // cases compared as their jobs end (validation/run_job.h AfterCase),
-  // half a core each left the pool's capacity idle while the two batches
-  // ran (docs/performance.md, "Comparing while rendering, longest first":
-  // reference set, ratio medians 1.86 -> 1.38 at 0.5 -> 0.25).
-  r.cpu_share = 0.25;
+  // scene, on one thread. Half a core: the two batches of a 2-core run
+  // leave a core to the POV-Ray and reference jobs beside them.
+  r.cpu_share = 0.5;
   r.missing = blenderScriptMissing;
   r.exporter = blenderExport(BlenderEngine::Cycles);
   r.cannot_express = [ex = *r.exporter](const Scene& scene) { return refusalOf(ex, scene); };
