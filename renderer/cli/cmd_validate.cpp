@@ -145,7 +145,8 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
                   "Render and compare only these renderers, comma-separated, at least two (default: " +
                       renderers::joinNames(v::jobRenderers()) + "; xval renderers lists them)")
       ->delimiter(',');
-  cmd->add_option("--jobs", args->jobs, "Renders in parallel, and cases compared in parallel in the compare step (default: the core count)")
+  cmd->add_option("--jobs", args->jobs, "Cores to keep busy: renders in parallel, each case compared beside them as soon as its renders are done "
+                  "(the longest jobs start first); with --compare-only, cases compared at once (default: the core count)")
       ->check(CLI::Range(1, 256));
   cmd->add_option("--batch", args->batch,
                   "Scenes per Blender process (blender, eevee: one persistent worker renders a batch; "
