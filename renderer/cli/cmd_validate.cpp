@@ -21,7 +21,11 @@
 // a list of the plan's jobs (a Slurm array task's batch) the way a plain
 // run renders all of them, with the same scheduling.
 //
-// Scheduling (validate/validation/run_job.h): Blender's jobs (blender,
+// Scheduling (validate/validation/run_job.h): the jobs start longest
+// first (by an estimate from the scene's size, job_cost.h), and a plain
+// run compares each case as soon as its jobs are done, in the same pool
+// as the renders still running (a compare takes a core); results.json
+// keeps the plan's order. Blender's jobs (blender,
 // eevee) go to persistent workers, one Blender process per --batch scenes
 // (default: split evenly over the --jobs workers, at most 32 each; 1: one
 // process per scene); with --schedule load (default) a job takes its
@@ -151,7 +155,8 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
                       "; xval renderers lists them). blender-import is the geometry check of model-file scenes "
                       "(its passes against the reference's, not an image pair): name it to keep it")
       ->delimiter(',');
-  cmd->add_option("--jobs", args->jobs, "Renders in parallel, and cases compared in parallel in the compare step (default: the core count)")
+  cmd->add_option("--jobs", args->jobs, "Cores to keep busy: renders in parallel, each case compared beside them as soon as its renders are done "
+                  "(the longest jobs start first); with --compare-only, cases compared at once (default: the core count)")
       ->check(CLI::Range(1, 256));
   cmd->add_option("--batch", args->batch,
                   "Scenes per Blender process (blender, eevee: one persistent worker renders a batch; "
@@ -319,8 +324,13 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
         if (args->resume && todo.size() < plan.jobs.size())
           std::fprintf(stderr, "xval validate: --resume: %zu of %zu jobs done before, %zu to run\n",
                        plan.jobs.size() - todo.size(), plan.jobs.size(), todo.size());
-        v::runJobs(plan, todo, settingsOf(*args));
-        return withJunit(plan, v::compareAndReport(plan, sections(*args), settingsOf(*args).workers), args->junit);
+        // Each case is compared as soon as its jobs are done, in the same
+        // pool as the renders (run_job.h AfterCase); the verdict is written
+        // once every case is compared (compare_step.h CaseComparer).
+        v::CaseComparer comparer(plan, sections(*args));
+        const v::AfterCase compare_case{[&comparer](size_t k) { comparer.compare(k); }, 1.0};
+        v::runJobs(plan, todo, settingsOf(*args), &compare_case);
+        return withJunit(plan, comparer.finish(), args->junit);
       } catch (const std::exception& e) {
         std::fprintf(stderr, "xval validate: error: %s\n", e.what());
         return 2;

@@ -82,4 +82,55 @@ void runWeightedJobPool(size_t count, double capacity, const std::function<doubl
   if (first_error) std::rethrow_exception(first_error);
 }
 
+WeightedTaskQueue::WeightedTaskQueue(double capacity) : capacity_(capacity) {
+  if (!(capacity > 0.0)) throw std::invalid_argument("WeightedTaskQueue: capacity " + std::to_string(capacity) + ", not > 0");
+}
+
+void WeightedTaskQueue::push(double weight, std::function<void()> task, bool urgent) {
+  if (!(weight > 0.0)) throw std::invalid_argument("WeightedTaskQueue: a task of weight " + std::to_string(weight) + ", not > 0");
+  {
+    std::lock_guard<std::mutex> g(lock_);
+    (urgent ? urgent_ : normal_).push_back({std::min(weight, capacity_), std::move(task)});
+  }
+  changed_.notify_all();
+}
+
+void WeightedTaskQueue::run(size_t threads) {
+  std::exception_ptr first_error;
+  auto worker = [&]() {
+    std::unique_lock<std::mutex> g(lock_);
+    while (true) {
+      // Wait for a head that fits, or for the end: nothing queued, nothing
+      // running (a running task may still queue more).
+      changed_.wait(g, [&] {
+        const std::deque<Task>& q = !urgent_.empty() ? urgent_ : normal_;
+        if (q.empty()) return running_ == 0;
+        return running_ == 0 || used_ + q.front().weight <= capacity_ + 1e-9;
+      });
+      std::deque<Task>& q = !urgent_.empty() ? urgent_ : normal_;
+      if (q.empty()) break;
+      Task task = std::move(q.front());
+      q.pop_front();
+      used_ += task.weight;
+      ++running_;
+      g.unlock();
+      try {
+        task.run();
+      } catch (...) {
+        std::lock_guard<std::mutex> e(lock_);
+        if (!first_error) first_error = std::current_exception();
+      }
+      g.lock();
+      used_ -= task.weight;
+      --running_;
+      changed_.notify_all();
+    }
+    changed_.notify_all();  // the others see the end too
+  };
+  std::vector<std::thread> pool;
+  for (size_t t = 0; t < std::max<size_t>(1, threads); ++t) pool.emplace_back(worker);
+  for (auto& t : pool) t.join();
+  if (first_error) std::rethrow_exception(first_error);
+}
+
 }  // namespace xval

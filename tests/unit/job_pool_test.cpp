@@ -8,6 +8,7 @@
 #include <mutex>
 #include <set>
 #include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -99,4 +100,58 @@ TEST(JobPool, WeightedJobHeavierThanTheCapacityRunsAlone) {
   runWeightedJobPool(3, 1.0, [](size_t) { return 5.0; }, [&](size_t) { ++c; });
   EXPECT_EQ(c.load(), 3);
   EXPECT_THROW(runWeightedJobPool(2, 1.0, [](size_t) { return 0.0; }, [](size_t) {}), std::invalid_argument);
+}
+
+// The queue that grows while it runs (validate's renders and the compares
+// they queue): a task queued by a running task runs; an urgent one starts
+// before the tasks queued earlier that have not started; the capacity
+// holds; an exception comes out once every task ran.
+TEST(WeightedTaskQueue, TasksQueuedWhileRunningRunUrgentFirst) {
+  WeightedTaskQueue q(1.0);  // one task of weight 1 at a time: a strict order
+  std::mutex m;
+  std::vector<std::string> order;
+  auto log = [&](const std::string& s) {
+    std::lock_guard<std::mutex> g(m);
+    order.push_back(s);
+  };
+  q.push(1.0, [&] {
+    log("a");
+    q.push(1.0, [&] { log("a-follow-up"); }, true);  // urgent: before b and c
+  });
+  q.push(1.0, [&] { log("b"); });
+  q.push(1.0, [&] {
+    log("c");
+    q.push(1.0, [&] { log("c-follow-up"); }, false);  // not urgent: after everything queued
+  });
+  q.run(4);
+  EXPECT_EQ(order, (std::vector<std::string>{"a", "a-follow-up", "b", "c", "c-follow-up"}));
+}
+
+TEST(WeightedTaskQueue, CapacityHoldsAndExceptionsComeOutAfterEveryTask) {
+  WeightedTaskQueue q(1.0);
+  std::mutex m;
+  double used = 0.0, most = 0.0;
+  std::atomic<int> ran{0};
+  for (int i = 0; i < 12; ++i) {
+    const double w = i % 3 == 0 ? 1.0 : 0.25;
+    q.push(w, [&, w, i] {
+      {
+        std::lock_guard<std::mutex> g(m);
+        used += w;
+        most = std::max(most, used);
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      {
+        std::lock_guard<std::mutex> g(m);
+        used -= w;
+      }
+      ++ran;
+      if (i == 4) throw std::runtime_error("task 4 failed");
+    });
+  }
+  EXPECT_THROW(q.run(8), std::runtime_error);
+  EXPECT_EQ(ran.load(), 12);
+  EXPECT_LE(most, 1.0 + 1e-9);
+  EXPECT_GT(most, 0.25 + 1e-9);  // light tasks did run side by side
+  EXPECT_THROW(q.push(0.0, [] {}), std::invalid_argument);
 }

@@ -2,6 +2,8 @@
 #include "validate/validation/compare_step.h"
 
 #include <algorithm>
+#include <chrono>
+#include <mutex>
 #include <cstdio>
 #include <exception>
 #include <map>
@@ -280,36 +282,66 @@ int entriesWith(const J& entries, const char* key) {
 
 }  // namespace
 
-int compareAndReport(const Plan& plan, const ReportSections& sections, int workers) {
-  const fs::path& dir = plan.dir;
-  const J jsections = sectionsJson(sections, dir);  // fails early on a folder with no results
+struct CaseComparer::State {
+  const Plan& plan;
+  J jsections;
+  CompareContext cx;
+  std::vector<J> compared;
+  std::vector<std::exception_ptr> failed;
+  std::mutex lock;  // the progress count and lines
+  size_t done = 0;
+  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
+};
+
+CaseComparer::CaseComparer(const Plan& plan, const ReportSections& sections) {
+  J jsections = sectionsJson(sections, plan.dir);  // fails early on a folder with no results
   // The old verdict must not outlive this run: whatever stops it from here
   // on (an error, a kill) leaves no results.json or report.html at all.
   removeVerdict(plan);
-  const CompareContext cx{plan, loadTolerances(plan.tolerances_path)};
+  state_.reset(new State{plan, std::move(jsections), CompareContext{plan, loadTolerances(plan.tolerances_path)},
+                         std::vector<J>(plan.scenes.size()), std::vector<std::exception_ptr>(plan.scenes.size())});
+}
+
+CaseComparer::~CaseComparer() = default;
+
+void CaseComparer::compare(size_t k) {
+  State& st = *state_;
+  const auto t0 = std::chrono::steady_clock::now();
+  // The cases are independent (each reads its own renders and writes into
+  // its own folder); each result goes to its own slot.
+  std::string verdict;
+  try {
+    st.compared.at(k) = compareCase(st.cx, k);
+    verdict = st.compared[k]["pass"].get<bool>() ? "pass" : "FAIL";
+  } catch (...) {
+    st.failed.at(k) = std::current_exception();
+    verdict = "ERROR";
+  }
+  const auto t1 = std::chrono::steady_clock::now();
+  std::lock_guard<std::mutex> g(st.lock);
+  std::fprintf(stderr, "[compared %zu/%zu] %-32s %-5s %6.2f s   elapsed %.0f s\n", ++st.done, st.plan.scenes.size(),
+               st.plan.scenes[k].name.c_str(), verdict.c_str(), std::chrono::duration<double>(t1 - t0).count(),
+               std::chrono::duration<double>(t1 - st.t0).count());
+}
+
+int CaseComparer::finish() {
+  State& st = *state_;
+  const Plan& plan = st.plan;
+  const fs::path& dir = plan.dir;
+  // A case that threw stops the step: the first such case in plan order
+  // (whichever was compared first).
+  for (const std::exception_ptr& e : st.failed)
+    if (e) std::rethrow_exception(e);
   bool any_error = false, any_fail = false;
   int not_expressible = 0, not_compared = 0;  // image renders, and their pairs
   int checks_pass = 0, checks_fail = 0, checks_error = 0, checks_nexp = 0;  // geometry checks
   J jcases = J::array();
   std::vector<fs::path> setting_files{plan.tolerances_path};
-  // The cases are independent (each reads its own renders and writes into
-  // its own folder): compared side by side, kept in plan order.
-  // A case that throws stops the step as before: the first such case in
-  // plan order (whichever finished first) is the error.
-  std::vector<J> compared(plan.scenes.size());
-  std::vector<std::exception_ptr> failed(plan.scenes.size());
-  runJobPool(plan.scenes.size(), workers, [&](size_t k) {
-    try {
-      compared[k] = compareCase(cx, k);
-    } catch (...) {
-      failed[k] = std::current_exception();
-    }
-  });
-  for (const std::exception_ptr& e : failed)
-    if (e) std::rethrow_exception(e);
   for (size_t k = 0; k < plan.scenes.size(); ++k) {
+    if (st.compared[k].is_null())
+      throw std::logic_error("the compare step: case " + plan.scenes[k].name + " was not compared");
     setting_files.push_back(plan.scenes[k].path);
-    J jc = std::move(compared[k]);
+    J jc = std::move(st.compared[k]);
     any_error |= entriesWith(jc["renders"], "error") > 0;
     not_expressible += entriesWith(jc["renders"], "not_expressible");
     not_compared += entriesWith(jc["pairs"], "not_expressible");
@@ -326,7 +358,7 @@ int compareAndReport(const Plan& plan, const ReportSections& sections, int worke
     any_fail |= !jc["pass"].get<bool>();
     jcases.push_back(std::move(jc));
   }
-  writeFileAtomically(dir / "results.json", resultsJson(plan, jcases, setting_files, jsections).dump(2) + "\n");
+  writeFileAtomically(dir / "results.json", resultsJson(plan, jcases, setting_files, st.jsections).dump(2) + "\n");
   writeReport(dir / "results.json", dir / "report.html");
   printNextSteps(plan, jcases);
   any_error |= checks_error > 0;
@@ -341,6 +373,13 @@ int compareAndReport(const Plan& plan, const ReportSections& sections, int worke
                any_error ? "ERRORS" : any_fail ? "some cases FAIL" : "all pass", apart.c_str(),
                (dir / "report.html").c_str());
   return any_error ? 2 : any_fail ? 1 : 0;
+}
+
+int compareAndReport(const Plan& plan, const ReportSections& sections, int workers) {
+  CaseComparer comparer(plan, sections);
+  // `workers` cases at once; kept in plan order (CaseComparer).
+  runJobPool(plan.scenes.size(), workers, [&](size_t k) { comparer.compare(k); });
+  return comparer.finish();
 }
 
 }  // namespace xval::validation

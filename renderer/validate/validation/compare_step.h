@@ -17,10 +17,45 @@
 // are its "left_out", with the reason.
 #pragma once
 
+#include <chrono>
+#include <exception>
+#include <memory>
+#include <mutex>
+#include <vector>
+
 #include "validate/report.h"
 #include "validate/validation/plan.h"
 
 namespace xval::validation {
+
+// The compare step in parts, so that a run can compare each case as soon
+// as its renders are done, beside the renders still running (run_job.h
+// runJobs' after_case), and then write the verdict:
+//   CaseComparer c(plan, sections);   // checks the sections, removes the old verdict
+//   c.compare(k) for every scene k, in any order, from any threads
+//   c.finish()                        // results.json, report.html, next steps
+// Every case's result is kept in its plan slot, so results.json lists the
+// cases in plan order whatever order they were compared in. A case that
+// throws stops the step at finish(): the first such case in plan order.
+class CaseComparer {
+ public:
+  // Throws (before anything is compared) when the sections' folders hold no
+  // results or the tolerance file cannot be read.
+  CaseComparer(const Plan& plan, const ReportSections& sections);
+  ~CaseComparer();
+  // Compares plan.scenes[k] (every pair, the difference images into its
+  // folder) and prints a progress line. Never throws (the case's exception
+  // is kept for finish()); call it once per case, from any thread.
+  void compare(size_t k);
+  // Once every case is compared: rethrows the first case's exception in
+  // plan order, else writes results.json and report.html and prints the
+  // next steps. Returns the exit status (compareAndReport).
+  int finish();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 // Compares every pair of every scene, writes results.json and report.html,
 // prints the failing cases' next steps (next_steps.h). Returns the exit

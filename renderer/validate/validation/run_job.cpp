@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <map>
 #include <cstdio>
 #include <cstdint>
 #include <mutex>
@@ -15,6 +17,7 @@
 #include "process/job_pool.h"
 #include "render/geometry_passes.h"
 #include "render/renderer.h"
+#include "validate/validation/job_cost.h"
 #include "renderers/job_export.h"
 #include "renderers/registry.h"
 #include "scene/scene_loader.h"
@@ -226,19 +229,22 @@ std::vector<size_t> jobsToRun(const Plan& plan, bool resume) {
 
 namespace {
 
-// The pool's tasks: first the batches (each the jobs of one renderer that
-// renders batches), then one task per other job; `batches` is how many
-// tasks are batches.
-std::vector<std::vector<size_t>> runTasks(const Plan& plan, const std::vector<size_t>& todo,
-                                          const RunSettings& settings, size_t* batches) {
-  std::vector<std::vector<size_t>> batched, single;
+// The pool's tasks: the batches (each the jobs of one renderer that renders
+// batches) and one task per other job, longest first (job_cost.h).
+struct Task {
+  std::vector<size_t> jobs;  // plan indices
+  bool batch = false;        // one renderer's jobs in one outside process (runJobBatch)
+};
+
+std::vector<Task> runTasks(const Plan& plan, const std::vector<size_t>& todo, const RunSettings& settings) {
+  std::vector<Task> tasks;
   // Per renderer that renders batches: its jobs, in plan order.
   std::vector<std::pair<std::string, std::vector<size_t>>> by_renderer;
   for (size_t index : todo) {
     const RenderJob& job = plan.jobs.at(index);
     const renderers::Renderer* r = renderers::registry().find(job.renderer);
     if (settings.batch == 1 || !r || !r->render_batch) {
-      single.push_back({index});
+      tasks.push_back({{index}, false});
       continue;
     }
     auto it = std::find_if(by_renderer.begin(), by_renderer.end(),
@@ -246,69 +252,114 @@ std::vector<std::vector<size_t>> runTasks(const Plan& plan, const std::vector<si
     if (it == by_renderer.end()) it = by_renderer.insert(by_renderer.end(), {job.renderer, {}});
     it->second.push_back(index);
   }
+  std::vector<Task> batched;
   for (const auto& [id, jobs] : by_renderer) {
     // Automatic: each worker gets a share, in batches of at most kMaxBatch.
     const size_t workers = size_t(std::max(1, settings.workers));
     const size_t size = settings.batch > 0 ? settings.batch
                                            : std::clamp<size_t>((jobs.size() + workers - 1) / workers, 1, kMaxBatch);
     for (size_t at = 0; at < jobs.size(); at += size)
-      batched.emplace_back(jobs.begin() + long(at), jobs.begin() + long(std::min(jobs.size(), at + size)));
+      batched.push_back({{jobs.begin() + long(at), jobs.begin() + long(std::min(jobs.size(), at + size))}, true});
   }
-  // The long batches first, so that the short jobs fill in beside them.
-  *batches = batched.size();
-  batched.insert(batched.end(), single.begin(), single.end());
-  return batched;
+  // Ties keep this order: the batches, then the single jobs, in plan order.
+  batched.insert(batched.end(), tasks.begin(), tasks.end());
+  tasks = std::move(batched);
+  // Each scene's size once (a scene that does not load is estimated at its
+  // renderer's fixed cost: its job fails and reports why).
+  std::map<std::string, JobSize> sizes;
+  for (size_t index : todo) {
+    const RenderJob& job = plan.jobs.at(index);
+    if (sizes.count(job.scene)) continue;
+    JobSize size;
+    try {
+      size = sceneSize(loadScene(job.path, plan.budget));
+    } catch (const std::exception&) {
+    }
+    sizes[job.scene] = size;
+  }
+  std::vector<double> cost(tasks.size(), 0.0);
+  for (size_t t = 0; t < tasks.size(); ++t)
+    for (size_t index : tasks[t].jobs)
+      cost[t] += estimateJobSeconds(plan.jobs.at(index).renderer, sizes.at(plan.jobs.at(index).scene));
+  std::vector<Task> ordered;
+  for (size_t t : longestFirst(cost)) ordered.push_back(std::move(tasks[t]));
+  return ordered;
 }
 
 }  // namespace
 
 // Runs the given jobs (process/job_pool.h), with a progress line each.
-std::vector<JobRecord> runJobs(const Plan& plan, const std::vector<size_t>& todo, const RunSettings& settings) {
+std::vector<JobRecord> runJobs(const Plan& plan, const std::vector<size_t>& todo, const RunSettings& settings,
+                               const AfterCase* after_case) {
   const auto t_start = Clock::now();
   size_t done = 0;
   std::mutex lock;
   std::vector<JobRecord> out(todo.size());
   std::vector<size_t> position(plan.jobs.size(), SIZE_MAX);  // a job's place in todo
   for (size_t k = 0; k < todo.size(); ++k) position.at(todo[k]) = k;
-  size_t batches = 0;
-  const std::vector<std::vector<size_t>> tasks = runTasks(plan, todo, settings, &batches);
-  auto weight = [&](size_t t) {
+  const std::vector<Task> tasks = runTasks(plan, todo, settings);
+  // Per scene: its jobs of `todo` not ended yet (after_case runs at 0).
+  std::vector<size_t> scene_of(plan.jobs.size(), SIZE_MAX), pending(plan.scenes.size(), 0);
+  for (size_t k = 0; k < plan.scenes.size(); ++k)
+    for (size_t j : sceneJobs(plan, k)) scene_of.at(j) = k;
+  for (size_t index : todo) ++pending.at(scene_of.at(index));
+  const double capacity = double(std::max(1, settings.workers));
+  auto weightOf = [&](const Task& task) {
     if (!settings.by_load) return 1.0;
-    const renderers::Renderer* r = renderers::registry().find(plan.jobs.at(tasks[t].front()).renderer);
+    const renderers::Renderer* r = renderers::registry().find(plan.jobs.at(task.jobs.front()).renderer);
     return r ? std::clamp(r->cpu_share, 1.0 / 16.0, 1.0) : 1.0;
   };
-  runWeightedJobPool(tasks.size(), double(std::max(1, settings.workers)), weight, [&](size_t t) {
-    const std::vector<size_t>& task = tasks[t];
-    // A job's exception is this job's error, and the compare step finds
-    // the job not done; the other jobs go on.
-    std::vector<JobRecord> recs;
-    try {
-      if (t < batches)
-        recs = runJobBatch(plan, task);
-      else
-        recs.push_back(runJob(plan, plan.jobs[task.front()]));
-    } catch (const std::exception& e) {
-      recs.assign(task.size(), JobRecord{});
-      for (auto& rec : recs) rec.error = e.what();
-    } catch (...) {
-      recs.assign(task.size(), JobRecord{});
-      for (auto& rec : recs) rec.error = "unknown exception";
-    }
-    std::lock_guard<std::mutex> g(lock);
-    for (size_t k = 0; k < task.size(); ++k) {
-      const RenderJob& job = plan.jobs[task[k]];
-      const JobRecord& rec = recs.at(k);
-      out.at(position.at(task[k])) = rec;
-      const size_t n = ++done;
-      const double el = std::chrono::duration<double>(Clock::now() - t_start).count();
-      std::fprintf(stderr, "[%zu/%zu] %-32s %-9s %s %6.2f s   elapsed %.0f s, ~%.0f s left\n", n,
-                   todo.size(), job.scene.c_str(), job.renderer.c_str(),
-                   !rec.error.empty() ? "ERROR" : !rec.not_expressible.empty() ? "not expressible" : "ok   ",
-                   rec.seconds, el, el * double(todo.size() - n) / double(n));
-      if (!rec.error.empty()) std::fprintf(stderr, "  %s\n", rec.error.c_str());
-      if (!rec.not_expressible.empty()) std::fprintf(stderr, "  %s\n", rec.not_expressible.c_str());
-    }
-  });
+  WeightedTaskQueue queue(capacity);
+  // Enough threads for the most tasks that can run at once.
+  double lightest = after_case ? std::min(after_case->weight, capacity) : capacity;
+  for (const auto& task : tasks) lightest = std::min(lightest, weightOf(task));
+  const size_t threads = size_t(std::max(1.0, std::floor(capacity / lightest + 1e-9)));
+  auto queueAfterCase = [&](size_t k, bool urgent) {
+    queue.push(after_case->weight, [&, k] { after_case->run(k); }, urgent);
+  };
+  for (const Task& t : tasks) {
+    queue.push(weightOf(t), [&, &task = t.jobs, batch = t.batch] {
+      // A job's exception is this job's error, and the compare step finds
+      // the job not done; the other jobs go on.
+      std::vector<JobRecord> recs;
+      try {
+        if (batch)
+          recs = runJobBatch(plan, task);
+        else
+          recs.push_back(runJob(plan, plan.jobs[task.front()]));
+      } catch (const std::exception& e) {
+        recs.assign(task.size(), JobRecord{});
+        for (auto& rec : recs) rec.error = e.what();
+      } catch (...) {
+        recs.assign(task.size(), JobRecord{});
+        for (auto& rec : recs) rec.error = "unknown exception";
+      }
+      std::vector<size_t> ready;  // scenes whose last job this task was
+      {
+        std::lock_guard<std::mutex> g(lock);
+        for (size_t k = 0; k < task.size(); ++k) {
+          const RenderJob& job = plan.jobs[task[k]];
+          const JobRecord& rec = recs.at(k);
+          out.at(position.at(task[k])) = rec;
+          const size_t n = ++done;
+          const double el = std::chrono::duration<double>(Clock::now() - t_start).count();
+          std::fprintf(stderr, "[%zu/%zu] %-32s %-9s %s %6.2f s   elapsed %.0f s, ~%.0f s left\n", n,
+                       todo.size(), job.scene.c_str(), job.renderer.c_str(),
+                       !rec.error.empty() ? "ERROR" : !rec.not_expressible.empty() ? "not expressible" : "ok   ",
+                       rec.seconds, el, el * double(todo.size() - n) / double(n));
+          if (!rec.error.empty()) std::fprintf(stderr, "  %s\n", rec.error.c_str());
+          if (!rec.not_expressible.empty()) std::fprintf(stderr, "  %s\n", rec.not_expressible.c_str());
+          if (--pending.at(scene_of.at(task[k])) == 0) ready.push_back(scene_of.at(task[k]));
+        }
+      }
+      if (after_case)
+        for (size_t k : ready) queueAfterCase(k, true);
+    });
+  }
+  if (after_case)
+    for (size_t k = 0; k < plan.scenes.size(); ++k)
+      if (pending[k] == 0) queueAfterCase(k, false);
+  queue.run(threads);
   return out;
 }
 

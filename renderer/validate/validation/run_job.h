@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -42,10 +43,31 @@ struct RunSettings {
 };
 inline constexpr size_t kMaxBatch = 32;
 
+// Work on a case that follows its renders (the compare of the case,
+// compare_step.h CaseComparer::compare), run in the same pool as the jobs.
+struct AfterCase {
+  std::function<void(size_t scene)> run;  // plan.scenes index; should not throw
+  double weight = 1.0;                    // its share of a core (a compare is CPU-bound: 1)
+};
+
 // Runs the given jobs (indices into plan.jobs) as `settings` says, with a
 // progress line each on stderr. A job's exception is its record's error.
 // Returns the jobs' records, in the order of `todo`.
-std::vector<JobRecord> runJobs(const Plan& plan, const std::vector<size_t>& todo, const RunSettings& settings);
+//
+// Order: the pool's tasks (a Blender batch, or one job) start longest
+// first, by their jobs' estimated seconds (job_cost.h; a batch: the sum of
+// its jobs'); equal ones in plan order. The records and the files are the
+// same whatever the order.
+//
+// With `after_case`, after_case->run(k) runs once for every scene k of the
+// plan, as a task of the same pool: for a scene with jobs in `todo`, queued
+// when the last of them has ended (its record written), ahead of every job
+// not yet started (so a case is compared while the other jobs render); for
+// a scene without (done before, --resume; kept, plan_update.h), queued
+// after every job at the start. runJobs returns when every job and every
+// after_case->run has returned.
+std::vector<JobRecord> runJobs(const Plan& plan, const std::vector<size_t>& todo, const RunSettings& settings,
+                               const AfterCase* after_case = nullptr);
 
 // The jobs of a job list as `validate --run-jobs` takes it (what a Slurm
 // array task renders, scripts/slurm/submit.sh): plan indices and ranges
