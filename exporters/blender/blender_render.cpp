@@ -1,6 +1,10 @@
 #include "blender/blender_render.h"
 
 
+#include <atomic>
+#include <thread>
+#include <chrono>
+#include <exception>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -200,7 +204,8 @@ std::string logTail(const std::filesystem::path& log) {
 }  // namespace
 
 std::vector<BlenderBatchResult> renderBlenderBatch(const std::vector<BlenderBatchScene>& scenes,
-                                                   double timeout_seconds, BlenderEngine engine) {
+                                                   double timeout_seconds, BlenderEngine engine,
+                                                   const BlenderSceneDone& done) {
   std::vector<BlenderBatchResult> results(scenes.size());
   if (scenes.empty()) return results;
   const std::string tool = toolName(engine);
@@ -212,6 +217,7 @@ std::vector<BlenderBatchResult> renderBlenderBatch(const std::vector<BlenderBatc
       pending.push_back(i);
     } catch (const std::exception& e) {
       results[i].error = e.what();
+      if (done) done(i, results[i]);
     }
   }
   const std::filesystem::path batch_dir = std::filesystem::absolute(scenes.front().work_dir);
@@ -233,7 +239,54 @@ std::vector<BlenderBatchResult> renderBlenderBatch(const std::vector<BlenderBatc
     std::vector<std::string> argv = blenderCommand();
     for (const std::string& a : {std::string("--batch"), list.string(), std::string("--results"), lines.string()})
       argv.push_back(a);
-    const ProcessResult r = runProcess(argv, batch_dir, log, timeout_seconds, lines);
+    // A scene the worker reported done: its result, read back, handed on.
+    std::vector<char> finished(pending.size(), 0);
+    auto finish = [&](size_t k, const WorkerLine& w) {
+      const size_t i = pending[k];
+      const PreparedScene& p = *prepared[i];
+      BlenderBatchResult& out = results[i];
+      out.info = {w.seconds, p.log, renderTimeFromLog(p.log)};
+      try {
+        if (!w.ok) throw ExternalToolError(tool + " (" + p.gltf.string() + "): " + w.error + logTail(p.log));
+        if (!std::filesystem::exists(p.out))
+          throw ExternalToolError(tool + " (" + p.gltf.string() + ") finished the scene but wrote no image " +
+                                  p.out.string() + logTail(p.log));
+        out.image = readBack(p, BlenderMode::Model, engine);
+      } catch (const std::exception& e) {
+        out.error = e.what();
+      }
+      finished[k] = 1;
+      if (done) done(i, out);
+    };
+    // While the process runs: the scenes it reports done (a "done" line is
+    // written after the scene's image), each finished at once.
+    std::atomic<bool> ended{false};
+    std::exception_ptr watch_error;
+    std::thread watcher;
+    if (done)
+      watcher = std::thread([&] {
+        try {
+          while (!ended.load()) {
+            std::this_thread::sleep_for(std::chrono::duration<double>(kBatchPollSeconds));
+            const std::vector<WorkerLine> now = readWorkerResults(lines, pending.size());
+            for (size_t k = 0; k < pending.size() && !ended.load(); ++k)
+              if (now[k].done && !finished[k]) finish(k, now[k]);
+          }
+        } catch (...) {
+          watch_error = std::current_exception();
+        }
+      });
+    ProcessResult r;
+    try {
+      r = runProcess(argv, batch_dir, log, timeout_seconds, lines);
+    } catch (...) {
+      ended = true;
+      if (watcher.joinable()) watcher.join();
+      throw;
+    }
+    ended = true;
+    if (watcher.joinable()) watcher.join();
+    if (watch_error) std::rethrow_exception(watch_error);
     const std::vector<WorkerLine> worker = readWorkerResults(lines, pending.size());
     std::vector<size_t> left;
     bool progressed = false;
@@ -242,18 +295,11 @@ std::vector<BlenderBatchResult> renderBlenderBatch(const std::vector<BlenderBatc
       const PreparedScene& p = *prepared[i];
       BlenderBatchResult& out = results[i];
       const WorkerLine& w = worker[k];
-      if (w.done) {
+      if (finished[k]) {
         progressed = true;
-        out.info = {w.seconds, p.log, renderTimeFromLog(p.log)};
-        try {
-          if (!w.ok) throw ExternalToolError(tool + " (" + p.gltf.string() + "): " + w.error + logTail(p.log));
-          if (!std::filesystem::exists(p.out))
-            throw ExternalToolError(tool + " (" + p.gltf.string() + ") finished the scene but wrote no image " +
-                                    p.out.string() + logTail(p.log));
-          out.image = readBack(p, BlenderMode::Model, engine);
-        } catch (const std::exception& e) {
-          out.error = e.what();
-        }
+      } else if (w.done) {
+        progressed = true;
+        finish(k, w);
       } else if (w.started) {
         // The scene the process died on (the last one it started).
         progressed = true;
@@ -261,6 +307,7 @@ std::vector<BlenderBatchResult> renderBlenderBatch(const std::vector<BlenderBatc
         out.error = tool + " (" + p.gltf.string() + "): the worker process " +
                     (r.ok() ? std::string("exited 0 without finishing the scene") : "ended: " + r.describe()) +
                     " while rendering this scene" + logTail(p.log) + logTail(log);
+        if (done) done(i, out);
       } else {
         left.push_back(i);
       }
@@ -273,6 +320,7 @@ std::vector<BlenderBatchResult> renderBlenderBatch(const std::vector<BlenderBatc
         results[i].error = tool + " (" + prepared[i]->gltf.string() + "): the worker process " +
                            (r.ok() ? std::string("exited 0 without rendering this scene") : "ended: " + r.describe()) +
                            logTail(log);
+        if (done) done(i, results[i]);
       }
       left.clear();
     }

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -58,7 +59,13 @@ Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_di
 //     reported with what happened, and the scenes not yet done are
 //     rendered by a fresh process; a process that dies before starting
 //     any scene fails every scene left.
-// Returns one result per scene, in order.
+// Returns one result per scene, in order. `done`, when not empty, is
+// called once per scene with its final result as soon as it is final: for
+// a scene the worker finished, while the process renders the next ones
+// (a thread of this call polls the worker's result lines every
+// kBatchPollSeconds and reads the scene's image back); for the others when
+// the process has ended. One call at a time, never two at once; it must
+// not throw (an exception from it is rethrown once the process has ended).
 struct BlenderBatchScene {
   const Scene* scene = nullptr;
   std::filesystem::path work_dir;  // a fresh folder per scene
@@ -69,7 +76,10 @@ struct BlenderBatchResult {
   std::string error;            // else why not
   ExternalRenderInfo info;      // seconds: the scene's part of the worker's time
 };
+using BlenderSceneDone = std::function<void(size_t scene, const BlenderBatchResult&)>;
+inline constexpr double kBatchPollSeconds = 0.05;
 std::vector<BlenderBatchResult> renderBlenderBatch(const std::vector<BlenderBatchScene>& scenes,
-                                                   double timeout_seconds, BlenderEngine engine);
+                                                   double timeout_seconds, BlenderEngine engine,
+                                                   const BlenderSceneDone& done = {});
 
 }  // namespace xval

@@ -51,19 +51,24 @@ ExportThrough blenderThrough(const RenderRequest& request) {
 }
 
 // Many scenes in one Blender process (blender/blender_render.h
-// renderBlenderBatch); the time-out is the first item's, per scene.
-std::vector<BatchOutcome> blenderBatch(const std::vector<BatchItem>& items, BlenderEngine engine) {
+// renderBlenderBatch); the time-out is the first item's, per scene; each
+// scene's outcome handed to item_done as soon as the worker finished it.
+std::vector<BatchOutcome> blenderBatch(const std::vector<BatchItem>& items, BlenderEngine engine,
+                                       const BatchItemDone& item_done) {
   std::vector<BlenderBatchScene> scenes;
   for (const BatchItem& item : items) scenes.push_back({item.scene, item.request.work_dir, blenderThrough(item.request)});
   const double timeout = items.empty() ? kDefaultToolTimeoutSeconds : items.front().request.timeout_seconds;
-  std::vector<BatchOutcome> out;
-  for (BlenderBatchResult& r : renderBlenderBatch(scenes, timeout, engine)) {
+  auto outcome = [](const BlenderBatchResult& r) {
     BatchOutcome o;
-    o.image = std::move(r.image);
-    o.error = std::move(r.error);
+    o.image = r.image;
+    o.error = r.error;
     setInfo(&o.info, r.info);
-    out.push_back(std::move(o));
-  }
+    return o;
+  };
+  BlenderSceneDone scene_done;
+  if (item_done) scene_done = [&](size_t i, const BlenderBatchResult& r) { item_done(i, outcome(r)); };
+  std::vector<BatchOutcome> out;
+  for (const BlenderBatchResult& r : renderBlenderBatch(scenes, timeout, engine, scene_done)) out.push_back(outcome(r));
   return out;
 }
 
@@ -91,8 +96,8 @@ Renderer blenderRenderer() {
     setInfo(info, tool);
     return image;
   };
-  r.render_batch = [](const std::vector<BatchItem>& items) {
-    return blenderBatch(items, BlenderEngine::Cycles);
+  r.render_batch = [](const std::vector<BatchItem>& items, const BatchItemDone& item_done) {
+    return blenderBatch(items, BlenderEngine::Cycles, item_done);
   };
   return r;
 }

@@ -26,7 +26,8 @@ namespace xval::renderers {
 std::string blenderScriptMissing();              // renderers/blender.cpp
 RendererExport blenderExport(BlenderEngine engine);                 // renderers/blender.cpp
 ExportThrough blenderThrough(const RenderRequest& request);        // renderers/blender.cpp
-std::vector<BatchOutcome> blenderBatch(const std::vector<BatchItem>& items, BlenderEngine engine);  // renderers/blender.cpp
+std::vector<BatchOutcome> blenderBatch(const std::vector<BatchItem>& items, BlenderEngine engine,
+                                       const BatchItemDone& item_done);  // renderers/blender.cpp
 
 Renderer eeveeRenderer() {
   Renderer r;
@@ -45,8 +46,8 @@ Renderer eeveeRenderer() {
     setInfo(info, tool);
     return image;
   };
-  r.render_batch = [](const std::vector<BatchItem>& items) {
-    return blenderBatch(items, BlenderEngine::Eevee);
+  r.render_batch = [](const std::vector<BatchItem>& items, const BatchItemDone& item_done) {
+    return blenderBatch(items, BlenderEngine::Eevee, item_done);
   };
   return r;
 }

@@ -76,6 +76,8 @@ struct BatchOutcome {
   std::string error;           // else why not (as render's exception would say)
   RenderInfo info;
 };
+// Called with an item's index and its final outcome (Renderer::render_batch).
+using BatchItemDone = std::function<void(size_t item, const BatchOutcome&)>;
 
 // The export an outside renderer's render reads (its scene files), for a
 // caller that decides the refusal by writing it into the work folder and
@@ -147,7 +149,11 @@ struct Renderer {
   // many scenes), each image the one `render` gives: one outcome per item,
   // in order; an item's failure is its own outcome's error, never another
   // item's. Optional (absent: scenes are rendered one at a time).
-  std::function<std::vector<BatchOutcome>(const std::vector<BatchItem>&)> render_batch;
+  // `item_done`, when not empty, is called once per item as soon as its
+  // outcome is final, possibly while the others still render (so a caller
+  // can use a scene's image before the batch ends), from one thread at a
+  // time, never concurrently; the returned outcomes are the same.
+  std::function<std::vector<BatchOutcome>(const std::vector<BatchItem>&, const BatchItemDone& item_done)> render_batch;
   // The share of a core one job keeps busy on average, measured (an outside
   // tool that mostly waits: below 1): the job pool runs up to 1 / cpu_share
   // such jobs per core beside each other (process/job_pool.h).

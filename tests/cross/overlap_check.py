@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Checks that `xval validate` compared a case while other jobs still rendered.
 
-Usage: overlap_check.py RUN
+Usage: overlap_check.py RUN [--batch RENDERER]
 
 From RUN/jobs.json, each job's record (RUN/<scene>/<renderer>.job.json:
 finished_unix, and seconds from its start) and each case's difference
@@ -11,7 +11,12 @@ ended and when it was compared, and requires:
 
   * every case compared after its own jobs ended (its diff images are no
     older than its last record), and
-  * some case compared before the run's last job ended (the overlap).
+  * some case compared before the run's last job ended (the overlap);
+  * with --batch RENDERER (a renderer whose jobs ran in one outside
+    process, Blender's worker): some case compared before that process
+    wrote its last scene's image (the newest RUN/*/RENDERER.work/RENDERER-*.exr,
+    the file the worker renders into), i.e. while the batch still rendered,
+    not only while its records were being written after it.
 
 Exit 0 when both hold, 1 when not, 2 when a file is missing or unreadable.
 """
@@ -21,7 +26,7 @@ import os
 import sys
 
 
-def main(run):
+def main(run, batch=None):
     try:
         with open(os.path.join(run, "jobs.json")) as f:
             plan = json.load(f)
@@ -44,6 +49,12 @@ def main(run):
     except (OSError, KeyError, ValueError) as e:
         print(f"overlap_check: {run}: {e}", file=sys.stderr)
         return 2
+    if batch:
+        images = glob.glob(os.path.join(run, "*", batch + ".work", batch + "-*.exr"))
+        if not images:
+            print(f"overlap_check: no {batch}.work/{batch}-*.exr in {run}", file=sys.stderr)
+            return 2
+        batch_last = max(os.stat(i).st_mtime for i in images)
     t0 = min(ended.values())
     print(f"last job: {last[1]}, ended at {last[0] - t0:.2f} s (times from the first job's end)")
     ok, overlap = True, []
@@ -59,11 +70,21 @@ def main(run):
         ok = False
     else:
         print(f"compared while {last[1]} still rendered: {', '.join(overlap)}")
+    if batch:
+        during = [scene for scene in ended if compared[scene] < batch_last]
+        print(f"{batch}'s worker wrote its last image at {batch_last - t0:.2f} s")
+        if not during:
+            print(f"no case was compared while {batch}'s worker still rendered", file=sys.stderr)
+            ok = False
+        else:
+            print(f"compared while {batch}'s worker still rendered: {', '.join(during)}")
     return 0 if ok else 1
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 2:
-        print(__doc__, file=sys.stderr)
-        sys.exit(2)
-    sys.exit(main(sys.argv[1]))
+    if len(sys.argv) == 2:
+        sys.exit(main(sys.argv[1]))
+    if len(sys.argv) == 4 and sys.argv[2] == "--batch":
+        sys.exit(main(sys.argv[1], sys.argv[3]))
+    print(__doc__, file=sys.stderr)
+    sys.exit(2)

@@ -161,10 +161,11 @@ JobRecord runJob(const Plan& plan, const RenderJob& job) {
   return endJob(plan, job, s);
 }
 
-std::vector<JobRecord> runJobBatch(const Plan& plan, const std::vector<size_t>& jobs) {
+std::vector<JobRecord> runJobBatch(const Plan& plan, const std::vector<size_t>& jobs, const JobDone& job_done) {
   std::vector<StartedJob> started;
   std::vector<renderers::BatchItem> items;
   std::vector<size_t> item_of;  // started[k]'s item, or SIZE_MAX for none
+  std::vector<size_t> job_of;   // an item's k in started
   const renderers::Renderer* renderer = nullptr;
   // The items point at the started jobs' scenes: `started` never reallocates.
   started.reserve(jobs.size());
@@ -183,15 +184,39 @@ std::vector<JobRecord> runJobBatch(const Plan& plan, const std::vector<size_t>& 
       renderer = &r;
       items.push_back({&*s.scene, s.request});
       item_of.back() = items.size() - 1;
+      job_of.push_back(started.size() - 1);
     } catch (const std::exception& e) {
       s.rec.error = e.what();
     }
   }
+  // A job ends (its images and record written) once, as soon as its
+  // outcome is final: for a batch item possibly while the batch renders on.
+  std::vector<JobRecord> records(started.size());
+  std::vector<char> ended(started.size(), 0);
+  auto end = [&](size_t k, const renderers::BatchOutcome* o, const std::string& batch_error) {
+    StartedJob& s = started[k];
+    const RenderJob& job = plan.jobs.at(jobs[k]);
+    if (item_of[k] != SIZE_MAX) {
+      try {
+        if (!batch_error.empty()) throw std::runtime_error(batch_error);
+        if (!o->image) throw std::runtime_error(o->error);
+        writeImages(plan, job, *s.scene, *o->image);
+        s.rec.setToolTimes(o->info);
+      } catch (const std::exception& e) {
+        s.rec.error = e.what();
+      }
+    }
+    records[k] = endJob(plan, job, s);
+    ended[k] = 1;
+    if (job_done) job_done(k, records[k]);
+  };
   std::vector<renderers::BatchOutcome> outcomes;
   std::string batch_error;
   if (!items.empty()) {
     try {
-      outcomes = renderer->render_batch(items);
+      outcomes = renderer->render_batch(items, [&](size_t item, const renderers::BatchOutcome& o) {
+        if (item < job_of.size() && !ended[job_of[item]]) end(job_of[item], &o, "");
+      });
       if (outcomes.size() != items.size())
         throw std::runtime_error(renderer->id + ": the batch returned " + std::to_string(outcomes.size()) +
                                  " outcomes for " + std::to_string(items.size()) + " scenes");
@@ -199,23 +224,8 @@ std::vector<JobRecord> runJobBatch(const Plan& plan, const std::vector<size_t>& 
       batch_error = e.what();
     }
   }
-  std::vector<JobRecord> records;
-  for (size_t k = 0; k < started.size(); ++k) {
-    StartedJob& s = started[k];
-    const RenderJob& job = plan.jobs.at(jobs[k]);
-    if (item_of[k] != SIZE_MAX) {
-      try {
-        if (!batch_error.empty()) throw std::runtime_error(batch_error);
-        const renderers::BatchOutcome& o = outcomes[item_of[k]];
-        if (!o.image) throw std::runtime_error(o.error);
-        writeImages(plan, job, *s.scene, *o.image);
-        s.rec.setToolTimes(o.info);
-      } catch (const std::exception& e) {
-        s.rec.error = e.what();
-      }
-    }
-    records.push_back(endJob(plan, job, s));
-  }
+  for (size_t k = 0; k < started.size(); ++k)
+    if (!ended[k]) end(k, item_of[k] != SIZE_MAX && batch_error.empty() ? &outcomes[item_of[k]] : nullptr, batch_error);
   return records;
 }
 
@@ -319,28 +329,15 @@ std::vector<JobRecord> runJobs(const Plan& plan, const std::vector<size_t>& todo
   };
   for (const Task& t : tasks) {
     queue.push(weightOf(t), [&, &task = t.jobs, batch = t.batch] {
-      // A job's exception is this job's error, and the compare step finds
-      // the job not done; the other jobs go on.
-      std::vector<JobRecord> recs;
-      try {
-        if (batch)
-          recs = runJobBatch(plan, task);
-        else
-          recs.push_back(runJob(plan, plan.jobs[task.front()]));
-      } catch (const std::exception& e) {
-        recs.assign(task.size(), JobRecord{});
-        for (auto& rec : recs) rec.error = e.what();
-      } catch (...) {
-        recs.assign(task.size(), JobRecord{});
-        for (auto& rec : recs) rec.error = "unknown exception";
-      }
-      std::vector<size_t> ready;  // scenes whose last job this task was
-      {
-        std::lock_guard<std::mutex> g(lock);
-        for (size_t k = 0; k < task.size(); ++k) {
-          const RenderJob& job = plan.jobs[task[k]];
-          const JobRecord& rec = recs.at(k);
-          out.at(position.at(task[k])) = rec;
+      // A job's record: kept, its progress line printed, and its case
+      // compared when it was the case's last job (for a batch, as each
+      // scene ends, while the batch renders on).
+      auto recordDone = [&](size_t index, const JobRecord& rec) {
+        bool ready = false;
+        {
+          std::lock_guard<std::mutex> g(lock);
+          const RenderJob& job = plan.jobs[index];
+          out.at(position.at(index)) = rec;
           const size_t n = ++done;
           const double el = std::chrono::duration<double>(Clock::now() - t_start).count();
           std::fprintf(stderr, "[%zu/%zu] %-32s %-9s %s %6.2f s   elapsed %.0f s, ~%.0f s left\n", n,
@@ -349,11 +346,38 @@ std::vector<JobRecord> runJobs(const Plan& plan, const std::vector<size_t>& todo
                        rec.seconds, el, el * double(todo.size() - n) / double(n));
           if (!rec.error.empty()) std::fprintf(stderr, "  %s\n", rec.error.c_str());
           if (!rec.not_expressible.empty()) std::fprintf(stderr, "  %s\n", rec.not_expressible.c_str());
-          if (--pending.at(scene_of.at(task[k])) == 0) ready.push_back(scene_of.at(task[k]));
+          ready = --pending.at(scene_of.at(index)) == 0;
         }
+        if (after_case && ready) queueAfterCase(scene_of.at(index), true);
+      };
+      // A job's exception is this job's error, and the compare step finds
+      // the job not done; the other jobs go on.
+      std::vector<char> recorded(task.size(), 0);
+      auto failRest = [&](const std::string& error) {
+        for (size_t k = 0; k < task.size(); ++k) {
+          if (recorded[k]) continue;
+          JobRecord rec;
+          rec.error = error;
+          recordDone(task[k], rec);
+        }
+      };
+      try {
+        if (batch) {
+          runJobBatch(plan, task, [&](size_t k, const JobRecord& rec) {
+            recorded.at(k) = 1;
+            recordDone(task[k], rec);
+          });
+          failRest("the batch ended without this job's record");
+        } else {
+          const JobRecord rec = runJob(plan, plan.jobs[task.front()]);
+          recorded[0] = 1;
+          recordDone(task.front(), rec);
+        }
+      } catch (const std::exception& e) {
+        failRest(e.what());
+      } catch (...) {
+        failRest("unknown exception");
       }
-      if (after_case)
-        for (size_t k : ready) queueAfterCase(k, true);
     });
   }
   if (after_case)

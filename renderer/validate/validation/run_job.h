@@ -25,8 +25,12 @@ std::vector<size_t> jobsToRun(const Plan& plan, bool resume);
 // Renders several jobs of one renderer that renders batches
 // (Renderer::render_batch: Blender's persistent worker) together, each job
 // with the same steps, checks and record as runJob; one record per job, in
-// order. Never throws for a job's failure.
-std::vector<JobRecord> runJobBatch(const Plan& plan, const std::vector<size_t>& jobs);
+// order. Never throws for a job's failure. `job_done`, when not empty, is
+// called once per job (its place k in `jobs`) as soon as its record is
+// written, for a scene Blender's worker finished while the batch renders
+// on (Renderer::render_batch's item_done), one call at a time.
+using JobDone = std::function<void(size_t k, const JobRecord&)>;
+std::vector<JobRecord> runJobBatch(const Plan& plan, const std::vector<size_t>& jobs, const JobDone& job_done = {});
 
 // How runJobs schedules.
 struct RunSettings {
