@@ -6,6 +6,9 @@
 #   shows a crash or a sanitizer report; sets `err` (its stderr) and `out`
 #   (its stdout) in the caller.
 # expect_in(TEXT WHAT): fails unless TEXT contains WHAT.
+# expect_eq(WHAT GOT WANT): fails, naming WHAT, unless GOT equals WANT.
+# get_json(VAR JSON KEY...): VAR = the member of the JSON text at the keys
+#   and indices given; fails, naming them, when it is absent.
 function(require_defined script)
   foreach(_v ${ARGN})
     if(NOT DEFINED ${_v})
@@ -35,4 +38,18 @@ function(expect_in text what)
   if(_at EQUAL -1)
     message(FATAL_ERROR "does not say \"${what}\"")
   endif()
+endfunction()
+
+function(expect_eq what got want)
+  if(NOT "${got}" STREQUAL "${want}")
+    message(FATAL_ERROR "${what}: \"${got}\", expected \"${want}\"")
+  endif()
+endfunction()
+
+function(get_json var json)
+  string(JSON _v ERROR_VARIABLE _no GET "${json}" ${ARGN})
+  if(_no)
+    message(FATAL_ERROR "results.json: ${ARGN}: ${_no}")
+  endif()
+  set(${var} "${_v}" PARENT_SCOPE)
 endfunction()

@@ -46,11 +46,6 @@ function(cases var)
   endforeach()
   set(${var} "${_names}" PARENT_SCOPE)
 endfunction()
-function(expect_eq what got want)
-  if(NOT "${got}" STREQUAL "${want}")
-    message(FATAL_ERROR "${what}: \"${got}\", expected \"${want}\"")
-  endif()
-endfunction()
 set(_r --renderers reference,povray)
 
 # 1. a, b, c; then a alone: all three kept in results.json and the report.
