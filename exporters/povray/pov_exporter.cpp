@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <variant>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -12,6 +14,7 @@
 #include "geometry/mesh.h"
 #include "geometry/model_textures.h"
 #include "geometry/scene_meshes.h"
+#include "povray/flat_triangles.h"
 #include "povray/gouraud_image.h"
 #include "povray/pigment_tree.h"
 #include "povray/pov_shading.h"
@@ -72,6 +75,29 @@ void writeMesh(std::ostream& o, const TriangleMesh& m, const Scene& s, bool text
   o << "}\n";
 }
 
+// Phong shading writes the normals; a triangle POV-Ray takes as flat is
+// shaded with its face normal (povray/flat_triangles.h): refused when that
+// is not the normal the reference shades it with.
+void refuseFlatTrianglesOffFace(const Scene& scene, const SceneMeshes& sm) {
+  for (size_t i = 0; i < sm.meshes.size(); ++i) {
+    const PovFlatTriangles f = povFlatTriangles(sm.meshes[i]);
+    if (f.off_face == 0) continue;
+    const SceneObject& object = scene.objects.at(sm.object[i]);
+    const MeshFile* file = std::get_if<MeshFile>(&object.shape);
+    char angle[64];
+    std::snprintf(angle, sizeof angle, "%.3g rad (%.3g degrees)", f.max_angle_rad, f.max_angle_rad * 180.0 / M_PI);
+    throw ExportError(
+        "POV-Ray export: " + (file ? "model file " + file->path.string() : std::string("a built-in shape")) +
+        ", mesh " + std::to_string(i) + ": " + std::to_string(f.off_face) + " of its " +
+        std::to_string(sm.meshes[i].triangles.size()) +
+        " triangles have three equal normals, which POV-Ray's mesh2 takes as a flat triangle and shades with "
+        "its face normal instead, and their normals are up to " + angle + " from that face normal (triangle " +
+        std::to_string(f.worst) + "; the bound is " + num(kPovFlatNormalBoundRad) +
+        " rad): POV-Ray would shade them with another normal than the reference renderer "
+        "(exporters/povray/flat_triangles.h)");
+  }
+}
+
 }  // namespace
 
 PovExport exportPov(const Scene& input, const std::filesystem::path& dir, const std::string& output_name) {
@@ -98,6 +124,7 @@ PovExport exportPov(const Scene& input, const std::filesystem::path& dir, const 
 
   const SceneMeshes sm = sceneMeshes(scene);
   const std::vector<TriangleMesh>& meshes = sm.meshes;
+  if (scene.shading == ShadingMode::Phong) refuseFlatTrianglesOffFace(scene, sm);
   // One texture, pigment tree and finish per material slot (export_common.h):
   // slot 0, the scene's, keeps the plain names (XvalMaterial, texture.png).
   const MaterialSlots slots = materialSlots(scene);
