@@ -111,8 +111,7 @@ void writeGoldenImage(const Image& img, const fs::path& file) {
     }
     spec.alpha_channel = 3;
     spec.attribute("compression", "zip");
-    spec.attribute("oiio:ColorSpace", "sRGB");  // as every image xval writes (image/image.h)
-    spec.attribute("xval:encoding", kColourEncoding);
+    spec.attribute("xval:encoding", kColourEncoding);  // as every image xval writes (image/image.h)
     std::vector<float> buf(n * size_t(nc));
     for (size_t i = 0; i < n; ++i) {
       std::copy_n(&img.rgba[i * 4], 4, &buf[i * nc]);

@@ -69,8 +69,10 @@ inline constexpr const char* kColourEncoding =
 
 // OpenEXR (32-bit float; channels R,G,B,A and, when present, raw.R, raw.G,
 // raw.B, Z, backfacing, incidence, albedo.R/G/B (only when present),
-// texel_edge and triangle_edge (each only when present); tagged oiio:ColorSpace
-// "sRGB", since the values are display-referred codes) or, by extension
+// texel_edge and triangle_edge (each only when present); its colour
+// encoding in the attribute xval:encoding, since OpenEXR has no attribute
+// for a transfer function and OpenImageIO 2.4 neither writes nor reads
+// oiio:ColorSpace in an EXR: it reads every EXR as "Linear") or, by extension
 // .png, a 16-bit RGBA PNG: alpha = coverage, colour unassociated as PNG
 // defines it (premultiplied colour / alpha), round(v * 65535) of the
 // clamped values, no gamma. Throws std::runtime_error naming the file.

@@ -69,10 +69,11 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
     // The colour channels hold display-referred code values: the models
     // work on stored texture codes and no transfer function is applied
     // (docs/scene-format.md), so a value of 0.5 is meant to be shown as the
-    // code 0.5, as the 2012 shader's render target showed it. That is what
-    // the sRGB tag tells a colour-managed viewer (the PNG of the same values
-    // carries the same tag); "Linear" would have it apply the sRGB curve.
-    spec.attribute("oiio:ColorSpace", "sRGB");
+    // code 0.5, as the 2012 shader's render target showed it. OpenEXR has
+    // no attribute for that, and OpenImageIO 2.4 drops oiio:ColorSpace when
+    // it writes an EXR (and reads every EXR back as "Linear"; measured with
+    // oiiotool --attrib oiio:ColorSpace sRGB): the encoding is said in
+    // xval:encoding, which every EXR and PNG xval writes carries.
     spec.attribute("xval:encoding", kColourEncoding);
     std::vector<float> buf(n * spec.nchannels);
     for (size_t i = 0; i < n; ++i) {

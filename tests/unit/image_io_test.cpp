@@ -3,6 +3,8 @@
 
 #include <filesystem>
 
+#include <OpenImageIO/imageio.h>
+
 #include "image/image.h"
 #include "image/image_header.h"
 #include "support/temp_files.h"
@@ -91,4 +93,22 @@ TEST(ImageIo, PreviewOfAThinImageKeepsEveryPixel) {
   const Image p = readImage(tmp("xval_thin.png"));
   EXPECT_FLOAT_EQ(p.pixel(333, 0)[0], 1.0f);  // mean of the in-bounds pixels 1998, 1999
   EXPECT_FLOAT_EQ(p.pixel(332, 0)[0], 0.0f);
+}
+
+// Every EXR and PNG xval writes says what its colour channels hold in
+// xval:encoding (OpenEXR has no attribute for a transfer function and
+// OpenImageIO 2.4 reads every EXR as "Linear"); the PNG reads as sRGB,
+// which the codes are, with its alpha.
+TEST(ImageIo, EveryImageSaysItsColourEncoding) {
+  const Image a = sample();
+  for (const char* name : {"xval_enc.exr", "xval_enc.png"}) {
+    writeImage(a, tmp(name));
+    auto in = OIIO::ImageInput::open(tmp(name).string());
+    ASSERT_TRUE(in) << name;
+    EXPECT_EQ(in->spec().get_string_attribute("xval:encoding"), std::string(kColourEncoding)) << name;
+    EXPECT_EQ(in->spec().nchannels >= 4, true) << name;
+  }
+  auto png = OIIO::ImageInput::open(tmp("xval_enc.png").string());
+  EXPECT_EQ(png->spec().get_string_attribute("oiio:ColorSpace"), "sRGB");
+  EXPECT_EQ(png->spec().alpha_channel, 3);
 }
