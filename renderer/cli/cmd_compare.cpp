@@ -70,7 +70,7 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
                      "every one of its pixels counts as covered and the %lld mask disagreements say nothing "
                      "about coverage; compare the EXRs (xval render -o OUT.exr) for the hit mask\n",
                      (a.has_alpha ? args->b : args->a).c_str(), m.mask_disagree);
-      if (!args->diff.empty()) writeImage(differenceImage(a, b), args->diff);
+      if (!args->diff.empty()) writeImage(differenceImage(a, b), args->diff, kDifferenceExrCompression);
       PerceptualMetrics pm = perceptualMetrics(a, b);
       if (args->json) {
         nlohmann::json j = nlohmann::json::parse(toJson(m, t, &pm));

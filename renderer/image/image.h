@@ -67,6 +67,23 @@ struct Image {
 inline constexpr const char* kColourEncoding =
     "display-referred code values: no transfer function applied (docs/scene-format.md)";
 
+// How the files xval writes are compressed: every codec below is lossless
+// (the pixels read back bit for bit: tests/unit/image_io_test.cpp), so the
+// choice trades file size for CPU only. zlib's default level 6 made
+// compression the largest CPU cost of a validate run (about a quarter of
+// the reference set's CPU, under perf); the choices and their measured
+// costs are in docs/performance.md ("What xval's own files cost").
+//   kRenderExrCompression      renders' EXRs (up to 17 float channels):
+//                              zlib at level 1
+//   kDifferenceExrCompression  difference EXRs (4 float channels): PIZ, the
+//                              fastest lossless codec on them and smaller
+//                              than zip
+//   kPngZlibLevel              every PNG (renders, previews, heat maps,
+//                              exported textures): zlib level 1
+inline constexpr const char* kRenderExrCompression = "zip:1";
+inline constexpr const char* kDifferenceExrCompression = "piz";
+inline constexpr int kPngZlibLevel = 1;
+
 // OpenEXR (32-bit float; channels R,G,B,A and, when present, raw.R, raw.G,
 // raw.B, Z, backfacing, incidence, albedo.R/G/B (only when present),
 // texel_edge and triangle_edge (each only when present); its colour
@@ -75,8 +92,12 @@ inline constexpr const char* kColourEncoding =
 // oiio:ColorSpace in an EXR: it reads every EXR as "Linear") or, by extension
 // .png, a 16-bit RGBA PNG: alpha = coverage, colour unassociated as PNG
 // defines it (premultiplied colour / alpha), round(v * 65535) of the
-// clamped values, no gamma. Throws std::runtime_error naming the file.
-void writeImage(const Image& img, const std::filesystem::path& file);
+// clamped values, no gamma. An EXR is compressed with exr_compression (an
+// OpenImageIO "compression" value: kRenderExrCompression or
+// kDifferenceExrCompression), a PNG at kPngZlibLevel. Throws
+// std::runtime_error naming the file.
+void writeImage(const Image& img, const std::filesystem::path& file,
+                const char* exr_compression = kRenderExrCompression);
 // An 8-bit RGB PNG for looking at (reports): the clamped colour over black,
 // box-filtered down by the smallest integer factor that brings the larger
 // side to at most max_side pixels.

@@ -32,7 +32,7 @@ void requireDecodable(const std::filesystem::path& file, int width, int height) 
     throw std::runtime_error("written incompletely: " + in->geterror());
 }
 
-void writeImage(const Image& img, const std::filesystem::path& file) {
+void writeImage(const Image& img, const std::filesystem::path& file, const char* exr_compression) {
   const std::string name = file.string();
   const std::string ext = lower(file.extension().string());
   if (ext != ".exr" && ext != ".png")
@@ -65,7 +65,7 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
       spec.z_channel = 4 + (raw ? 3 : 0);
     }
     spec.alpha_channel = 3;
-    spec.attribute("compression", "zip");
+    spec.attribute("compression", exr_compression);
     // The colour channels hold display-referred code values: the models
     // work on stored texture codes and no transfer function is applied
     // (docs/scene-format.md), so a value of 0.5 is meant to be shown as the
@@ -101,6 +101,7 @@ void writeImage(const Image& img, const std::filesystem::path& file) {
     // would take it as premultiplied and divide by alpha again.
     spec.attribute("oiio:UnassociatedAlpha", 1);
     spec.attribute("xval:encoding", kColourEncoding);
+    spec.attribute("png:compressionLevel", kPngZlibLevel);
     std::vector<uint16_t> buf(n * 4);
     auto code = [](float v) { return uint16_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 65535.0f)); };
     for (size_t i = 0; i < n; ++i) {
@@ -146,6 +147,7 @@ void writePreviewPng(const Image& img, const std::filesystem::path& file, int ma
     auto out = OIIO::ImageOutput::create(tmp.string());
     if (!out) throw std::runtime_error("cannot create PNG: " + OIIO::geterror());
     OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::UINT8);
+    spec.attribute("png:compressionLevel", kPngZlibLevel);
     bool ok = out->open(tmp.string(), spec) && out->write_image(OIIO::TypeDesc::UINT8, px.data());
     ok = out->close() && ok;
     if (!ok) throw std::runtime_error("cannot write PNG: " + out->geterror());

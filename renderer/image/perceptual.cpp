@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include <lcms2.h>
@@ -46,25 +47,112 @@ double yiqDelta(glm::dvec3 a, glm::dvec3 b) {
   return std::sqrt(0.5053 * d.x * d.x + 0.299 * d.y * d.y + 0.1957 * d.z * d.z);
 }
 
+PerceptualImage perceptualImage(const Image& img) {
+  PerceptualImage p;
+  p.width = img.width, p.height = img.height;
+  const size_t n = size_t(img.width) * img.height;
+  p.luma.resize(n);
+  p.lab.assign(n, glm::dvec3(0.0));
+  for (size_t i = 0; i < n; ++i) {
+    const float* px = &img.rgba[i * 4];
+    const glm::dvec3 c(px[0], px[1], px[2]);
+    p.luma[i] = models::luma(c);
+    if (px[3] > 0) p.lab[i] = srgbToLab(c);
+  }
+  return p;
+}
+
 PerceptualMetrics perceptualMetrics(const Image& a, const Image& b) {
+  return perceptualMetrics(a, perceptualImage(a), b, perceptualImage(b));
+}
+
+namespace {
+// SSIM's window: an 11x11 Gaussian (sigma 1.5), the weight of tap
+// (dx, dy) the product w[dx + 5] * w[dy + 5], clipped at the border and
+// normalised by the sum of the weights inside the image.
+struct SsimWindow {
+  double w[11];
+  double k[121];       // w[dx + 5] * w[dy + 5], row by row (dy outer)
+  double sum_full;     // the sum of k in that order: a window inside the image
+  double k_full[121];  // k / sum_full
+  SsimWindow() {
+    for (int i = 0; i < 11; ++i) w[i] = std::exp(-((i - 5) * (i - 5)) / (2.0 * 1.5 * 1.5));
+    sum_full = 0;
+    for (int dy = -5; dy <= 5; ++dy)
+      for (int dx = -5; dx <= 5; ++dx) {
+        k[(dy + 5) * 11 + dx + 5] = w[dx + 5] * w[dy + 5];
+        sum_full += k[(dy + 5) * 11 + dx + 5];
+      }
+    for (int i = 0; i < 121; ++i) k_full[i] = k[i] / sum_full;
+  }
+};
+
+// SSIM of the window centred on (x, y). Every sum runs over the taps in
+// the same order (dy outer, dx inner), with the same weights, whether the
+// window lies inside the image (no bound checks, the precomputed sum and
+// normalised weights) or is clipped at its border, so both give the value
+// of one formula bit for bit.
+double ssimAt(const SsimWindow& sw_, const std::vector<double>& ya, const std::vector<double>& yb, int W, int H,
+              int x, int y) {
+  const double C1 = 0.01 * 0.01, C2 = 0.03 * 0.03;
+  double sw = 0, ma = 0, mb = 0, va = 0, vb = 0, cov = 0;
+  if (x >= 5 && y >= 5 && x + 5 < W && y + 5 < H) {
+    const double* ra = &ya[size_t(y - 5) * W + (x - 5)];
+    const double* rb = &yb[size_t(y - 5) * W + (x - 5)];
+    for (int dy = 0; dy < 11; ++dy)
+      for (int dx = 0; dx < 11; ++dx) {
+        const double k = sw_.k[dy * 11 + dx];
+        ma += k * ra[size_t(dy) * W + dx], mb += k * rb[size_t(dy) * W + dx];
+      }
+    sw = sw_.sum_full;
+    ma /= sw, mb /= sw;
+    for (int dy = 0; dy < 11; ++dy)
+      for (int dx = 0; dx < 11; ++dx) {
+        const double k = sw_.k_full[dy * 11 + dx];
+        const double da = ra[size_t(dy) * W + dx] - ma, db = rb[size_t(dy) * W + dx] - mb;
+        va += k * da * da, vb += k * db * db, cov += k * da * db;
+      }
+  } else {
+    for (int dy = -5; dy <= 5; ++dy)
+      for (int dx = -5; dx <= 5; ++dx) {
+        const int xx = x + dx, yy = y + dy;
+        if (xx < 0 || yy < 0 || xx >= W || yy >= H) continue;
+        const double k = sw_.k[(dy + 5) * 11 + dx + 5];
+        sw += k, ma += k * ya[size_t(yy) * W + xx], mb += k * yb[size_t(yy) * W + xx];
+      }
+    ma /= sw, mb /= sw;
+    for (int dy = -5; dy <= 5; ++dy)
+      for (int dx = -5; dx <= 5; ++dx) {
+        const int xx = x + dx, yy = y + dy;
+        if (xx < 0 || yy < 0 || xx >= W || yy >= H) continue;
+        const double k = sw_.k[(dy + 5) * 11 + dx + 5] / sw;
+        const double da = ya[size_t(yy) * W + xx] - ma, db = yb[size_t(yy) * W + xx] - mb;
+        va += k * da * da, vb += k * db * db, cov += k * da * db;
+      }
+  }
+  return ((2 * ma * mb + C1) * (2 * cov + C2)) / ((ma * ma + mb * mb + C1) * (va + vb + C2));
+}
+}  // namespace
+
+PerceptualMetrics perceptualMetrics(const Image& a, const PerceptualImage& pa, const Image& b,
+                                    const PerceptualImage& pb) {
   PerceptualMetrics m;
   const int W = a.width, H = a.height;
+  if (pa.width != W || pa.height != H || pb.width != W || pb.height != H || b.width != W || b.height != H)
+    throw std::invalid_argument("perceptualMetrics: the images and their perceptual images differ in size");
   auto covered = [&](int x, int y) { return a.pixel(x, y)[3] > 0 && b.pixel(x, y)[3] > 0; };
   auto rgb = [](const Image& img, int x, int y) {
     const float* p = img.pixel(x, y);
     return glm::dvec3(p[0], p[1], p[2]);
   };
-  std::vector<double> ya(size_t(W) * H), yb(size_t(W) * H);
   long long n = 0;
   double de_sum = 0, yiq_sum = 0;
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
-      glm::dvec3 ca = rgb(a, x, y), cb = rgb(b, x, y);
-      ya[size_t(y) * W + x] = models::luma(ca);
-      yb[size_t(y) * W + x] = models::luma(cb);
       if (!covered(x, y)) continue;
-      double de = ciede2000(srgbToLab(ca), srgbToLab(cb));
-      double dy = yiqDelta(ca, cb);
+      const size_t i = size_t(y) * W + x;
+      double de = ciede2000(pa.lab[i], pb.lab[i]);
+      double dy = yiqDelta(rgb(a, x, y), rgb(b, x, y));
       de_sum += de, yiq_sum += dy, ++n;
       m.ciede2000_max = std::max(m.ciede2000_max, de);
       m.yiq_max = std::max(m.yiq_max, dy);
@@ -72,34 +160,13 @@ PerceptualMetrics perceptualMetrics(const Image& a, const Image& b) {
   if (n == 0) return m;
   m.ciede2000_mean = de_sum / double(n);
   m.yiq_mean = yiq_sum / double(n);
-  // SSIM with an 11x11 Gaussian window (sigma 1.5), clipped at the border.
-  double w[11];
-  for (int i = 0; i < 11; ++i) w[i] = std::exp(-((i - 5) * (i - 5)) / (2.0 * 1.5 * 1.5));
-  const double C1 = 0.01 * 0.01, C2 = 0.03 * 0.03;
+  static const SsimWindow window;
   double ssim_sum = 0;
   long long windows = 0;
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
       if (!covered(x, y)) continue;
-      double sw = 0, ma = 0, mb = 0;
-      for (int dy = -5; dy <= 5; ++dy)
-        for (int dx = -5; dx <= 5; ++dx) {
-          int xx = x + dx, yy = y + dy;
-          if (xx < 0 || yy < 0 || xx >= W || yy >= H) continue;
-          double k = w[dx + 5] * w[dy + 5];
-          sw += k, ma += k * ya[size_t(yy) * W + xx], mb += k * yb[size_t(yy) * W + xx];
-        }
-      ma /= sw, mb /= sw;
-      double va = 0, vb = 0, cov = 0;
-      for (int dy = -5; dy <= 5; ++dy)
-        for (int dx = -5; dx <= 5; ++dx) {
-          int xx = x + dx, yy = y + dy;
-          if (xx < 0 || yy < 0 || xx >= W || yy >= H) continue;
-          double k = w[dx + 5] * w[dy + 5] / sw;
-          double da = ya[size_t(yy) * W + xx] - ma, db = yb[size_t(yy) * W + xx] - mb;
-          va += k * da * da, vb += k * db * db, cov += k * da * db;
-        }
-      ssim_sum += ((2 * ma * mb + C1) * (2 * cov + C2)) / ((ma * ma + mb * mb + C1) * (va + vb + C2));
+      ssim_sum += ssimAt(window, pa.luma, pb.luma, W, H, x, y);
       ++windows;
     }
   m.ssim = ssim_sum / double(windows);

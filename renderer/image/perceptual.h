@@ -17,6 +17,8 @@
 //              pixels both images cover.
 #pragma once
 
+#include <vector>
+
 #include <glm/glm.hpp>
 
 #include "image/image.h"
@@ -33,7 +35,23 @@ struct PerceptualMetrics {
   double yiq_mean = 0.0, yiq_max = 0.0;
 };
 
+// What perceptualMetrics reads of one image, computed once for every pair
+// the image is in (a case of n renders has n - 1 pairs per render): each
+// pixel's luma (models::luma) and, where the image covers the pixel
+// (alpha > 0), its srgbToLab; (0, 0, 0) elsewhere. The metrics from it are
+// bit for bit those computed from the images alone (the same operations
+// on the same values).
+struct PerceptualImage {
+  int width = 0, height = 0;
+  std::vector<double> luma;
+  std::vector<glm::dvec3> lab;
+};
+PerceptualImage perceptualImage(const Image& img);
+
 // Over the pixels both images cover (alpha > 0).
 PerceptualMetrics perceptualMetrics(const Image& a, const Image& b);
+// The same from each image's perceptualImage (pa of a, pb of b).
+PerceptualMetrics perceptualMetrics(const Image& a, const PerceptualImage& pa, const Image& b,
+                                    const PerceptualImage& pb);
 
 }  // namespace xval

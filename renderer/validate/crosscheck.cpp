@@ -93,7 +93,7 @@ int crosscheck(const CrosscheckRequest& request) {
   Image ext = renderer.render(scene, render_request, &info);
   writeImage(ext, dir / (request.renderer + ".exr"));
   CompareMetrics m = compareImages(ref, ext, tol);
-  writeImage(differenceImage(ref, ext), dir / "diff.exr");
+  writeImage(differenceImage(ref, ext), dir / "diff.exr", kDifferenceExrCompression);
   PerceptualMetrics pm = perceptualMetrics(ref, ext);
   nlohmann::json j = nlohmann::json::parse(toJson(m, tol, &pm));
   j["scene"] = scene.name;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <mutex>
+#include <optional>
 #include <cstdio>
 #include <exception>
 #include <map>
@@ -44,6 +45,11 @@ struct Render {
   JobRecord rec;
   Image image;
   std::string error;
+  std::optional<PerceptualImage> perceptual;  // of image, once its first pair needs it
+  const PerceptualImage& perceptualOnce() {
+    if (!perceptual) perceptual = perceptualImage(image);
+    return *perceptual;
+  }
 };
 using Renders = std::map<std::string, Render>;  // by renderer id
 
@@ -135,9 +141,9 @@ J comparePair(const CompareContext& cx, const Scene& scene, const renderers::Ren
     A.image.triangle_edge = diagnostics->triangle_edge;
   }
   CompareMetrics m = compareImages(A.image, B.image, tol);
-  PerceptualMetrics pm = perceptualMetrics(A.image, B.image);
+  PerceptualMetrics pm = perceptualMetrics(A.image, A.perceptualOnce(), B.image, B.perceptualOnce());
   const Image diff = differenceImage(A.image, B.image);
-  writeImage(diff, cx.plan.dir / scene.name / ("diff_" + key + ".exr"));
+  writeImage(diff, cx.plan.dir / scene.name / ("diff_" + key + ".exr"), kDifferenceExrCompression);
   jp["heat_map"] = writeHeatMapPng(diff, cx.plan.dir, scene.name, key);  // the report only shows it
   std::map<std::string, const Image*> images;
   // The renders of the scene (a geometry check's passes are no render of it).
