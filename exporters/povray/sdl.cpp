@@ -34,7 +34,11 @@ std::string num(double v) {
   char buf[40];
   const int first = std::isfinite(v) ? std::max(6, shortestDigits(v)) : 6;
   for (int prec = first; prec <= 17; ++prec) {
-    const int n = std::snprintf(buf, sizeof buf, "%.*g", prec, v);
+    // std::to_chars with a precision prints what printf's "%.*g" prints in
+    // the C locale (the standard defines it so), without printf's cost.
+    const auto w = std::to_chars(buf, buf + sizeof buf - 1, v, std::chars_format::general, prec);
+    *w.ptr = '\0';
+    const int n = int(w.ptr - buf);
     double back = 0.0;
     const auto r = std::from_chars(buf, buf + n, back);
     if (r.ec == std::errc() && r.ptr == buf + n && back == v) break;

@@ -3,7 +3,13 @@
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <memory>
+#include <mutex>
+#include <string>
+#include <string_view>
+#include <vector>
 #include <stdexcept>
 
 #include "files/atomic_write.h"
@@ -128,6 +134,32 @@ Texture loadTexture(const TextureSpec& spec) {
   return t;
 }
 
+namespace {
+// The textures writeTexturePng has encoded, with their PNG bytes.
+struct EncodedTexture {
+  int width = 0, height = 0;
+  bool is8 = true;
+  std::string codes;  // the code values' bytes
+  std::string png;
+};
+struct TexturePngMemo {
+  std::mutex lock;
+  std::vector<EncodedTexture> entries;
+  size_t bytes = 0;
+};
+TexturePngMemo& texturePngMemo() {
+  static TexturePngMemo memo;
+  return memo;
+}
+
+std::string readWholeFile(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in.good() && !in.eof()) throw std::runtime_error(file.string() + ": cannot read back the PNG just written");
+  return bytes;
+}
+}  // namespace
+
 void writeTexturePng(const Texture& t, const std::filesystem::path& file) {
   const size_t n = size_t(t.width) * t.height * 3;
   const bool is8 = t.rgb8.size() == n, is16 = !is8 && t.rgb16.size() == n;
@@ -135,6 +167,19 @@ void writeTexturePng(const Texture& t, const std::filesystem::path& file) {
     throw std::runtime_error(file.string() + ": texture has no 8-bit or 16-bit codes to write");
   const OIIO::TypeDesc type = is8 ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::UINT16;
   const void* data = is8 ? static_cast<const void*>(t.rgb8.data()) : t.rgb16.data();
+  const std::string_view codes(static_cast<const char*>(data), n * (is8 ? 1 : 2));
+  TexturePngMemo& memo = texturePngMemo();
+  {
+    std::lock_guard<std::mutex> hold(memo.lock);
+    for (const EncodedTexture& e : memo.entries)
+      if (e.width == t.width && e.height == t.height && e.is8 == is8 && e.codes == codes) {
+        // Our own writer checks every write (files/atomic_write.h); the bytes
+        // decoded whole when they were encoded.
+        writeFileAtomically(file, e.png);
+        return;
+      }
+  }
+  std::string png;
   writeFileAtomically(file, [&](const std::filesystem::path& tmp) {
     auto out = OIIO::ImageOutput::create(tmp.string());
     if (!out) throw std::runtime_error("cannot create PNG: " + OIIO::geterror());
@@ -143,8 +188,15 @@ void writeTexturePng(const Texture& t, const std::filesystem::path& file) {
     if (!out->open(tmp.string(), spec) || !out->write_image(type, data) || !out->close())
       throw std::runtime_error("cannot write PNG: " + out->geterror());
     requireDecodable(tmp, t.width, t.height);
+    png = readWholeFile(tmp);
     return true;
   });
+  std::lock_guard<std::mutex> hold(memo.lock);
+  if (memo.bytes + codes.size() + png.size() > kTexturePngMemoBytes) return;
+  for (const EncodedTexture& e : memo.entries)
+    if (e.width == t.width && e.height == t.height && e.is8 == is8 && e.codes == codes) return;  // another thread's
+  memo.bytes += codes.size() + png.size();
+  memo.entries.push_back({t.width, t.height, is8, std::string(codes), std::move(png)});
 }
 
 }  // namespace xval

@@ -7,6 +7,10 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "support/temp_files.h"
@@ -133,5 +137,48 @@ TEST(TextureIo, FloatTexturesAreRefusedByTheExporters) {
     EXPECT_NE(std::string(e.what()).find("grey.exr"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("16-bit"), std::string::npos) << e.what();
   }
+  fs::remove_all(dir);
+}
+
+// writeTexturePng encodes each distinct texture once per process and writes
+// its kept bytes again: every file still holds exactly its own texture's
+// codes. Textures differing in one code, in bit depth alone (the same
+// values as 8 and as 16 bits) or in shape alone (the same codes as 4x2 and
+// 2x4) each get their own PNG, and a texture written again gets the
+// same bytes as the first time.
+TEST(TextureIo, EachTextureFileHoldsItsOwnCodesWhenEncodingsAreKept) {
+  const fs::path dir = freshDir("memo");
+  auto make8 = [](int w, int h, unsigned char first) {
+    Texture t;
+    t.width = w, t.height = h;
+    for (int i = 0; i < w * h * 3; ++i) t.rgb8.push_back((unsigned char)(i * 37 + 11));
+    t.rgb8[0] = first;
+    return t;
+  };
+  Texture a = make8(4, 2, 5), b = make8(4, 2, 6), c = make8(2, 4, 5);
+  Texture a16 = a;
+  a16.rgb16.assign(a.rgb8.begin(), a.rgb8.end());
+  a16.rgb8.clear();
+  const std::vector<std::pair<const Texture*, std::string>> writes = {
+      {&a, "a1.png"}, {&b, "b.png"}, {&c, "c.png"}, {&a16, "a16.png"}, {&a, "a2.png"}, {&c, "c2.png"}};
+  for (const auto& [t, name] : writes) writeTexturePng(*t, dir / name);
+  for (const auto& [t, name] : writes) {
+    OIIO::TypeDesc format;
+    const std::vector<std::uint16_t> got = readRgbCodes(dir / name, format);
+    const bool is8 = !t->rgb8.empty();
+    EXPECT_EQ(format, is8 ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::UINT16) << name;
+    auto in = OIIO::ImageInput::open((dir / name).string());
+    ASSERT_TRUE(in) << name;
+    EXPECT_EQ(in->spec().width, t->width) << name;
+    ASSERT_EQ(got.size(), size_t(t->width) * t->height * 3) << name;
+    for (size_t i = 0; i < got.size(); ++i)
+      ASSERT_EQ(got[i], is8 ? unsigned(t->rgb8[i]) * 257 : unsigned(t->rgb16[i])) << name << " code " << i;
+  }
+  auto bytes = [&](const char* name) {
+    std::ifstream in(dir / name, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  EXPECT_EQ(bytes("a1.png"), bytes("a2.png"));
+  EXPECT_EQ(bytes("c.png"), bytes("c2.png"));
   fs::remove_all(dir);
 }
