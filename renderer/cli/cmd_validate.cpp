@@ -327,8 +327,10 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
         // Each case is compared as soon as its jobs are done, in the same
         // pool as the renders (run_job.h AfterCase); the verdict is written
         // once every case is compared (compare_step.h CaseComparer).
-        v::CaseComparer comparer(plan, sections(*args));
-        const v::AfterCase compare_case{[&comparer](size_t k) { comparer.compare(k); }, 1.0};
+        // The jobs hand their images to the compares (image_handoff.h).
+        v::ImageHandoff images;
+        v::CaseComparer comparer(plan, sections(*args), &images);
+        const v::AfterCase compare_case{[&comparer](size_t k) { comparer.compare(k); }, 1.0, &images};
         v::runJobs(plan, todo, settingsOf(*args), &compare_case);
         return withJunit(plan, comparer.finish(), args->junit);
       } catch (const std::exception& e) {

@@ -94,10 +94,13 @@ inline constexpr int kPngZlibLevel = 1;
 // defines it (premultiplied colour / alpha), round(v * 65535) of the
 // clamped values, no gamma. An EXR is compressed with exr_compression (an
 // OpenImageIO "compression" value: kRenderExrCompression or
-// kDifferenceExrCompression), a PNG at kPngZlibLevel. Throws
+// kDifferenceExrCompression), a PNG at kPngZlibLevel. Every image is read
+// back before it is renamed into place (requireDecodable); with read_back,
+// that read is readImage's and its image is stored there (what
+// readImage(file) returns, without decoding the file again). Throws
 // std::runtime_error naming the file.
 void writeImage(const Image& img, const std::filesystem::path& file,
-                const char* exr_compression = kRenderExrCompression);
+                const char* exr_compression = kRenderExrCompression, Image* read_back = nullptr);
 // An 8-bit RGB PNG for looking at (reports): the clamped colour over black,
 // box-filtered down by the smallest integer factor that brings the larger
 // side to at most max_side pixels.

@@ -32,7 +32,7 @@ void requireDecodable(const std::filesystem::path& file, int width, int height) 
     throw std::runtime_error("written incompletely: " + in->geterror());
 }
 
-void writeImage(const Image& img, const std::filesystem::path& file, const char* exr_compression) {
+void writeImage(const Image& img, const std::filesystem::path& file, const char* exr_compression, Image* read_back) {
   const std::string name = file.string();
   const std::string ext = lower(file.extension().string());
   if (ext != ".exr" && ext != ".png")
@@ -113,7 +113,9 @@ void writeImage(const Image& img, const std::filesystem::path& file, const char*
   }
   ok = out->close() && ok;
   if (!ok) throw std::runtime_error("cannot write image: " + out->geterror());
-  requireDecodable(tmp_path, img.width, img.height);
+  // The read-back that checks the write is also the image handed back.
+  if (read_back) *read_back = readImage(tmp_path, img.width, img.height);
+  else requireDecodable(tmp_path, img.width, img.height);
   return true;
   });
 }

@@ -57,11 +57,12 @@ using Renders = std::map<std::string, Render>;  // by renderer id
 struct CompareContext {
   const Plan& plan;
   const ToleranceTable table;
+  ImageHandoff* images = nullptr;  // the renders this run's jobs left (image_handoff.h), or null
 };
 
 // The job's render: its record checked against the plan, then its EXR
 // (none when the renderer declared the scene not expressible).
-Render loadRender(const Plan& plan, const RenderJob& job) {
+Render loadRender(const Plan& plan, const RenderJob& job, ImageHandoff* images) {
   Render r;
   r.rec = readRecord(plan, job);
   if (!r.rec.present) {
@@ -73,7 +74,8 @@ Render loadRender(const Plan& plan, const RenderJob& job) {
               r.rec.input_hash + ", the plan's is " + job.input_hash + "): run the job again";
   } else if (r.rec.not_expressible.empty()) {
     try {
-      r.image = readImage(plan.dir / job.exr());
+      std::optional<Image> kept = images ? images->take(plan.dir / job.exr()) : std::nullopt;
+      r.image = kept ? std::move(*kept) : readImage(plan.dir / job.exr());
     } catch (const std::exception& e) {
       r.error = std::string("the record says ok but the image cannot be read: ") + e.what();
     }
@@ -241,7 +243,7 @@ J compareCase(const CompareContext& cx, size_t k) {
     const renderers::Renderer& r = renderers::registry().at(job.renderer);
     if (r.geometry_passes) geometry_jobs.push_back(&job);
     else rs.push_back(&r);
-    renders[job.renderer] = loadRender(plan, job);
+    renders[job.renderer] = loadRender(plan, job, cx.images);
     jc["renders"][job.renderer] = renderJson(job, renders[job.renderer]);
   }
   if (!ps.left_out.empty()) {
@@ -299,12 +301,12 @@ struct CaseComparer::State {
   std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
 };
 
-CaseComparer::CaseComparer(const Plan& plan, const ReportSections& sections) {
+CaseComparer::CaseComparer(const Plan& plan, const ReportSections& sections, ImageHandoff* images) {
   J jsections = sectionsJson(sections, plan.dir);  // fails early on a folder with no results
   // The old verdict must not outlive this run: whatever stops it from here
   // on (an error, a kill) leaves no results.json or report.html at all.
   removeVerdict(plan);
-  state_.reset(new State{plan, std::move(jsections), CompareContext{plan, loadTolerances(plan.tolerances_path)},
+  state_.reset(new State{plan, std::move(jsections), CompareContext{plan, loadTolerances(plan.tolerances_path), images},
                          std::vector<J>(plan.scenes.size()), std::vector<std::exception_ptr>(plan.scenes.size())});
 }
 

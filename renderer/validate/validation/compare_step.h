@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "validate/report.h"
+#include "validate/validation/image_handoff.h"
 #include "validate/validation/plan.h"
 
 namespace xval::validation {
@@ -41,7 +42,9 @@ class CaseComparer {
  public:
   // Throws (before anything is compared) when the sections' folders hold no
   // results or the tolerance file cannot be read.
-  CaseComparer(const Plan& plan, const ReportSections& sections);
+  // With `images`, a case takes the renders its jobs left there
+  // (image_handoff.h) instead of reading their EXRs.
+  CaseComparer(const Plan& plan, const ReportSections& sections, ImageHandoff* images = nullptr);
   ~CaseComparer();
   // Compares plan.scenes[k] (every pair, the difference images into its
   // folder) and prints a progress line. Never throws (the case's exception

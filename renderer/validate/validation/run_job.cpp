@@ -55,7 +55,10 @@ renderers::RenderRequest requestFor(const Plan& plan, const RenderJob& job, cons
 // The job's images: its EXR and preview PNG. A geometry check's job
 // (plan.h) first writes the reference's passes of the same scene beside
 // them, and its preview is a picture of its passes (passesPreview).
-void writeImages(const Plan& plan, const RenderJob& job, const Scene& scene, const Image& image) {
+// With `images`, the EXR as read back is left there for the case's compare
+// (image_handoff.h), once the preview is written too.
+void writeImages(const Plan& plan, const RenderJob& job, const Scene& scene, const Image& image,
+                 ImageHandoff* images) {
   const renderers::Renderer& renderer = renderers::registry().at(job.renderer);
   if (renderer.geometry_passes) {
     writeImage(toImage(referenceGeometryPasses(scene)), plan.dir / job.reference_passes());
@@ -63,8 +66,10 @@ void writeImages(const Plan& plan, const RenderJob& job, const Scene& scene, con
     writePreviewPng(passesPreview(geometryPassesFromImage(image)), plan.dir / job.png(), kPreviewSide);
     return;
   }
-  writeImage(image, plan.dir / job.exr());
+  Image read_back;
+  writeImage(image, plan.dir / job.exr(), kRenderExrCompression, images ? &read_back : nullptr);
   writePreviewPng(image, plan.dir / job.png(), kPreviewSide);
+  if (images) images->put(plan.dir / job.exr(), std::move(read_back));
 }
 
 // A job between its start and its record.
@@ -145,14 +150,14 @@ JobRecord endJob(const Plan& plan, const RenderJob& job, const StartedJob& s) {
 
 }  // namespace
 
-JobRecord runJob(const Plan& plan, const RenderJob& job) {
+JobRecord runJob(const Plan& plan, const RenderJob& job, ImageHandoff* images) {
   StartedJob s = startJob(plan, job);
   if (s.scene) {
     try {
       const renderers::Renderer& renderer = renderers::registry().at(job.renderer);
       renderers::RenderInfo info;
       const Image image = renderer.render(*s.scene, s.request, &info);
-      writeImages(plan, job, *s.scene, image);
+      writeImages(plan, job, *s.scene, image, images);
       s.rec.setToolTimes(info);
     } catch (const std::exception& e) {
       s.rec.error = e.what();
@@ -161,7 +166,8 @@ JobRecord runJob(const Plan& plan, const RenderJob& job) {
   return endJob(plan, job, s);
 }
 
-std::vector<JobRecord> runJobBatch(const Plan& plan, const std::vector<size_t>& jobs, const JobDone& job_done) {
+std::vector<JobRecord> runJobBatch(const Plan& plan, const std::vector<size_t>& jobs, const JobDone& job_done,
+                                   ImageHandoff* images) {
   std::vector<StartedJob> started;
   std::vector<renderers::BatchItem> items;
   std::vector<size_t> item_of;  // started[k]'s item, or SIZE_MAX for none
@@ -200,7 +206,7 @@ std::vector<JobRecord> runJobBatch(const Plan& plan, const std::vector<size_t>& 
       try {
         if (!batch_error.empty()) throw std::runtime_error(batch_error);
         if (!o->image) throw std::runtime_error(o->error);
-        writeImages(plan, job, *s.scene, *o->image);
+        writeImages(plan, job, *s.scene, *o->image, images);
         s.rec.setToolTimes(o->info);
       } catch (const std::exception& e) {
         s.rec.error = e.what();
@@ -302,6 +308,7 @@ std::vector<Task> runTasks(const Plan& plan, const std::vector<size_t>& todo, co
 std::vector<JobRecord> runJobs(const Plan& plan, const std::vector<size_t>& todo, const RunSettings& settings,
                                const AfterCase* after_case) {
   const auto t_start = Clock::now();
+  ImageHandoff* const images = after_case ? after_case->images : nullptr;
   size_t done = 0;
   std::mutex lock;
   std::vector<JobRecord> out(todo.size());
@@ -363,13 +370,16 @@ std::vector<JobRecord> runJobs(const Plan& plan, const std::vector<size_t>& todo
       };
       try {
         if (batch) {
-          runJobBatch(plan, task, [&](size_t k, const JobRecord& rec) {
-            recorded.at(k) = 1;
-            recordDone(task[k], rec);
-          });
+          runJobBatch(
+              plan, task,
+              [&](size_t k, const JobRecord& rec) {
+                recorded.at(k) = 1;
+                recordDone(task[k], rec);
+              },
+              images);
           failRest("the batch ended without this job's record");
         } else {
-          const JobRecord rec = runJob(plan, plan.jobs[task.front()]);
+          const JobRecord rec = runJob(plan, plan.jobs[task.front()], images);
           recorded[0] = 1;
           recordDone(task.front(), rec);
         }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "validate/validation/image_handoff.h"
 #include "validate/validation/job_record.h"
 #include "validate/validation/plan.h"
 
@@ -17,7 +18,9 @@ namespace xval::validation {
 // failed render is in the returned (and written) record's error; when the
 // record itself cannot be written, the returned record is not `present`
 // and its error says why.
-JobRecord runJob(const Plan& plan, const RenderJob& job);
+// With `images`, its EXR as read back is left there for its case's compare
+// (image_handoff.h).
+JobRecord runJob(const Plan& plan, const RenderJob& job, ImageHandoff* images = nullptr);
 
 // The jobs not yet done (all of them unless resuming), in plan order.
 std::vector<size_t> jobsToRun(const Plan& plan, bool resume);
@@ -30,7 +33,8 @@ std::vector<size_t> jobsToRun(const Plan& plan, bool resume);
 // written, for a scene Blender's worker finished while the batch renders
 // on (Renderer::render_batch's item_done), one call at a time.
 using JobDone = std::function<void(size_t k, const JobRecord&)>;
-std::vector<JobRecord> runJobBatch(const Plan& plan, const std::vector<size_t>& jobs, const JobDone& job_done = {});
+std::vector<JobRecord> runJobBatch(const Plan& plan, const std::vector<size_t>& jobs, const JobDone& job_done = {},
+                                   ImageHandoff* images = nullptr);
 
 // How runJobs schedules.
 struct RunSettings {
@@ -52,6 +56,9 @@ inline constexpr size_t kMaxBatch = 32;
 struct AfterCase {
   std::function<void(size_t scene)> run;  // plan.scenes index; should not throw
   double weight = 1.0;                    // its share of a core (a compare is CPU-bound: 1)
+  // Where the jobs leave their images for `run` (image_handoff.h: what
+  // reading their EXRs would give, without decoding them again), or null.
+  ImageHandoff* images = nullptr;
 };
 
 // Runs the given jobs (indices into plan.jobs) as `settings` says, with a
