@@ -17,6 +17,8 @@
 #include <cstring>
 #include <fstream>
 #include <memory>
+#include <mutex>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string_view>
@@ -657,6 +659,103 @@ ChildRead readInChildProcess(const fs::path& real, const ModelLimits& lim) {
   return r;
 }
 
+// The child's reads this process has made, kept with the bytes of every
+// file the child opened (kChildReadMemoBytes in all): a validate run loads
+// each scene several times (its plan, its jobs, its compare), and the
+// forked Assimp read is most of a load. A kept read is used only when its
+// limits are the same and every file it opened still holds exactly the
+// bytes it held (read again and compared, never a time stamp); a read that
+// failed or refused a file is never kept.
+constexpr size_t kChildReadMemoBytes = size_t(256) << 20;
+
+struct KeptRead {
+  std::string key;  // the canonical path and every limit
+  std::vector<std::pair<fs::path, std::string>> files;
+  ChildRead read;
+  size_t bytes = 0;
+};
+struct ChildReadMemo {
+  std::mutex lock;
+  std::vector<KeptRead> kept;
+  size_t bytes = 0;
+};
+ChildReadMemo& childReadMemo() {
+  static ChildReadMemo memo;
+  return memo;
+}
+
+std::string readKey(const fs::path& real, const ModelLimits& l) {
+  std::ostringstream k;
+  k.precision(17);
+  k << real.string() << '\n'
+    << l.max_file_bytes << ' ' << l.max_total_bytes << ' ' << l.max_triangles << ' ' << l.max_vertices << ' '
+    << l.max_primitives << ' ' << l.max_nodes << ' ' << l.max_node_depth << ' ' << l.max_texture_bytes << ' '
+    << l.max_import_seconds;
+  return k.str();
+}
+
+// The file's bytes if it is a regular file of exactly `size` bytes.
+std::optional<std::string> bytesIfSize(const fs::path& file, size_t size) {
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec) || fs::file_size(file, ec) != size || ec) return std::nullopt;
+  std::ifstream in(file, std::ios::binary);
+  std::string b(size, '\0');
+  if (!in.read(b.data(), std::streamsize(size)) || in.peek() != std::char_traits<char>::eof()) return std::nullopt;
+  return b;
+}
+
+ChildRead readInChildProcessOnce(const fs::path& real, const ModelLimits& lim) {
+  const std::string key = readKey(real, lim);
+  ChildReadMemo& memo = childReadMemo();
+  {
+    std::unique_lock<std::mutex> hold(memo.lock);
+    for (const KeptRead& k : memo.kept) {
+      if (k.key != key) continue;
+      const KeptRead candidate = k;  // compared without the lock
+      hold.unlock();
+      bool same = true;
+      for (const auto& [file, bytes] : candidate.files) {
+        const std::optional<std::string> now = bytesIfSize(file, bytes.size());
+        if (!now || *now != bytes) {
+          same = false;
+          break;
+        }
+      }
+      if (same) return candidate.read;
+      break;
+    }
+  }
+  ChildRead r = readInChildProcess(real, lim);
+  if (!r.error.empty() || !r.refusals.empty()) return r;
+  // The files as they are now: had one changed during the read, the kept
+  // bytes would not match the next time and the file would be read again.
+  KeptRead k{key, {}, r, r.output.size()};
+  std::vector<fs::path> files = r.opened;
+  if (std::find(files.begin(), files.end(), real) == files.end()) files.push_back(real);
+  for (const fs::path& f : files) {
+    std::error_code ec;
+    const auto size = fs::file_size(f, ec);
+    if (ec || size > kChildReadMemoBytes) return r;
+    const std::optional<std::string> b = bytesIfSize(f, size_t(size));
+    if (!b) return r;
+    k.bytes += b->size();
+    k.files.emplace_back(f, *b);
+  }
+  std::lock_guard<std::mutex> hold(memo.lock);
+  memo.kept.erase(std::remove_if(memo.kept.begin(), memo.kept.end(),
+                                 [&](const KeptRead& e) {
+                                   if (e.key != key) return false;
+                                   memo.bytes -= e.bytes;
+                                   return true;
+                                 }),
+                  memo.kept.end());
+  if (memo.bytes + k.bytes <= kChildReadMemoBytes) {
+    memo.bytes += k.bytes;
+    memo.kept.push_back(std::move(k));
+  }
+  return r;
+}
+
 }  // namespace
 
 const std::vector<std::string>& modelFileExtensions() {
@@ -703,7 +802,7 @@ Model loadModelFile(const fs::path& file_in, const ModelLoadOptions& options) {
   if (ext == ".gltf") gltf_triangles = checkGltf(real, size, lim, io);
   if (ext == ".glb") gltf_triangles = checkGlb(real, size, lim, io);
 
-  const ChildRead child = readInChildProcess(real, lim);
+  const ChildRead child = readInChildProcessOnce(real, lim);
   if (!child.refusals.empty())
     throw ModelFileError(file + ": refers to a file that cannot be read: " + child.refusals.front());
   if (!child.error.empty()) {

@@ -78,11 +78,16 @@ inline constexpr const char* kColourEncoding =
 //   kDifferenceExrCompression  difference EXRs (4 float channels): PIZ, the
 //                              fastest lossless codec on them and smaller
 //                              than zip
-//   kPngZlibLevel              every PNG (renders, previews, heat maps,
-//                              exported textures): zlib level 1
+//   kPngZlibLevel, kPngFilter  every PNG (renders, previews, heat maps,
+//                              exported textures): zlib level 1, and no
+//                              row filter (libpng's PNG_FILTER_NONE; its
+//                              default tries all five on every row): on a
+//                              720x720 heat map 13.5 ms instead of 111 ms
+//                              at the defaults, and no larger
 inline constexpr const char* kRenderExrCompression = "zip:1";
 inline constexpr const char* kDifferenceExrCompression = "piz";
 inline constexpr int kPngZlibLevel = 1;
+inline constexpr int kPngFilter = 8;  // PNG_FILTER_NONE
 
 // OpenEXR (32-bit float; channels R,G,B,A and, when present, raw.R, raw.G,
 // raw.B, Z, backfacing, incidence, albedo.R/G/B (only when present),

@@ -102,6 +102,7 @@ void writeImage(const Image& img, const std::filesystem::path& file, const char*
     spec.attribute("oiio:UnassociatedAlpha", 1);
     spec.attribute("xval:encoding", kColourEncoding);
     spec.attribute("png:compressionLevel", kPngZlibLevel);
+    spec.attribute("png:filter", kPngFilter);
     std::vector<uint16_t> buf(n * 4);
     auto code = [](float v) { return uint16_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 65535.0f)); };
     for (size_t i = 0; i < n; ++i) {
@@ -150,6 +151,7 @@ void writePreviewPng(const Image& img, const std::filesystem::path& file, int ma
     if (!out) throw std::runtime_error("cannot create PNG: " + OIIO::geterror());
     OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::UINT8);
     spec.attribute("png:compressionLevel", kPngZlibLevel);
+    spec.attribute("png:filter", kPngFilter);
     bool ok = out->open(tmp.string(), spec) && out->write_image(OIIO::TypeDesc::UINT8, px.data());
     ok = out->close() && ok;
     if (!ok) throw std::runtime_error("cannot write PNG: " + out->geterror());

@@ -185,6 +185,7 @@ void writeTexturePng(const Texture& t, const std::filesystem::path& file) {
     if (!out) throw std::runtime_error("cannot create PNG: " + OIIO::geterror());
     OIIO::ImageSpec spec(t.width, t.height, 3, type);
     spec.attribute("png:compressionLevel", kPngZlibLevel);
+    spec.attribute("png:filter", kPngFilter);
     if (!out->open(tmp.string(), spec) || !out->write_image(type, data) || !out->close())
       throw std::runtime_error("cannot write PNG: " + out->geterror());
     requireDecodable(tmp, t.width, t.height);

@@ -472,3 +472,45 @@ TEST_F(ModelFile, Refusals) {
 
 }  // namespace
 }  // namespace xval
+
+namespace xval {
+namespace {
+
+// A model read again in the same process reuses Assimp's earlier read only
+// while every file that read opened holds the same bytes: a model file or
+// its material file rewritten in place with other bytes of the same size
+// (and the same time stamp) is read anew.
+TEST_F(ModelFile, AReadAgainSeesEveryChangedFileOfTheModel) {
+  write("tex/a.png", "image a");
+  write("tex/b.png", "image b");
+  write("m.mtl", "newmtl wood\nKd 1 1 1\nmap_Kd tex/a.png\n");
+  const std::string obj = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl wood\nf 1/1 2/2 3/3\n";
+  const auto f = write("one.obj", obj);
+  ModelLoadOptions o;
+  o.uvs = UvRequirement::ModelTextures;
+  auto textureOf = [&] {
+    const Model m = loadModelFile(f, o);
+    EXPECT_EQ(m.primitives.size(), 1u);
+    return m.primitives.empty() || !m.primitives[0].texture ? fs::path() : m.primitives[0].texture->file;
+  };
+  auto xOf = [&] {
+    const Model m = loadModelFile(f, o);
+    return m.primitives.at(0).mesh.positions.at(1).x;
+  };
+  EXPECT_EQ(textureOf(), fs::canonical(dir_ / "tex" / "a.png"));
+  EXPECT_EQ(textureOf(), fs::canonical(dir_ / "tex" / "a.png"));  // read again, unchanged
+  const auto stamp = fs::last_write_time(dir_ / "m.mtl");
+  write("m.mtl", "newmtl wood\nKd 1 1 1\nmap_Kd tex/b.png\n");
+  fs::last_write_time(dir_ / "m.mtl", stamp);
+  EXPECT_EQ(textureOf(), fs::canonical(dir_ / "tex" / "b.png"));
+  EXPECT_DOUBLE_EQ(xOf(), 1.0);
+  const auto obj_stamp = fs::last_write_time(f);
+  std::string moved = obj;
+  moved.replace(moved.find("v 1 0 0"), 7, "v 3 0 0");
+  write("one.obj", moved);
+  fs::last_write_time(f, obj_stamp);
+  EXPECT_DOUBLE_EQ(xOf(), 3.0);
+}
+
+}  // namespace
+}  // namespace xval
