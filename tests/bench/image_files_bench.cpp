@@ -5,8 +5,10 @@
 // channels), its difference from the float path's render (a difference
 // EXR: 4 float channels, small values, as between two renderers), and that
 // difference's heat map (8-bit RGB). Each is written with the settings
-// named in the benchmark, CPU time per write (with the read-back every
-// xval write makes) and the file size as a counter; and read once.
+// named in the benchmark: the process's CPU time per write (with the
+// read-back every xval write makes; OpenEXR compresses on threads of its
+// own, so the process's, not the thread's), the file size as a counter;
+// and the render's EXR read.
 //
 //   build/tests/bench/xval_image_files_bench [--benchmark_repetitions=3]
 //
@@ -14,6 +16,7 @@
 #include <benchmark/benchmark.h>
 
 #include <OpenImageIO/imageio.h>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <string>
@@ -35,7 +38,12 @@ struct Inputs {
   Image render, diff, heat;
   fs::path dir;
   Inputs() {
-    const Scene s = loadScene("reference/scenes/table2_knot_phong.json");
+    // Its tolerances name renderers, which this program (no registry)
+    // cannot check: they are left out; they do not change the render.
+    const std::string file = "reference/scenes/table2_knot_phong.json";
+    nlohmann::ordered_json j = nlohmann::ordered_json::parse(readJsonFile(file, "scene file"));
+    j.erase("tolerances");
+    const Scene s = parseScene(j.dump(), file);
     RenderOptions o = defaultOptions(s);
     o.precision = Precision::Double;
     render = renderScene(s, o);
@@ -96,13 +104,13 @@ void BM_HeatPngWrite_level1_noFilter(benchmark::State& s) { pngWrite(s, kPngZlib
 
 }  // namespace
 
-BENCHMARK(BM_RenderExrWrite_zip6)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_RenderExrWrite_zip1)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_RenderExrRead_zip6)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_RenderExrRead_zip1)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_DiffExrWrite_zip6)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_DiffExrWrite_piz)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_HeatPngWrite_level6_allFilters)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_HeatPngWrite_level1_allFilters)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_HeatPngWrite_level1_noFilter)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RenderExrWrite_zip6)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+BENCHMARK(BM_RenderExrWrite_zip1)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+BENCHMARK(BM_RenderExrRead_zip6)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+BENCHMARK(BM_RenderExrRead_zip1)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+BENCHMARK(BM_DiffExrWrite_zip6)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+BENCHMARK(BM_DiffExrWrite_piz)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+BENCHMARK(BM_HeatPngWrite_level6_allFilters)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+BENCHMARK(BM_HeatPngWrite_level1_allFilters)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+BENCHMARK(BM_HeatPngWrite_level1_noFilter)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 BENCHMARK_MAIN();
