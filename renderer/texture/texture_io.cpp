@@ -7,6 +7,7 @@
 #include <iterator>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -169,15 +170,18 @@ void writeTexturePng(const Texture& t, const std::filesystem::path& file) {
   const void* data = is8 ? static_cast<const void*>(t.rgb8.data()) : t.rgb16.data();
   const std::string_view codes(static_cast<const char*>(data), n * (is8 ? 1 : 2));
   TexturePngMemo& memo = texturePngMemo();
+  std::optional<std::string> kept;
   {
     std::lock_guard<std::mutex> hold(memo.lock);
     for (const EncodedTexture& e : memo.entries)
-      if (e.width == t.width && e.height == t.height && e.is8 == is8 && e.codes == codes) {
-        // Our own writer checks every write (files/atomic_write.h); the bytes
-        // decoded whole when they were encoded.
-        writeFileAtomically(file, e.png);
-        return;
-      }
+      if (e.width == t.width && e.height == t.height && e.is8 == is8 && e.codes == codes) kept = e.png;
+  }
+  if (kept) {
+    // Written outside the lock (a write is synced to disk). Our own writer
+    // checks every write (files/atomic_write.h); the bytes decoded whole
+    // when they were encoded.
+    writeFileAtomically(file, *kept);
+    return;
   }
   std::string png;
   writeFileAtomically(file, [&](const std::filesystem::path& tmp) {
