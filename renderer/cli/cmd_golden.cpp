@@ -3,7 +3,7 @@
 //
 // Exit (check): 0 every scene matches its golden image, 1 some does not
 // (each printed with the command that accepts it), 2 an error (a renderer
-// missing or failing, a malformed manifest). update: 0, or 1 on an error.
+// missing or failing, a malformed manifest). update: 0, or 2 on an error.
 #include <cstdio>
 #include <memory>
 
@@ -24,8 +24,6 @@ void addGoldenCommand(CLI::App& app, std::function<int()>& run) {
       "and manifest.json, for scenes in SET/scenes), for the `golden` renderers and regression checks "
       "(docs/golden-images.md).");
   golden->require_subcommand(1);
-  const std::string scenes_help =
-      "Scene files or folders (default: the toolkit's reference/scenes)";
   const std::string renderer_help = "The renderer whose images are stored (default: the reference renderer; "
                                     "xval renderers lists them)";
   for (const char* action : {"update", "check"}) {
@@ -36,7 +34,7 @@ void addGoldenCommand(CLI::App& app, std::function<int()>& run) {
                        : "Render the scenes again and compare each with its golden image (the tolerance of the "
                          "id golden or golden-RENDERER). Exit 0 all match, 1 some do not (the command that "
                          "accepts each is printed), 2 on an error.");
-    cmd->add_option("scenes", args->inputs, scenes_help);
+    cmd->add_option("scenes", args->inputs, defaultScenesHelp());
     cmd->add_option("--renderer", args->renderer, renderer_help);
     if (!update) {
       cmd->add_option("--tolerances", args->tolerances, kToleranceFileHelp);
@@ -52,7 +50,7 @@ void addGoldenCommand(CLI::App& app, std::function<int()>& run) {
       run = [args, budget, update]() -> int {
         if (args->renderer.empty()) args->renderer = renderers::registry().reference().id;
         if (args->inputs.empty())
-          args->inputs = {(toolkitToleranceFile().parent_path() / "scenes").string()};
+          args->inputs = {toolkitSceneSet().string()};
         args->budget = budget->get();
         if (update) return validation::goldenUpdate(*args);
         try {

@@ -298,6 +298,8 @@ std::string exportInputsKey(const Scene& scene, const fs::path& scene_file) {
 
 std::vector<std::string> jobRenderers() { return renderers::registry().validateIds(); }
 
+bool runsWhenNamed(const std::string& id) { return id == "golden" || id.rfind("golden-", 0) == 0; }
+
 std::vector<std::string> runRenderers(const std::vector<std::string>& names) {
   const std::vector<std::string> every = jobRenderers();
   if (names.empty()) return every;
@@ -309,7 +311,7 @@ std::vector<std::string> runRenderers(const std::vector<std::string>& names) {
     if (const std::string id = renderers::goldenAlias(n); !id.empty()) n = id;
   std::vector<std::string> runnable;
   for (const std::string& id : renderers::registry().ids())
-    if (std::find(every.begin(), every.end(), id) != every.end() || id == "golden" || id.rfind("golden-", 0) == 0)
+    if (std::find(every.begin(), every.end(), id) != every.end() || runsWhenNamed(id))
       runnable.push_back(id);
   for (size_t i = 0; i < named.size(); ++i) {
     if (std::find(runnable.begin(), runnable.end(), named[i]) == runnable.end())
