@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -101,6 +102,16 @@ struct SolidMemo {
 }  // namespace
 
 std::string describe(const SceneWarning& w) { return w.subject + ": " + w.message + " [" + w.code + "]"; }
+
+std::string warningLine(const Scene& scene, const SceneWarning& w) {
+  return "warning: " + scene.name + ": " + describe(w);
+}
+
+std::vector<SceneWarning> printSceneWarnings(const char* prefix, const Scene& scene) {
+  std::vector<SceneWarning> ws = lintScene(scene);
+  for (const SceneWarning& w : ws) std::fprintf(stderr, "%s: %s\n", prefix, warningLine(scene, w).c_str());
+  return ws;
+}
 
 double windingNumber(const TriangleMesh& mesh, dvec3 x) {
   // Each triangle's signed solid angle seen from x (Van Oosterom and

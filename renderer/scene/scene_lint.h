@@ -63,6 +63,12 @@ struct SceneWarning {
 // "SUBJECT: MESSAGE [CODE]": how a warning is printed.
 std::string describe(const SceneWarning& w);
 
+// "warning: SCENE_NAME: " and describe(w): how a command prints it.
+std::string warningLine(const Scene& scene, const SceneWarning& w);
+// lintScene's warnings, one warningLine each, after "PREFIX: " on stderr
+// (PREFIX: "xval render", ...); returns them.
+std::vector<SceneWarning> printSceneWarnings(const char* prefix, const Scene& scene);
+
 // Every rule over every light, object (each of its meshes: geometry/
 // scene_meshes.h) and the camera, in that order of rules and then of
 // lights and objects.
