@@ -5,7 +5,8 @@
 #     stderr, records it in the case's "warnings" in results.json, shows it
 #     in the report beside the case, and the case still passes (exit 0);
 #     a stand-in POV-Ray writes the reference render, so the pair passes;
-#   - `xval render` prints it too; a scene without one (tiny) prints none.
+#   - `xval render` and `xval lint` print it too (lint: exit 0); a scene
+#     without one (tiny) gets none.
 # Arguments: XVAL, SCENE (the light-inside scene), CLEAN (tiny.json), WORK.
 include(${CMAKE_CURRENT_LIST_DIR}/cli_run.cmake)
 require_defined(scene_warnings.cmake XVAL SCENE CLEAN WORK)
@@ -18,6 +19,9 @@ expect_in("${err}" "xval render: ${_warning}")
 run(0 ${XVAL} render ${CLEAN} -o ${WORK}/clean.exr -q)
 string(FIND "${err}" "warning" _at)
 expect_eq("a warning for ${CLEAN}" "${_at}" "-1")
+run(0 ${XVAL} lint ${SCENE} ${CLEAN})
+expect_in("${err}" "xval lint: ${_warning}")
+expect_in("${err}" "xval lint: 1 warning(s) in 2 scene(s)")
 
 file(WRITE ${WORK}/bin/povray
   "#!/bin/sh\nif [ \"$1\" = --version ]; then echo 'stand-in povray 0.0'; exit 0; fi\n"
