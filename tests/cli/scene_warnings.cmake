@@ -23,12 +23,7 @@ run(0 ${XVAL} lint ${SCENE} ${CLEAN})
 expect_in("${err}" "xval lint: ${_warning}")
 expect_in("${err}" "xval lint: 1 warning(s) in 2 scene(s)")
 
-file(WRITE ${WORK}/bin/povray
-  "#!/bin/sh\nif [ \"$1\" = --version ]; then echo 'stand-in povray 0.0'; exit 0; fi\n"
-  "out=$(/bin/sed -n 's/^Output_File_Name=//p' scene.ini)\n"
-  "for a in \"$@\"; do o=$(echo \"$a\" | /bin/sed -n 's/^+O//p'); [ -z \"$o\" ] || out=$o; done\n"
-  "/bin/cp '${WORK}/ref.exr' \"$out\"\n")
-file(CHMOD ${WORK}/bin/povray PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
+write_povray_stand_in(${WORK}/bin "/bin/cp '${WORK}/ref.exr' \"$out\"")
 run(0 ${CMAKE_COMMAND} -E env "PATH=${WORK}/bin:/usr/bin:/bin"
     ${XVAL} validate ${SCENE} -o ${WORK}/out --jobs 1 --timeout 60 --renderers reference,povray)
 string(REGEX MATCHALL "xval validate: warning: [^\n]*" _lines "${err}")
