@@ -8,6 +8,7 @@
 #include "cli/renderer_file_option.h"
 #include "render/renderer.h"
 #include "renderers/registry.h"
+#include "scene/scene_lint.h"
 #include "scene/scene_loader.h"
 
 namespace xval::cli {
@@ -89,6 +90,7 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
     run = [args, renderer_files]() {
       renderers::registerRendererFiles(*renderer_files);
       Scene scene = loadScene(args->scene, args->budget.get());
+      printSceneWarnings("xval render", scene);
       RenderOptions opt = defaultOptions(scene);
       if (args->spp) {
         requirePerfectSquareSpp(args->spp, "--spp");

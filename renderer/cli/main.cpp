@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
   xval::cli::addRenderersCommand(app, run);
   xval::cli::addGoldenCommand(app, run);
   xval::cli::addPackCommand(app, run);
+  xval::cli::addLintCommand(app, run);
   for (CLI::App* sub : app.get_subcommands({})) sub->footer(exit_status);
   try {
     app.parse(argc, argv);

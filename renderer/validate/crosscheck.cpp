@@ -15,6 +15,7 @@
 #include "render/renderer.h"
 #include "renderers/job_export.h"
 #include "renderers/registry.h"
+#include "scene/scene_lint.h"
 #include "scene/scene_loader.h"
 #include "validate/tolerances.h"
 #include "validate/geometry_check.h"
@@ -25,6 +26,7 @@ namespace xval::validation {
 
 int crosscheck(const CrosscheckRequest& request) {
   Scene scene = loadScene(request.scene_file, request.budget);
+  printSceneWarnings("xval crosscheck", scene);
   std::filesystem::path dir(request.dir);
   std::filesystem::create_directories(dir);
   const FolderLock folder_lock(dir, FolderLock::Mode::Exclusive, "xval crosscheck");

@@ -367,7 +367,7 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
     << "body{font-family:sans-serif;margin:1.5em;color:#222}table{border-collapse:collapse;margin:.5em 0}"
     << "td,th{border:1px solid #bbb;padding:2px 6px;font-size:13px;text-align:right}"
     << "th{background:#eee}td.l,th.l{text-align:left}.pass{color:#070;font-weight:bold}"
-    << ".fail{color:#b00;font-weight:bold}.err{color:#b60;font-weight:bold}.nexp{color:#558;font-weight:bold}"
+    << ".fail{color:#b00;font-weight:bold}.err{color:#b60;font-weight:bold}.nexp{color:#558;font-weight:bold}.warn{color:#960}"
     << ".marked{position:relative;display:inline-block;line-height:0}.marked img{width:100%;border:0}"
     << ".heat,.swap,.crop{image-rendering:pixelated}.mark{position:absolute;box-sizing:border-box;"
     << "border:2px solid #f0f;pointer-events:none}.mark.worst_unexplained{border-color:#f00}"
@@ -458,6 +458,11 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
       for (auto it = c["left_out"].begin(); it != c["left_out"].end(); ++it)
         h << "<p class=\"nexp\">" << htmlEscape(it.key()) << " left out: " << htmlEscape(it.value().get<std::string>())
           << "</p>\n";
+    if (c.contains("warnings"))  // the scene's warnings (scene/scene_lint.h): beside the verdict, not in it
+      for (const auto& w : c["warnings"])
+        h << "<p class=\"warn\">warning: " << htmlEscape(w["subject"].get<std::string>()) << ": "
+          << htmlEscape(w["message"].get<std::string>()) << " [" << htmlEscape(w["code"].get<std::string>())
+          << "]</p>\n";
     h << "<div class=\"imgs\">";
     for (auto it = c["renders"].begin(); it != c["renders"].end(); ++it) {
       const std::string renderer = htmlEscape(it.key());

@@ -22,6 +22,7 @@
 #include "image/perceptual.h"
 #include "process/job_pool.h"
 #include "renderers/registry.h"
+#include "scene/scene_lint.h"
 #include "scene/scene_loader.h"
 #include "validate/colour_stats.h"
 #include "validate/pixel_crops.h"
@@ -250,6 +251,9 @@ J compareCase(const CompareContext& cx, size_t k) {
     jc["left_out"] = J::object();
     for (const LeftOut& l : ps.left_out) jc["left_out"][l.renderer] = l.reason;
   }
+  // The scene's warnings (scene/scene_lint.h): recorded, never part of the verdict.
+  for (const SceneWarning& w : lintScene(scene))
+    jc["warnings"].push_back({{"code", w.code}, {"subject", w.subject}, {"message", w.message}});
   const std::vector<renderers::RendererPair> pairs = renderers::unorderedPairs(rs.size());
   std::vector<int> verdict(pairs.size());
   J jpairs = J::array();

@@ -17,6 +17,7 @@
 #include "renderers/renderer_file.h"
 #include "renderers/registry.h"
 #include "scene/json_reader.h"
+#include "scene/scene_lint.h"
 #include "validate/tolerances.h"
 #include "validate/validation/file_fields.h"
 #include "validate/validation/job_record.h"
@@ -368,6 +369,7 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
     Scene scene = loadScene(f, plan.budget);
     checkSceneName(scene.name, f.string());
     checkCaseFolder(plan.dir / scene.name, f);
+    printSceneWarnings("xval validate", scene);  // recorded by the compare step (results.json)
     auto [it, fresh] = seen.emplace(scene.name, f.string());
     if (!fresh)
       throw std::runtime_error(f.string() + ": name: \"" + scene.name + "\": also the name of " +
