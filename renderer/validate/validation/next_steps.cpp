@@ -93,7 +93,7 @@ void printNextSteps(const Plan& plan, const nlohmann::ordered_json& cases) {
       std::fprintf(stderr,
                    "  after an intended change of %s, store its images anew:\n"
                    "  %s\n",
-                   renderers::registry().at(id).display_name.c_str(),
+                   renderers::registry().at(id).sentenceSubject().c_str(),
                    renderers::goldenUpdateCommand(ps.path, id).c_str());
   }
 }
