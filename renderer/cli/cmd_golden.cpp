@@ -1,4 +1,4 @@
-// xval golden update|check [SCENES or DIRS] [--renderer NAME]: argument
+// xval golden update|check [SCENES or DIRS] [--renderer NAME] [--renderer-file FILE]: argument
 // parsing; the work is validate/golden/golden_run.h.
 //
 // Exit (check): 0 every scene matches its golden image, 1 some does not
@@ -9,6 +9,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/renderer_file_option.h"
 #include "renderers/registry.h"
 #include "validate/golden/golden_run.h"
 #include "validate/tolerances.h"
@@ -46,14 +47,21 @@ void addGoldenCommand(CLI::App& app, std::function<int()>& run) {
     cmd->add_option("--timeout", args->timeout_seconds, "Seconds before an external renderer is killed")
         ->check(Seconds);
     addBudgetOptions(cmd, *budget);
-    cmd->callback([args, budget, update, &run]() {
-      run = [args, budget, update]() -> int {
+    // A renderer defined by a file stores and checks its own set,
+    // golden/NAME beside the scenes (the renderer golden-NAME reads it).
+    auto renderer_files = addRendererFileOption(cmd);
+    cmd->callback([args, budget, update, renderer_files, &run]() {
+      run = [args, budget, update, renderer_files]() -> int {
         if (args->renderer.empty()) args->renderer = renderers::registry().reference().id;
         if (args->inputs.empty())
           args->inputs = {toolkitSceneSet().string()};
         args->budget = budget->get();
-        if (update) return validation::goldenUpdate(*args);
+        if (update) {
+          renderers::registerRendererFiles(*renderer_files);
+          return validation::goldenUpdate(*args);
+        }
         try {
+          renderers::registerRendererFiles(*renderer_files);
           return validation::goldenCheck(*args);
         } catch (const std::exception& e) {
           std::fprintf(stderr, "xval golden check: error: %s\n", e.what());

@@ -22,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+#include "process/shell_word.h"
 #include "renderers/registry.h"
 
 namespace xval::renderers {
@@ -51,6 +52,14 @@ Renderer goldenRendererOf(const std::string& made_by, const std::string& made_by
 }
 
 Renderer goldenRenderer() { return goldenRendererOf("reference", "the reference renderer"); }
+
+std::string goldenUpdateCommand(const std::filesystem::path& scene_file, const std::string& made_by) {
+  std::string c = "xval golden update " + shellWord(std::filesystem::absolute(scene_file).lexically_normal().string()) +
+                  " --renderer " + shellWord(made_by);
+  if (const Renderer* r = registry().find(made_by); r && !r->definition_file.empty())
+    c += " --renderer-file " + shellWord(r->definition_file.string());
+  return c;
+}
 
 std::string goldenAlias(std::string_view id) {
   constexpr std::string_view prefix = "golden:";

@@ -112,6 +112,11 @@ std::string pairKey(const Renderer& a, const Renderer& b);
 //     ("A and B disagree" for two renderers).
 // For three renderers this is the one deviating from the other two.
 std::string attribute(const std::vector<const Renderer*>& renderers, const std::vector<int>& verdicts);
+// The renderers outside that majority M (indices into the n renderers, in
+// order): those attribute names as deviating; empty when every pair passes,
+// a pair was not compared, or no majority exists (two renderers never have
+// one: neither is to blame on its own).
+std::vector<size_t> deviating(size_t n, const std::vector<int>& verdicts);
 
 // The version line an outside tool prints for `argv` (see
 // Renderer::version_marker; a 40-character line without spaces, as

@@ -188,6 +188,11 @@ class Registry;
 Renderer goldenRendererOf(const std::string& made_by, const std::string& made_by_name);
 std::string goldenAlias(std::string_view id);
 void addGoldenSets(Registry& registry);
+// The command that stores renderer `made_by`'s image of `scene_file` in its
+// golden set, as it runs pasted: the scene file absolute, every word
+// shell-quoted (process/shell_word.h), and --renderer-file FILE when
+// `made_by` is defined by a file (without it the renderer is unknown).
+std::string goldenUpdateCommand(const std::filesystem::path& scene_file, const std::string& made_by);
 
 // An outside tool's figures as a RenderInfo (nothing when `info` is null).
 void setInfo(RenderInfo* info, const ExternalRenderInfo& tool);

@@ -452,8 +452,13 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
     const std::string id = htmlEscape(c["scene"].get<std::string>());
     h << "<div class=\"case\" id=\"" << id << "\"><h3>" << id << " &mdash; <span class=\""
       << verdictCell(caseVerdict(c)).substr(std::string("class=\"l ").size()) << "</span></h3>\n";
-    h << "<p>" << htmlEscape(c["attribution"].get<std::string>()) << ". Reproduce: <code>xval validate "
-      << htmlEscape(c["file"].get<std::string>()) << " -o DIR</code></p>\n";
+    // The command is the compare step's (validate/validation/next_steps.h
+    // reproduceCommand: with the run's renderers, renderer files and
+    // tolerance file); results.json files written before it had none: no
+    // command rather than one that would not run as the case ran.
+    h << "<p>" << htmlEscape(c["attribution"].get<std::string>()) << ".";
+    if (c.contains("reproduce")) h << " Reproduce: <code>" << htmlEscape(c["reproduce"].get<std::string>()) << "</code>";
+    h << "</p>\n";
     if (c.contains("left_out"))
       for (auto it = c["left_out"].begin(); it != c["left_out"].end(); ++it)
         h << "<p class=\"nexp\">" << htmlEscape(it.key()) << " left out: " << htmlEscape(it.value().get<std::string>())

@@ -167,3 +167,17 @@ TEST(Attribution, FourAndFiveRenderersTheMajority) {
   // pairs: ab ac ad ae bc bd be cd ce de; A, B, C agree; D and E fail against them.
   EXPECT_EQ(attribute(pointers(five), {1, 1, 0, 0, 1, 0, 0, 0, 0, 1}), "D and E deviate (A, B and C agree)");
 }
+
+// deviating: the indices attribute names as deviating, none without a
+// majority (validate prints the golden update step for them only).
+TEST(Attribution, DeviatingAreTheOnesOutsideTheMajority) {
+  // reference-povray, reference-blender, povray-blender
+  EXPECT_EQ(deviating(3, {0, 0, 1}), (std::vector<size_t>{0}));
+  EXPECT_EQ(deviating(3, {0, 1, 0}), (std::vector<size_t>{1}));
+  EXPECT_TRUE(deviating(3, {1, 1, 1}).empty());
+  EXPECT_TRUE(deviating(3, {0, 0, 0}).empty());
+  EXPECT_TRUE(deviating(3, {0, 0, -1}).empty());
+  EXPECT_TRUE(deviating(2, {0}).empty());  // two: neither is to blame on its own
+  EXPECT_EQ(deviating(5, {1, 1, 0, 0, 1, 0, 0, 0, 0, 1}), (std::vector<size_t>{3, 4}));
+  EXPECT_THROW(deviating(3, {1, 1}), std::invalid_argument);
+}

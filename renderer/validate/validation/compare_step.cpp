@@ -177,9 +177,10 @@ J colourStatsJson(const Image& reference) {
 }
 
 // Who deviates, among the renderers that can express the scene (their
-// pairs' verdicts), and which cannot.
+// pairs' verdicts), and which cannot; `blamed` gets the ids of those a
+// majority deviates from (renderers::deviating).
 std::string attribution(const std::vector<const renderers::Renderer*>& rs, const std::vector<int>& verdict,
-                        const Renders& renders) {
+                        const Renders& renders, std::vector<std::string>& blamed) {
   std::vector<const renderers::Renderer*> can;
   std::vector<std::string> cannot;
   for (const auto* r : rs) {
@@ -196,6 +197,7 @@ std::string attribution(const std::vector<const renderers::Renderer*>& rs, const
     if (!notExpressible(renders.at(rs[pairs[p].a]->id)) && !notExpressible(renders.at(rs[pairs[p].b]->id)))
       can_verdict.push_back(verdict[p]);
   const std::string who = renderers::attribute(can, can_verdict);
+  for (size_t k : renderers::deviating(can.size(), can_verdict)) blamed.push_back(can[k]->id);
   return not_expr.empty() ? who : who + "; " + not_expr;
 }
 
@@ -231,7 +233,7 @@ J compareCase(const CompareContext& cx, size_t k) {
     throw std::runtime_error(ps.path.string() + ": name: \"" + scene.name + "\": the plan (" +
                              planFile(plan.dir).string() + ") says \"" + ps.name + "\": plan again");
   makeRealFolder(plan.dir, plan.dir / ps.name);  // the diff images go there: never through a link
-  J jc = {{"scene", ps.name}, {"file", ps.file}};
+  J jc = {{"scene", ps.name}, {"file", ps.file}, {"reproduce", reproduceCommand(plan, ps)}};
   Renders renders;
   // The case's image renderers, in job (registry) order: its pairs and the
   // attribution are theirs. Its geometry checks (geometry_checks.h) are
@@ -269,7 +271,8 @@ J compareCase(const CompareContext& cx, size_t k) {
   // Who deviates among the image renderers, then each geometry check that
   // failed (it says nothing about the image renderers: it checks what they
   // all read, the loaded model, against Blender's own import).
-  std::string who = attribution(rs, verdict, renders);
+  std::vector<std::string> blamed;
+  std::string who = attribution(rs, verdict, renders, blamed);
   const std::string nothing = "nothing to compare";
   if (who.rfind(nothing, 0) == 0 && geometryChecksWith(checks, "pass") + geometryChecksWith(checks, "fail") > 0)
     who = "no image pair to compare" + who.substr(nothing.size());
@@ -278,6 +281,7 @@ J compareCase(const CompareContext& cx, size_t k) {
       who += "; " + renderers::registry().at(c["renderer"].get<std::string>()).display_name +
              " and the reference disagree in geometry (the model loader or the import)";
   jc["attribution"] = who;
+  if (!blamed.empty()) jc["deviating"] = blamed;
   // Decided on the pairs that could be compared (every one passes) and on
   // the geometry checks that could (every one passes).
   jc["pass"] = std::all_of(verdict.begin(), verdict.end(), [](int v) { return v == kPass || v == kNotExpressible; }) &&

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 #include <cstdio>
+#include <exception>
 #include <map>
 #include <stdexcept>
 
@@ -365,15 +366,26 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
   plan.renderers = runRenderers(run_renderers);
   plan.renderer_files = rendererFiles(plan.renderers);
   std::map<std::string, std::string> seen;  // scene name -> file
+  // Every invalid scene is reported, not only the first: a folder of
+  // scenes is mended in one pass. Nothing renders until all are valid.
+  std::vector<std::string> invalid;
+  std::exception_ptr first_invalid;  // one invalid scene: its own error, as thrown
   for (const auto& f : scene_files) {
-    Scene scene = loadScene(f, plan.budget);
-    checkSceneName(scene.name, f.string());
-    checkCaseFolder(plan.dir / scene.name, f);
-    printSceneWarnings("xval validate", scene);  // recorded by the compare step (results.json)
-    auto [it, fresh] = seen.emplace(scene.name, f.string());
-    if (!fresh)
-      throw std::runtime_error(f.string() + ": name: \"" + scene.name + "\": also the name of " +
-                               it->second + " (scene names name the output folders: expected unique)");
+    Scene scene;
+    try {
+      scene = loadScene(f, plan.budget);
+      checkSceneName(scene.name, f.string());
+      checkCaseFolder(plan.dir / scene.name, f);
+      printSceneWarnings("xval validate", scene);  // recorded by the compare step (results.json)
+      auto [it, fresh] = seen.emplace(scene.name, f.string());
+      if (!fresh)
+        throw std::runtime_error(f.string() + ": name: \"" + scene.name + "\": also the name of " +
+                                 it->second + " (scene names name the output folders: expected unique)");
+    } catch (const std::exception& e) {
+      invalid.push_back(e.what());
+      if (!first_invalid) first_invalid = std::current_exception();
+      continue;
+    }
     PlannedScene planned{scene.name, f.string(), fs::absolute(f).lexically_normal(),
                          leftOut(scene, plan.renderers)};
     for (const LeftOut& l : planned.left_out)
@@ -391,6 +403,13 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
       plan.jobs.push_back(job);
     }
     plan.scenes.push_back(std::move(planned));
+  }
+  if (invalid.size() == 1) std::rethrow_exception(first_invalid);
+  if (!invalid.empty()) {
+    std::string all = std::to_string(invalid.size()) + " of " + std::to_string(scene_files.size()) +
+                      " scenes are invalid (nothing rendered):";
+    for (const std::string& why : invalid) all += "\n  " + why;
+    throw std::runtime_error(all);
   }
   plan.created_unix = nowUnix();
   return plan;
