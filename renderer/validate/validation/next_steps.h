@@ -1,6 +1,8 @@
-// What `xval validate` prints on stderr for every failing case: the
-// crosscheck command that looks closer at each pair, and how to accept a
-// documented difference (a declared tolerance).
+// What `xval validate` prints on stderr for every case that does not pass
+// (case_verdict.h): for a failing or error case, the crosscheck command
+// that looks closer at each pair and how to accept a documented difference
+// (a declared tolerance); for a case that compared nothing, why (the
+// renderers left out, with their reasons).
 #pragma once
 
 #include <nlohmann/json.hpp>
