@@ -45,8 +45,9 @@
 // stderr and in results.json); a renderer that declares it cannot express
 // a scene is recorded as not expressible, with its reason, and the case
 // is decided on the other pairs (validate/validation/compare_step.h). A
-// case that compares nothing (no pair, no geometry check) is NOT COMPARED,
-// never a pass (validate/validation/case_verdict.h).
+// scene meant for the reference renderer takes `golden` (its stored
+// images) in its place. A case that compares nothing (no pair, no geometry
+// check) is NOT COMPARED, never a pass (validate/validation/case_verdict.h).
 //
 // Exit 0: every case compared something and every compared pair is within
 // tolerance; 1: some case outside, or a case that compared nothing; 2: an
@@ -143,7 +144,8 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
       "A plain run does it all here; --plan-only, --run-job and --compare-only do one step each, "
       "which is how scripts/slurm/submit.sh runs it on a Slurm cluster (docs/cluster.md).\n"
       "A renderer that declares it cannot express a scene is recorded as not expressible, with its "
-      "reason, and the case is decided on the other pairs. A case with nothing compared (every other "
+      "reason, and the case is decided on the other pairs. A scene's `renderers` field that names "
+      "reference takes golden (its stored images) too. A case with nothing compared (every other "
       "renderer left out or unable to express the scene) is NOT COMPARED, never a pass.\n"
       "Exit 0 when every case compared something and passes, 1 when any fails or compared nothing, "
       "2 on an error (bad scene, renderer missing or broken, a job not run). --plan-only exits 0 once the plan is written; "
