@@ -9,6 +9,8 @@
 # expect_eq(WHAT GOT WANT): fails, naming WHAT, unless GOT equals WANT.
 # get_json(VAR JSON KEY...): VAR = the member of the JSON text at the keys
 #   and indices given; fails, naming them, when it is absent.
+# expect_valid_junit(FILE XSD): fails unless xmllint finds FILE valid
+#   against the schema XSD (tests/junit/junit.xsd); a missing xmllint fails.
 function(require_defined script)
   foreach(_v ${ARGN})
     if(NOT DEFINED ${_v})
@@ -52,4 +54,11 @@ function(get_json var json)
     message(FATAL_ERROR "results.json: ${ARGN}: ${_no}")
   endif()
   set(${var} "${_v}" PARENT_SCOPE)
+endfunction()
+
+function(expect_valid_junit file xsd)
+  execute_process(COMMAND xmllint --noout --schema ${xsd} ${file} RESULT_VARIABLE _rc ERROR_VARIABLE _lint)
+  if(NOT _rc EQUAL 0)
+    message(FATAL_ERROR "${file} is not valid against ${xsd} (xmllint exit ${_rc}):\n${_lint}")
+  endif()
 endfunction()

@@ -135,10 +135,7 @@ expect_in("${_html}" "nexp\">NOT COMPARED</span>")
 expect_in("${_html}" "povray left out: the scene is meant for")
 # JUnit: the 5 pairs as <skipped> with the reason, wide_spp256's case as
 # a failure (it compared nothing), valid against the schema.
-execute_process(COMMAND xmllint --noout --schema ${XSD} ${WORK}/junit.xml RESULT_VARIABLE _rc ERROR_VARIABLE _lint)
-if(NOT _rc EQUAL 0)
-  message(FATAL_ERROR "junit.xml is not valid against ${XSD} (xmllint exit ${_rc}):\n${_lint}")
-endif()
+expect_valid_junit(${WORK}/junit.xml ${XSD})
 file(READ ${WORK}/junit.xml _junit)
 expect_in("${_junit}" "tests=\"11\" failures=\"1\" errors=\"0\" skipped=\"5\"")
 expect_in("${_junit}" "<testcase classname=\"wide_spp256\" name=\"case\" time=\"0.000\">\n      <failure message=\"nothing compared (no image pair, no geometry check): nothing to compare: POV-Ray and Blender cannot express it\" type=\"not_compared\"/>")
