@@ -44,10 +44,14 @@
 // `renderers` field leaves out the others for that scene (each said on
 // stderr and in results.json); a renderer that declares it cannot express
 // a scene is recorded as not expressible, with its reason, and the case
-// is decided on the other pairs (validate/validation/compare_step.h).
+// is decided on the other pairs (validate/validation/compare_step.h). A
+// scene meant for the reference renderer takes `golden` (its stored
+// images) in its place. A case that compares nothing (no pair, no geometry
+// check) is NOT COMPARED, never a pass (validate/validation/case_verdict.h).
 //
-// Exit 0: every compared pair within tolerance; 1: some case outside; 2: an error
-// (bad scene, renderer missing or broken, a job not run). --plan-only
+// Exit 0: every case compared something and every compared pair is within
+// tolerance; 1: some case outside, or a case that compared nothing; 2: an
+// error (bad scene, renderer missing or broken, a job not run). --plan-only
 // exits 0 when it wrote the plan; --run-job exits 0 when the render
 // succeeded and 2 when it failed (the failure is in the job's record);
 // --run-jobs 0 when every job of the list succeeded, 2 when any failed.
@@ -142,9 +146,11 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
       "A plain run does it all here; --plan-only, --run-job and --compare-only do one step each, "
       "which is how scripts/slurm/submit.sh runs it on a Slurm cluster (docs/cluster.md).\n"
       "A renderer that declares it cannot express a scene is recorded as not expressible, with its "
-      "reason, and the case is decided on the other pairs.\n"
-      "Exit 0 when every compared pair passes, 1 when any fails, 2 on an error (bad scene, renderer "
-      "missing or broken, a job not run). --plan-only exits 0 once the plan is written; "
+      "reason, and the case is decided on the other pairs. A scene's `renderers` field that names "
+      "reference takes golden (its stored images) too. A case with nothing compared (every other "
+      "renderer left out or unable to express the scene) is NOT COMPARED, never a pass.\n"
+      "Exit 0 when every case compared something and passes, 1 when any fails or compared nothing, "
+      "2 on an error (bad scene, renderer missing or broken, a job not run). --plan-only exits 0 once the plan is written; "
       "--run-job exits 0 when its render succeeded, 2 when it failed; --run-jobs likewise for every "
       "job of its list.");
   cmd->add_option("scenes", args->inputs, defaultScenesHelp());

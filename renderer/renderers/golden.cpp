@@ -36,6 +36,7 @@ Renderer goldenRendererOf(const std::string& made_by, const std::string& made_by
   r.summary = "the images " + made_by_name + " stored beside the scene set (golden/" + made_by +
               "/, xval golden update); refuses a scene file changed since";
   r.every_scene = false;
+  r.images_of = made_by;
   r.render = [made_by](const Scene& scene, const RenderRequest&, RenderInfo* info) {
     const auto t0 = std::chrono::steady_clock::now();
     const std::filesystem::path folder = golden::goldenFolder(scene.source_file, made_by);

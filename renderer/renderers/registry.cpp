@@ -168,6 +168,13 @@ std::string joinNames(const std::vector<std::string>& names) {
   return out;
 }
 
+bool meantFor(const std::vector<std::string>& scene_renderers, const Renderer& renderer) {
+  const auto named = [&](const std::string& id) {
+    return std::find(scene_renderers.begin(), scene_renderers.end(), id) != scene_renderers.end();
+  };
+  return scene_renderers.empty() || named(renderer.id) || (!renderer.images_of.empty() && named(renderer.images_of));
+}
+
 std::vector<RendererPair> unorderedPairs(size_t n) {
   std::vector<RendererPair> out;
   for (size_t a = 0; a < n; ++a)

@@ -88,6 +88,13 @@ Registry& registry();
 // "a, b and c" (the ", " and " and " joins of a listing; "a" alone).
 std::string joinNames(const std::vector<std::string>& names);
 
+// Whether a scene whose `renderers` field is `scene_renderers` (empty:
+// every renderer) is meant for `renderer`: the field names it, or names the
+// renderer whose stored images it reads (Renderer::images_of: `golden` for
+// a scene meant for the reference renderer, as its golden images are that
+// renderer's images).
+bool meantFor(const std::vector<std::string>& scene_renderers, const Renderer& renderer);
+
 // An unordered pair of renderers, a before b in registry order.
 struct RendererPair {
   size_t a = 0, b = 0;  // indices into the list the pairs were made from

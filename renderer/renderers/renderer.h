@@ -166,6 +166,11 @@ struct Renderer {
   // absolute; empty for a built-in one. validate's plan records it with its
   // hash, so every job of the plan renders with the same definition.
   std::filesystem::path definition_file;
+  // A golden set (renderers/golden.cpp): the id of the renderer whose
+  // stored images it reads ("reference" for `golden`); empty for every
+  // other renderer. A scene's `renderers` field that names that renderer
+  // takes the set in its place (meantFor, registry.h).
+  std::string images_of;
 
   const std::string& sentenceSubject() const { return subject.empty() ? display_name : subject; }
   bool external() const { return !version_command.empty(); }

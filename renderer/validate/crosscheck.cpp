@@ -39,8 +39,7 @@ int crosscheck(const CrosscheckRequest& request) {
   std::string reason;
   Tolerance tol = table.lookup(scene, request.renderer, &reason);
   const renderers::Renderer& renderer = renderers::registry().at(request.renderer);
-  if (!scene.renderers.empty() &&
-      std::find(scene.renderers.begin(), scene.renderers.end(), renderer.id) == scene.renderers.end())
+  if (!renderers::meantFor(scene.renderers, renderer))
     throw std::runtime_error(request.scene_file + ": renderers: the scene is meant for " +
                              renderers::joinNames(scene.renderers) + " only, not " + renderer.id);
   // A renderer that declares it cannot express the scene: the verdict, with

@@ -27,6 +27,7 @@
 #include "validate/report_pixels.h"
 #include "validate/tolerances.h"
 #include "validate/tradeoff/report_section.h"
+#include "validate/validation/case_verdict.h"
 #include "validate/validation/geometry_checks.h"
 
 namespace xval {
@@ -71,16 +72,6 @@ std::vector<std::string> pairIds(const J& cases) {
       if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
     }
   return ids;
-}
-
-// A case whose every pair has a renderer that cannot express the scene,
-// and whose every geometry check is not expressible.
-bool nothingCompared(const J& c) {
-  for (const auto& p : c["pairs"])
-    if (!p.contains("not_expressible")) return false;
-  for (const auto& g : c.value("geometry_checks", J::array()))
-    if (g["verdict"] != "not_expressible") return false;
-  return true;
 }
 
 // A case's geometry checks (validate/validation/geometry_checks.h) as
@@ -340,15 +331,13 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   // only): nothing to plot.
   if (!pairs.empty()) writePlot(cases, pairs, dir);
 
-  // A case: error when a pair is; not expressible when no pair could be
-  // compared; else the case's verdict (decided on the comparable pairs).
-  auto caseVerdict = [](const J& c) -> std::string {
-    for (const auto& p : c["pairs"])
-      if (pairVerdict(p) == "error") return "error";
-    for (const auto& g : c.value("geometry_checks", J::array()))
-      if (g["verdict"] == "error") return "error";
-    if (nothingCompared(c)) return "not expressible";
-    return c["pass"].get<bool>() ? "pass" : "fail";
+  // A case: the verdict the compare step decided (validation/
+  // case_verdict.h), as the pairs' verdicts read ("not compared").
+  auto caseVerdict = [&results_json](const J& c) -> std::string {
+    std::string v = validation::verdictName(validation::parseCaseVerdict(
+        c.value("verdict", ""), results_json.string() + ": case " + c.value("scene", "") + ": verdict"));
+    std::replace(v.begin(), v.end(), '_', ' ');
+    return v;
   };
   int pass = 0, fail = 0, nexp = 0, err = 0, nexp_pairs = 0;
   std::map<std::string, int> checks;  // geometry checks by verdict
@@ -382,7 +371,7 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   h << "<h1>xval cross-validation report</h1>\n";
   h << "<p>" << cases.size() << " scenes: <span class=\"pass\">" << pass << " pass</span>, "
     << "<span class=\"fail\">" << fail << " fail</span>, <span class=\"err\">" << err
-    << " errors</span>, <span class=\"nexp\">" << nexp << " not expressible</span> (" << nexp_pairs
+    << " errors</span>, <span class=\"nexp\">" << nexp << " not compared</span> (" << nexp_pairs
     << " pairs not expressible by a renderer, not compared). Wall time " << fixed(r.value("wall_seconds", 0.0), 1)
     << " s. Failures are listed first. Errors are in 1/65535 of the full scale. A pair passes when its "
        "pixels are within the tolerance on the declared fraction and no pixel that no known cause explains "

@@ -13,6 +13,8 @@
 #   --version and otherwise runs the shell text MAKE with $out set to the
 #   image path the real POV-Ray would write (scene.ini's Output_File_Name,
 #   or a +O argument).
+# expect_valid_junit(FILE XSD): fails unless xmllint finds FILE valid
+#   against the schema XSD (tests/junit/junit.xsd); a missing xmllint fails.
 function(require_defined script)
   foreach(_v ${ARGN})
     if(NOT DEFINED ${_v})
@@ -65,4 +67,11 @@ function(write_povray_stand_in bin make)
     "for a in \"$@\"; do o=$(echo \"$a\" | /bin/sed -n 's/^+O//p'); [ -z \"$o\" ] || out=$o; done\n"
     "${make}\n")
   file(CHMOD ${bin}/povray PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
+endfunction()
+
+function(expect_valid_junit file xsd)
+  execute_process(COMMAND xmllint --noout --schema ${xsd} ${file} RESULT_VARIABLE _rc ERROR_VARIABLE _lint)
+  if(NOT _rc EQUAL 0)
+    message(FATAL_ERROR "${file} is not valid against ${xsd} (xmllint exit ${_rc}):\n${_lint}")
+  endif()
 endfunction()

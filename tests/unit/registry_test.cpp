@@ -181,3 +181,17 @@ TEST(Attribution, DeviatingAreTheOnesOutsideTheMajority) {
   EXPECT_EQ(deviating(5, {1, 1, 0, 0, 1, 0, 0, 0, 0, 1}), (std::vector<size_t>{3, 4}));
   EXPECT_THROW(deviating(3, {1, 1}), std::invalid_argument);
 }
+
+// A scene's `renderers` field: a golden set stands in for the renderer
+// whose images it stores (issue #30: `golden` was left out of a scene
+// meant for the reference).
+TEST(MeantFor, AGoldenSetStandsInForTheRendererItStores) {
+  const std::vector<std::string> limited{"reference", "gl", "blender-import"};
+  EXPECT_TRUE(meantFor(limited, registry().at("reference")));
+  EXPECT_FALSE(meantFor(limited, registry().at("povray")));
+  EXPECT_TRUE(meantFor(limited, registry().at("golden")));
+  EXPECT_TRUE(meantFor(limited, registry().at("golden-gl")));
+  EXPECT_FALSE(meantFor(limited, registry().at("golden-povray")));
+  EXPECT_TRUE(meantFor({}, registry().at("golden-povray")));  // no field: every renderer
+  EXPECT_FALSE(meantFor(limited, stub("golden-like", "not a golden set")));
+}

@@ -9,6 +9,7 @@
 #include "process/shell_word.h"
 #include "renderers/registry.h"
 #include "validate/tolerances.h"
+#include "validate/validation/case_verdict.h"
 
 namespace xval::validation {
 
@@ -74,11 +75,21 @@ std::string reproduceCommand(const Plan& plan, const PlannedScene& ps) {
 
 void printNextSteps(const Plan& plan, const nlohmann::ordered_json& cases) {
   for (const auto& jc : cases) {
-    if (jc["pass"].get<bool>()) continue;
     const std::string scene = jc["scene"].get<std::string>();
+    const CaseVerdict v = parseCaseVerdict(jc["verdict"].get<std::string>(), scene + ": verdict");
+    if (v == CaseVerdict::Pass) continue;
+    if (v == CaseVerdict::NotCompared) {
+      // Nothing to look closer at: say why nothing was compared.
+      std::fprintf(stderr, "NOT COMPARED %s (%s)\n", scene.c_str(), jc["attribution"].get<std::string>().c_str());
+      const nlohmann::ordered_json left_out = jc.value("left_out", nlohmann::ordered_json::object());
+      for (const auto& [id, why] : left_out.items())
+        std::fprintf(stderr, "  %s left out: %s\n", id.c_str(), why.get<std::string>().c_str());
+      continue;
+    }
     const PlannedScene& ps = plannedScene(plan, scene);
     const std::string options = runOptions(plan, ps.path);
-    std::fprintf(stderr, "FAIL %s (%s)\n", scene.c_str(), jc["attribution"].get<std::string>().c_str());
+    std::fprintf(stderr, "%s %s (%s)\n", v == CaseVerdict::Error ? "ERROR" : "FAIL", scene.c_str(),
+                 jc["attribution"].get<std::string>().c_str());
     // Every renderer of the case that rendered it, but the reference.
     for (const auto& [id, render] : jc["renders"].items())
       if (id != renderers::registry().reference().id && !render.contains("not_expressible"))

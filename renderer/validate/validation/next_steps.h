@@ -1,9 +1,11 @@
-// What `xval validate` prints on stderr for every failing case: the
-// crosscheck command that looks closer at each pair, how to accept a
-// documented difference (a declared tolerance) and, when a renderer with a
-// golden set for the scene is the one to blame, the command that stores its
-// images anew; and the command that runs a case again (results.json's
-// `reproduce`, the report's "Reproduce:" line).
+// What `xval validate` prints on stderr for every case that does not pass
+// (case_verdict.h): for a failing or error case, the crosscheck command
+// that looks closer at each pair, how to accept a documented difference (a
+// declared tolerance) and, when a renderer with a golden set for the scene
+// is the one to blame, the command that stores its images anew; for a case
+// that compared nothing, why (the renderers left out, with their reasons).
+// And the command that runs a case again (results.json's `reproduce`, the
+// report's "Reproduce:" line).
 //
 // Every printed command runs as printed: it carries what the run was given
 // beyond its scenes (runOptions), its paths are absolute and every word is

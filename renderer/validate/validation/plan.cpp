@@ -91,12 +91,13 @@ void checkCaseFolder(const fs::path& folder, const fs::path& scene_file) {
                                                  : "exists and is not a folder"));
 }
 
-// The run's renderers that the scene's `renderers` field does not name.
+// The run's renderers the scene is not meant for (renderers::meantFor: its
+// `renderers` field names neither them nor, for a golden set, the renderer
+// whose images it stores).
 std::vector<LeftOut> leftOut(const Scene& scene, const std::vector<std::string>& run) {
   std::vector<LeftOut> out;
-  if (scene.renderers.empty()) return out;
   for (const std::string& r : run)
-    if (std::find(scene.renderers.begin(), scene.renderers.end(), r) == scene.renderers.end())
+    if (!renderers::meantFor(scene.renderers, renderers::registry().at(r)))
       out.push_back({r, "the scene is meant for " + renderers::joinNames(scene.renderers) +
                             " only (its `renderers` field)"});
   return out;
