@@ -48,12 +48,21 @@ std::string field(const nlohmann::json& j, const char* key, const fs::path& file
 
 }  // namespace
 
-std::string sha256File(const fs::path& file) {
+std::string sha256File(const fs::path& file) { return sha256File(file, std::numeric_limits<std::uintmax_t>::max()); }
+
+std::string sha256File(const fs::path& file, std::uintmax_t max_bytes) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw std::runtime_error(file.string() + ": cannot read (for its SHA-256)");
   return sha256Of([&](auto update) {
     std::vector<char> buf(1 << 16);
-    while (in.read(buf.data(), std::streamsize(buf.size())) || in.gcount() > 0) update(buf.data(), size_t(in.gcount()));
+    std::uintmax_t read = 0;
+    while (in.read(buf.data(), std::streamsize(buf.size())) || in.gcount() > 0) {
+      read += std::uintmax_t(in.gcount());
+      if (read > max_bytes)
+        throw std::runtime_error(file.string() + ": holds more than the " + std::to_string(max_bytes) +
+                                 " bytes expected (not hashed further)");
+      update(buf.data(), size_t(in.gcount()));
+    }
     if (in.bad()) throw std::runtime_error(file.string() + ": read error (for its SHA-256)");
   });
 }
@@ -149,12 +158,9 @@ Manifest readManifest(const fs::path& folder, const std::string& renderer) {
   m.renderer = renderer;
   const fs::path file = folder / "manifest.json";
   if (!fs::exists(file)) return m;
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(readJsonFile(file, "golden manifest"));
-  } catch (const nlohmann::json::exception& e) {
-    throw std::runtime_error(file.string() + ": not JSON: " + e.what());
-  }
+  // The one strict reader (scene/json_reader.h): a key given twice is an
+  // error naming the field, never the last value silently.
+  const nlohmann::json j = parseJsonText(readJsonFile(file, "golden manifest"), file.string());
   if (!j.is_object()) throw std::runtime_error(file.string() + ": expected a JSON object");
   if (field(j, "format", file, "") != kManifestFormat)
     throw std::runtime_error(file.string() + ": format: expected \"" + kManifestFormat + "\"");

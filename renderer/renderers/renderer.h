@@ -188,6 +188,9 @@ class Registry;
 Renderer goldenRendererOf(const std::string& made_by, const std::string& made_by_name);
 std::string goldenAlias(std::string_view id);
 void addGoldenSets(Registry& registry);
+// Whether `id` is of a golden set's form ("golden" or "golden-..."): ids
+// xval defines only (a renderer file may not take one).
+bool isGoldenSetId(std::string_view id);
 
 // An outside tool's figures as a RenderInfo (nothing when `info` is null).
 void setInfo(RenderInfo* info, const ExternalRenderInfo& tool);

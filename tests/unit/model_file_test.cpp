@@ -444,7 +444,7 @@ TEST_F(ModelFile, GltfIndexOutOfRangeAndDeepJson) {
               "\"byteOffset\": " + std::to_string(two.idx) + ", \"byteLength\": 12");
   replaceOnce("\"componentType\": 5123, \"count\": 3", "\"componentType\": 5123, \"count\": 6");
   expectError(write("dropped.gltf", json), "declare 2 triangles, Assimp read 1");
-  expectError(write("deep.gltf", std::string(100000, '[') + std::string(100000, ']')), "nests deeper");
+  expectError(write("deep.gltf", std::string(100000, '[') + std::string(100000, ']')), "nested deeper");
   expectError(write("v1.gltf", R"({"asset": {"version": "1.0"}, "buffers": {}})"), "asset.version: '1.0'");
 }
 
