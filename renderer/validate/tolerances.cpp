@@ -114,8 +114,9 @@ std::string untrustedReason(const fs::path& file, const fs::path& scene_file) {
   struct stat scene_st, link_st, file_st, dir_st;
   if (stat(scene_file.c_str(), &scene_st) != 0) return "the scene file cannot be examined: " + std::string(std::strerror(errno));
   const auto trusted = [&](uid_t uid) { return uid == geteuid() || uid == 0 || uid == scene_st.st_uid; };
-  const std::string allowed = "it must be owned by you (" + userText(geteuid()) + "), the scene file's owner (" +
-                              userText(scene_st.st_uid) + ") or root";
+  const std::string allowed = "only one owned by you (uid " + std::to_string(geteuid()) +
+                              "), by the scene file's owner (uid " + std::to_string(scene_st.st_uid) +
+                              ") or by root is used";
   if (lstat(file.c_str(), &link_st) != 0 || stat(file.c_str(), &file_st) != 0)
     return "it cannot be examined: " + std::string(std::strerror(errno));
   if (S_ISLNK(link_st.st_mode) && !trusted(link_st.st_uid))
