@@ -13,7 +13,9 @@
 #include <vector>
 
 #include "files/atomic_write.h"
+#include "image/image_header.h"
 #include "image/pixel_classes.h"
+#include "scene/json_reader.h"
 #include "scene/scene_loader.h"
 
 namespace xval::golden {
@@ -222,7 +224,23 @@ std::string goldenProblem(const fs::path& folder, const Manifest& m, const fs::p
            now + ", stored for " + e.scene_sha256 + " in " + manifest.string() + ")";
   const fs::path image = folder / e.image;
   if (!fs::is_regular_file(image)) return "the golden image " + image.string() + " is missing";
-  if (const std::string h = sha256File(image); h != e.image_sha256)
+  // Read no more than an image of its header's size can hold: 4 bytes per
+  // channel and pixel (32-bit floats, the most it stores), twice over for
+  // OpenEXR's offsets and blocks stored uncompressed, and 1 MiB of header.
+  // A sparse file of terabytes behind a valid header is refused, not read.
+  std::string h;
+  try {
+    const ImageHeader header = readImageHeader(image);
+    if (const std::string problem = imageHeaderProblem(header, readImageLimits()); !problem.empty())
+      return "the golden image " + image.string() + " " + problem;
+    const std::uintmax_t bound =
+        2 * std::uintmax_t(header.width) * std::uintmax_t(header.height) * std::uintmax_t(header.channels) * 4 +
+        (std::uintmax_t(1) << 20);
+    h = sha256File(image, bound);
+  } catch (const std::exception& err) {
+    return "the golden image " + image.string() + " cannot be used: " + err.what();
+  }
+  if (h != e.image_sha256)
     return "the golden image " + image.string() + " changed since it was stored (SHA-256 " + h + ", manifest " +
            e.image_sha256 + ")";
   return "";

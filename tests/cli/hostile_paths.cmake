@@ -18,6 +18,8 @@
 #                  or povray is refused, naming the reserved name.
 #   golden_duplicate_key  a golden manifest with image_sha256 twice (a wrong
 #                  one first) is refused by golden check, naming the field.
+#   golden_sparse  a stored image grown to a 256 GiB sparse file: golden
+#                  check answers at once (killed after 20 s), not hashing it.
 # Arguments: XVAL, SCENE (a small scene file), TOLERANCES (the toolkit's
 # tolerance file), WORK, CASE.
 foreach(_v XVAL SCENE TOLERANCES WORK CASE)
@@ -152,6 +154,15 @@ elseif(CASE STREQUAL "golden_duplicate_key")
   run_xval(2 _o golden check ${WORK}/set/scenes)
   expect("${_o}" "manifest.json: not valid JSON in field entries.tiny.image_sha256: duplicate field \"image_sha256\""
          "golden check of a manifest with a key twice")
+elseif(CASE STREQUAL "golden_sparse")
+  file(MAKE_DIRECTORY ${WORK}/set/scenes)
+  file(COPY_FILE ${SCENE} ${WORK}/set/scenes/tiny.json)
+  run_xval(0 _o golden update ${WORK}/set/scenes)
+  sh(truncate -s 256G ${WORK}/set/golden/reference/tiny.exr)
+  set(XVAL_RUN_TIMEOUT 20)
+  run_xval(1 _o golden check ${WORK}/set/scenes)
+  expect("${_o}" "golden/reference/tiny.exr cannot be used: .*tiny.exr: holds more than the [0-9]+ bytes expected"
+         "golden check of a stored image grown to a 256 GiB sparse file")
 else()
   message(FATAL_ERROR "hostile_paths.cmake: unknown CASE ${CASE}")
 endif()
