@@ -148,6 +148,15 @@ Renderer loadRendererFile(const fs::path& file) {
   Definition d;
   d.file = fs::absolute(file).lexically_normal();
   d.name = r.requireString("name");
+  // The names xval defines stay its own: a file named golden-mine beside
+  // one named mine would take over mine's golden set, one named povray
+  // the built-in renderer's place.
+  if (isGoldenSetId(d.name))
+    r.fail("name", "\"" + d.name + "\": golden and the prefix golden- are reserved for the golden sets xval "
+                   "defines (golden-<renderer> holds a renderer's stored images); choose another name");
+  if (const Renderer* built_in = registry().find(d.name); built_in && built_in->definition_file.empty())
+    r.fail("name", "\"" + d.name + "\": the id of a renderer built into xval (" + built_in->display_name +
+                       "); choose another name");
   d.input = r.requireChoice("input", {"scene", "gltf", "pov"});
   d.command = r.stringArray("command", true);
   std::vector<std::string> version = r.stringArray("version_command", true);
