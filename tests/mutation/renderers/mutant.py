@@ -50,7 +50,6 @@ FAULTS = {
     "output-srgb": "output encoded with the sRGB transfer function",
     "shift": "image shifted right by one pixel",
     "odd-rows": "every odd row missing (zero colour and coverage)",
-    "last-row": "the last row missing (zero colour and coverage): an off-by-one in the row loop",
     "cracks": "cracks along triangle edges: pixels with a sample within 0.1 px of a triangle edge are dropped",
     "grazing-cull": "grazing pixels culled: pixels where a sample meets its triangle at |cos| < 0.1 are dropped",
     "edge-coverage-drop": "partly covered pixels dropped (coverage 0 < A < 1 set to nothing)",
@@ -186,8 +185,6 @@ def mutate_image(fault, spec, pixels, path):
         rgba[:, 0, :] = 0.0
     elif fault == "odd-rows":
         rgba[1::2, :, :] = 0.0
-    elif fault == "last-row":
-        rgba[-1, :, :] = 0.0
     elif fault == "cracks":
         rgba[channel(spec, pixels, "triangle_edge", path) < 0.1] = 0.0
     elif fault == "grazing-cull":
