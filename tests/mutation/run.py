@@ -129,18 +129,40 @@ def mutants(only):
     return names
 
 
-def validate(xval, scenes, renderers, out, jobs, renderer_file=None, log=None):
+def validate(xval, scenes, renderers, out, jobs, renderer_file=None, log=None, report_only=False):
+    if report_only:
+        return None, read_cases(out)
     cmd = [xval, "validate", *scenes, "--renderers", ",".join(renderers), "-o", out, "--jobs", str(jobs),
            "--tolerances", TOLERANCES, "--resume"]
     if renderer_file:
         cmd += ["--renderer-file", renderer_file]
     with open(log, "w") as f:
         rc = subprocess.run(cmd, stdin=subprocess.DEVNULL, stdout=f, stderr=subprocess.STDOUT).returncode
-    results = os.path.join(out, "results.json")
-    if rc not in (0, 1) and not os.path.exists(results):
+    if rc not in (0, 1) and not os.path.exists(os.path.join(out, "results.json")):
         raise RuntimeError("%s exited %d without results.json; see %s" % (" ".join(cmd), rc, log))
+    return rc, read_cases(out)
+
+
+def read_cases(out):
+    results = os.path.join(out, "results.json")
+    if not os.path.exists(results):
+        raise RuntimeError(results + ": missing (run without --report-only first)")
     with open(results) as f:
-        return rc, {c["scene"]: c for c in json.load(f)["cases"]}
+        return {c["scene"]: c for c in json.load(f)["cases"]}
+
+
+def miss_cause(cell, correct_cases):
+    """Why a visible fault was missed, in the groups docs/mutation-test.md
+    lists."""
+    if cell["pass"]:
+        return "the case passes"
+    if cell["pass"] is None:
+        return "no case"
+    pairs = {p["pair"]: p for p in correct_cases.get(cell["scene"], {}).get("pairs", [])}
+    beside = "-".join(BESIDE_MUTANT)
+    if beside in pairs and not pairs[beside]["pass"]:
+        return "fails, but %s already disagree (no majority to single the mutant out)" % " and ".join(BESIDE_MUTANT)
+    return "fails, attribution does not name the mutant"
 
 
 def seed_from(specificity, out, scenes):
@@ -207,6 +229,8 @@ def main():
     ap.add_argument("--check-mutants", action="store_true",
                     help="only render each mutant on its scene of CHECK_SCENES and exit 1 unless its image "
                          "differs visibly from the reference renderer's")
+    ap.add_argument("--report-only", action="store_true",
+                    help="run no validate: read the results.json files an earlier run wrote and report")
     ap.add_argument("--assert-rates", action="store_true", help="exit 1 unless both rates are at least 98%%")
     args = ap.parse_args()
     xval = os.path.abspath(args.xval)
@@ -242,7 +266,8 @@ def main():
     if not args.no_specificity:
         t = time.time()
         rc, cases = validate(xval, scenes, CORRECT, specificity_dir, args.jobs,
-                             log=os.path.join(out, "specificity.log"))
+                             log=os.path.join(out, "specificity.log"), report_only=args.report_only)
+        correct_cases = cases
         passed = [s for s in names if cases.get(s, {}).get("pass")]
         misses = [{"scene": s, "attribution": cases.get(s, {}).get("attribution", "(no case)"),
                    "failing_pairs": failing_pairs(cases.get(s, {}))} for s in names if s not in passed]
@@ -253,15 +278,18 @@ def main():
 
     # 2. sensitivity
     per_mutant, cells = {}, []
+    if args.no_specificity:
+        correct_cases = {}
     for m in mutants([x for x in args.mutants.split(",") if x]):
         t = time.time()
         name = "mutant-" + m
         mdir = os.path.join(out, "mutants", m)
         os.makedirs(mdir, exist_ok=True)
-        if not args.no_specificity:
+        if not args.no_specificity and not args.report_only:
             seed_from(specificity_dir, mdir, names)
         rc, cases = validate(xval, scenes, BESIDE_MUTANT + [name], mdir, args.jobs,
-                             renderer_file=os.path.join(MUTANT_DIR, m + ".json"), log=os.path.join(mdir, "validate.log"))
+                             renderer_file=os.path.join(MUTANT_DIR, m + ".json"), log=os.path.join(mdir, "validate.log"),
+                             report_only=args.report_only)
         visible = detected = 0
         for s in names:
             case = cases.get(s, {})
@@ -273,6 +301,8 @@ def main():
                 cell.update({"visible": None, "reason": "no render (see the case's renders in results.json)"})
             cell["detected"] = bool(cell["pass"] is False and name in cell["attribution"])
             cell["deviates"] = (name + " deviates") in cell["attribution"]
+            if cell["visible"] and not cell["detected"]:
+                cell["cause"] = miss_cause(cell, correct_cases)
             if cell["visible"]:
                 visible += 1
                 detected += cell["detected"]
@@ -285,7 +315,7 @@ def main():
     report["sensitivity"] = {
         "renderers_beside_mutant": BESIDE_MUTANT, "visible": len(visible), "detected": len(detected),
         "rate": len(detected) / len(visible) if visible else None, "per_mutant": per_mutant,
-        "misses": [{k: c[k] for k in ("mutant", "scene", "pass", "attribution", "fraction_over_16", "max_16bit")}
+        "misses": [{k: c[k] for k in ("mutant", "scene", "pass", "attribution", "cause", "fraction_over_16", "max_16bit")}
                    for c in visible if not c["detected"]],
         "no_render": [{k: c[k] for k in ("mutant", "scene", "attribution")} for c in errors],
         # Visible faults the case caught but whose attribution does not say
@@ -298,8 +328,8 @@ def main():
         print("sensitivity: %d of %d visible (mutant, scene) cases detected (%.1f%%)"
               % (len(detected), len(visible), 100.0 * len(detected) / len(visible)))
     for c in report["sensitivity"]["misses"]:
-        print("  miss: %s on %s: pass=%s, %s (%.2f%% over 16/65535, max %.0f/65535)"
-              % (c["mutant"], c["scene"], c["pass"], c["attribution"], 100 * c["fraction_over_16"], c["max_16bit"]))
+        print("  miss: %s on %s: %s: %s (%.2f%% over 16/65535, max %.0f/65535)"
+              % (c["mutant"], c["scene"], c["cause"], c["attribution"], 100 * c["fraction_over_16"], c["max_16bit"]))
     for c in errors:
         print("  no render: %s on %s: %s" % (c["mutant"], c["scene"], c["attribution"]))
     print("run time: %.0f s" % report["seconds"])
@@ -346,12 +376,15 @@ def markdown(r):
     lines += ["| %s | %d | %d |" % (m, p["visible"], p["detected"]) for m, p in se["per_mutant"].items()]
     lines.append("")
     if se["misses"]:
-        lines += ["### Misses", "", "| mutant | scene | case | attribution | over 16/65535 | max /65535 |",
-                  "| --- | --- | --- | --- | --- | --- |"]
-        lines += ["| %s | %s | %s | %s | %.2f%% | %.0f |" % (c["mutant"], c["scene"], "pass" if c["pass"] else "fail",
-                                                           c["attribution"], 100 * c["fraction_over_16"], c["max_16bit"])
-                  for c in se["misses"]]
-        lines.append("")
+        lines += ["### Misses, by cause", ""]
+        causes = sorted({c["cause"] for c in se["misses"]})
+        for cause in causes:
+            group = [c for c in se["misses"] if c["cause"] == cause]
+            lines += ["#### %s: %d" % (cause, len(group)), "",
+                      "| mutant | scene | attribution | over 16/65535 | max /65535 |", "| --- | --- | --- | --- | --- |"]
+            lines += ["| %s | %s | %s | %.2f%% | %.0f |" % (c["mutant"], c["scene"], c["attribution"],
+                                                          100 * c["fraction_over_16"], c["max_16bit"]) for c in group]
+            lines.append("")
     if se["no_render"]:
         lines += ["### No mutant render", ""] + ["* %s on %s: %s" % (c["mutant"], c["scene"], c["attribution"])
                                                   for c in se["no_render"]] + [""]
