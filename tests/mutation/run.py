@@ -151,6 +151,21 @@ def read_cases(out):
         return {c["scene"]: c for c in json.load(f)["cases"]}
 
 
+def names_as_deviating(attribution, name):
+    """Whether the attribution (renderers::attribute in registry.cpp) puts
+    `name` among the renderers that deviate ("X deviates (A and B agree)",
+    "X and Y deviate (...)") or in a pair that disagrees ("A and X
+    disagree; ..."), not among those that agree."""
+    for clause in attribution.split("; "):
+        if " deviate" in clause:
+            if name in clause.split(" deviate")[0]:
+                return True
+        elif clause.endswith(" disagree") or " disagree (" in clause:
+            if name in clause.split(" disagree")[0]:
+                return True
+    return False
+
+
 def miss_cause(cell, correct_cases):
     """Why a visible fault was missed, in the groups docs/mutation-test.md
     lists."""
@@ -299,7 +314,7 @@ def main():
                 cell.update(visibility(mexr, rexr))
             else:
                 cell.update({"visible": None, "reason": "no render (see the case's renders in results.json)"})
-            cell["detected"] = bool(cell["pass"] is False and name in cell["attribution"])
+            cell["detected"] = bool(cell["pass"] is False and names_as_deviating(cell["attribution"], name))
             cell["deviates"] = (name + " deviates") in cell["attribution"]
             if cell["visible"] and not cell["detected"]:
                 cell["cause"] = miss_cause(cell, correct_cases)

@@ -50,7 +50,7 @@ FAULTS = {
     "output-srgb": "output encoded with the sRGB transfer function",
     "shift": "image shifted right by one pixel",
     "odd-rows": "every odd row missing (zero colour and coverage)",
-    "cracks": "cracks along triangle edges: pixels with a sample within 0.1 px of a triangle edge are dropped",
+    "cracks": "cracks along triangle edges: pixels with a sample within 0.02 px of a triangle edge are dropped (a tie-breaking rule that gives an edge to neither triangle)",
     "grazing-cull": "grazing pixels culled: pixels where a sample meets its triangle at |cos| < 0.1 are dropped",
     "edge-coverage-drop": "partly covered pixels dropped (coverage 0 < A < 1 set to nothing)",
     "edge-coverage-unassociated": "partly covered pixels written with unassociated colour (RGB / A) while the file says premultiplied",
@@ -186,7 +186,7 @@ def mutate_image(fault, spec, pixels, path):
     elif fault == "odd-rows":
         rgba[1::2, :, :] = 0.0
     elif fault == "cracks":
-        rgba[channel(spec, pixels, "triangle_edge", path) < 0.1] = 0.0
+        rgba[channel(spec, pixels, "triangle_edge", path) < 0.02] = 0.0
     elif fault == "grazing-cull":
         covered = rgba[:, :, 3] > 0
         rgba[covered & (channel(spec, pixels, "incidence", path) < 0.1)] = 0.0
