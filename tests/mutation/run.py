@@ -213,11 +213,13 @@ def check_mutants(xval, set_dir, names, out, which):
         sys.exit("run.py: CHECK_SCENES has no scene for %s; names scenes not in the set: %s"
                  % (", ".join(missing) or "-", ", ".join(unknown) or "-"))
     status = 0
+    rendered = set()
     for m in which:
         scene = CHECK_SCENES[m]
         ref = os.path.join(out, scene + ".reference.exr")
-        if not os.path.exists(ref):
+        if ref not in rendered:  # rendered anew by each run: never an earlier xval's image
             render(xval, os.path.join(set_dir, scene + ".json"), ref, ref + ".log")
+            rendered.add(ref)
         exr = os.path.join(out, scene + "." + m + ".exr")
         render(xval, os.path.join(set_dir, scene + ".json"), exr, exr + ".log", renderer=m)
         v = visibility(exr, ref)
@@ -229,7 +231,8 @@ def check_mutants(xval, set_dir, names, out, which):
 
 
 def failing_pairs(case):
-    return [p["pair"] for p in case.get("pairs", []) if not p.get("pass")]
+    """The compared pairs that fail (not those a renderer cannot express)."""
+    return [p["pair"] for p in case.get("pairs", []) if not p.get("pass") and "not_expressible" not in p]
 
 
 def main():
@@ -272,6 +275,7 @@ def main():
         names = QUICK_SCENES
     scenes = [os.path.join(set_dir, s + ".json") for s in names]
     report = {"command": " ".join(sys.argv), "scenes": len(names), "quick": args.quick,
+              "report_only": args.report_only,
               "definition_of_visible": "more than %g%% of the covered pixels differ by more than %g/65535, or any "
                                        "pixel by more than %g/65535 (largest of R, G, B, A, premultiplied)"
                                        % (100 * VISIBLE_FRACTION, VISIBLE_ABOVE_16BIT, VISIBLE_ANY_ABOVE_16BIT)}
@@ -375,8 +379,9 @@ def markdown(r):
     sp = r.get("specificity")
     if sp:
         lines += ["## Specificity", "",
-                  "%d of %d scenes pass with %s and no declared tolerance: **%.1f%%** (%.0f s)."
-                  % (sp["passed"], sp["scenes"], ", ".join(sp["renderers"]), 100 * sp["rate"], sp["seconds"]), ""]
+                  "%d of %d scenes pass with %s and no declared tolerance: **%.1f%%**%s."
+                  % (sp["passed"], sp["scenes"], ", ".join(sp["renderers"]), 100 * sp["rate"],
+                     "" if r["report_only"] else " (%.0f s)" % sp["seconds"]), ""]
         if sp["misses"]:
             lines += ["| scene | failing pairs | attribution |", "| --- | --- | --- |"]
             lines += ["| %s | %s | %s |" % (m["scene"], ", ".join(m["failing_pairs"]), m["attribution"]) for m in sp["misses"]]
@@ -403,7 +408,8 @@ def markdown(r):
     if se["no_render"]:
         lines += ["### No mutant render", ""] + ["* %s on %s: %s" % (c["mutant"], c["scene"], c["attribution"])
                                                   for c in se["no_render"]] + [""]
-    lines += ["Run time: %.0f s." % r["seconds"], ""]
+    if not r["report_only"]:
+        lines += ["Run time: %.0f s." % r["seconds"], ""]
     return "\n".join(lines)
 
 
