@@ -1,6 +1,7 @@
 // A renderer defined by a file (renderers/renderer_file.h).
 #include "renderers/renderer_file.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -161,6 +162,15 @@ Renderer loadRendererFile(const fs::path& file) {
   d.command = r.stringArray("command", true);
   std::vector<std::string> version = r.stringArray("version_command", true);
   if (r.has("timeout_s")) d.timeout_s = r.requireNumber("timeout_s", Range::openClosed(0.0, 7 * 24 * 3600.0));
+  // One line that says what the renderer is (`xval renderers` shows it).
+  std::string description;
+  if (r.has("description")) {
+    description = r.requireString("description");
+    if (description.empty() || description.size() > kMaxRendererDescriptionBytes ||
+        std::any_of(description.begin(), description.end(), [](char c) { return (unsigned char)c < 0x20; }))
+      r.failValue("description", "one line of 1 to " + std::to_string(kMaxRendererDescriptionBytes) +
+                                     " bytes without control characters");
+  }
   r.finish();
   if (d.command.empty() || d.command.front().empty()) r.fail("command", "expected the program and its arguments");
   if (version.empty() || version.front().empty())
@@ -173,7 +183,8 @@ Renderer loadRendererFile(const fs::path& file) {
   Renderer out;
   out.id = d.name;
   out.display_name = d.name;
-  out.summary = "defined by " + d.file.string() + " (input " + d.input + ")";
+  out.summary = (description.empty() ? "" : description + "; ") + "defined by " + d.file.string() + " (input " +
+                d.input + ")";
   out.version_command = version;
   out.version_marker = d.name;
   out.definition_file = fs::absolute(d.file).lexically_normal();
