@@ -24,6 +24,7 @@
 #include <string_view>
 
 #include "geometry/assimp_dump.h"
+#include "geometry/degenerate_triangles.h"
 #include "geometry/transform.h"
 #include "process/run_process.h"
 #include "scene/json_reader.h"
@@ -893,6 +894,16 @@ Model loadModelFile(const fs::path& file_in, const ModelLoadOptions& options) {
             throw ModelFileError(where + ": face " + std::to_string(f) + ": index " + std::to_string(face.mIndices[c]) +
                                  " out of range (the mesh has " + std::to_string(nv) + " vertices)");
         tm.triangles.push_back({face.mIndices[0], face.mIndices[1], face.mIndices[2]});
+      }
+      // Before the normals are computed: the mesh is the one without them.
+      if (DroppedTriangles d = dropDegenerateTriangles(tm.triangles); d.dropped() > 0) {
+        model.notes.push_back(where + ": " + std::to_string(d.dropped()) + " of " +
+                              std::to_string(tm.triangles.size()) + " triangles dropped, " +
+                              std::to_string(d.repeated_index) + " with a repeated vertex index and " +
+                              std::to_string(d.duplicates) +
+                              " repeating an earlier triangle's three vertices (they cover no pixel; every "
+                              "renderer gets the same triangles: geometry/degenerate_triangles.h)");
+        tm.triangles = std::move(d.kept);
       }
       if (tm.triangles.empty()) continue;
       if (!p.file_normals) tm.normals.assign(nv, glm::dvec3(0.0, 0.0, 1.0));
