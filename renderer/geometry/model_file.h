@@ -117,10 +117,11 @@ struct Model {
   // render of the model depends on (validate's input hash) and what
   // `xval pack` packs with it.
   std::vector<std::filesystem::path> files;
-  // What the loader changed, one line each, naming the file and the
-  // primitive: triangles dropped by the rule of geometry/
-  // degenerate_triangles.h (a repeated vertex index, a twin of an earlier
-  // triangle). Empty when the file's triangles are taken as they are.
+  // What the loader changed, one line each, naming the file: the triangles
+  // dropped by the rule of geometry/degenerate_triangles.h (a repeated
+  // vertex index, a twin of an earlier triangle), counted over every
+  // placed mesh, with the first such mesh. Empty when the file's triangles
+  // are taken as they are.
   std::vector<std::string> notes;
   long long triangleCount() const;
   long long vertexCount() const;

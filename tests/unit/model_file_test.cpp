@@ -317,13 +317,15 @@ TEST_F(ModelFile, DegenerateTrianglesAreDroppedAndNoted) {
   EXPECT_EQ(t, want);
   ASSERT_EQ(m.notes.size(), 1u);
   const std::string& note = m.notes[0];
-  EXPECT_NE(note.find("degenerate.off: mesh 0"), std::string::npos) << note;
-  EXPECT_NE(note.find("3 of 6 triangles dropped, 1 with a repeated vertex index and 2 repeating"),
+  EXPECT_NE(note.find("degenerate.off: 3 of 6 triangles dropped in 1 placed meshes (the first: mesh 0"),
             std::string::npos)
       << note;
+  EXPECT_NE(note.find("1 with a repeated vertex index and 2 repeating"), std::string::npos) << note;
   // The computed normals are those of the kept triangles: the reversed
   // twin (2, 1, 0) no longer cancels (0, 1, 2) at vertex 0.
   expectNear(m.primitives[0].mesh.normals[0], {0, 0, 1}, 1e-15, "vertex 0 normal");
+  // A file of nothing else is refused, and says why.
+  expectError(write("only.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 1\n"), "1 with a repeated vertex index");
   // A file without such triangles has no note.
   EXPECT_TRUE(loadModelFile(write("clean.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")).notes.empty());
 }
