@@ -21,6 +21,8 @@ TEST(DegenerateTriangles, RepeatedIndexInAnyPositionIsDropped) {
 TEST(DegenerateTriangles, TwinsOfEitherWindingKeepTheFirst) {
   // (2, 1, 0) first, then its rotation, its reverse and its own repeat,
   // spread among other triangles: only the first of the four stays.
+  // Blender 3.4.1's mesh validation, given this very list, keeps the same
+  // three (measured with a hand-made mesh and Mesh.validate()).
   const DroppedTriangles d = dropDegenerateTriangles(
       {T(5, 6, 7), T(2, 1, 0), T(1, 2, 3), T(1, 0, 2), T(0, 1, 2), T(2, 1, 0), T(3, 2, 1)});
   EXPECT_EQ(d.repeated_index, 0u);

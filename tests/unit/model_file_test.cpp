@@ -321,8 +321,7 @@ TEST_F(ModelFile, DegenerateTrianglesAreDroppedAndNoted) {
             std::string::npos)
       << note;
   EXPECT_NE(note.find("1 with a repeated vertex index and 2 repeating"), std::string::npos) << note;
-  // The computed normals are those of the kept triangles: the reversed
-  // twin (2, 1, 0) no longer cancels (0, 1, 2) at vertex 0.
+  // The computed normals are those of the kept triangles.
   expectNear(m.primitives[0].mesh.normals[0], {0, 0, 1}, 1e-15, "vertex 0 normal");
   // A file of nothing else is refused, and says why.
   expectError(write("only.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 1\n"), "1 with a repeated vertex index");
