@@ -11,6 +11,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "files/output_folder.h"
 #include "image/image.h"
@@ -322,6 +323,8 @@ std::vector<JobRecord> runJobs(const Plan& plan, const std::vector<size_t>& todo
   for (size_t k = 0; k < plan.scenes.size(); ++k)
     for (size_t j : sceneJobs(plan, k)) scene_of.at(j) = k;
   for (size_t index : todo) ++pending.at(scene_of.at(index));
+  // A scene's notes (the same in each of its records) are printed once.
+  std::vector<char> noted(plan.scenes.size(), 0);
   const double capacity = double(std::max(1, settings.workers));
   auto weightOf = [&](const Task& task) {
     if (!settings.by_load) return 1.0;
@@ -355,7 +358,8 @@ std::vector<JobRecord> runJobs(const Plan& plan, const std::vector<size_t>& todo
                        rec.seconds, el, el * double(todo.size() - n) / double(n));
           if (!rec.error.empty()) std::fprintf(stderr, "  %s\n", rec.error.c_str());
           if (!rec.not_expressible.empty()) std::fprintf(stderr, "  %s\n", rec.not_expressible.c_str());
-          for (const std::string& n : rec.notes) std::fprintf(stderr, "  note: %s\n", n.c_str());
+          if (!std::exchange(noted.at(scene_of.at(index)), 1))
+            for (const std::string& n : rec.notes) std::fprintf(stderr, "  note: %s\n", n.c_str());
           ready = --pending.at(scene_of.at(index)) == 0;
         }
         if (after_case && ready) queueAfterCase(scene_of.at(index), true);
