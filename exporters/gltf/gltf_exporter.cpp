@@ -13,6 +13,7 @@
 
 #include "camera/camera.h"
 #include "common/supersample.h"
+#include "geometry/degenerate_triangles.h"
 #include "geometry/float_rounding.h"
 #include "geometry/mesh.h"
 #include "geometry/model_textures.h"
@@ -189,6 +190,16 @@ GltfExport exportGltf(const Scene& input, const std::filesystem::path& dir) {
   const std::vector<TriangleMesh>& meshes = sm.meshes;
   for (size_t k = 0; k < meshes.size(); ++k) {
     const TriangleMesh& mesh = meshes[k];
+    // Blender's importer drops such triangles (geometry/
+    // degenerate_triangles.h; the model loader drops them before any
+    // renderer sees a mesh): one left here would give Blender other
+    // triangles than every other renderer.
+    if (const DroppedTriangles d = dropDegenerateTriangles(mesh.triangles); d.dropped() > 0)
+      throw ExportError("glTF export for Blender: mesh " + std::to_string(k) + " (object " +
+                        std::to_string(sm.object[k]) + ") has " + std::to_string(d.repeated_index) +
+                        " triangles with a repeated vertex index and " + std::to_string(d.duplicates) +
+                        " repeating an earlier triangle's three vertices, which Blender's importer drops "
+                        "(geometry/degenerate_triangles.h): Blender would not render the same triangles");
     const size_t slot = slots.object_slot[sm.object[k]];
     const Material& material = *slots.materials[slot];
     const Texture* texture = textures[slot] ? &*textures[slot] : nullptr;

@@ -6,6 +6,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/renderer_file_option.h"
+#include "geometry/scene_meshes.h"
 #include "render/renderer.h"
 #include "renderers/registry.h"
 #include "scene/scene_lint.h"
@@ -91,6 +92,7 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
       renderers::registerRendererFiles(*renderer_files);
       Scene scene = loadScene(args->scene, args->budget.get());
       printSceneWarnings("xval render", scene);
+      for (const std::string& n : meshNotes(scene)) std::fprintf(stderr, "xval render: note: %s\n", n.c_str());
       RenderOptions opt = defaultOptions(scene);
       if (args->spp) {
         requirePerfectSquareSpp(args->spp, "--spp");

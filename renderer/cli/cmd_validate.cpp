@@ -297,6 +297,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
                        rec.seconds, (plan.dir / job.record()).c_str());
           if (!rec.error.empty()) std::fprintf(stderr, "  %s\n", rec.error.c_str());
           if (!rec.not_expressible.empty()) std::fprintf(stderr, "  %s\n", rec.not_expressible.c_str());
+          for (const std::string& n : rec.notes) std::fprintf(stderr, "  note: %s\n", n.c_str());
           return rec.error.empty() ? 0 : 2;
         }
         if (args->dir.empty()) throw std::runtime_error("-o OUTPUT is required (or --plan with --run-job / --compare-only)");

@@ -24,6 +24,7 @@
 #include <string_view>
 
 #include "geometry/assimp_dump.h"
+#include "geometry/degenerate_triangles.h"
 #include "geometry/transform.h"
 #include "process/run_process.h"
 #include "scene/json_reader.h"
@@ -841,6 +842,12 @@ Model loadModelFile(const fs::path& file_in, const ModelLoadOptions& options) {
     throw ModelFileError(file + ": " + std::to_string(verts) + " vertices (with every node's meshes); the limit is " +
                          std::to_string(lim.max_vertices));
 
+  // Triangles dropped by the rule of geometry/degenerate_triangles.h, over
+  // every placed mesh: one note for the file.
+  struct {
+    size_t read = 0, repeated_index = 0, duplicates = 0, primitives = 0;
+    std::string first;  // the first placed mesh with any
+  } dropped;
   for (const auto& pl : nodes) {
     for (unsigned k = 0; k < pl.node->mNumMeshes; ++k) {
       const unsigned mi = pl.node->mMeshes[k];
@@ -894,6 +901,14 @@ Model loadModelFile(const fs::path& file_in, const ModelLoadOptions& options) {
                                  " out of range (the mesh has " + std::to_string(nv) + " vertices)");
         tm.triangles.push_back({face.mIndices[0], face.mIndices[1], face.mIndices[2]});
       }
+      // Before the normals are computed: the mesh is the one without them.
+      dropped.read += tm.triangles.size();
+      if (DroppedTriangles d = dropDegenerateTriangles(tm.triangles); d.dropped() > 0) {
+        dropped.repeated_index += d.repeated_index, dropped.duplicates += d.duplicates;
+        if (dropped.first.empty()) dropped.first = p.label;
+        ++dropped.primitives;
+        tm.triangles = std::move(d.kept);
+      }
       if (tm.triangles.empty()) continue;
       if (!p.file_normals) tm.normals.assign(nv, glm::dvec3(0.0, 0.0, 1.0));
       try {
@@ -939,7 +954,19 @@ Model loadModelFile(const fs::path& file_in, const ModelLoadOptions& options) {
       model.primitives.push_back(std::move(p));
     }
   }
-  if (model.primitives.empty()) throw ModelFileError(file + ": no triangles (every mesh has only points or lines)");
+  if (dropped.primitives > 0)
+    model.notes.push_back(
+        file + ": " + std::to_string(dropped.repeated_index + dropped.duplicates) + " of " +
+        std::to_string(dropped.read) + " triangles dropped in " + std::to_string(dropped.primitives) +
+        " placed meshes (the first: " + dropped.first + "), " + std::to_string(dropped.repeated_index) +
+        " with a repeated vertex index and " + std::to_string(dropped.duplicates) +
+        " repeating an earlier triangle's three vertices: they cover no pixel, and every renderer gets the "
+        "same triangles (geometry/degenerate_triangles.h)");
+  if (model.primitives.empty()) {
+    const std::string also = model.notes.empty() ? "" : " (" + model.notes.front() + ")";
+    throw ModelFileError(file + ": no triangles (every mesh has only points or lines, or only dropped triangles)" +
+                         also);
+  }
   return model;
 }
 

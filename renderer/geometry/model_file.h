@@ -8,7 +8,10 @@
 // (positions by the matrix, normals by its inverse transpose, triangles
 // re-wound under a mirroring matrix).
 //   Triangles: polygons are triangulated (Assimp's aiProcess_Triangulate);
-//     points and lines are dropped, they are not surfaces.
+//     points and lines are dropped, they are not surfaces; so are the
+//     triangles that repeat a vertex index or an earlier triangle's three
+//     vertices (geometry/degenerate_triangles.h: they cover no pixel, and
+//     Blender's importer drops them), each primitive's count in `notes`.
 //   Normals: the file's, where the mesh has them (a zero-length one is
 //     replaced by the computed one of that vertex); otherwise computed:
 //       n_v = normalize(sum over the triangles t that use vertex v of
@@ -114,6 +117,12 @@ struct Model {
   // render of the model depends on (validate's input hash) and what
   // `xval pack` packs with it.
   std::vector<std::filesystem::path> files;
+  // What the loader changed, one line each, naming the file: the triangles
+  // dropped by the rule of geometry/degenerate_triangles.h (a repeated
+  // vertex index, a twin of an earlier triangle), counted over every
+  // placed mesh, with the first such mesh. Empty when the file's triangles
+  // are taken as they are.
+  std::vector<std::string> notes;
   long long triangleCount() const;
   long long vertexCount() const;
 };

@@ -27,6 +27,14 @@ std::vector<TriangleMesh> objectMeshes(const SceneObject& object) {
   return meshes;
 }
 
+std::vector<std::string> meshNotes(const Scene& scene) {
+  std::vector<std::string> out;
+  for (const SceneObject& o : scene.objects)
+    if (const auto* m = std::get_if<MeshFile>(&o.shape))
+      out.insert(out.end(), m->model->notes.begin(), m->model->notes.end());
+  return out;
+}
+
 SceneMeshes sceneMeshes(const Scene& scene) {
   SceneMeshes out;
   for (size_t k = 0; k < scene.objects.size(); ++k)

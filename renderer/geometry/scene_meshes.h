@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "geometry/mesh.h"
@@ -31,5 +32,11 @@ std::vector<TriangleMesh> objectMeshes(const SceneObject& object);
 
 // Every object's meshes, in order.
 SceneMeshes sceneMeshes(const Scene& scene);
+
+// What the model loader changed in the scene's model files (Model::notes:
+// triangles dropped, geometry/degenerate_triangles.h), each object's in
+// order: the same for every renderer, so each render's record and log
+// carries it.
+std::vector<std::string> meshNotes(const Scene& scene);
 
 }  // namespace xval

@@ -10,6 +10,7 @@
 
 #include "files/atomic_write.h"
 #include "files/output_folder.h"
+#include "geometry/scene_meshes.h"
 #include "image/compare.h"
 #include "image/perceptual.h"
 #include "render/renderer.h"
@@ -28,6 +29,7 @@ namespace xval::validation {
 int crosscheck(const CrosscheckRequest& request) {
   Scene scene = loadScene(request.scene_file, request.budget);
   printSceneWarnings("xval crosscheck", scene);
+  for (const std::string& n : meshNotes(scene)) std::fprintf(stderr, "xval crosscheck: note: %s\n", n.c_str());
   std::filesystem::path dir(request.dir);
   std::filesystem::create_directories(dir);
   const FolderLock folder_lock(dir, FolderLock::Mode::Exclusive, "xval crosscheck");

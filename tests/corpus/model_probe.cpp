@@ -1,4 +1,4 @@
-// xval_model_probe [--render] FILE...: loads each model file with
+// xval_model_probe [--render] [--keep-scene SCENE] FILE...: loads each model file with
 // loadModelFile and prints one line per file:
 //   loaded <file>: <P> primitives, <T> triangles, <V> vertices
 //   refused <message>            (a ModelFileError: names the file and why)
@@ -9,6 +9,9 @@
 // looking at its centre from 1.2 bounding radii / sin(fov/2) away), read by
 // loadScene and rendered by both paths (float and double). The line then
 // ends in "; rendered: <C> of 1024 pixels covered (float), <D> (double)".
+// With --keep-scene, the scene of the (one) file is written to SCENE, its
+// "name" SCENE's stem, and kept when the file loaded and rendered (the
+// corpus's Blender sweep validates it: model_corpus.cpp, --blender).
 // A SceneError (the scene loader's error, naming the model file) is
 // printed as "refused"; a rendered pixel that is not finite is a failure.
 // Exit status 0 when every file was loaded (and rendered) or refused; 2
@@ -41,7 +44,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // The scene of a loaded model (see the top of the file); returns its path.
-fs::path writeProbeScene(const xval::Model& m, const fs::path& model, const fs::path& dir) {
+fs::path writeProbeScene(const xval::Model& m, const fs::path& model, const fs::path& file) {
   glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
   for (const auto& p : m.primitives)
     for (const auto& v : p.mesh.positions) lo = glm::min(lo, v), hi = glm::max(hi, v);
@@ -51,7 +54,7 @@ fs::path writeProbeScene(const xval::Model& m, const fs::path& model, const fs::
   const glm::dvec3 eye = c + dist * glm::normalize(glm::dvec3(0.3, 0.4, 1.0));
   const nlohmann::json scene = {
       {"format", "xval-scene/1"},
-      {"name", "model_probe"},
+      {"name", file.stem().string()},
       {"camera",
        {{"position", {eye.x, eye.y, eye.z}}, {"target", {c.x, c.y, c.z}}, {"fov_y_deg", fov_deg}, {"width", 32},
         {"height", 32}}},
@@ -59,7 +62,6 @@ fs::path writeProbeScene(const xval::Model& m, const fs::path& model, const fs::
       {"material", {{"model", {{"type", "classic_phong"}, {"variant", "paper"}, {"shininess", 20}}}}},
       {"lights", {{{"type", "point"}, {"position", {eye.x + r, eye.y + 2 * r, eye.z}}}}},
       {"shading", "phong"}};
-  const fs::path file = dir / "scene.json";
   std::ofstream(file) << scene.dump(2);
   return file;
 }
@@ -78,12 +80,18 @@ int coveredPixels(const xval::Image& img, const char* path) {
 int main(int argc, char** argv) {
   int status = 0;
   bool render = false;
+  fs::path keep;
   const fs::path dir = fs::temp_directory_path() / ("xval_model_probe_" + std::to_string(getpid()));
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--render") == 0) {
       render = true;
       continue;
     }
+    if (std::strcmp(argv[i], "--keep-scene") == 0 && i + 1 < argc) {
+      keep = fs::absolute(argv[++i]);
+      continue;
+    }
+    bool kept = false;
     try {
       xval::ModelLoadOptions o;
       o.uvs = xval::UvRequirement::ModelTextures;
@@ -93,7 +101,7 @@ int main(int argc, char** argv) {
            << " triangles, " << m.vertexCount() << " vertices";
       if (render) {
         fs::create_directories(dir);
-        const xval::Scene scene = xval::loadScene(writeProbeScene(m, argv[i], dir));
+        const xval::Scene scene = xval::loadScene(writeProbeScene(m, argv[i], keep.empty() ? dir / "scene.json" : keep));
         int covered[2];
         for (const xval::Precision p : {xval::Precision::Float, xval::Precision::Double}) {
           xval::RenderOptions opt = xval::defaultOptions(scene);
@@ -102,7 +110,9 @@ int main(int argc, char** argv) {
               coveredPixels(xval::renderScene(scene, opt), p == xval::Precision::Float ? "float" : "double");
         }
         line << "; rendered: " << covered[0] << " of 1024 pixels covered (float), " << covered[1] << " (double)";
+        kept = !keep.empty();
       }
+      for (const std::string& n : m.notes) line << "; note: " << n;
       std::cout << line.str() << "\n";
     } catch (const xval::ModelFileError& e) {
       std::cout << "refused " << e.what() << "\n";
@@ -112,6 +122,8 @@ int main(int argc, char** argv) {
       std::cout << "escaped " << argv[i] << ": " << e.what() << "\n";
       status = 2;
     }
+    std::error_code ec;
+    if (!kept && !keep.empty()) fs::remove(keep, ec);
   }
   std::error_code ec;
   fs::remove_all(dir, ec);

@@ -302,6 +302,33 @@ TEST_F(ModelFile, OffQuadIsTriangulated) {
               "need more than the");
 }
 
+// Triangles with a repeated vertex index, and twins of an earlier
+// triangle, are dropped (geometry/degenerate_triangles.h), and the note
+// says so; a zero-area triangle on distinct indices (vertex 4 coincides
+// with vertex 0) stays, as Blender keeps it.
+TEST_F(ModelFile, DegenerateTrianglesAreDroppedAndNoted) {
+  const auto f = write("degenerate.off",
+                       "OFF\n5 6 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 0\n"
+                       "3 0 1 2\n3 0 0 1\n3 2 1 0\n3 1 2 0\n3 1 3 2\n3 0 1 4\n");
+  const Model m = loadModelFile(f);
+  ASSERT_EQ(m.primitives.size(), 1u);
+  const auto& t = m.primitives[0].mesh.triangles;
+  const std::vector<glm::u32vec3> want{{0, 1, 2}, {1, 3, 2}, {0, 1, 4}};
+  EXPECT_EQ(t, want);
+  ASSERT_EQ(m.notes.size(), 1u);
+  const std::string& note = m.notes[0];
+  EXPECT_NE(note.find("degenerate.off: 3 of 6 triangles dropped in 1 placed meshes (the first: mesh 0"),
+            std::string::npos)
+      << note;
+  EXPECT_NE(note.find("1 with a repeated vertex index and 2 repeating"), std::string::npos) << note;
+  // The computed normals are those of the kept triangles.
+  expectNear(m.primitives[0].mesh.normals[0], {0, 0, 1}, 1e-15, "vertex 0 normal");
+  // A file of nothing else is refused, and says why.
+  expectError(write("only.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 1\n"), "1 with a repeated vertex index");
+  // A file without such triangles has no note.
+  EXPECT_TRUE(loadModelFile(write("clean.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")).notes.empty());
+}
+
 // --- glTF, GLB --------------------------------------------------------------
 
 // One triangle with uvs (0, 0.25), (1, 0.25), (0, 1) in glTF's convention,

@@ -100,6 +100,7 @@ void writeRecord(const Plan& plan, const RenderJob& job, const JobRecord& rec) {
   if (rec.parse_seconds >= 0) j["parse_seconds"] = rec.parse_seconds;
   if (!rec.error.empty()) j["error"] = rec.error;
   if (!rec.not_expressible.empty()) j["not_expressible"] = rec.not_expressible;
+  if (!rec.notes.empty()) j["notes"] = rec.notes;
   j["host"] = hostName();
   j["finished_unix"] = nowUnix();
   writeFileAtomically(plan.dir / job.record(), j.dump(2) + "\n");

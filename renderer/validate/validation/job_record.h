@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "validate/validation/plan.h"
 
@@ -33,6 +34,9 @@ struct JobRecord {
   // rendering (Renderer::cannot_express): a verdict, not an error; the job
   // rendered nothing. Empty when it can.
   std::string not_expressible;
+  // What the model loader changed in the scene (geometry/scene_meshes.h,
+  // meshNotes): the record says which triangles the render was not given.
+  std::vector<std::string> notes;
   std::string problem;     // why the record cannot be used (missing, unreadable); empty when present
 };
 

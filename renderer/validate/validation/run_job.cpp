@@ -11,10 +11,12 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "files/output_folder.h"
 #include "image/image.h"
 #include "process/job_pool.h"
+#include "geometry/scene_meshes.h"
 #include "render/geometry_passes.h"
 #include "render/renderer.h"
 #include "validate/validation/job_cost.h"
@@ -107,6 +109,7 @@ StartedJob startJob(const Plan& plan, const RenderJob& job) {
     if (!fs::remove(record, ec) && ec)
       throw std::runtime_error(record.string() + ": cannot remove the previous record: " + ec.message());
     Scene scene = loadScene(job.path, plan.budget);
+    s.rec.notes = meshNotes(scene);
     const std::string now_hash = inputHash(scene, job.path, job.renderer);
     if (now_hash != job.input_hash)
       throw std::runtime_error(job.path.string() + ": changed since the plan was written (input_hash " +
@@ -320,6 +323,8 @@ std::vector<JobRecord> runJobs(const Plan& plan, const std::vector<size_t>& todo
   for (size_t k = 0; k < plan.scenes.size(); ++k)
     for (size_t j : sceneJobs(plan, k)) scene_of.at(j) = k;
   for (size_t index : todo) ++pending.at(scene_of.at(index));
+  // A scene's notes (the same in each of its records) are printed once.
+  std::vector<char> noted(plan.scenes.size(), 0);
   const double capacity = double(std::max(1, settings.workers));
   auto weightOf = [&](const Task& task) {
     if (!settings.by_load) return 1.0;
@@ -353,6 +358,8 @@ std::vector<JobRecord> runJobs(const Plan& plan, const std::vector<size_t>& todo
                        rec.seconds, el, el * double(todo.size() - n) / double(n));
           if (!rec.error.empty()) std::fprintf(stderr, "  %s\n", rec.error.c_str());
           if (!rec.not_expressible.empty()) std::fprintf(stderr, "  %s\n", rec.not_expressible.c_str());
+          if (!std::exchange(noted.at(scene_of.at(index)), 1))
+            for (const std::string& n : rec.notes) std::fprintf(stderr, "  note: %s\n", n.c_str());
           ready = --pending.at(scene_of.at(index)) == 0;
         }
         if (after_case && ready) queueAfterCase(scene_of.at(index), true);
