@@ -334,8 +334,12 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   // A case: the verdict the compare step decided (validation/
   // case_verdict.h), as the pairs' verdicts read ("not compared").
   auto caseVerdict = [&results_json](const J& c) -> std::string {
-    std::string v = validation::verdictName(validation::parseCaseVerdict(
-        c.value("verdict", ""), results_json.string() + ": case " + c.value("scene", "") + ": verdict"));
+    const std::string where = results_json.string() + ": case " + c.value("scene", "") + ": verdict";
+    if (!c.contains("verdict"))
+      throw std::runtime_error(where + ": missing (a results.json written before the case verdict existed: "
+                                       "compare its folder again with xval validate --plan DIR/jobs.json "
+                                       "--compare-only)");
+    std::string v = validation::verdictName(validation::parseCaseVerdict(c.value("verdict", ""), where));
     std::replace(v.begin(), v.end(), '_', ' ');
     return v;
   };
