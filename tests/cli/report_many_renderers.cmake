@@ -87,6 +87,50 @@ string(SUBSTRING "${_html}" 0 ${_cases_at} _summary)
 expect_in("${_summary}" "<th></th><th>alpha</th><th>bravo</th><th>kilo</th><th>mike</th><th>zulu</th></tr>")
 expect_in("${_summary}" "<tr><th class=\"l\">reference</th><td title=\"reference-alpha\"")
 
+# The report's order is results.json's renderers: not the order in which a
+# case stores its renders and pairs, nor that of the cases (failures
+# first). A failing case listed first that stores its pairs backwards and
+# its renders by name (CMake's JSON writes an object's members so) changes
+# neither the matrix nor the order of its renders.
+file(READ ${WORK}/one/results.json _json)
+get_json(_case "${_json}" cases 0)
+string(JSON _n LENGTH "${_case}" renders)
+string(JSON _np LENGTH "${_case}" pairs)
+set(_renders "{}")
+set(_pairs "[]")
+math(EXPR _last "${_n} - 1")
+foreach(_i RANGE ${_last})
+  math(EXPR _k "${_last} - ${_i}")
+  string(JSON _id MEMBER "${_case}" renders ${_k})
+  get_json(_v "${_case}" renders ${_id})
+  string(JSON _renders SET "${_renders}" ${_id} "${_v}")
+endforeach()
+math(EXPR _last "${_np} - 1")
+foreach(_i RANGE ${_last})
+  math(EXPR _k "${_last} - ${_i}")
+  get_json(_v "${_case}" pairs ${_k})
+  string(JSON _pairs SET "${_pairs}" ${_i} "${_v}")
+endforeach()
+string(JSON _backwards SET "${_case}" renders "${_renders}")
+string(JSON _backwards SET "${_backwards}" pairs "${_pairs}")
+string(JSON _backwards SET "${_backwards}" scene "\"tiny-b\"")
+string(JSON _backwards SET "${_backwards}" pass false)
+string(JSON _json SET "${_json}" cases "[${_backwards}, ${_case}]")
+file(WRITE ${WORK}/one/backwards.json "${_json}")
+run(0 ${XVAL} report ${WORK}/one/backwards.json -o ${WORK}/one/backwards.html)
+file(READ ${WORK}/one/backwards.html _page)
+string(REGEX MATCHALL "<th></th><th>alpha</th><th>bravo</th><th>kilo</th><th>mike</th><th>zulu</th></tr>" _matrices
+       "${_page}")
+list(LENGTH _matrices _n)
+expect_eq("pair matrices in the order of results.json renderers" "${_n}" "2")
+string(FIND "${_page}" "id=\"tiny-b\"" _at)
+string(SUBSTRING "${_page}" ${_at} -1 _case_b)
+string(FIND "${_case_b}" "<div class=\"case\"" _end)  # the next case
+string(SUBSTRING "${_case_b}" 0 ${_end} _case_b)
+string(REGEX MATCHALL "<figure><img src=\"[^\"]*\" alt=\"[a-z]+\"" _figures "${_case_b}")
+string(REGEX REPLACE "<figure><img src=\"[^\"]*\" alt=\"([a-z]+)\"" "\\1" _figures "${_figures}")
+expect_eq("the renders of the case stored backwards" "${_figures}" "reference;alpha;bravo;kilo;zulu")
+
 # The summary table's columns: as many with 15 pairs as with one.
 function(summary_columns var html)
   string(REGEX MATCH "<h2>Summary</h2>\n<table[^>]*><tr>[^\n]*</tr>\n" _head "${html}")
@@ -145,7 +189,9 @@ find_program(_chromium ${CHROMIUM} REQUIRED)
 string(REPLACE "</body>" "<script>
 window.addEventListener('load', function () {
   document.querySelectorAll('details').forEach(function (d) { d.open = true; });
-  var t = document.getElementById('summary');
+  var h = Array.prototype.find.call(document.querySelectorAll('h2'),
+                                    function (e) { return e.textContent === 'Summary'; });
+  var t = h && h.nextElementSibling;  // the summary table
   var right = t ? Math.ceil(t.getBoundingClientRect().right) : -1;
   document.title = (t && right <= window.innerWidth ? 'summary fits' : 'summary overflows') +
                    ': right ' + right + ' of ' + window.innerWidth + ' px';
