@@ -34,7 +34,8 @@ void addExtremesCommand(CLI::App& app, std::function<int()>& run) {
       "(specular power 0..1e6, N.L near 0 and +-1, a light on the surface and 1e8 away, scale "
       "1e-6 and 1e6, black/white/saturated colours, a thin high-p,q knot, degenerate "
       "triangles, light at the eye, a spot cone's edge), each rendered by the reference "
-      "renderer in float and double and by POV-Ray and Blender. Writes DIR/scenes/*.json, "
+      "renderer in float and double and by the external renderers of --renderers (default POV-Ray, "
+      "Blender Cycles and gl). Writes DIR/scenes/*.json, "
       "DIR/extremes.json, DIR/extremes.md and heat maps.\n"
       "Exit 0: no NaN/Inf in the reference renderer and no external error; 1: the reference "
       "renderer produced a NaN/Inf; 2: an error (an external renderer failed: never a pass).");
@@ -43,7 +44,7 @@ void addExtremesCommand(CLI::App& app, std::function<int()>& run) {
       ->check(CLI::Range(8, 4096));
   cmd->add_option("--only", args->only, "Comma-separated case names (default: all)");
   cmd->add_flag("--no-external", args->no_external,
-                "Reference renderer only (float and double); no POV-Ray or Blender");
+                "Reference renderer only (float and double); no external renderer");
   cmd->add_option("--renderers", args->renderers,
                   "External renderers, comma-separated, of povray, blender, eevee and gl (default: povray,blender,gl; "
                   "eevee adds a Blender process per case)");

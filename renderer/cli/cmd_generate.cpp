@@ -20,11 +20,12 @@ void addGenerateCommand(CLI::App& app, std::function<int()>& run) {
   CLI::App* cmd = app.add_subcommand(
       "generate",
       "Write the scene files of a matrix spec (every combination of one value per axis; "
-      "format in renderer/scene/scene_generator.h), each validated, optionally with its "
-      "reference-renderer image.");
+      "the spec format: docs/scene-format.md, \"Generated scene sets\"), each validated, optionally "
+      "with its reference-renderer image.");
   cmd->add_option("spec", args->spec, "Generator spec (JSON)")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args->dir, "Output folder")->required();
-  cmd->add_flag("--render", args->render, "Also render each scene (DIR/NAME.exr, double precision)");
+  cmd->add_flag("--render", args->render, "Also render each scene with the reference renderer (DIR/NAME.exr, with the scene's render.spp "
+                "and render.precision)");
   cmd->callback([args, &run]() {
     run = [args]() {
       std::vector<GeneratedScene> scenes = generateScenes(args->spec);

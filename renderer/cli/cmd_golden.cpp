@@ -1,14 +1,15 @@
-// xval golden update|check [SCENES or DIRS] [--renderer NAME]: argument
+// xval golden update|check [SCENES or DIRS] [--renderer NAME] [--renderer-file FILE]: argument
 // parsing; the work is validate/golden/golden_run.h.
 //
 // Exit (check): 0 every scene matches its golden image, 1 some does not
 // (each printed with the command that accepts it), 2 an error (a renderer
-// missing or failing, a malformed manifest). update: 0, or 1 on an error.
+// missing or failing, a malformed manifest). update: 0, or 2 on an error.
 #include <cstdio>
 #include <memory>
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/renderer_file_option.h"
 #include "renderers/registry.h"
 #include "validate/golden/golden_run.h"
 #include "validate/tolerances.h"
@@ -24,8 +25,6 @@ void addGoldenCommand(CLI::App& app, std::function<int()>& run) {
       "and manifest.json, for scenes in SET/scenes), for the `golden` renderers and regression checks "
       "(docs/golden-images.md).");
   golden->require_subcommand(1);
-  const std::string scenes_help =
-      "Scene files or folders (default: the toolkit's reference/scenes)";
   const std::string renderer_help = "The renderer whose images are stored (default: the reference renderer; "
                                     "xval renderers lists them)";
   for (const char* action : {"update", "check"}) {
@@ -36,7 +35,7 @@ void addGoldenCommand(CLI::App& app, std::function<int()>& run) {
                        : "Render the scenes again and compare each with its golden image (the tolerance of the "
                          "id golden or golden-RENDERER). Exit 0 all match, 1 some do not (the command that "
                          "accepts each is printed), 2 on an error.");
-    cmd->add_option("scenes", args->inputs, scenes_help);
+    cmd->add_option("scenes", args->inputs, defaultScenesHelp());
     cmd->add_option("--renderer", args->renderer, renderer_help);
     if (!update) {
       cmd->add_option("--tolerances", args->tolerances, kToleranceFileHelp);
@@ -48,14 +47,21 @@ void addGoldenCommand(CLI::App& app, std::function<int()>& run) {
     cmd->add_option("--timeout", args->timeout_seconds, "Seconds before an external renderer is killed")
         ->check(Seconds);
     addBudgetOptions(cmd, *budget);
-    cmd->callback([args, budget, update, &run]() {
-      run = [args, budget, update]() -> int {
+    // A renderer defined by a file stores and checks its own set,
+    // golden/NAME beside the scenes (the renderer golden-NAME reads it).
+    auto renderer_files = addRendererFileOption(cmd);
+    cmd->callback([args, budget, update, renderer_files, &run]() {
+      run = [args, budget, update, renderer_files]() -> int {
         if (args->renderer.empty()) args->renderer = renderers::registry().reference().id;
         if (args->inputs.empty())
-          args->inputs = {(toolkitToleranceFile().parent_path() / "scenes").string()};
+          args->inputs = {toolkitSceneSet().string()};
         args->budget = budget->get();
-        if (update) return validation::goldenUpdate(*args);
+        if (update) {
+          renderers::registerRendererFiles(*renderer_files);
+          return validation::goldenUpdate(*args);
+        }
         try {
+          renderers::registerRendererFiles(*renderer_files);
           return validation::goldenCheck(*args);
         } catch (const std::exception& e) {
           std::fprintf(stderr, "xval golden check: error: %s\n", e.what());

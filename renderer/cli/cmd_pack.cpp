@@ -25,7 +25,7 @@ void addPackCommand(CLI::App& app, std::function<int()>& run) {
       "model files they refer to (with the files a model file refers to: an OBJ's mtl and images, a glTF's "
       "buffers), the tolerance file the scenes find, the golden images of SET/golden, and pack-manifest.json "
       "(every file's SHA-256 and size, the xval version, git commit and date). The archive's top folder is "
-      "named like SET; unpacked anywhere, `xval validate DIR/scenes` uses its tolerances and golden images. "
+      "named like SET; unpacked anywhere, `xval validate DIR/scenes -o OUT` uses its tolerances and golden images. "
       "A file outside SET (or a symbolic link resolving outside it, an absolute reference, a backslash in a "
       "path) is refused, naming the scene and the field. The archive is written under a temporary name and "
       "renamed when whole.\n"

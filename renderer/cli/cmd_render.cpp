@@ -1,4 +1,4 @@
-// xval render SCENE.json -o OUT.exr [--spp N] [--precision float|double]
+// xval render SCENE.json -o OUT.exr [--spp N] [--precision float|double] [--renderer ID]
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -8,6 +8,7 @@
 #include "cli/renderer_file_option.h"
 #include "render/renderer.h"
 #include "renderers/registry.h"
+#include "scene/scene_lint.h"
 #include "scene/scene_loader.h"
 
 namespace xval::cli {
@@ -32,10 +33,14 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand(
       "render",
-      "Render a scene with the reference renderer (ray caster, local illumination, no "
-      "shadows).\nWrites OpenEXR (float RGBA, unclamped encoding: final colour saturated to "
-      "[0,1],\nalpha = hit coverage, plus raw.R/G/B = the unsaturated model colour) or, for a "
-      ".png\noutput, 16-bit RGBA PNG (alpha = coverage). No transfer function is applied.");
+      "Render a scene with one renderer: --renderer, by default the reference renderer (ray caster, "
+      "local illumination, no shadows).\nWrites OpenEXR (32-bit float RGBA: the model's output, each "
+      "sample saturated to [0,1],\nbox-filtered, premultiplied by alpha = hit coverage; the reference "
+      "renderer adds raw.R/G/B = the unsaturated\nmodel colour and diagnostic channels) or, for a .png "
+      "output, a 16-bit RGBA PNG of the same values\n(alpha = coverage, colour unassociated). No "
+      "transfer function is applied anywhere:\nthe values are display-referred codes, like the texture "
+      "codes the model reads (docs/scene-format.md,\n\"output encoding\"; a viewer that takes an EXR as "
+      "linear shows them too bright).");
   cmd->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args->output, "Output image: .exr or .png")->required();
   cmd->add_option("--spp", args->spp,
@@ -67,7 +72,8 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--renderer", args->renderer,
                   "One of " + renderers::joinNames(registry.ids()) + " (default " + registry.reference().id +
                       "; xval renderers lists them): an external renderer is exported to, run with a "
-                      "time-out, and its image returned as linear float (alpha = hit mask)");
+                      "time-out, and its image written like the reference's (the model's output saturated "
+                      "to [0,1], no transfer function; alpha = coverage) without the diagnostic channels");
   auto renderer_files = addRendererFileOption(cmd);
   cmd->add_option("--work-dir", args->work_dir,
                   "Folder for an external renderer's export, log and raw output (default: "
@@ -84,6 +90,7 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
     run = [args, renderer_files]() {
       renderers::registerRendererFiles(*renderer_files);
       Scene scene = loadScene(args->scene, args->budget.get());
+      printSceneWarnings("xval render", scene);
       RenderOptions opt = defaultOptions(scene);
       if (args->spp) {
         requirePerfectSquareSpp(args->spp, "--spp");

@@ -13,6 +13,7 @@
 #include "cli/commands.h"
 #include "cli/renderer_file_option.h"
 #include "renderers/registry.h"
+#include "validate/validation/plan.h"
 
 namespace xval::cli {
 
@@ -55,7 +56,9 @@ void addRenderersCommand(CLI::App& app, std::function<int()>& run) {
                     : r.every_scene ? ""
                     : r.geometry_passes
                         ? " (a geometry check: validate runs it on the scenes it can take, against the reference's passes)"
-                        : " (for some scenes only: crosscheck, not validate)");
+                    : validation::runsWhenNamed(r.id)
+                        ? " (validate runs it only when --renderers names it; crosscheck and render take it)"
+                        : " (for some scenes only: crosscheck and render, not validate)");
       }
       if (*json) std::printf("%s\n", out.dump(2).c_str());
       return 0;

@@ -3,7 +3,7 @@
 //                [--width W] [--height H] [--metric M] [--images]
 //
 // The options of validate/tradeoff/run.h (which documents the run, its
-// parameters and defaults, and what it writes). Exit 0, or 1 on an error
+// parameters and defaults, and what it writes). Exit 0, or 2 on an error
 // (bad scene, gnuplot missing, ...).
 #include <memory>
 

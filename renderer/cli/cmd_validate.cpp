@@ -7,9 +7,9 @@
 // xval validate --plan OUT/jobs.json --compare-only
 //
 // Renders every scene with every every-scene renderer of the registry
-// (renderers/registry.h: the reference renderer, POV-Ray and Blender),
-// compares every pair (reference-povray, reference-blender, povray-blender)
-// with the declared tolerances, attributes each disagreement, and writes
+// (renderers/registry.h: the reference renderer, POV-Ray, Blender Cycles
+// and EEVEE, gl), compares every pair (reference-povray, ...,
+// povray-blender, ...) with the declared tolerances, attributes each disagreement, and writes
 // results.json and, from it alone, report.html (validate/report.h).
 //
 // The work is split into jobs (validate/validation/plan.h): a plan
@@ -44,10 +44,14 @@
 // `renderers` field leaves out the others for that scene (each said on
 // stderr and in results.json); a renderer that declares it cannot express
 // a scene is recorded as not expressible, with its reason, and the case
-// is decided on the other pairs (validate/validation/compare_step.h).
+// is decided on the other pairs (validate/validation/compare_step.h). A
+// scene meant for the reference renderer takes `golden` (its stored
+// images) in its place. A case that compares nothing (no pair, no geometry
+// check) is NOT COMPARED, never a pass (validate/validation/case_verdict.h).
 //
-// Exit 0: every compared pair within tolerance; 1: some case outside; 2: an error
-// (bad scene, renderer missing or broken, a job not run). --plan-only
+// Exit 0: every case compared something and every compared pair is within
+// tolerance; 1: some case outside, or a case that compared nothing; 2: an
+// error (bad scene, renderer missing or broken, a job not run). --plan-only
 // exits 0 when it wrote the plan; --run-job exits 0 when the render
 // succeeded and 2 when it failed (the failure is in the job's record);
 // --run-jobs 0 when every job of the list succeeded, 2 when any failed.
@@ -131,28 +135,33 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
   };
   CLI::App* cmd = app.add_subcommand(
       "validate",
-      "Render scenes with the reference renderer, POV-Ray and Blender, compare every pair with "
-      "the declared tolerances, attribute each disagreement, and write results.json and "
-      "report.html. Scenes made of model files also get the Blender-import check (Blender imports "
-      "the original files; its hit mask, depth and uv against the reference's).\n"
+      "Render scenes with every renderer validate runs (default: " +
+          renderers::joinNames(renderers::registry().everySceneIds()) +
+          "; --renderers picks a subset, or adds a golden set), compare every pair with the declared "
+          "tolerances, attribute each disagreement, and write results.json and report.html. Scenes made of "
+          "model files also get the Blender-import check (blender-import: Blender imports the original files; "
+          "its hit mask, depth and uv against the reference's).\n"
       "The work is one render job per scene and renderer, listed in OUT/jobs.json (outputs: "
       "OUT/<scene>/<renderer>.exr, .png and .job.json, the job's record), then one compare step. "
       "A plain run does it all here; --plan-only, --run-job and --compare-only do one step each, "
       "which is how scripts/slurm/submit.sh runs it on a Slurm cluster (docs/cluster.md).\n"
       "A renderer that declares it cannot express a scene is recorded as not expressible, with its "
-      "reason, and the case is decided on the other pairs.\n"
-      "Exit 0 when every compared pair passes, 1 when any fails, 2 on an error (bad scene, renderer "
-      "missing or broken, a job not run). --plan-only exits 0 once the plan is written; "
+      "reason, and the case is decided on the other pairs. A scene's `renderers` field that names "
+      "reference takes golden (its stored images) too. A case with nothing compared (every other "
+      "renderer left out or unable to express the scene) is NOT COMPARED, never a pass.\n"
+      "Exit 0 when every case compared something and passes, 1 when any fails or compared nothing, "
+      "2 on an error (bad scene, renderer missing or broken, a job not run). --plan-only exits 0 once the plan is written; "
       "--run-job exits 0 when its render succeeded, 2 when it failed; --run-jobs likewise for every "
       "job of its list.");
-  cmd->add_option("scenes", args->inputs, "Scene files or folders (default: reference/scenes)");
+  cmd->add_option("scenes", args->inputs, defaultScenesHelp());
   cmd->add_option("-o,--output", args->dir,
                   "Output folder, e.g. results/<run>/ (required unless --plan is given)");
   cmd->add_option("--tolerances", args->tolerances, kToleranceFileHelp);
   cmd->add_option("--renderers", args->renderers,
                   "Render and compare only these renderers, comma-separated, at least two (default: " +
                       renderers::joinNames(v::jobRenderers()) +
-                      "; xval renderers lists them). blender-import is the geometry check of model-file scenes "
+                      "; xval renderers lists them). A golden set (golden, golden-NAME: stored images, "
+                      "docs/golden-images.md) runs only when named. blender-import is the geometry check of model-file scenes "
                       "(its passes against the reference's, not an image pair): name it to keep it")
       ->delimiter(',');
   cmd->add_option("--jobs", args->jobs, "Cores to keep busy: renders in parallel, each case compared beside them as soon as its renders are done "
@@ -296,7 +305,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
                                    "--compare-only), not --plan-only");
         sectionsJson(sections(*args), args->dir);  // a folder with no results fails before any render
         std::vector<std::string> inputs = args->inputs;
-        if (inputs.empty()) inputs.push_back("reference/scenes");
+        if (inputs.empty()) inputs.push_back(toolkitSceneSet().string());
         v::Plan plan = v::makePlan(inputs, args->tolerances, args->dir, args->timeout, args->budget.get(),
                                    v::runRenderers(args->renderers));
         std::filesystem::create_directories(plan.dir);

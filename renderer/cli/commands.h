@@ -21,5 +21,6 @@ void addTradeoffCommand(CLI::App& app, std::function<int()>& run);
 void addRenderersCommand(CLI::App& app, std::function<int()>& run);
 void addGoldenCommand(CLI::App& app, std::function<int()>& run);
 void addPackCommand(CLI::App& app, std::function<int()>& run);
+void addLintCommand(CLI::App& app, std::function<int()>& run);
 
 }  // namespace xval::cli

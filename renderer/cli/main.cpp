@@ -19,8 +19,9 @@ int main(int argc, char** argv) {
   // Before any thread starts: an interrupt stops every tool xval started.
   xval::installInterruptHandler();
   CLI::App app{
-      "xval: cross-validates lighting models between a reference renderer, POV-Ray and "
-      "Blender.\nScene files are JSON (docs/scene-format.md)."};
+      "xval: cross-validates lighting models between its reference renderer and others (POV-Ray, "
+      "Blender Cycles and EEVEE, gl on OpenGL, stored golden images, renderers defined by a file; "
+      "`xval renderers` lists them).\nScene files are JSON (docs/scene-format.md)."};
   const std::string exit_status =
       "Exit status (every subcommand): 0 success, or within the tolerance; 1 a check failed "
       "(compare, crosscheck, validate: outside the tolerance; extremes: a NaN/Inf in the reference "
@@ -42,6 +43,7 @@ int main(int argc, char** argv) {
   xval::cli::addRenderersCommand(app, run);
   xval::cli::addGoldenCommand(app, run);
   xval::cli::addPackCommand(app, run);
+  xval::cli::addLintCommand(app, run);
   for (CLI::App* sub : app.get_subcommands({})) sub->footer(exit_status);
   try {
     app.parse(argc, argv);

@@ -14,6 +14,7 @@
 
 #include "files/atomic_write.h"
 #include "image/pixel_classes.h"
+#include "renderers/renderer.h"
 #include "scene/scene_loader.h"
 
 namespace xval::golden {
@@ -207,8 +208,8 @@ std::string goldenProblem(const fs::path& folder, const Manifest& m, const fs::p
   const fs::path manifest = folder / "manifest.json";
   const auto it = m.entries.find(stem);
   if (it == m.entries.end())
-    return "no golden image of " + stem + " in " + manifest.string() + " (xval golden update " +
-           scene_file.string() + " --renderer " + m.renderer + " stores one)";
+    return "no golden image of " + stem + " in " + manifest.string() + " (" +
+           renderers::goldenUpdateCommand(scene_file, m.renderer) + " stores one)";
   const Entry& e = it->second;
   const std::string now = sha256File(scene_file);
   if (now != e.scene_sha256)

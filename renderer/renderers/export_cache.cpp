@@ -246,13 +246,15 @@ fs::path entryFolder(const ExportCache& cache, const std::string& exporter, cons
 }
 
 void exportThroughCache(const ExportCache& cache, const std::string& exporter, const std::string& key,
-                        const fs::path& dir, const std::function<void(const fs::path&)>& write) {
+                        const fs::path& dir, const std::function<void(const fs::path&)>& write,
+                        const std::function<std::string(const fs::path&)>& describe) {
   const fs::path entry = entryFolder(cache, exporter, key);
+  const auto what = [&] { return describe ? describe(dir) : exporter; };
   std::error_code ec;
   if (fs::is_directory(fs::symlink_status(entry, ec))) {
     try {
       restoreEntry(entry, key, dir);
-      std::fprintf(stderr, "export cache: cached %s %s\n", exporter.c_str(), shortKey(key).c_str());
+      std::fprintf(stderr, "export cache: cached %s %s\n", what().c_str(), shortKey(key).c_str());
       return;
     } catch (const std::exception& e) {
       std::fprintf(stderr, "export cache: corrupt entry %s (%s): exported again\n", entry.c_str(), e.what());
@@ -266,7 +268,7 @@ void exportThroughCache(const ExportCache& cache, const std::string& exporter, c
   try {
     storeEntry(cache, entry, key, dir);
     prune(cache);
-    std::fprintf(stderr, "export cache: stored %s %s\n", exporter.c_str(), shortKey(key).c_str());
+    std::fprintf(stderr, "export cache: stored %s %s\n", what().c_str(), shortKey(key).c_str());
   } catch (const std::exception& e) {
     // The export itself is whole in `dir`; only the cache misses it.
     std::fprintf(stderr, "export cache: not stored %s (%s)\n", entry.c_str(), e.what());
@@ -296,13 +298,23 @@ std::string cachedRefusal(const std::string& who, const std::string& inputs_key,
       fs::remove_all(p, ec);
     }
   } cleanup{tmp};
-  exportThroughCache(cache, exporter, key, tmp, [&](const fs::path& dir) {
-    fs::create_directories(dir);
-    writeFileAtomically(dir / "refusal.txt", refusal());
-  });
-  std::ifstream in(tmp / "refusal.txt", std::ios::binary);
-  if (!in) throw std::runtime_error(exporter + ": the refusal was not written");
-  return std::string(std::istreambuf_iterator<char>(in), {});
+  const auto read = [&](const fs::path& dir) {
+    std::ifstream in(dir / "refusal.txt", std::ios::binary);
+    if (!in) throw std::runtime_error(exporter + ": the refusal was not written");
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  // An entry holds the exporter's verdict on the scene: a refusal, or none
+  // (it can express the scene): the messages say which.
+  exportThroughCache(
+      cache, exporter, key, tmp,
+      [&](const fs::path& dir) {
+        fs::create_directories(dir);
+        writeFileAtomically(dir / "refusal.txt", refusal());
+      },
+      [&](const fs::path& dir) {
+        return read(dir).empty() ? who + "'s check (no refusal)" : who + "'s refusal";
+      });
+  return read(tmp);
 }
 
 }  // namespace xval::renderers

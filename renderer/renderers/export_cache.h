@@ -25,7 +25,9 @@
 // killed before its rename leaves behind.
 //
 // Every use says on stderr what it did: "export cache: cached", "stored",
-// or "corrupt ... exported again" with the exporter and the key's start.
+// or "corrupt ... exported again" with the exporter and the key's start
+// (for a refusal entry, whether it holds a refusal: "blender's refusal",
+// "blender's check (no refusal)").
 #pragma once
 
 #include <cstdint>
@@ -76,7 +78,10 @@ std::string cachedRefusal(const std::string& who, const std::string& inputs_key,
 // Lower level, for tests: the entry folder of a key, and the export into
 // `dir` through the cache `cache` (whatever the process's cache is).
 std::filesystem::path entryFolder(const ExportCache& cache, const std::string& exporter, const std::string& key);
+// `describe` names what the entry holds in the messages, from the folder
+// it was restored or written into (empty: the exporter's name).
 void exportThroughCache(const ExportCache& cache, const std::string& exporter, const std::string& key,
-                        const std::filesystem::path& dir, const std::function<void(const std::filesystem::path&)>& write);
+                        const std::filesystem::path& dir, const std::function<void(const std::filesystem::path&)>& write,
+                        const std::function<std::string(const std::filesystem::path&)>& describe = {});
 
 }  // namespace xval::renderers

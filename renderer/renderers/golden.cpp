@@ -22,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+#include "process/shell_word.h"
 #include "renderers/registry.h"
 
 namespace xval::renderers {
@@ -35,6 +36,7 @@ Renderer goldenRendererOf(const std::string& made_by, const std::string& made_by
   r.summary = "the images " + made_by_name + " stored beside the scene set (golden/" + made_by +
               "/, xval golden update); refuses a scene file changed since";
   r.every_scene = false;
+  r.images_of = made_by;
   r.render = [made_by](const Scene& scene, const RenderRequest&, RenderInfo* info) {
     const auto t0 = std::chrono::steady_clock::now();
     const std::filesystem::path folder = golden::goldenFolder(scene.source_file, made_by);
@@ -51,6 +53,14 @@ Renderer goldenRendererOf(const std::string& made_by, const std::string& made_by
 }
 
 Renderer goldenRenderer() { return goldenRendererOf("reference", "the reference renderer"); }
+
+std::string goldenUpdateCommand(const std::filesystem::path& scene_file, const std::string& made_by) {
+  std::string c = "xval golden update " + shellWord(std::filesystem::absolute(scene_file).lexically_normal().string()) +
+                  " --renderer " + shellWord(made_by);
+  if (const Renderer* r = registry().find(made_by); r && !r->definition_file.empty())
+    c += " --renderer-file " + shellWord(r->definition_file.string());
+  return c;
+}
 
 std::string goldenAlias(std::string_view id) {
   constexpr std::string_view prefix = "golden:";

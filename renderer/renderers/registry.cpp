@@ -168,6 +168,13 @@ std::string joinNames(const std::vector<std::string>& names) {
   return out;
 }
 
+bool meantFor(const std::vector<std::string>& scene_renderers, const Renderer& renderer) {
+  const auto named = [&](const std::string& id) {
+    return std::find(scene_renderers.begin(), scene_renderers.end(), id) != scene_renderers.end();
+  };
+  return scene_renderers.empty() || named(renderer.id) || (!renderer.images_of.empty() && named(renderer.images_of));
+}
+
 std::vector<RendererPair> unorderedPairs(size_t n) {
   std::vector<RendererPair> out;
   for (size_t a = 0; a < n; ++a)
@@ -195,17 +202,14 @@ std::string failingPairsText(const std::vector<const Renderer*>& rs, const std::
 }
 }  // namespace
 
-std::string attribute(const std::vector<const Renderer*>& rs, const std::vector<int>& verdicts) {
-  const size_t n = rs.size();
+std::vector<size_t> deviating(size_t n, const std::vector<int>& verdicts) {
   const std::vector<RendererPair> pairs = unorderedPairs(n);
   if (verdicts.size() != pairs.size())
-    throw std::invalid_argument("attribute: " + std::to_string(verdicts.size()) + " verdicts for " +
+    throw std::invalid_argument("deviating: " + std::to_string(verdicts.size()) + " verdicts for " +
                                 std::to_string(n) + " renderers (expected " + std::to_string(pairs.size()) + ")");
-  if (n < 2) return "nothing compared (fewer than two renderers)";
-  if (std::any_of(verdicts.begin(), verdicts.end(), [](int v) { return v < 0; }))
-    return "incomplete (a renderer failed)";
-  if (std::all_of(verdicts.begin(), verdicts.end(), [](int v) { return v == 1; }))
-    return n == 2 ? "both agree" : n == 3 ? "all three agree" : "all " + std::to_string(n) + " agree";
+  if (n < 2 || std::any_of(verdicts.begin(), verdicts.end(), [](int v) { return v != 1 && v != 0; }) ||
+      std::all_of(verdicts.begin(), verdicts.end(), [](int v) { return v == 1; }))
+    return {};
   // pass[a][b]: renderers a and b agree.
   std::vector<std::vector<bool>> pass(n, std::vector<bool>(n, true));
   for (size_t k = 0; k < pairs.size(); ++k)
@@ -224,10 +228,31 @@ std::string attribute(const std::vector<const Renderer*>& rs, const std::vector<
         if (in(a) && in(b)) ok = pass[a][b];
         else if (in(a) != in(b)) ok = !pass[a][b];
     if (!ok) continue;
-    std::vector<std::string> deviating, agreeing;
+    std::vector<size_t> out;
     for (size_t k = 0; k < n; ++k)
-      (in(k) ? agreeing : deviating).push_back(in(k) ? rs[k]->display_name : rs[k]->sentenceSubject());
-    return joinNames(deviating) + (deviating.size() == 1 ? " deviates (" : " deviate (") + joinNames(agreeing) +
+      if (!in(k)) out.push_back(k);
+    return out;
+  }
+  return {};
+}
+
+std::string attribute(const std::vector<const Renderer*>& rs, const std::vector<int>& verdicts) {
+  const size_t n = rs.size();
+  const std::vector<RendererPair> pairs = unorderedPairs(n);
+  if (verdicts.size() != pairs.size())
+    throw std::invalid_argument("attribute: " + std::to_string(verdicts.size()) + " verdicts for " +
+                                std::to_string(n) + " renderers (expected " + std::to_string(pairs.size()) + ")");
+  if (n < 2) return "nothing compared (fewer than two renderers)";
+  if (std::any_of(verdicts.begin(), verdicts.end(), [](int v) { return v < 0; }))
+    return "incomplete (a renderer failed)";
+  if (std::all_of(verdicts.begin(), verdicts.end(), [](int v) { return v == 1; }))
+    return n == 2 ? "both agree" : n == 3 ? "all three agree" : "all " + std::to_string(n) + " agree";
+  if (const std::vector<size_t> out = deviating(n, verdicts); !out.empty()) {
+    std::vector<std::string> deviators, agreeing;
+    for (size_t k = 0; k < n; ++k)
+      if (std::find(out.begin(), out.end(), k) != out.end()) deviators.push_back(rs[k]->sentenceSubject());
+      else agreeing.push_back(rs[k]->display_name);
+    return joinNames(deviators) + (deviators.size() == 1 ? " deviates (" : " deviate (") + joinNames(agreeing) +
            " agree)";
   }
   return failingPairsText(rs, pairs, verdicts);

@@ -88,6 +88,13 @@ Registry& registry();
 // "a, b and c" (the ", " and " and " joins of a listing; "a" alone).
 std::string joinNames(const std::vector<std::string>& names);
 
+// Whether a scene whose `renderers` field is `scene_renderers` (empty:
+// every renderer) is meant for `renderer`: the field names it, or names the
+// renderer whose stored images it reads (Renderer::images_of: `golden` for
+// a scene meant for the reference renderer, as its golden images are that
+// renderer's images).
+bool meantFor(const std::vector<std::string>& scene_renderers, const Renderer& renderer);
+
 // An unordered pair of renderers, a before b in registry order.
 struct RendererPair {
   size_t a = 0, b = 0;  // indices into the list the pairs were made from
@@ -114,6 +121,11 @@ std::string pairKey(const Renderer& a, const Renderer& b);
 //     ("A and B disagree" for two renderers).
 // For three renderers this is the one deviating from the other two.
 std::string attribute(const std::vector<const Renderer*>& renderers, const std::vector<int>& verdicts);
+// The renderers outside that majority M (indices into the n renderers, in
+// order): those attribute names as deviating; empty when every pair passes,
+// a pair was not compared, or no majority exists (two renderers never have
+// one: neither is to blame on its own).
+std::vector<size_t> deviating(size_t n, const std::vector<int>& verdicts);
 
 // The version line an outside tool prints for `argv` (see
 // Renderer::version_marker; a 40-character line without spaces, as

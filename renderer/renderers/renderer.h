@@ -166,6 +166,11 @@ struct Renderer {
   // absolute; empty for a built-in one. validate's plan records it with its
   // hash, so every job of the plan renders with the same definition.
   std::filesystem::path definition_file;
+  // A golden set (renderers/golden.cpp): the id of the renderer whose
+  // stored images it reads ("reference" for `golden`); empty for every
+  // other renderer. A scene's `renderers` field that names that renderer
+  // takes the set in its place (meantFor, registry.h).
+  std::string images_of;
 
   const std::string& sentenceSubject() const { return subject.empty() ? display_name : subject; }
   bool external() const { return !version_command.empty(); }
@@ -188,6 +193,11 @@ class Registry;
 Renderer goldenRendererOf(const std::string& made_by, const std::string& made_by_name);
 std::string goldenAlias(std::string_view id);
 void addGoldenSets(Registry& registry);
+// The command that stores renderer `made_by`'s image of `scene_file` in its
+// golden set, as it runs pasted: the scene file absolute, every word
+// shell-quoted (process/shell_word.h), and --renderer-file FILE when
+// `made_by` is defined by a file (without it the renderer is unknown).
+std::string goldenUpdateCommand(const std::filesystem::path& scene_file, const std::string& made_by);
 
 // An outside tool's figures as a RenderInfo (nothing when `info` is null).
 void setInfo(RenderInfo* info, const ExternalRenderInfo& tool);

@@ -15,6 +15,7 @@
 #include "render/renderer.h"
 #include "renderers/job_export.h"
 #include "renderers/registry.h"
+#include "scene/scene_lint.h"
 #include "scene/scene_loader.h"
 #include "validate/tolerances.h"
 #include "validate/geometry_check.h"
@@ -25,6 +26,7 @@ namespace xval::validation {
 
 int crosscheck(const CrosscheckRequest& request) {
   Scene scene = loadScene(request.scene_file, request.budget);
+  printSceneWarnings("xval crosscheck", scene);
   std::filesystem::path dir(request.dir);
   std::filesystem::create_directories(dir);
   const FolderLock folder_lock(dir, FolderLock::Mode::Exclusive, "xval crosscheck");
@@ -37,8 +39,7 @@ int crosscheck(const CrosscheckRequest& request) {
   std::string reason;
   Tolerance tol = table.lookup(scene, request.renderer, &reason);
   const renderers::Renderer& renderer = renderers::registry().at(request.renderer);
-  if (!scene.renderers.empty() &&
-      std::find(scene.renderers.begin(), scene.renderers.end(), renderer.id) == scene.renderers.end())
+  if (!renderers::meantFor(scene.renderers, renderer))
     throw std::runtime_error(request.scene_file + ": renderers: the scene is meant for " +
                              renderers::joinNames(scene.renderers) + " only, not " + renderer.id);
   // A renderer that declares it cannot express the scene: the verdict, with

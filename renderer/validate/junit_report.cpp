@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "validate/validation/case_verdict.h"
 #include "validate/validation/geometry_checks.h"
 
 namespace xval {
@@ -113,6 +114,7 @@ std::string junitXml(const J& results, const std::string& suite_name) {
     if (!scene.is_string() || !pairs.is_array())
       throw std::runtime_error(where + ": \"scene\" must be a string and \"pairs\" an array");
     const J renders = c.value("renders", J::object());
+    const int errors_before = n.errors;
     for (size_t p = 0; p < pairs.size(); ++p) {
       const J& jp = pairs[p];
       const std::string pw = where + ".pairs[" + std::to_string(p) + "]";
@@ -183,6 +185,28 @@ std::string junitXml(const J& results, const std::string& suite_name) {
         throw std::runtime_error(gw + ": verdict \"" + v + "\": expected pass, fail (with \"metrics\"), error or not_expressible");
       }
     }
+    // The case's own testcase, when its verdict says what its testcases do not.
+    if (!c.contains("verdict")) continue;
+    const J& verdict = c["verdict"];
+    if (!verdict.is_string()) throw std::runtime_error(where + ": \"verdict\" must be a string");
+    const validation::CaseVerdict v = validation::parseCaseVerdict(verdict.get<std::string>(), where + ".verdict");
+    const bool no_error_testcase = n.errors == errors_before;
+    if (v != validation::CaseVerdict::NotCompared && !(v == validation::CaseVerdict::Error && no_error_testcase)) continue;
+    ++n.tests;
+    body += "    <testcase classname=\"" + xmlEscape(scene.get<std::string>()) + "\" name=\"case\" time=\"0.000\">\n";
+    if (v == validation::CaseVerdict::Error) {
+      ++n.errors;
+      body += "      <error message=\"a render failed\" type=\"error\">" + xmlEscape(renderErrors(renders)) +
+              "</error>\n    </testcase>\n";
+      continue;
+    }
+    ++n.failures;
+    std::string why = "nothing compared (no image pair, no geometry check)";
+    if (c.contains("attribution") && c["attribution"].is_string()) why += ": " + c["attribution"].get<std::string>();
+    if (c.contains("left_out") && c["left_out"].is_object())
+      for (const auto& [id, reason] : c["left_out"].items())
+        if (reason.is_string()) why += "; " + id + " left out: " + reason.get<std::string>();
+    body += "      <failure message=\"" + xmlEscape(why) + "\" type=\"not_compared\"/>\n    </testcase>\n";
   }
   const std::string counts = " tests=\"" + std::to_string(n.tests) + "\" failures=\"" +
                              std::to_string(n.failures) + "\" errors=\"" + std::to_string(n.errors) +

@@ -15,6 +15,14 @@
 // cases[].geometry_checks, validate/validation/geometry_checks.h), name =
 // "reference-blender-import (geometry)": pass empty, fail <failure> with
 // the metrics against the bounds, error <error>, not expressible <skipped>.
+// Then, when the case's verdict (cases[].verdict, validate/validation/
+// case_verdict.h; a crosscheck's results have none) is not what those
+// testcases say, one testcase for the case itself, name = "case", so that a
+// case that is no pass never reads as one (nor as tests="0"):
+//   not_compared      <failure type="not_compared"> naming why nothing was
+//                     compared (the attribution, the renderers left out)
+//   error             <error> when none of its testcases is one (a case of
+//                     one renderer whose render failed), the renderers' errors
 // time = the seconds of the two renders compared (their records; a
 // geometry check: its job's). Every
 // string is XML-escaped; control characters other than tab and newline,

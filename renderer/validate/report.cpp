@@ -28,6 +28,7 @@
 #include "validate/report_pixels.h"
 #include "validate/tolerances.h"
 #include "validate/tradeoff/report_section.h"
+#include "validate/validation/case_verdict.h"
 #include "validate/validation/geometry_checks.h"
 
 namespace xval {
@@ -110,16 +111,6 @@ RunPairs runPairs(const J& cases, const std::vector<std::string>& renderers) {
   for (const std::string& key : present)
     if (!has(out.ids, key)) out.ids.push_back(key);
   return out;
-}
-
-// A case whose every pair has a renderer that cannot express the scene,
-// and whose every geometry check is not expressible.
-bool nothingCompared(const J& c) {
-  for (const auto& p : c["pairs"])
-    if (!p.contains("not_expressible")) return false;
-  for (const auto& g : c.value("geometry_checks", J::array()))
-    if (g["verdict"] != "not_expressible") return false;
-  return true;
 }
 
 // A case's geometry checks (validate/validation/geometry_checks.h) as
@@ -467,15 +458,13 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   // only): nothing to plot.
   if (!pairs.empty()) writePlot(cases, pairs, dir);
 
-  // A case: error when a pair is; not expressible when no pair could be
-  // compared; else the case's verdict (decided on the comparable pairs).
-  auto caseVerdict = [](const J& c) -> std::string {
-    for (const auto& p : c["pairs"])
-      if (pairVerdict(p) == "error") return "error";
-    for (const auto& g : c.value("geometry_checks", J::array()))
-      if (g["verdict"] == "error") return "error";
-    if (nothingCompared(c)) return "not expressible";
-    return c["pass"].get<bool>() ? "pass" : "fail";
+  // A case: the verdict the compare step decided (validation/
+  // case_verdict.h), as the pairs' verdicts read ("not compared").
+  auto caseVerdict = [&results_json](const J& c) -> std::string {
+    std::string v = validation::verdictName(validation::parseCaseVerdict(
+        c.value("verdict", ""), results_json.string() + ": case " + c.value("scene", "") + ": verdict"));
+    std::replace(v.begin(), v.end(), '_', ' ');
+    return v;
   };
   int pass = 0, fail = 0, nexp = 0, err = 0, nexp_pairs = 0;
   std::map<std::string, int> checks;  // geometry checks by verdict
@@ -494,7 +483,7 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
     << "body{font-family:sans-serif;margin:1.5em;color:#222}table{border-collapse:collapse;margin:.5em 0}"
     << "td,th{border:1px solid #bbb;padding:2px 6px;font-size:13px;text-align:right}"
     << "th{background:#eee}td.l,th.l{text-align:left}.pass{color:#070;font-weight:bold}"
-    << ".fail{color:#b00;font-weight:bold}.err{color:#b60;font-weight:bold}.nexp{color:#558;font-weight:bold}"
+    << ".fail{color:#b00;font-weight:bold}.err{color:#b60;font-weight:bold}.nexp{color:#558;font-weight:bold}.warn{color:#960}"
     << ".marked{position:relative;display:inline-block;line-height:0}.marked img{width:100%;border:0}"
     << ".heat,.swap,.crop{image-rendering:pixelated}.mark{position:absolute;box-sizing:border-box;"
     << "border:2px solid #f0f;pointer-events:none}.mark.worst_unexplained{border-color:#f00}"
@@ -514,7 +503,7 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   h << "<h1>xval cross-validation report</h1>\n";
   h << "<p>" << cases.size() << " scenes: <span class=\"pass\">" << pass << " pass</span>, "
     << "<span class=\"fail\">" << fail << " fail</span>, <span class=\"err\">" << err
-    << " errors</span>, <span class=\"nexp\">" << nexp << " not expressible</span> (" << nexp_pairs
+    << " errors</span>, <span class=\"nexp\">" << nexp << " not compared</span> (" << nexp_pairs
     << " pairs not expressible by a renderer, not compared). Wall time " << fixed(r.value("wall_seconds", 0.0), 1)
     << " s. Failures are listed first. Errors are in 1/65535 of the full scale. A pair passes when its "
        "pixels are within the tolerance on the declared fraction and no pixel that no known cause explains "
@@ -576,12 +565,22 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
     const std::string id = htmlEscape(c["scene"].get<std::string>());
     h << "<div class=\"case\" id=\"" << id << "\"><h3>" << id << " &mdash; <span class=\""
       << verdictCell(caseVerdict(c)).substr(std::string("class=\"l ").size()) << "</span></h3>\n";
-    h << "<p>" << htmlEscape(c["attribution"].get<std::string>()) << ". Reproduce: <code>xval validate "
-      << htmlEscape(c["file"].get<std::string>()) << " -o DIR</code></p>\n";
+    // The command is the compare step's (validate/validation/next_steps.h
+    // reproduceCommand: with the run's renderers, renderer files and
+    // tolerance file); results.json files written before it had none: no
+    // command rather than one that would not run as the case ran.
+    h << "<p>" << htmlEscape(c["attribution"].get<std::string>()) << ".";
+    if (c.contains("reproduce")) h << " Reproduce: <code>" << htmlEscape(c["reproduce"].get<std::string>()) << "</code>";
+    h << "</p>\n";
     if (c.contains("left_out"))
       for (auto it = c["left_out"].begin(); it != c["left_out"].end(); ++it)
         h << "<p class=\"nexp\">" << htmlEscape(it.key()) << " left out: " << htmlEscape(it.value().get<std::string>())
           << "</p>\n";
+    if (c.contains("warnings"))  // the scene's warnings (scene/scene_lint.h): beside the verdict, not in it
+      for (const auto& w : c["warnings"])
+        h << "<p class=\"warn\">warning: " << htmlEscape(w["subject"].get<std::string>()) << ": "
+          << htmlEscape(w["message"].get<std::string>()) << " [" << htmlEscape(w["code"].get<std::string>())
+          << "]</p>\n";
     h << "<div class=\"imgs\">";
     for (const std::string& rid : run_renderers) {
       if (!c["renders"].contains(rid)) continue;

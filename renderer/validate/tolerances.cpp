@@ -74,6 +74,13 @@ std::string ToleranceFile::shown() const {
 
 fs::path toolkitToleranceFile() { return fs::path(XVAL_TOOLKIT_TOLERANCES).lexically_normal(); }
 
+fs::path toolkitSceneSet() { return toolkitToleranceFile().parent_path() / "scenes"; }
+
+std::string defaultScenesHelp() {
+  return "Scene files or folders (default: the toolkit's own scene set, " + toolkitSceneSet().string() +
+         ", whatever the working directory)";
+}
+
 namespace {
 
 // Step 2 of the rule: the nearest tolerances.json from the scene file's

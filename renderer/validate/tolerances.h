@@ -60,6 +60,13 @@ ToleranceTable loadTolerances(const std::filesystem::path& file);
 // The toolkit's own tolerance file, absolute (fixed when it was built).
 std::filesystem::path toolkitToleranceFile();
 
+// The toolkit's own reference scene set, reference/scenes beside that file
+// (absolute, fixed when it was built): what validate and golden take when
+// given no scenes, whatever the working directory.
+std::filesystem::path toolkitSceneSet();
+// The default above, for the scenes argument's --help.
+std::string defaultScenesHelp();
+
 // The rule above, for --help.
 inline constexpr const char* kToleranceFileHelp =
     "Tolerance file. Default: the nearest tolerances.json in the scene file's folder or one of its "

@@ -9,6 +9,12 @@
 # expect_eq(WHAT GOT WANT): fails, naming WHAT, unless GOT equals WANT.
 # get_json(VAR JSON KEY...): VAR = the member of the JSON text at the keys
 #   and indices given; fails, naming them, when it is absent.
+# write_povray_stand_in(BIN MAKE): BIN/povray, a stand-in that answers
+#   --version and otherwise runs the shell text MAKE with $out set to the
+#   image path the real POV-Ray would write (scene.ini's Output_File_Name,
+#   or a +O argument).
+# expect_valid_junit(FILE XSD): fails unless xmllint finds FILE valid
+#   against the schema XSD (tests/junit/junit.xsd); a missing xmllint fails.
 function(require_defined script)
   foreach(_v ${ARGN})
     if(NOT DEFINED ${_v})
@@ -52,4 +58,20 @@ function(get_json var json)
     message(FATAL_ERROR "results.json: ${ARGN}: ${_no}")
   endif()
   set(${var} "${_v}" PARENT_SCOPE)
+endfunction()
+
+function(write_povray_stand_in bin make)
+  file(WRITE ${bin}/povray
+    "#!/bin/sh\nif [ \"$1\" = --version ]; then echo 'stand-in povray 0.0'; exit 0; fi\n"
+    "out=$(/bin/sed -n 's/^Output_File_Name=//p' scene.ini)\n"
+    "for a in \"$@\"; do o=$(echo \"$a\" | /bin/sed -n 's/^+O//p'); [ -z \"$o\" ] || out=$o; done\n"
+    "${make}\n")
+  file(CHMOD ${bin}/povray PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
+endfunction()
+
+function(expect_valid_junit file xsd)
+  execute_process(COMMAND xmllint --noout --schema ${xsd} ${file} RESULT_VARIABLE _rc ERROR_VARIABLE _lint)
+  if(NOT _rc EQUAL 0)
+    message(FATAL_ERROR "${file} is not valid against ${xsd} (xmllint exit ${_rc}):\n${_lint}")
+  endif()
 endfunction()

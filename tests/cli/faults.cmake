@@ -242,7 +242,7 @@ elseif(CASE STREQUAL "lock")
   string(REGEX MATCH "pid=([0-9]+)" _m "${out}")
   require_in("${err}" "the second run's stderr" "${WORK}/out: another xval validate is writing into this folder (pid ${CMAKE_MATCH_1}")
   file(READ ${WORK}/first.err _first)
-  require_in("${_first}" "the first run's stderr" "xval validate: 1 scenes, ERRORS")
+  require_in("${_first}" "the first run's stderr" "xval validate: 1 scene, ERRORS")
   # --plan-only and --compare-only are refused the same way.
   run_sh("${WAIT_FOR}; ${ENVPATH} ${V} -o '${WORK}/out' --jobs 3 --timeout 60 > /dev/null 2>&1 & p=$!; wait_for '${WORK}/started' 2; ${ENVPATH} '${XVAL}' validate --plan '${WORK}/out/jobs.json' --compare-only; echo second=$?; wait $p")
   require_in("${out}" "stdout" "second=2")

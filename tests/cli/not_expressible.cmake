@@ -5,11 +5,13 @@
 #     refuses (pov_refuses: classic Phong of shininess 1000 lit by two
 #     lights whose attenuations have complex roots, a highlight POV-Ray's
 #     single-precision pigments cannot keep within the tolerance) and one both external renderers refuse (wide_spp256: its
-#     16 x 16 sub-pixel image would be 17600 pixels wide) exits 0: the
-#     refusals are recorded as not_expressible with the exporter's reason,
-#     their pairs are not compared, the remaining pairs are, and the case
-#     is decided on them; the summary and the report count them apart; the
-#     JUnit file has them as <skipped>;
+#     16 x 16 sub-pixel image would be 17600 pixels wide): the refusals
+#     are recorded as not_expressible with the exporter's reason, their
+#     pairs are not compared, the remaining pairs are, and the case is
+#     decided on them; the summary and the report count them apart; the
+#     JUnit file has them as <skipped>. wide_spp256 compares nothing: it is
+#     NOT COMPARED, no pass, so the run exits 1 (validate/validation/
+#     case_verdict.h);
 #   - a scene's `renderers` field leaves the others out, said on stderr and
 #     in results.json;
 #   - --renderers runs a subset; an unknown name is an error;
@@ -78,9 +80,9 @@ function(get_case var results scene)
   message(FATAL_ERROR "results.json has no case ${scene}")
 endfunction()
 
-# 1. The mixed folder: exit 0.
-validate(0 ${WORK}/bin out ${SCENES} --junit ${WORK}/junit.xml)
-expect_in("${err}" "all pass (3 renders not expressible, 5 pairs not compared)")
+# 1. The mixed folder: exit 1, for wide_spp256 compares nothing.
+validate(1 ${WORK}/bin out ${SCENES} --junit ${WORK}/junit.xml)
+expect_in("${err}" "4 scenes, NOT COMPARED: 1 not compared, 3 pass (3 renders not expressible, 5 pairs not compared)")
 expect_in("${err}" "meant_for_two: povray left out: the scene is meant for reference and blender only")
 file(READ ${WORK}/out/results.json _r)
 get_case(_c "${_r}" pov_refuses)
@@ -111,6 +113,10 @@ get_json(_wp "${_w}" renders blender not_expressible)
 expect_in("${_wp}" "render.spp = 256: rendered as 16 x 16 samples per pixel, the external renderer's image is 17600x128")
 get_json(_who "${_w}" attribution)
 expect_eq("wide_spp256 attribution" "${_who}" "nothing to compare: POV-Ray and Blender cannot express it")
+get_json(_v "${_w}" verdict)
+expect_eq("wide_spp256 verdict" "${_v}" "not_compared")
+get_json(_pass "${_w}" pass)
+expect_eq("wide_spp256 pass" "${_pass}" "OFF")
 get_case(_m "${_r}" meant_for_two)
 get_json(_lo "${_m}" left_out povray)
 expect_in("${_lo}" "its `renderers` field")
@@ -123,17 +129,17 @@ get_json(_pass "${_t}" pass)
 expect_eq("tiny pass" "${_pass}" "ON")
 # The report: not red, not ERROR; the summary counts it apart.
 file(READ ${WORK}/out/report.html _html)
-expect_in("${_html}" "<span class=\"err\">0 errors</span>, <span class=\"nexp\">1 not expressible</span> (5 pairs not expressible")
-expect_in("${_html}" "<td class=\"nexp\">not expressible</td>")
-expect_in("${_html}" "nexp\">NOT EXPRESSIBLE</span>")
+expect_in("${_html}" "<span class=\"err\">0 errors</span>, <span class=\"nexp\">1 not compared</span> (5 pairs not expressible")
+expect_in("${_html}" "<summary>3 pairs: 3 not expressible</summary>")
+expect_in("${_html}" "<td title=\"reference-povray\" class=\"l nexp\">not expressible</td>")
+expect_in("${_html}" "nexp\">NOT COMPARED</span>")
 expect_in("${_html}" "povray left out: the scene is meant for")
-# JUnit: the 5 pairs as <skipped> with the reason, valid against the schema.
-execute_process(COMMAND xmllint --noout --schema ${XSD} ${WORK}/junit.xml RESULT_VARIABLE _rc ERROR_VARIABLE _lint)
-if(NOT _rc EQUAL 0)
-  message(FATAL_ERROR "junit.xml is not valid against ${XSD} (xmllint exit ${_rc}):\n${_lint}")
-endif()
+# JUnit: the 5 pairs as <skipped> with the reason, wide_spp256's case as
+# a failure (it compared nothing), valid against the schema.
+expect_valid_junit(${WORK}/junit.xml ${XSD})
 file(READ ${WORK}/junit.xml _junit)
-expect_in("${_junit}" "tests=\"10\" failures=\"0\" errors=\"0\" skipped=\"5\"")
+expect_in("${_junit}" "tests=\"11\" failures=\"1\" errors=\"0\" skipped=\"5\"")
+expect_in("${_junit}" "<testcase classname=\"wide_spp256\" name=\"case\" time=\"0.000\">\n      <failure message=\"nothing compared (no image pair, no geometry check): nothing to compare: POV-Ray and Blender cannot express it\" type=\"not_compared\"/>")
 expect_in("${_junit}" "<skipped message=\"not expressible: povray: attenuation 1/(c + l d + q d^2)")
 
 # 2. --renderers: a subset, in registry order whatever the order given.

@@ -1,7 +1,7 @@
 # The report of a run with many renderers (validate/report.h): six
 # renderers, the reference and five users' renderers defined by files
-# (the stand-in tests/cli/standin_renderer.sh: four hand the scene to the
-# reference renderer, `mike` crashes), so 15 pairs:
+# (the stand-in tests/cli/standin_renderer.sh: three hand the scene to the
+# reference renderer, `kilo` dims its image, `mike` crashes), so 15 pairs:
 #   - the summary table has as many columns with 15 pairs as with one (a
 #     case's pairs are one cell: the worst pair, and a renderers x renderers
 #     matrix), and the matrix lists the renderers in the one order (the
@@ -30,6 +30,8 @@ foreach(_name ${_users})
   set(_mode pass)
   if(_name STREQUAL "mike")
     set(_mode fail)
+  elseif(_name STREQUAL "kilo")
+    set(_mode dim)
   endif()
   file(WRITE ${WORK}/def/${_name}.json "{\"format\": \"xval-renderer/1\",
  \"name\": \"${_name}\",
@@ -86,6 +88,9 @@ string(FIND "${_html}" "<h2>Cases</h2>" _cases_at)
 string(SUBSTRING "${_html}" 0 ${_cases_at} _summary)
 expect_in("${_summary}" "<th></th><th>alpha</th><th>bravo</th><th>kilo</th><th>mike</th><th>zulu</th></tr>")
 expect_in("${_summary}" "<tr><th class=\"l\">reference</th><td title=\"reference-alpha\"")
+expect_in("${_summary}" "<td title=\"reference-kilo\" class=\"l fail\">FAIL")
+# The worst pair: an error before a failure.
+expect_in("${_summary}" "class=\"l err\">ERROR<br><span class=\"pairname\">reference-mike</span>")
 
 # The report's order is results.json's renderers: not the order in which a
 # case stores its renders and pairs, nor that of the cases (failures

@@ -44,10 +44,7 @@ expect_in("${err}" "tolerances: ")  # the tolerance file used is said
 
 # --junit: one testcase per pair, valid against tests/junit/junit.xsd; the
 # Blender stand-in (colour x 0.98) fails its pairs, POV-Ray's passes.
-execute_process(COMMAND xmllint --noout --schema ${XSD} ${WORK}/junit.xml RESULT_VARIABLE _rc ERROR_VARIABLE _lint)
-if(NOT _rc EQUAL 0)
-  message(FATAL_ERROR "junit.xml is not valid against ${XSD} (xmllint exit ${_rc}):\n${_lint}")
-endif()
+expect_valid_junit(${WORK}/junit.xml ${XSD})
 file(READ ${WORK}/junit.xml _junit)
 expect_in("${_junit}" "tests=\"3\" failures=\"2\" errors=\"0\"")
 expect_in("${_junit}" "name=\"reference-blender\"")

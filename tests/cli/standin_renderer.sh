@@ -5,6 +5,7 @@
 # go right (it hands the scene to the reference renderer: XVAL names it).
 #   --version        prints "standin 1.0"
 #   pass             the reference renderer's image of SCENE
+#   dim              that image at half its value (a renderer that disagrees)
 #   fail             complains and exits 3
 #   hang             never finishes (the time-out must stop it)
 #   no-image         exits 0 without writing OUTPUT
@@ -17,6 +18,8 @@ mode=$1 scene=$2 output=$3 width=$4 height=$5
 echo "standin: mode $mode, scene $scene"
 case "$mode" in
   pass) exec "$XVAL" render "$scene" -o "$output" -q ;;
+  dim) "$XVAL" render "$scene" -o "$output.full.exr" -q
+       exec oiiotool "$output.full.exr" --mulc 0.5,0.5,0.5,1 -o "$output" ;;
   fail) echo "standin: the engine crashed (simulated)"; exit 3 ;;
   hang) exec sleep 600 ;;
   no-image) exit 0 ;;

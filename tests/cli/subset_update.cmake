@@ -18,12 +18,8 @@ foreach(_s a b c)
   run(0 ${XVAL} render ${WORK}/scenes/${_s}.json -o ${WORK}/ref_${_s}.exr --precision double -q)
 endforeach()
 # The stand-in finds its case by the component after out/ in its work folder.
-file(WRITE ${WORK}/bin/povray
-  "#!/bin/sh\nif [ \"$1\" = --version ]; then echo 'stand-in povray 0.0'; exit 0; fi\n"
-  "out=$(/bin/sed -n 's/^Output_File_Name=//p' scene.ini)\nfor a in \"$@\"; do o=$(echo \"$a\" | /bin/sed -n 's/^+O//p'); [ -z \"$o\" ] || out=$o; done\n"
-  "s=$(/bin/echo \"$PWD\" | /bin/sed -n 's|.*/out/\\([^/]*\\)/.*|\\1|p')\n"
-  "/bin/cp \"${WORK}/ref_$s.exr\" \"$out\"\n")
-file(CHMOD ${WORK}/bin/povray PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
+write_povray_stand_in(${WORK}/bin
+  "s=$(/bin/echo \"$PWD\" | /bin/sed -n 's|.*/out/\\([^/]*\\)/.*|\\1|p')\n/bin/cp \"${WORK}/ref_$s.exr\" \"$out\"")
 
 function(validate expect_rc)
   execute_process(COMMAND ${CMAKE_COMMAND} -E env "PATH=${WORK}/bin:/usr/bin:/bin"

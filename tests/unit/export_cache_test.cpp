@@ -140,6 +140,34 @@ TEST_F(ExportCacheTest, StaleTemporariesOfKilledStoresAreRemoved) {
 }
 
 // The inputs key changes with one byte of the scene file or of a texture.
+// A refusal entry holds the exporter's verdict: its messages say
+// "refusal" only when it holds one (issue #30: "stored refusal-blender"
+// for scenes that were not refused).
+TEST_F(ExportCacheTest, RefusalMessagesSayWhetherTheEntryIsARefusal) {
+  setExportCache(cache);
+  struct Unset {
+    ~Unset() { setExportCache({}); }
+  } unset;
+  auto through = [](const std::string& inputs, const std::string& why) {
+    ::testing::internal::CaptureStderr();
+    const std::string got = cachedRefusal("blender", inputs, [&] { return why; });
+    return std::make_pair(got, ::testing::internal::GetCapturedStderr());
+  };
+  const auto [none, stored_none] = through("expressible scene", "");
+  EXPECT_EQ(none, "");
+  EXPECT_NE(stored_none.find("export cache: stored blender's check (no refusal) "), std::string::npos) << stored_none;
+  EXPECT_EQ(stored_none.find("refusal-"), std::string::npos) << stored_none;
+  const auto [again, cached_none] = through("expressible scene", "must not be asked");
+  EXPECT_EQ(again, "");
+  EXPECT_NE(cached_none.find("export cache: cached blender's check (no refusal) "), std::string::npos) << cached_none;
+  const auto [why, stored_why] = through("refused scene", "a built-in shape");
+  EXPECT_EQ(why, "a built-in shape");
+  EXPECT_NE(stored_why.find("export cache: stored blender's refusal "), std::string::npos) << stored_why;
+  const auto [why2, cached_why] = through("refused scene", "");
+  EXPECT_EQ(why2, "a built-in shape");
+  EXPECT_NE(cached_why.find("export cache: cached blender's refusal "), std::string::npos) << cached_why;
+}
+
 TEST_F(ExportCacheTest, InputsKeyCoversSceneAndTextureBytes) {
   const fs::path src = fs::path(XVAL_REFERENCE_DIR) / "scenes" / "texture16_bilinear_37x23.json";
   const Scene scene = loadScene(src);

@@ -91,3 +91,42 @@ TEST(JunitReport, NotAResultsFileIsAnErrorNamingTheField) {
     EXPECT_STREQ(e.what(), "results: cases[0]: no \"pairs\" field");
   }
 }
+
+// A case that is no pass never reads as one (issue #30): one that compared
+// nothing is a failing testcase of its own (not tests="0"), with why; an
+// error case without an erroring testcase gets one.
+TEST(JunitReport, ACaseThatComparedNothingIsAFailure) {
+  const J r = {{"format", "xval-results/1"},
+               {"cases",
+                {{{"scene", "limited"},
+                  {"renders", {{"reference", {{"seconds", 0.5}}}}},
+                  {"pairs", J::array()},
+                  {"left_out", {{"golden", "the scene is meant for reference and gl only"}}},
+                  {"attribution", "nothing to compare"},
+                  {"verdict", "not_compared"},
+                  {"pass", false}},
+                 {{"scene", "alone"},
+                  {"renders", {{"reference", {{"seconds", 0.5}, {"error", "exit code 3"}}}}},
+                  {"pairs", J::array()},
+                  {"attribution", "nothing to compare"},
+                  {"verdict", "error"},
+                  {"pass", false}}}}};
+  const std::string x = junitXml(r, "set");
+  EXPECT_NE(x.find("<testsuite name=\"set\" tests=\"2\" failures=\"1\" errors=\"1\" skipped=\"0\""), std::string::npos)
+      << x;
+  EXPECT_NE(x.find("<testcase classname=\"limited\" name=\"case\" time=\"0.000\">\n      <failure message=\"nothing "
+                   "compared (no image pair, no geometry check): nothing to compare; golden left out: the scene is "
+                   "meant for reference and gl only\" type=\"not_compared\"/>"),
+            std::string::npos) << x;
+  EXPECT_NE(x.find("<testcase classname=\"alone\" name=\"case\" time=\"0.000\">\n      <error message=\"a render "
+                   "failed\" type=\"error\">reference: exit code 3\n</error>"),
+            std::string::npos) << x;
+  ProcessResult lint = xmllint(x, "not_compared.xml");
+  EXPECT_TRUE(lint.ok()) << lint.describe() << "\n" << tailOfFile(lint.log);
+  // A verdict the testcases already say adds nothing; an unknown one is an error.
+  J passing = results();
+  passing["cases"][1]["verdict"] = "fail";
+  EXPECT_EQ(junitXml(passing, "reference set"), junitXml(results(), "reference set"));
+  passing["cases"][1]["verdict"] = "maybe";
+  EXPECT_THROW(junitXml(passing, "reference set"), std::runtime_error);
+}

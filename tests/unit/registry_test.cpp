@@ -167,3 +167,31 @@ TEST(Attribution, FourAndFiveRenderersTheMajority) {
   // pairs: ab ac ad ae bc bd be cd ce de; A, B, C agree; D and E fail against them.
   EXPECT_EQ(attribute(pointers(five), {1, 1, 0, 0, 1, 0, 0, 0, 0, 1}), "D and E deviate (A, B and C agree)");
 }
+
+// deviating: the indices attribute names as deviating, none without a
+// majority (validate prints the golden update step for them only).
+TEST(Attribution, DeviatingAreTheOnesOutsideTheMajority) {
+  // reference-povray, reference-blender, povray-blender
+  EXPECT_EQ(deviating(3, {0, 0, 1}), (std::vector<size_t>{0}));
+  EXPECT_EQ(deviating(3, {0, 1, 0}), (std::vector<size_t>{1}));
+  EXPECT_TRUE(deviating(3, {1, 1, 1}).empty());
+  EXPECT_TRUE(deviating(3, {0, 0, 0}).empty());
+  EXPECT_TRUE(deviating(3, {0, 0, -1}).empty());
+  EXPECT_TRUE(deviating(2, {0}).empty());  // two: neither is to blame on its own
+  EXPECT_EQ(deviating(5, {1, 1, 0, 0, 1, 0, 0, 0, 0, 1}), (std::vector<size_t>{3, 4}));
+  EXPECT_THROW(deviating(3, {1, 1}), std::invalid_argument);
+}
+
+// A scene's `renderers` field: a golden set stands in for the renderer
+// whose images it stores (issue #30: `golden` was left out of a scene
+// meant for the reference).
+TEST(MeantFor, AGoldenSetStandsInForTheRendererItStores) {
+  const std::vector<std::string> limited{"reference", "gl", "blender-import"};
+  EXPECT_TRUE(meantFor(limited, registry().at("reference")));
+  EXPECT_FALSE(meantFor(limited, registry().at("povray")));
+  EXPECT_TRUE(meantFor(limited, registry().at("golden")));
+  EXPECT_TRUE(meantFor(limited, registry().at("golden-gl")));
+  EXPECT_FALSE(meantFor(limited, registry().at("golden-povray")));
+  EXPECT_TRUE(meantFor({}, registry().at("golden-povray")));  // no field: every renderer
+  EXPECT_FALSE(meantFor(limited, stub("golden-like", "not a golden set")));
+}

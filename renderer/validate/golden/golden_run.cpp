@@ -8,6 +8,7 @@
 #include "golden/golden_set.h"
 #include "image/compare.h"
 #include "process/run_process.h"
+#include "process/shell_word.h"
 #include "render/renderer.h"
 #include "renderers/registry.h"
 #include "scene/scene_loader.h"
@@ -59,22 +60,6 @@ Render renderForGolden(const renderers::Renderer& r, const Scene& scene, const f
     return {r.render(scene, {work, timeout, o}, nullptr), golden::settingsOf(r.id, o.spp, toString(o.precision))};
   }
   return {r.render(scene, {work, timeout, {}}, nullptr), golden::settingsOf(r.id, 0, "")};
-}
-
-// A word of a command line as a POSIX shell reads it back.
-std::string shellWord(const std::string& w) {
-  if (!w.empty() && std::all_of(w.begin(), w.end(), [](unsigned char c) {
-        return std::isalnum(c) || std::string_view("/._-+:=,@").find(char(c)) != std::string_view::npos;
-      }))
-    return w;
-  std::string out = "'";
-  for (char c : w) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
-std::string acceptCommand(const fs::path& scene_file, const std::string& renderer) {
-  return "xval golden update " + shellWord(fs::absolute(scene_file).lexically_normal().string()) +
-         " --renderer " + shellWord(renderer);
 }
 
 }  // namespace
@@ -162,10 +147,10 @@ int goldenCheck(const GoldenRequest& request) {
       // The golden images are of the exact path: only its render can be
       // accepted as one.
       if (precision == Precision::Double)
-        std::printf("  accept the fresh render: %s\n", acceptCommand(file, r.id).c_str());
+        std::printf("  accept the fresh render: %s\n", renderers::goldenUpdateCommand(file, r.id).c_str());
       else
         std::printf("  (the fast path against the exact path's golden image: `xval golden check %s` first)\n",
-                    file.string().c_str());
+                    shellWord(file.string()).c_str());
     };
     if (const std::string problem = golden::goldenProblem(folder, m, file); !problem.empty()) {
       fail(problem);

@@ -2,6 +2,7 @@
 #include "validate/validation/compare_step.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <mutex>
 #include <optional>
@@ -10,6 +11,7 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -22,12 +24,14 @@
 #include "image/perceptual.h"
 #include "process/job_pool.h"
 #include "renderers/registry.h"
+#include "scene/scene_lint.h"
 #include "scene/scene_loader.h"
 #include "validate/colour_stats.h"
 #include "validate/pixel_crops.h"
 #include "validate/tolerances.h"
 #include "render/geometry_passes.h"
 #include "validate/geometry_check.h"
+#include "validate/validation/case_verdict.h"
 #include "validate/validation/geometry_checks.h"
 #include "validate/validation/job_record.h"
 #include "validate/validation/next_steps.h"
@@ -97,9 +101,10 @@ J renderJson(const RenderJob& job, const Render& r) {
   return jr;
 }
 
-// Pair verdicts (renderers::attribute's, and -2 for a pair that one of its
-// renderers cannot express: not compared, and no error).
-constexpr int kPass = 1, kFail = 0, kNotCompared = -1, kNotExpressible = -2;
+// Pair verdicts (renderers::attribute's: -1 not compared for a failed
+// render; and -2 for a pair that one of its renderers cannot express: not
+// compared, and no error).
+constexpr int kPass = 1, kFail = 0, kRenderError = -1, kNotExpressible = -2;
 
 // One pair of one case: compared with its tolerance, its difference EXR
 // and heat map written.
@@ -110,7 +115,7 @@ J comparePair(const CompareContext& cx, const Scene& scene, const renderers::Ren
   const std::string key = renderers::pairKey(ra, rb);
   J jp = {{"pair", key}};
   if (!A.error.empty() || !B.error.empty()) {
-    verdict = kNotCompared;
+    verdict = kRenderError;
     jp["error"] = "not compared: a render failed";
     return jp;
   }
@@ -176,9 +181,10 @@ J colourStatsJson(const Image& reference) {
 }
 
 // Who deviates, among the renderers that can express the scene (their
-// pairs' verdicts), and which cannot.
+// pairs' verdicts), and which cannot; `blamed` gets the ids of those a
+// majority deviates from (renderers::deviating).
 std::string attribution(const std::vector<const renderers::Renderer*>& rs, const std::vector<int>& verdict,
-                        const Renders& renders) {
+                        const Renders& renders, std::vector<std::string>& blamed) {
   std::vector<const renderers::Renderer*> can;
   std::vector<std::string> cannot;
   for (const auto* r : rs) {
@@ -195,6 +201,7 @@ std::string attribution(const std::vector<const renderers::Renderer*>& rs, const
     if (!notExpressible(renders.at(rs[pairs[p].a]->id)) && !notExpressible(renders.at(rs[pairs[p].b]->id)))
       can_verdict.push_back(verdict[p]);
   const std::string who = renderers::attribute(can, can_verdict);
+  for (size_t k : renderers::deviating(can.size(), can_verdict)) blamed.push_back(can[k]->id);
   return not_expr.empty() ? who : who + "; " + not_expr;
 }
 
@@ -230,7 +237,7 @@ J compareCase(const CompareContext& cx, size_t k) {
     throw std::runtime_error(ps.path.string() + ": name: \"" + scene.name + "\": the plan (" +
                              planFile(plan.dir).string() + ") says \"" + ps.name + "\": plan again");
   makeRealFolder(plan.dir, plan.dir / ps.name);  // the diff images go there: never through a link
-  J jc = {{"scene", ps.name}, {"file", ps.file}};
+  J jc = {{"scene", ps.name}, {"file", ps.file}, {"reproduce", reproduceCommand(plan, ps)}};
   Renders renders;
   // The case's image renderers, in job (registry) order: its pairs and the
   // attribution are theirs. Its geometry checks (geometry_checks.h) are
@@ -250,6 +257,9 @@ J compareCase(const CompareContext& cx, size_t k) {
     jc["left_out"] = J::object();
     for (const LeftOut& l : ps.left_out) jc["left_out"][l.renderer] = l.reason;
   }
+  // The scene's warnings (scene/scene_lint.h): recorded, never part of the verdict.
+  for (const SceneWarning& w : lintScene(scene))
+    jc["warnings"].push_back({{"code", w.code}, {"subject", w.subject}, {"message", w.message}});
   const std::vector<renderers::RendererPair> pairs = renderers::unorderedPairs(rs.size());
   std::vector<int> verdict(pairs.size());
   J jpairs = J::array();
@@ -265,7 +275,8 @@ J compareCase(const CompareContext& cx, size_t k) {
   // Who deviates among the image renderers, then each geometry check that
   // failed (it says nothing about the image renderers: it checks what they
   // all read, the loaded model, against Blender's own import).
-  std::string who = attribution(rs, verdict, renders);
+  std::vector<std::string> blamed;
+  std::string who = attribution(rs, verdict, renders, blamed);
   const std::string nothing = "nothing to compare";
   if (who.rfind(nothing, 0) == 0 && geometryChecksWith(checks, "pass") + geometryChecksWith(checks, "fail") > 0)
     who = "no image pair to compare" + who.substr(nothing.size());
@@ -274,11 +285,32 @@ J compareCase(const CompareContext& cx, size_t k) {
       who += "; " + renderers::registry().at(c["renderer"].get<std::string>()).display_name +
              " and the reference disagree in geometry (the model loader or the import)";
   jc["attribution"] = who;
-  // Decided on the pairs that could be compared (every one passes) and on
-  // the geometry checks that could (every one passes).
-  jc["pass"] = std::all_of(verdict.begin(), verdict.end(), [](int v) { return v == kPass || v == kNotExpressible; }) &&
-               geometryChecksPass(checks);
+  if (!blamed.empty()) jc["deviating"] = blamed;
+  // The case's verdict, once (case_verdict.h): on its renders' errors, the
+  // pairs and geometry checks it compared and how they came out.
+  CaseTally tally;
+  for (const auto& [id, r] : renders) tally.errors += !r.error.empty();
+  tally.errors += geometryChecksWith(checks, "error");
+  tally.failed = static_cast<int>(std::count(verdict.begin(), verdict.end(), kFail)) + geometryChecksWith(checks, "fail");
+  tally.passed = static_cast<int>(std::count(verdict.begin(), verdict.end(), kPass)) + geometryChecksWith(checks, "pass");
+  const CaseVerdict v = caseVerdict(tally);
+  jc["verdict"] = verdictName(v);
+  jc["pass"] = v == CaseVerdict::Pass;
   return jc;
+}
+
+// "1 scene", "3 scenes".
+std::string counted(size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+// A case's verdict in a progress line: "pass", else in capitals ("FAIL",
+// "NOT COMPARED").
+std::string progressWord(CaseVerdict v) {
+  std::string word = verdictName(v);
+  if (v == CaseVerdict::Pass) return word;
+  for (char& ch : word) ch = ch == '_' ? ' ' : static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+  return word;
 }
 
 // How many of the case's renders (or pairs) have `key` ("error", "not_expressible").
@@ -320,14 +352,14 @@ void CaseComparer::compare(size_t k) {
   std::string verdict;
   try {
     st.compared.at(k) = compareCase(st.cx, k);
-    verdict = st.compared[k]["pass"].get<bool>() ? "pass" : "FAIL";
+    verdict = progressWord(parseCaseVerdict(st.compared[k]["verdict"].get<std::string>(), "verdict"));
   } catch (...) {
     st.failed.at(k) = std::current_exception();
     verdict = "ERROR";
   }
   const auto t1 = std::chrono::steady_clock::now();
   std::lock_guard<std::mutex> g(st.lock);
-  std::fprintf(stderr, "[compared %zu/%zu] %-32s %-5s %6.2f s   elapsed %.0f s\n", ++st.done, st.plan.scenes.size(),
+  std::fprintf(stderr, "[compared %zu/%zu] %-32s %-12s %6.2f s   elapsed %.0f s\n", ++st.done, st.plan.scenes.size(),
                st.plan.scenes[k].name.c_str(), verdict.c_str(), std::chrono::duration<double>(t1 - t0).count(),
                std::chrono::duration<double>(t1 - st.t0).count());
 }
@@ -340,7 +372,8 @@ int CaseComparer::finish() {
   // (whichever was compared first).
   for (const std::exception_ptr& e : st.failed)
     if (e) std::rethrow_exception(e);
-  bool any_error = false, any_fail = false;
+  std::map<CaseVerdict, int> cases;  // by verdict
+  std::vector<CaseVerdict> verdicts;
   int not_expressible = 0, not_compared = 0;  // image renders, and their pairs
   int checks_pass = 0, checks_fail = 0, checks_error = 0, checks_nexp = 0;  // geometry checks
   J jcases = J::array();
@@ -350,7 +383,6 @@ int CaseComparer::finish() {
       throw std::logic_error("the compare step: case " + plan.scenes[k].name + " was not compared");
     setting_files.push_back(plan.scenes[k].path);
     J jc = std::move(st.compared[k]);
-    any_error |= entriesWith(jc["renders"], "error") > 0;
     not_expressible += entriesWith(jc["renders"], "not_expressible");
     not_compared += entriesWith(jc["pairs"], "not_expressible");
     if (jc.contains("geometry_checks")) {
@@ -363,24 +395,37 @@ int CaseComparer::finish() {
       checks_error += geometryChecksWith(checks, "error");
       checks_nexp += geometryChecksWith(checks, "not_expressible");
     }
-    any_fail |= !jc["pass"].get<bool>();
+    verdicts.push_back(parseCaseVerdict(jc["verdict"].get<std::string>(), plan.scenes[k].name + ": verdict"));
+    ++cases[verdicts.back()];
     jcases.push_back(std::move(jc));
   }
   writeFileAtomically(dir / "results.json", resultsJson(plan, jcases, setting_files, st.jsections).dump(2) + "\n");
   writeReport(dir / "results.json", dir / "report.html");
   printNextSteps(plan, jcases);
-  any_error |= checks_error > 0;
-  std::string apart = not_expressible ? " (" + std::to_string(not_expressible) + " renders not expressible, " +
-                                            std::to_string(not_compared) + " pairs not compared)"
-                                      : "";
+  // "3 scenes, all pass", else the worst verdict and every verdict's count:
+  // "3 scenes, ERRORS: 1 error, 1 fail, 1 not compared".
+  const int status = validateExitStatus(verdicts);
+  std::string line = counted(jcases.size(), "scene", "scenes") + ", ";
+  if (status == 0) {
+    line += "all pass";
+  } else {
+    line += cases[CaseVerdict::Error] ? "ERRORS: " : cases[CaseVerdict::Fail] ? "FAIL: " : "NOT COMPARED: ";
+    std::string counts;
+    for (const auto& [v, one, many] : {std::tuple{CaseVerdict::Error, "error", "errors"},
+                                       std::tuple{CaseVerdict::Fail, "fail", "fail"},
+                                       std::tuple{CaseVerdict::NotCompared, "not compared", "not compared"},
+                                       std::tuple{CaseVerdict::Pass, "pass", "pass"}})
+      if (cases[v]) counts += (counts.empty() ? "" : ", ") + counted(cases[v], one, many);
+    line += counts;
+  }
+  if (not_expressible)
+    line += " (" + counted(not_expressible, "render", "renders") + " not expressible, " +
+            counted(not_compared, "pair", "pairs") + " not compared)";
   if (checks_pass + checks_fail + checks_error + checks_nexp > 0)
-    apart += "; geometry checks: " + std::to_string(checks_pass) + " pass, " + std::to_string(checks_fail) +
-             " fail, " + std::to_string(checks_error) + " errors, " + std::to_string(checks_nexp) +
-             " not expressible";
-  std::fprintf(stderr, "xval validate: %zu scenes, %s%s; wrote %s\n", jcases.size(),
-               any_error ? "ERRORS" : any_fail ? "some cases FAIL" : "all pass", apart.c_str(),
-               (dir / "report.html").c_str());
-  return any_error ? 2 : any_fail ? 1 : 0;
+    line += "; geometry checks: " + std::to_string(checks_pass) + " pass, " + std::to_string(checks_fail) + " fail, " +
+            counted(checks_error, "error", "errors") + ", " + std::to_string(checks_nexp) + " not expressible";
+  std::fprintf(stderr, "xval validate: %s; wrote %s\n", line.c_str(), (dir / "report.html").c_str());
+  return status;
 }
 
 int compareAndReport(const Plan& plan, const ReportSections& sections, int workers) {

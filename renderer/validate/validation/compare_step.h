@@ -12,9 +12,11 @@
 // deviates (renderers::attribute, among the renderers that can express
 // it). A pair with a failed render is an error ("error"); a pair with a
 // renderer that cannot express the scene is not compared and not an error
-// ("not_expressible": the reason). The case passes when every pair that
-// could be compared passes; the renderers its `renderers` field left out
-// are its "left_out", with the reason.
+// ("not_expressible": the reason). The case's verdict is decided once,
+// here (case_verdict.h): it passes when something was compared and every
+// pair that could be compared passes; a case that compared nothing is
+// "not_compared", never a pass. The renderers its `renderers` field left
+// out are its "left_out", with the reason.
 #pragma once
 
 #include <chrono>
@@ -61,10 +63,12 @@ class CaseComparer {
 };
 
 // Compares every pair of every scene, writes results.json and report.html,
-// prints the failing cases' next steps (next_steps.h). Returns the exit
-// status of `xval validate`: 0 every compared pair passes (a renderer that
-// cannot express a scene is no failure), 1 some case outside its
-// tolerance, 2 an error (a render failed or a job has no usable record).
+// prints the next steps of the cases that do not pass (next_steps.h).
+// Returns the exit status of `xval validate` (validateExitStatus): 0 every
+// case passes (a renderer that cannot express a scene is no failure, as
+// long as the case compared something), 1 some case outside its tolerance
+// or compared nothing, 2 an error (a render failed or a job has no usable
+// record).
 // `workers` cases are compared at once (process/job_pool.h); the results
 // do not depend on it.
 int compareAndReport(const Plan& plan, const ReportSections& sections = {}, int workers = 1);

@@ -1,39 +1,111 @@
 // The next steps of failing cases (next_steps.h).
 #include "validate/validation/next_steps.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
+#include "golden/golden_set.h"
+#include "process/shell_word.h"
 #include "renderers/registry.h"
+#include "validate/tolerances.h"
+#include "validate/validation/case_verdict.h"
 
 namespace xval::validation {
 
+namespace fs = std::filesystem;
+
 namespace {
 
-std::string shellQuote(const std::string& v) {
-  std::string q = "'";
-  for (char c : v) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
+const PlannedScene& plannedScene(const Plan& plan, const std::string& name) {
+  for (const PlannedScene& ps : plan.scenes)
+    if (ps.name == name) return ps;
+  throw std::runtime_error(planFile(plan.dir).string() + ": no scene \"" + name + "\" (results and plan disagree)");
+}
+
+// The id of renderer `id`'s golden set: golden for the reference, else golden-ID.
+std::string goldenSetOf(const std::string& id) { return renderers::goldenAlias("golden:" + id); }
+
+bool pairFailed(const nlohmann::ordered_json& jc, const std::string& a, const std::string& b) {
+  for (const auto& p : jc["pairs"])
+    if ((p["pair"] == a + "-" + b || p["pair"] == b + "-" + a) && p.contains("pass") && !p["pass"].get<bool>())
+      return true;
+  return false;
+}
+
+// The renderers of the case whose golden images are the step (next_steps.h).
+std::vector<std::string> goldenStepRenderers(const nlohmann::ordered_json& jc, const PlannedScene& ps) {
+  std::vector<std::string> out;
+  for (const auto& [id, render] : jc["renders"].items()) {
+    const renderers::Renderer* r = renderers::registry().find(id);
+    if (!r || r->geometry_passes || id == "golden" || id.rfind("golden-", 0) == 0) continue;
+    const bool deviates = jc.contains("deviating") &&
+                          std::find(jc["deviating"].begin(), jc["deviating"].end(), id) != jc["deviating"].end();
+    if (!deviates && !pairFailed(jc, id, goldenSetOf(id))) continue;
+    try {
+      if (golden::readManifest(golden::goldenFolder(ps.path, id), id).entries.count(ps.path.stem().string()))
+        out.push_back(id);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "  (the golden set of %s cannot be read: %s)\n", id.c_str(), e.what());
+    }
+  }
+  return out;
 }
 
 }  // namespace
 
+std::string runOptions(const Plan& plan, const fs::path& scene_file) {
+  std::string o;
+  for (const RendererFile& f : plan.renderer_files) o += " --renderer-file " + shellWord(f.path.string());
+  if (findToleranceFile("", {scene_file}).path != plan.tolerances_path)
+    o += " --tolerances " + shellWord(plan.tolerances_path.string());
+  return o;
+}
+
+std::string reproduceCommand(const Plan& plan, const PlannedScene& ps) {
+  std::string c = "xval validate " + shellWord(ps.path.string()) + " -o " +
+                  shellWord((plan.dir / (ps.name + ".validate")).string());
+  if (plan.renderers != jobRenderers()) {
+    std::string list;
+    for (const std::string& id : plan.renderers) list += (list.empty() ? "" : ",") + id;
+    c += " --renderers " + shellWord(list);
+  }
+  return c + runOptions(plan, ps.path);
+}
+
 void printNextSteps(const Plan& plan, const nlohmann::ordered_json& cases) {
   for (const auto& jc : cases) {
-    if (jc["pass"].get<bool>()) continue;
-    const std::string scene = jc["scene"].get<std::string>(), file = jc["file"].get<std::string>();
-    std::fprintf(stderr, "FAIL %s (%s)\n", scene.c_str(), jc["attribution"].get<std::string>().c_str());
+    const std::string scene = jc["scene"].get<std::string>();
+    const CaseVerdict v = parseCaseVerdict(jc["verdict"].get<std::string>(), scene + ": verdict");
+    if (v == CaseVerdict::Pass) continue;
+    if (v == CaseVerdict::NotCompared) {
+      // Nothing to look closer at: say why nothing was compared.
+      std::fprintf(stderr, "NOT COMPARED %s (%s)\n", scene.c_str(), jc["attribution"].get<std::string>().c_str());
+      const nlohmann::ordered_json left_out = jc.value("left_out", nlohmann::ordered_json::object());
+      for (const auto& [id, why] : left_out.items())
+        std::fprintf(stderr, "  %s left out: %s\n", id.c_str(), why.get<std::string>().c_str());
+      continue;
+    }
+    const PlannedScene& ps = plannedScene(plan, scene);
+    const std::string options = runOptions(plan, ps.path);
+    std::fprintf(stderr, "%s %s (%s)\n", v == CaseVerdict::Error ? "ERROR" : "FAIL", scene.c_str(),
+                 jc["attribution"].get<std::string>().c_str());
     // Every renderer of the case that rendered it, but the reference.
     for (const auto& [id, render] : jc["renders"].items())
       if (id != renderers::registry().reference().id && !render.contains("not_expressible"))
-        std::fprintf(stderr, "  look closer: xval crosscheck %s --renderer %s -o %s\n", shellQuote(file).c_str(),
-                     id.c_str(), shellQuote((plan.dir / (scene + "." + id)).string()).c_str());
+        std::fprintf(stderr, "  look closer: xval crosscheck %s --renderer %s -o %s%s\n",
+                     shellWord(ps.path.string()).c_str(), shellWord(id).c_str(),
+                     shellWord((plan.dir / (scene + "." + id)).string()).c_str(), options.c_str());
     std::fprintf(stderr,
                  "  accept a documented difference: declare it, with its measured reason, in the\n"
-                 "  `tolerances` field of %s (defaults: %s)\n"
-                 "  after an intended change of the reference renderer, store its images anew:\n"
-                 "  xval golden update %s --renderer reference\n",
-                 file.c_str(), plan.tolerances.c_str(), shellQuote(file).c_str());
+                 "  `tolerances` field of %s (defaults: %s)\n",
+                 ps.file.c_str(), plan.tolerances.c_str());
+    for (const std::string& id : goldenStepRenderers(jc, ps))
+      std::fprintf(stderr,
+                   "  after an intended change of %s, store its images anew:\n"
+                   "  %s\n",
+                   renderers::registry().at(id).sentenceSubject().c_str(),
+                   renderers::goldenUpdateCommand(ps.path, id).c_str());
   }
 }
 

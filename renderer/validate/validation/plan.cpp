@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 #include <cstdio>
+#include <exception>
 #include <map>
 #include <stdexcept>
 
@@ -17,6 +18,7 @@
 #include "renderers/renderer_file.h"
 #include "renderers/registry.h"
 #include "scene/json_reader.h"
+#include "scene/scene_lint.h"
 #include "validate/tolerances.h"
 #include "validate/validation/file_fields.h"
 #include "validate/validation/job_record.h"
@@ -89,12 +91,13 @@ void checkCaseFolder(const fs::path& folder, const fs::path& scene_file) {
                                                  : "exists and is not a folder"));
 }
 
-// The run's renderers that the scene's `renderers` field does not name.
+// The run's renderers the scene is not meant for (renderers::meantFor: its
+// `renderers` field names neither them nor, for a golden set, the renderer
+// whose images it stores).
 std::vector<LeftOut> leftOut(const Scene& scene, const std::vector<std::string>& run) {
   std::vector<LeftOut> out;
-  if (scene.renderers.empty()) return out;
   for (const std::string& r : run)
-    if (std::find(scene.renderers.begin(), scene.renderers.end(), r) == scene.renderers.end())
+    if (!renderers::meantFor(scene.renderers, renderers::registry().at(r)))
       out.push_back({r, "the scene is meant for " + renderers::joinNames(scene.renderers) +
                             " only (its `renderers` field)"});
   return out;
@@ -298,6 +301,8 @@ std::string exportInputsKey(const Scene& scene, const fs::path& scene_file) {
 
 std::vector<std::string> jobRenderers() { return renderers::registry().validateIds(); }
 
+bool runsWhenNamed(const std::string& id) { return id == "golden" || id.rfind("golden-", 0) == 0; }
+
 std::vector<std::string> runRenderers(const std::vector<std::string>& names) {
   const std::vector<std::string> every = jobRenderers();
   if (names.empty()) return every;
@@ -309,7 +314,7 @@ std::vector<std::string> runRenderers(const std::vector<std::string>& names) {
     if (const std::string id = renderers::goldenAlias(n); !id.empty()) n = id;
   std::vector<std::string> runnable;
   for (const std::string& id : renderers::registry().ids())
-    if (std::find(every.begin(), every.end(), id) != every.end() || id == "golden" || id.rfind("golden-", 0) == 0)
+    if (std::find(every.begin(), every.end(), id) != every.end() || runsWhenNamed(id))
       runnable.push_back(id);
   for (size_t i = 0; i < named.size(); ++i) {
     if (std::find(runnable.begin(), runnable.end(), named[i]) == runnable.end())
@@ -362,14 +367,26 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
   plan.renderers = runRenderers(run_renderers);
   plan.renderer_files = rendererFiles(plan.renderers);
   std::map<std::string, std::string> seen;  // scene name -> file
+  // Every invalid scene is reported, not only the first: a folder of
+  // scenes is mended in one pass. Nothing renders until all are valid.
+  std::vector<std::string> invalid;
+  std::exception_ptr first_invalid;  // one invalid scene: its own error, as thrown
   for (const auto& f : scene_files) {
-    Scene scene = loadScene(f, plan.budget);
-    checkSceneName(scene.name, f.string());
-    checkCaseFolder(plan.dir / scene.name, f);
-    auto [it, fresh] = seen.emplace(scene.name, f.string());
-    if (!fresh)
-      throw std::runtime_error(f.string() + ": name: \"" + scene.name + "\": also the name of " +
-                               it->second + " (scene names name the output folders: expected unique)");
+    Scene scene;
+    try {
+      scene = loadScene(f, plan.budget);
+      checkSceneName(scene.name, f.string());
+      checkCaseFolder(plan.dir / scene.name, f);
+      printSceneWarnings("xval validate", scene);  // recorded by the compare step (results.json)
+      auto [it, fresh] = seen.emplace(scene.name, f.string());
+      if (!fresh)
+        throw std::runtime_error(f.string() + ": name: \"" + scene.name + "\": also the name of " +
+                                 it->second + " (scene names name the output folders: expected unique)");
+    } catch (const std::exception& e) {
+      invalid.push_back(e.what());
+      if (!first_invalid) first_invalid = std::current_exception();
+      continue;
+    }
     PlannedScene planned{scene.name, f.string(), fs::absolute(f).lexically_normal(),
                          leftOut(scene, plan.renderers)};
     for (const LeftOut& l : planned.left_out)
@@ -387,6 +404,13 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
       plan.jobs.push_back(job);
     }
     plan.scenes.push_back(std::move(planned));
+  }
+  if (invalid.size() == 1) std::rethrow_exception(first_invalid);
+  if (!invalid.empty()) {
+    std::string all = std::to_string(invalid.size()) + " of " + std::to_string(scene_files.size()) +
+                      " scenes are invalid (nothing rendered):";
+    for (const std::string& why : invalid) all += "\n  " + why;
+    throw std::runtime_error(all);
   }
   plan.created_unix = nowUnix();
   return plan;

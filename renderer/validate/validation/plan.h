@@ -114,6 +114,11 @@ struct Plan {
 // blender, blender-import, eevee, gl).
 std::vector<std::string> jobRenderers();
 
+// Whether `validate --renderers` takes the renderer only when it is named:
+// a golden set (`golden`, `golden-NAME`; renderers/golden.cpp), which a
+// scene set may not have.
+bool runsWhenNamed(const std::string& id);
+
 // The run's renderers from `validate --renderers` (empty: jobRenderers()),
 // in registry order: jobRenderers() and, when named, the golden sets
 // (`golden`, `golden-NAME`, also spelled `golden:NAME`). Throws
