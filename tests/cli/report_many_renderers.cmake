@@ -13,11 +13,12 @@
 #     names a file that does not exist;
 #   - the provenance lists the versions of the run's renderers only (no
 #     POV-Ray, Blender, EEVEE or Blender-import in a run without them);
-#   - with CHROMIUM (the program's name; tests/cross), headless Chromium
+#   - with WITH_CHROMIUM=ON (tests/cross), headless Chromium
 #     opens a copy of the page with every pair matrix opened, in a 1280 px
 #     wide window, and the summary table fits it (a script added to the copy measures it and
 #     puts the verdict in the title).
-# Arguments: XVAL, SCENE, STANDIN, WORK; CHROMIUM (optional).
+# Arguments: XVAL, SCENE, STANDIN, WORK; WITH_CHROMIUM (optional: chromium
+# must then be installed, tests/cross/report_in_chromium.cmake).
 include(${CMAKE_CURRENT_LIST_DIR}/cli_run.cmake)
 require_defined(report_many_renderers.cmake XVAL SCENE STANDIN WORK)
 get_filename_component(XVAL ${XVAL} ABSOLUTE)  # the stand-in runs it from its work folder
@@ -186,10 +187,9 @@ foreach(_unused povray blender eevee blender-import gl)
   endif()
 endforeach()
 
-if(NOT DEFINED CHROMIUM)
+if(NOT WITH_CHROMIUM)
   return()
 endif()
-find_program(_chromium ${CHROMIUM} REQUIRED)
 # Chromium: every matrix opened, does the summary table fit 1280 px?
 string(REPLACE "</body>" "<script>
 window.addEventListener('load', function () {
@@ -203,20 +203,8 @@ window.addEventListener('load', function () {
 });
 </script></body>" _measured "${_html}")
 file(WRITE ${WORK}/one/report_measured.html "${_measured}")
-set(_flags --headless --no-sandbox --disable-gpu --disable-quic --no-first-run
-    --disable-background-networking --disable-component-update --disable-sync --user-data-dir=${WORK}/chromium-profile)
-execute_process(COMMAND ${_chromium} ${_flags} --window-size=1280,900 --virtual-time-budget=10000
-                        --dump-dom file://${WORK}/one/report_measured.html
-                OUTPUT_VARIABLE _dom ERROR_VARIABLE _err RESULT_VARIABLE _rc TIMEOUT 120)
-string(REGEX MATCH "<title>[^<]*</title>" _title "${_dom}")
-message(STATUS "chromium: ${_title}")
-if(NOT _rc EQUAL 0 OR NOT _title MATCHES "summary fits")
-  message(FATAL_ERROR "the summary table does not fit a 1280 px window (exit ${_rc}): ${_title}\n${_err}")
-endif()
-execute_process(COMMAND ${_chromium} ${_flags} --window-size=1280,900 --virtual-time-budget=10000 --screenshot=${WORK}/one/summary.png
-                        file://${WORK}/one/report_measured.html
-                RESULT_VARIABLE _rc ERROR_VARIABLE _err TIMEOUT 120)
-if(NOT _rc EQUAL 0 OR NOT EXISTS ${WORK}/one/summary.png)
-  message(FATAL_ERROR "chromium screenshot failed (exit ${_rc}): ${_err}")
-endif()
-file(REMOVE_RECURSE ${WORK}/chromium-profile)
+set(REPORT ${WORK}/one/report_measured.html)
+set(SHOT ${WORK}/one/summary.png)
+set(TITLE "summary fits")
+set(WINDOW 1280,900)
+include(${CMAKE_CURRENT_LIST_DIR}/../cross/report_in_chromium.cmake)
