@@ -25,6 +25,8 @@ packages=(
   gnuplot-nox chromium
   # JUnit XML checked against its schema (tests/junit/junit.xsd)
   libxml2-utils
+  # the mutation test's wrong renderers and its measure (tests/mutation, docs/mutation-test.md)
+  python3-openimageio
 )
 # Node.js for the Khronos glTF Validator (tests): Debian's, unless a node
 # is already installed.

@@ -14,6 +14,7 @@
 #include "blender/multilayer_exr.h"
 #include "files/atomic_write.h"
 #include "process/run_process.h"
+#include "scene/json_reader.h"
 #include "common/supersample.h"
 #include "gltf/gltf_exporter.h"
 
@@ -178,7 +179,12 @@ std::vector<WorkerLine> readWorkerResults(const std::filesystem::path& file, siz
   std::ifstream in(file);
   std::string line;
   while (std::getline(in, line)) {
-    const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+    nlohmann::json j;
+    try {
+      j = parseJsonText(line, file.string());  // the one strict reader (scene/json_reader.h)
+    } catch (const SceneError&) {
+      continue;
+    }
     if (!j.is_object()) continue;
     auto index = [&](const char* key) -> long {
       const auto it = j.find(key);

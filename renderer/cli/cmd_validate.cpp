@@ -219,7 +219,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
       "SHA-256 of the scene's files, its textures' and model files' bytes and this xval executable, so a "
       "scene exported for one run is copied, not exported, for the next; a partial or altered entry is "
       "exported again (default: $XDG_CACHE_HOME/xval/exports, else ~/.cache/xval/exports; at most 2 GiB, "
-      "least recently used entries removed)");
+      "least recently used entries removed; only folders the cache made and marked are ever removed)");
   cmd->add_flag("--no-export-cache", args->no_export_cache, "Export every scene, read and store no cache")
       ->excludes(export_cache);
   run_job->needs(plan);

@@ -26,6 +26,7 @@
 #include "geometry/assimp_dump.h"
 #include "geometry/transform.h"
 #include "process/run_process.h"
+#include "scene/json_reader.h"
 
 // Debian's Assimp 5.2.5 is built with its internal assertions on, and a
 // failed one calls this hook, whose library definition prints and calls
@@ -267,39 +268,22 @@ void checkOffHeader(const fs::path& file, long long file_size, const ModelLimits
                          std::to_string(file_size) + " bytes the file has");
 }
 
-// glTF JSON: nesting depth (Assimp's JSON parser recurses per level) and
-// every buffer's declared byteLength (Assimp allocates it before reading).
-struct DepthLimit : nlohmann::json_sax<nlohmann::json> {
-  int depth = 0, limit = 64;
-  bool push() { return ++depth <= limit; }
-  bool null() override { return true; }
-  bool boolean(bool) override { return true; }
-  bool number_integer(number_integer_t) override { return true; }
-  bool number_unsigned(number_unsigned_t) override { return true; }
-  bool number_float(number_float_t, const string_t&) override { return true; }
-  bool string(string_t&) override { return true; }
-  bool binary(binary_t&) override { return true; }
-  bool start_object(std::size_t) override { return push(); }
-  bool key(string_t&) override { return true; }
-  bool end_object() override { return --depth, true; }
-  bool start_array(std::size_t) override { return push(); }
-  bool end_array() override { return --depth, true; }
-  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
-};
-
-// Returns the triangles the file's primitives declare (mode 4: count / 3,
+// glTF JSON: checks every buffer's declared byteLength (Assimp allocates it
+// before reading). Returns the triangles the file's primitives declare (mode 4: count / 3,
 // strips and fans 5, 6: count - 2, of the indices accessor or else of
 // POSITION): Assimp's glTF reader drops a triangle whose index is out of
 // range with only a warning, so the loader compares its count with this.
 long long checkGltfJson(const fs::path& file, const std::string& text, long long bin_chunk, const ModelLimits& limits,
                         const GuardedIO& io) {
-  DepthLimit sax;
-  if (!nlohmann::json::sax_parse(text, &sax)) {
-    if (sax.depth > sax.limit)
-      throw ModelFileError(file.string() + ": glTF JSON nests deeper than " + std::to_string(sax.limit) + " levels");
-    throw ModelFileError(file.string() + ": glTF JSON does not parse");
+  // Read as every JSON file xval reads (scene/json_reader.h): nesting
+  // bounded (Assimp's JSON parser recurses per level) and a key given
+  // twice refused (Assimp and this check could each take another value).
+  nlohmann::json j;
+  try {
+    j = parseJsonText(text, file.string() + ": glTF JSON");
+  } catch (const SceneError& e) {
+    throw ModelFileError(e.what());
   }
-  const auto j = nlohmann::json::parse(text);
   if (!j.is_object()) throw ModelFileError(file.string() + ": glTF JSON is not an object");
   const auto asset = j.find("asset");
   const bool has = asset != j.end() && asset->is_object() && asset->contains("version");

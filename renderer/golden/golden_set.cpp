@@ -13,8 +13,10 @@
 #include <vector>
 
 #include "files/atomic_write.h"
+#include "image/image_header.h"
 #include "image/pixel_classes.h"
 #include "renderers/renderer.h"
+#include "scene/json_reader.h"
 #include "scene/scene_loader.h"
 
 namespace xval::golden {
@@ -49,12 +51,21 @@ std::string field(const nlohmann::json& j, const char* key, const fs::path& file
 
 }  // namespace
 
-std::string sha256File(const fs::path& file) {
+std::string sha256File(const fs::path& file) { return sha256File(file, std::numeric_limits<std::uintmax_t>::max()); }
+
+std::string sha256File(const fs::path& file, std::uintmax_t max_bytes) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw std::runtime_error(file.string() + ": cannot read (for its SHA-256)");
   return sha256Of([&](auto update) {
     std::vector<char> buf(1 << 16);
-    while (in.read(buf.data(), std::streamsize(buf.size())) || in.gcount() > 0) update(buf.data(), size_t(in.gcount()));
+    std::uintmax_t read = 0;
+    while (in.read(buf.data(), std::streamsize(buf.size())) || in.gcount() > 0) {
+      read += std::uintmax_t(in.gcount());
+      if (read > max_bytes)
+        throw std::runtime_error(file.string() + ": holds more than the " + std::to_string(max_bytes) +
+                                 " bytes expected (not hashed further)");
+      update(buf.data(), size_t(in.gcount()));
+    }
     if (in.bad()) throw std::runtime_error(file.string() + ": read error (for its SHA-256)");
   });
 }
@@ -150,12 +161,9 @@ Manifest readManifest(const fs::path& folder, const std::string& renderer) {
   m.renderer = renderer;
   const fs::path file = folder / "manifest.json";
   if (!fs::exists(file)) return m;
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(readJsonFile(file, "golden manifest"));
-  } catch (const nlohmann::json::exception& e) {
-    throw std::runtime_error(file.string() + ": not JSON: " + e.what());
-  }
+  // The one strict reader (scene/json_reader.h): a key given twice is an
+  // error naming the field, never the last value silently.
+  const nlohmann::json j = parseJsonText(readJsonFile(file, "golden manifest"), file.string());
   if (!j.is_object()) throw std::runtime_error(file.string() + ": expected a JSON object");
   if (field(j, "format", file, "") != kManifestFormat)
     throw std::runtime_error(file.string() + ": format: expected \"" + kManifestFormat + "\"");
@@ -217,7 +225,23 @@ std::string goldenProblem(const fs::path& folder, const Manifest& m, const fs::p
            now + ", stored for " + e.scene_sha256 + " in " + manifest.string() + ")";
   const fs::path image = folder / e.image;
   if (!fs::is_regular_file(image)) return "the golden image " + image.string() + " is missing";
-  if (const std::string h = sha256File(image); h != e.image_sha256)
+  // Read no more than an image of its header's size can hold: 4 bytes per
+  // channel and pixel (32-bit floats, the most it stores), twice over for
+  // OpenEXR's offsets and blocks stored uncompressed, and 1 MiB of header.
+  // A sparse file of terabytes behind a valid header is refused, not read.
+  std::string h;
+  try {
+    const ImageHeader header = readImageHeader(image);
+    if (const std::string problem = imageHeaderProblem(header, readImageLimits()); !problem.empty())
+      return "the golden image " + image.string() + " " + problem;
+    const std::uintmax_t bound =
+        2 * std::uintmax_t(header.width) * std::uintmax_t(header.height) * std::uintmax_t(header.channels) * 4 +
+        (std::uintmax_t(1) << 20);
+    h = sha256File(image, bound);
+  } catch (const std::exception& err) {
+    return "the golden image " + image.string() + " cannot be used: " + err.what();
+  }
+  if (h != e.image_sha256)
     return "the golden image " + image.string() + " changed since it was stored (SHA-256 " + h + ", manifest " +
            e.image_sha256 + ")";
   return "";

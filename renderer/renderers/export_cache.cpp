@@ -13,21 +13,42 @@
 #include <nlohmann/json.hpp>
 
 #include "files/atomic_write.h"
+#include "files/scratch_folder.h"
 #include "golden/golden_set.h"
 #include "process/run_process.h"
+#include "scene/json_reader.h"
+#include "scene/scene_loader.h"
 
 namespace xval::renderers {
 
 namespace {
 
 namespace fs = std::filesystem;
-constexpr const char* kEntryFormat = "xval-export-cache/1";
+constexpr const char* kEntryFormat = "xval-export-cache/2";
 constexpr const char* kManifest = "manifest.json";
 constexpr std::uintmax_t kMaxManifestBytes = 1 << 20;
 constexpr const char* kTempPrefix = ".tmp-";
 
 std::mutex g_lock;
 ExportCache g_cache;
+
+// The marker's text: the format line (written first into every folder the
+// cache makes, so it is what tells xval's folders from the user's).
+std::string markerText() { return std::string(kEntryFormat) + "\n"; }
+
+// Whether `dir` is a folder the cache made: a real folder (not a link)
+// holding the marker, a regular file with the marker's text. Nothing
+// else in the cache folder is ever removed, whatever its name.
+bool markedByTheCache(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(fs::symlink_status(dir, ec))) return false;
+  const fs::path m = dir / kExportCacheMarker;
+  const fs::file_status st = fs::symlink_status(m, ec);
+  if (!fs::is_regular_file(st) || fs::file_size(m, ec) != markerText().size()) return false;
+  std::ifstream in(m, std::ios::binary);
+  std::string text(markerText().size(), '\0');
+  return in.read(text.data(), std::streamsize(text.size())) && text == markerText();
+}
 
 // A name the cache stores: a plain file name of the export folder.
 bool plainName(const std::string& n) {
@@ -86,8 +107,7 @@ std::vector<StoredFile> readManifest(const fs::path& entry, const std::string& k
   const fs::file_status st = fs::symlink_status(m);
   if (!fs::is_regular_file(st)) throw std::runtime_error("no manifest");
   if (fs::file_size(m) > kMaxManifestBytes) throw std::runtime_error("manifest larger than 1 MiB");
-  std::ifstream in(m);
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  const nlohmann::json j = parseJsonText(readJsonFile(m, "export cache manifest"), m.string());
   if (!j.is_object() || j.value("format", "") != kEntryFormat || j.value("key", "") != key ||
       !j.contains("files") || !j["files"].is_array())
     throw std::runtime_error("manifest not of format " + std::string(kEntryFormat) + " for this key");
@@ -145,7 +165,11 @@ void storeEntry(const ExportCache& cache, const fs::path& entry, const std::stri
       if (!p.empty()) fs::remove_all(p, ec);
     }
   } cleanup{tmp};
-  fs::create_directory(tmp);
+  // A new folder (create_directory reports one already there), marked
+  // before anything else is written in it: a store killed at any point
+  // leaves a folder removeStaleTemporaries recognises.
+  if (!fs::create_directory(tmp)) throw std::runtime_error(tmp.string() + ": already exists");
+  writeFileAtomically(tmp / kExportCacheMarker, markerText());
   nlohmann::json j = {{"format", kEntryFormat}, {"key", key}, {"files", nlohmann::json::array()}};
   for (const StoredFile& f : files) {
     if (copyHashing(dir / f.name, tmp / f.name) != f.sha256)
@@ -159,7 +183,8 @@ void storeEntry(const ExportCache& cache, const fs::path& entry, const std::stri
 }
 
 // Removes the temporaries of stores that ended without renaming them (a
-// process killed while storing) once they are older than
+// process killed while storing; marked by the cache, whatever their name)
+// once they are older than
 // kStaleTempSeconds: a live store writes into its temporary all the time,
 // so its folder's time is at most the time one file takes to copy.
 void removeStaleTemporaries(const ExportCache& cache) {
@@ -167,7 +192,7 @@ void removeStaleTemporaries(const ExportCache& cache) {
   const auto now = fs::file_time_type::clock::now();
   for (const auto& e : fs::directory_iterator(cache.dir, ec)) {
     const std::string n = e.path().filename().string();
-    if (n.rfind(kTempPrefix, 0) != 0 || !e.is_directory(ec) || e.is_symlink(ec)) continue;
+    if (n.rfind(kTempPrefix, 0) != 0 || !markedByTheCache(e.path())) continue;
     const auto written = fs::last_write_time(e.path(), ec);
     if (ec || now - written < std::chrono::seconds(kStaleTempSeconds)) continue;
     const std::uintmax_t removed = fs::remove_all(e.path(), ec);
@@ -176,7 +201,10 @@ void removeStaleTemporaries(const ExportCache& cache) {
   }
 }
 
-// Removes least recently used entries until the cache holds at most max_bytes.
+// Removes least recently used entries until the cache's entries hold at
+// most max_bytes; an entry is a folder the cache marked, never anything
+// else in the cache folder (the user's own folders are neither counted nor
+// touched).
 void prune(const ExportCache& cache) {
   removeStaleTemporaries(cache);
   struct Entry {
@@ -188,7 +216,7 @@ void prune(const ExportCache& cache) {
   std::uintmax_t total = 0;
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(cache.dir, ec)) {
-    if (e.path().filename().string().front() == '.' || !e.is_directory() || e.is_symlink()) continue;
+    if (e.path().filename().string().front() == '.' || !markedByTheCache(e.path())) continue;
     Entry en{e.path(), fs::last_write_time(e.path() / kManifest, ec), 0};
     for (const auto& f : fs::directory_iterator(e.path(), ec))
       if (f.is_regular_file()) en.bytes += f.file_size(ec);
@@ -251,18 +279,25 @@ void exportThroughCache(const ExportCache& cache, const std::string& exporter, c
   const fs::path entry = entryFolder(cache, exporter, key);
   const auto what = [&] { return describe ? describe(dir) : exporter; };
   std::error_code ec;
-  if (fs::is_directory(fs::symlink_status(entry, ec))) {
+  if (fs::exists(fs::symlink_status(entry, ec)) && !markedByTheCache(entry)) {
+    // Something the cache did not make holds the entry's name: it is left
+    // as it is, the scene exported without the cache.
+    std::fprintf(stderr,
+                 "export cache: %s was not made by the export cache (no %s marker): left alone, "
+                 "exported without the cache\n",
+                 entry.c_str(), kExportCacheMarker);
+    write(dir);
+    return;
+  }
+  if (fs::exists(fs::symlink_status(entry, ec))) {
     try {
       restoreEntry(entry, key, dir);
       std::fprintf(stderr, "export cache: cached %s %s\n", what().c_str(), shortKey(key).c_str());
       return;
     } catch (const std::exception& e) {
       std::fprintf(stderr, "export cache: corrupt entry %s (%s): exported again\n", entry.c_str(), e.what());
-      fs::remove_all(entry, ec);
+      fs::remove_all(entry, ec);  // marked: the cache's own
     }
-  } else if (fs::exists(fs::symlink_status(entry, ec))) {
-    std::fprintf(stderr, "export cache: %s is not a folder: removed, exported again\n", entry.c_str());
-    fs::remove(entry, ec);
   }
   write(dir);
   try {
@@ -290,14 +325,8 @@ std::string cachedRefusal(const std::string& who, const std::string& inputs_key,
   if (cache.dir.empty() || inputs_key.empty()) return refusal();
   const std::string exporter = "refusal-" + who;
   const std::string key = exportKey(exporter, inputs_key);
-  const fs::path tmp = fs::temp_directory_path() / ("xval-refusal-" + attemptToken());
-  struct Cleanup {
-    fs::path p;
-    ~Cleanup() {
-      std::error_code ec;
-      fs::remove_all(p, ec);
-    }
-  } cleanup{tmp};
+  const ScratchFolder scratch("refusal");
+  const fs::path tmp = scratch.dir() / "export";
   const auto read = [&](const fs::path& dir) {
     std::ifstream in(dir / "refusal.txt", std::ios::binary);
     if (!in) throw std::runtime_error(exporter + ": the refusal was not written");

@@ -19,10 +19,17 @@
 // So an interrupted write, a truncated or altered file, or a planted link
 // is never used; a refusal is stored the same way (refusal.txt).
 //
+// What the cache may remove: only folders it made, recognised by the
+// marker file kExportCacheMarker it writes first into each (its text is
+// the entry format line), never by their names. The cache folder may hold
+// the user's own files and folders: they are never counted, used or
+// removed; a folder or file without the marker at an entry's name is left
+// alone and the scene exported without the cache.
+//
 // Size: after a store, the least recently used entries (manifest time) are
-// removed until the cache holds at most ExportCache::max_bytes, and so are
-// temporaries (.tmp-*) untouched for kStaleTempSeconds: what a store
-// killed before its rename leaves behind.
+// removed until the entries hold at most ExportCache::max_bytes, and so
+// are marked temporaries (.tmp-*) untouched for kStaleTempSeconds: what a
+// store killed before its rename leaves behind.
 //
 // Every use says on stderr what it did: "export cache: cached", "stored",
 // or "corrupt ... exported again" with the exporter and the key's start
@@ -43,6 +50,9 @@ inline constexpr std::uintmax_t kDefaultExportCacheBytes = std::uintmax_t(2) << 
 // A temporary of a store not written to for this long belongs to no live
 // store (one file's copy takes seconds, not an hour).
 inline constexpr long kStaleTempSeconds = 3600;
+// The marker file in every folder the cache makes (docs/robustness.md: what
+// xval may delete).
+inline constexpr const char* kExportCacheMarker = ".xval-export-cache-entry";
 
 struct ExportCache {
   std::filesystem::path dir;  // empty: no cache

@@ -69,10 +69,12 @@ std::string goldenAlias(std::string_view id) {
   return made_by == "reference" ? std::string("golden") : "golden-" + std::string(made_by);
 }
 
+bool isGoldenSetId(std::string_view id) { return id == "golden" || id.substr(0, 7) == "golden-"; }
+
 void addGoldenSets(Registry& registry) {
   std::vector<std::pair<std::string, std::string>> sources;
   for (const Renderer& r : registry.all())
-    if (!r.reference && !r.geometry_passes && r.id != "golden" && r.id.rfind("golden-", 0) != 0) sources.emplace_back(r.id, r.display_name);
+    if (!r.reference && !r.geometry_passes && !isGoldenSetId(r.id)) sources.emplace_back(r.id, r.display_name);
   for (const auto& [id, name] : sources)
     if (!registry.find("golden-" + id)) registry.add(goldenRendererOf(id, name));
 }

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "files/scratch_folder.h"
 #include "process/run_process.h"
 #include "scene/scene_loader.h"
 
@@ -261,7 +262,8 @@ std::string attribute(const std::vector<const Renderer*>& rs, const std::vector<
 std::string probeToolVersion(const std::vector<std::string>& argv, const std::string& marker,
                              double timeout_seconds) {
   namespace fs = std::filesystem;
-  const fs::path log = fs::temp_directory_path() / ("xval-version-" + attemptToken() + ".log");
+  const ScratchFolder scratch("version");
+  const fs::path log = scratch.dir() / "version.log";
   const ProcessResult r = runProcess(argv, fs::current_path(), log, timeout_seconds);
   std::string found = "unknown";
   if (!r.ok()) {
@@ -276,8 +278,6 @@ std::string probeToolVersion(const std::vector<std::string>& argv, const std::st
         break;
       }
   }
-  std::error_code ec;
-  fs::remove(log, ec);
   return found;
 }
 

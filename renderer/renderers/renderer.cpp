@@ -1,21 +1,16 @@
 // Helpers of the renderer files (renderer.h).
 #include "renderers/renderer.h"
 
+#include "files/scratch_folder.h"
 #include "process/run_process.h"
 
 namespace xval::renderers {
 
 std::string exportRefusal(const std::function<void(const std::filesystem::path& dir)>& write_export) {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / ("xval-export-check-" + attemptToken());
-  struct Cleanup {
-    fs::path dir;
-    ~Cleanup() {
-      std::error_code ec;
-      fs::remove_all(dir, ec);
-    }
-  } cleanup{dir};
-  fs::create_directories(dir);
+  const ScratchFolder scratch("export-check");
+  const fs::path dir = scratch.dir() / "export";
+  fs::create_directory(dir);
   try {
     write_export(dir);
   } catch (const ExportError& e) {

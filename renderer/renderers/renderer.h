@@ -199,6 +199,10 @@ void addGoldenSets(Registry& registry);
 // `made_by` is defined by a file (without it the renderer is unknown).
 std::string goldenUpdateCommand(const std::filesystem::path& scene_file, const std::string& made_by);
 
+// Whether `id` is of a golden set's form ("golden" or "golden-..."): ids
+// xval defines only (a renderer file may not take one).
+bool isGoldenSetId(std::string_view id);
+
 // An outside tool's figures as a RenderInfo (nothing when `info` is null).
 void setInfo(RenderInfo* info, const ExternalRenderInfo& tool);
 

@@ -2,7 +2,6 @@
 #include "renderers/renderer_file.h"
 
 #include <algorithm>
-
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -150,10 +149,28 @@ Renderer loadRendererFile(const fs::path& file) {
   Definition d;
   d.file = fs::absolute(file).lexically_normal();
   d.name = r.requireString("name");
+  // The names xval defines stay its own: a file named golden-mine beside
+  // one named mine would take over mine's golden set, one named povray
+  // the built-in renderer's place.
+  if (isGoldenSetId(d.name))
+    r.fail("name", "\"" + d.name + "\": golden and the prefix golden- are reserved for the golden sets xval "
+                   "defines (golden-<renderer> holds a renderer's stored images); choose another name");
+  if (const Renderer* built_in = registry().find(d.name); built_in && built_in->definition_file.empty())
+    r.fail("name", "\"" + d.name + "\": the id of a renderer built into xval (" + built_in->display_name +
+                       "); choose another name");
   d.input = r.requireChoice("input", {"scene", "gltf", "pov"});
   d.command = r.stringArray("command", true);
   std::vector<std::string> version = r.stringArray("version_command", true);
   if (r.has("timeout_s")) d.timeout_s = r.requireNumber("timeout_s", Range::openClosed(0.0, 7 * 24 * 3600.0));
+  // One line that says what the renderer is (`xval renderers` shows it).
+  std::string description;
+  if (r.has("description")) {
+    description = r.requireString("description");
+    if (description.empty() || description.size() > kMaxRendererDescriptionBytes ||
+        std::any_of(description.begin(), description.end(), [](char c) { return (unsigned char)c < 0x20; }))
+      r.failValue("description", "one line of 1 to " + std::to_string(kMaxRendererDescriptionBytes) +
+                                     " bytes without control characters");
+  }
   r.finish();
   if (d.command.empty() || d.command.front().empty()) r.fail("command", "expected the program and its arguments");
   if (version.empty() || version.front().empty())
@@ -166,7 +183,8 @@ Renderer loadRendererFile(const fs::path& file) {
   Renderer out;
   out.id = d.name;
   out.display_name = d.name;
-  out.summary = "defined by " + d.file.string() + " (input " + d.input + ")";
+  out.summary = (description.empty() ? "" : description + "; ") + "defined by " + d.file.string() + " (input " +
+                d.input + ")";
   out.version_command = version;
   out.version_marker = d.name;
   out.definition_file = fs::absolute(d.file).lexically_normal();

@@ -33,6 +33,8 @@
 namespace xval::renderers {
 
 inline constexpr const char* kRendererFileFormat = "xval-renderer/1";
+// A definition's optional one-line "description", at most this long.
+inline constexpr size_t kMaxRendererDescriptionBytes = 300;
 
 // Reads and checks a definition file. Throws SceneError naming the file,
 // the field and the value.

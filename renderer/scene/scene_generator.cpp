@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <fstream>
+#include <optional>
+#include <set>
+#include <stdexcept>
 #include <sstream>
 
 #include "scene/scene_loader.h"
@@ -82,6 +85,64 @@ void applyPatch(J& scene, const std::string& pointer, const J& value, const std:
   scene[ptr] = value;
 }
 
+struct Sample {
+  size_t count = 0;
+  uint64_t seed = 0;
+};
+
+// The spec's optional "sample": {"count": N, "seed": S}.
+std::optional<Sample> readSample(const J& spec, const std::string& file) {
+  if (!spec.contains("sample")) return std::nullopt;
+  const J& s = spec["sample"];
+  const std::string what = "expected {\"count\": an integer in [1, " + std::to_string(kMaxGeneratedScenes) +
+                           "], \"seed\": an integer in [0, 2^53]}";
+  if (!s.is_object()) throw SceneError(file + ": sample: " + what + ", got " + describeJson(s));
+  for (auto it = s.begin(); it != s.end(); ++it)
+    if (it.key() != "count" && it.key() != "seed")
+      throw SceneError(file + ": sample." + it.key() + ": unknown field (known: count, seed)");
+  auto integer = [&](const char* key, uint64_t lo, uint64_t hi) {
+    if (!s.contains(key)) throw SceneError(file + ": sample." + key + ": required; " + what);
+    const J& v = s[key];
+    if (!v.is_number_unsigned() || v.get<uint64_t>() < lo || v.get<uint64_t>() > hi)
+      throw SceneError(file + ": sample." + key + ": " + describeJson(v) + " (" + what + ")");
+    return v.get<uint64_t>();
+  };
+  Sample out;
+  out.count = size_t(integer("count", 1, kMaxGeneratedScenes));
+  out.seed = integer("seed", 0, uint64_t(1) << 53);
+  return out;
+}
+
+}  // namespace
+
+std::vector<uint64_t> sampleCombinations(uint64_t combinations, size_t count, uint64_t seed) {
+  if (count > combinations)
+    throw std::invalid_argument("sampleCombinations: " + std::to_string(count) + " of " +
+                                std::to_string(combinations) + " combinations");
+  // SplitMix64 (a fixed, portable sequence: the standard library's
+  // distributions differ between implementations), each draw reduced to
+  // [0, combinations) by rejecting the top partial range, so every index is
+  // equally likely; a repeated index is drawn again.
+  uint64_t state = seed;
+  auto next = [&state]() {
+    uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  };
+  const uint64_t limit = UINT64_MAX - UINT64_MAX % combinations;
+  std::set<uint64_t> chosen;
+  while (chosen.size() < count) {
+    uint64_t r;
+    do r = next();
+    while (r >= limit);
+    chosen.insert(r % combinations);
+  }
+  return {chosen.begin(), chosen.end()};
+}
+
+namespace {
+
 }  // namespace
 
 std::vector<GeneratedScene> generateScenes(const std::filesystem::path& spec_file) {
@@ -95,8 +156,9 @@ std::vector<GeneratedScene> generateScenesFromText(const std::string& text,
   if (!spec.is_object()) throw SceneError(file + ": expected a JSON object");
   for (auto it = spec.begin(); it != spec.end(); ++it)
     if (it.key() != "format" && it.key() != "base" && it.key() != "axes" && it.key() != "name" &&
-        it.key() != "description")
-      throw SceneError(file + ": " + it.key() + ": unknown field (known: format, description, base, axes, name)");
+        it.key() != "description" && it.key() != "sample")
+      throw SceneError(file + ": " + it.key() +
+                       ": unknown field (known: format, description, base, axes, name, sample)");
   if (spec.value("format", "") != "xval-generate/1")
     throw SceneError(file + ": format: expected \"xval-generate/1\", got " +
                      (spec.contains("format") ? spec["format"].dump() : std::string("nothing")));
@@ -121,17 +183,34 @@ std::vector<GeneratedScene> generateScenesFromText(const std::string& text,
     }
     axes.push_back(std::move(axis));
   }
+  const std::optional<Sample> sample = readSample(spec, file);
   size_t combinations = 1;
   for (const auto& a : axes) {
-    combinations *= a.values.size();
-    if (combinations > kMaxGeneratedScenes)
-      throw SceneError(file + ": axes: more than " + std::to_string(kMaxGeneratedScenes) +
+    if (combinations > kMaxSampledCombinations / a.values.size())
+      throw SceneError(file + ": axes: more than " + std::to_string(kMaxSampledCombinations) +
                        " combinations (the product of the axes' value counts)");
+    combinations *= a.values.size();
+    if (!sample && combinations > kMaxGeneratedScenes)
+      throw SceneError(file + ": axes: more than " + std::to_string(kMaxGeneratedScenes) +
+                       " combinations (the product of the axes' value counts); take a \"sample\" of them");
   }
+  if (sample && sample->count > combinations)
+    throw SceneError(file + ": sample.count: " + std::to_string(sample->count) + " is more than the " +
+                     std::to_string(combinations) + " combinations of the axes");
+  const std::vector<uint64_t> chosen =
+      sample ? sampleCombinations(combinations, sample->count, sample->seed) : std::vector<uint64_t>();
 
   std::vector<GeneratedScene> out;
-  std::vector<size_t> idx(axes.size(), 0);
-  for (;;) {
+  const size_t total = sample ? chosen.size() : combinations;
+  for (size_t n = 0; n < total; ++n) {
+    // The combination's value per axis: its index in mixed radix, the last
+    // axis varying fastest.
+    uint64_t index = sample ? chosen[n] : n;
+    std::vector<size_t> idx(axes.size(), 0);
+    for (size_t a = axes.size(); a > 0; --a) {
+      idx[a - 1] = size_t(index % axes[a - 1].values.size());
+      index /= axes[a - 1].values.size();
+    }
     J scene = spec["base"];
     std::vector<std::pair<std::string, std::string>> vars;
     std::string combo;
@@ -166,10 +245,6 @@ std::vector<GeneratedScene> generateScenesFromText(const std::string& text,
         throw SceneError(file + ": name: two combinations are both named " + J(name).dump() +
                          "; put every axis in the template");
     out.push_back({name, scene});
-    // Next combination (the last axis varies fastest).
-    size_t a = axes.size();
-    while (a > 0 && ++idx[a - 1] == axes[a - 1].values.size()) idx[--a] = 0;
-    if (a == 0) break;
   }
   return out;
 }

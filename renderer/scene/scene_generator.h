@@ -15,13 +15,18 @@
 //     ],
 //     "name": "fig1_{model}_{placement}"
 //   }
+//     "sample": {"count": 60, "seed": 1}   (optional)
 // Every combination of one value per axis (in axis order) gives a scene:
 // the base with each value's JSON-pointer patches applied in turn (later
 // axes override earlier ones), named by the template. Each scene is then
 // validated like a scene file; an error names the spec, the combination
-// and the field.
+// and the field. With "sample", only `count` of the combinations, drawn
+// without repetition by sampleCombinations(product, count, seed), are
+// written, in combination order: a seeded set of ordinary scenes from axes
+// whose product is too large to render whole (tests/mutation/generated_spec.json).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -35,8 +40,16 @@ struct GeneratedScene {
   nlohmann::ordered_json json;  // the scene file's content
 };
 
-// At most this many combinations (scenes) per spec.
+// At most this many scenes per spec: the combinations, or the sample's count.
 inline constexpr size_t kMaxGeneratedScenes = 10000;
+// At most this many combinations a sample is drawn from (the product of the
+// axes' value counts).
+inline constexpr uint64_t kMaxSampledCombinations = uint64_t(1) << 53;
+
+// `count` distinct indices in [0, combinations), in increasing order, drawn
+// by a fixed pseudo-random sequence from `seed`: the same on every machine
+// and compiler. Throws std::invalid_argument when count > combinations.
+std::vector<uint64_t> sampleCombinations(uint64_t combinations, size_t count, uint64_t seed);
 
 std::vector<GeneratedScene> generateScenes(const std::filesystem::path& spec_file);
 

@@ -493,7 +493,12 @@ std::string nonSceneReason(const std::filesystem::path& file) {
   } catch (const SceneError&) {
     return "";
   }
-  const json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  json j;
+  try {
+    j = parseJsonText(text, file.string());
+  } catch (const SceneError&) {
+    return "";  // loadScene says what is wrong with it
+  }
   if (!j.is_object() || !j.contains("format") || !j["format"].is_string()) return "";
   const std::string format = j["format"].get<std::string>();
   if (format.rfind("xval-", 0) == 0 && format.rfind("xval-scene/", 0) != 0)

@@ -16,6 +16,7 @@
 #include "renderers/job_export.h"
 #include "renderers/registry.h"
 #include "scene/scene_lint.h"
+#include "scene/json_reader.h"
 #include "scene/scene_loader.h"
 #include "validate/tolerances.h"
 #include "validate/geometry_check.h"
@@ -133,7 +134,7 @@ nlohmann::json crosscheckAsResults(const CrosscheckRequest& request, const std::
   const std::filesystem::path metrics_file = std::filesystem::path(request.dir) / "metrics.json";
   if (problem.empty()) {
     try {
-      const J m = J::parse(readJsonFile(metrics_file, "crosscheck metrics"));
+      const J m = parseJsonText(readJsonFile(metrics_file, "crosscheck metrics"), metrics_file.string());
       c["scene"] = m.at("scene");
       if (m.contains("not_expressible")) {
         // The renderer's refusal: a verdict (JUnit <skipped>), nothing rendered.

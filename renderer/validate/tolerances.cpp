@@ -1,7 +1,14 @@
 #include "validate/tolerances.h"
 #include "renderers/registry.h"
 
+#include <pwd.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <stdexcept>
 
 #include "scene/json_reader.h"
@@ -84,19 +91,62 @@ std::string defaultScenesHelp() {
 namespace {
 
 // Step 2 of the rule: the nearest tolerances.json from the scene file's
-// folder up to the root; empty when there is none.
+// folder up to its set root; empty when there is none.
 fs::path nearestToleranceFile(const fs::path& scene_file) {
+  const fs::path root = setRootOf(scene_file);
   fs::path dir = fs::absolute(scene_file).lexically_normal().parent_path();
   for (;;) {
     const fs::path candidate = dir / "tolerances.json";
     std::error_code ec;
-    if (fs::exists(candidate, ec)) return candidate;
-    if (!dir.has_relative_path()) return {};  // the root
+    if (fs::exists(fs::symlink_status(candidate, ec))) return candidate;
+    if (dir == root || !dir.has_relative_path()) return {};
     dir = dir.parent_path();
   }
 }
 
+std::string modeText(mode_t m) {
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "%04o", unsigned(m & 07777));
+  return buf;
+}
+
+std::string userText(uid_t uid) {
+  const struct passwd* pw = getpwuid(uid);
+  return "uid " + std::to_string(uid) + (pw ? " (" + std::string(pw->pw_name) + ")" : "");
+}
+
+// Why the tolerance file `file`, found for `scene_file` by step 2, may not
+// decide verdicts ("" when it may): the ownership rule of tolerances.h.
+std::string untrustedReason(const fs::path& file, const fs::path& scene_file) {
+  struct stat scene_st, link_st, file_st, dir_st;
+  if (stat(scene_file.c_str(), &scene_st) != 0) return "the scene file cannot be examined: " + std::string(std::strerror(errno));
+  const auto trusted = [&](uid_t uid) { return uid == geteuid() || uid == 0 || uid == scene_st.st_uid; };
+  const std::string allowed = "only one owned by you (uid " + std::to_string(geteuid()) +
+                              "), by the scene file's owner (uid " + std::to_string(scene_st.st_uid) +
+                              ") or by root is used";
+  if (lstat(file.c_str(), &link_st) != 0 || stat(file.c_str(), &file_st) != 0)
+    return "it cannot be examined: " + std::string(std::strerror(errno));
+  if (S_ISLNK(link_st.st_mode) && !trusted(link_st.st_uid))
+    return "it is a symbolic link owned by " + userText(link_st.st_uid) + "; " + allowed;
+  if (!S_ISREG(file_st.st_mode)) return "it is not a regular file";
+  if (!trusted(file_st.st_uid)) return "it is owned by " + userText(file_st.st_uid) + "; " + allowed;
+  if (file_st.st_mode & S_IWOTH) return "it is writable by every user (mode " + modeText(file_st.st_mode) + ")";
+  const fs::path dir = file.parent_path();
+  if (stat(dir.c_str(), &dir_st) != 0) return "its folder cannot be examined: " + std::string(std::strerror(errno));
+  if ((dir_st.st_mode & S_IWOTH) && !(dir_st.st_mode & S_ISVTX))
+    return "its folder " + dir.string() + " is writable by every user without the sticky bit (mode " +
+           modeText(dir_st.st_mode) + "): anyone can replace it";
+  return "";
+}
+
 }  // namespace
+
+fs::path setRootOf(const fs::path& scene_file) {
+  const fs::path own = fs::absolute(scene_file).lexically_normal().parent_path();
+  for (fs::path dir = own; dir.has_relative_path(); dir = dir.parent_path())
+    if (dir.filename() == "scenes") return dir.parent_path();
+  return own;
+}
 
 ToleranceFile findToleranceFile(const fs::path& given, const std::vector<fs::path>& scene_files) {
   if (!given.empty()) return {fs::absolute(given).lexically_normal(), "given"};
@@ -109,11 +159,15 @@ ToleranceFile findToleranceFile(const fs::path& given, const std::vector<fs::pat
     } else if (f != found) {
       throw std::runtime_error("the scenes find different tolerance files: " + found_for.string() + " finds " +
                                found.string() + ", " + scene.string() + " finds " + f.string() +
-                               " (the nearest tolerances.json in the scene's folder or above); give one with "
+                               " (the nearest tolerances.json in the scene's folder or above, up to its set root); give one with "
                                "--tolerances FILE");
     }
   }
   if (found.empty()) return {toolkitToleranceFile(), "the toolkit's own"};
+  if (const std::string why = untrustedReason(found, found_for); !why.empty())
+    throw std::runtime_error(found.string() + ": the tolerance file nearest to " + found_for.string() +
+                             " is not used: " + why + " (a file there would decide the verdict); pass it with "
+                             "--tolerances FILE if you trust it, or remove it");
   // A scene that finds none would use the toolkit's file: that must be the
   // same file too.
   for (const auto& scene : scene_files)

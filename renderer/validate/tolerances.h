@@ -8,11 +8,27 @@
 // (findToleranceFile):
 //   1. the file given (--tolerances FILE), if any;
 //   2. else the nearest `tolerances.json` in the scene file's folder or one
-//      of its ancestors (reference/scenes/x.json -> reference/tolerances.json);
-//      with several scenes, they must all find the same file;
+//      of its ancestors up to the scene's set root and no higher
+//      (reference/scenes/x.json -> reference/tolerances.json); with several
+//      scenes, they must all find the same file;
 //   3. else the toolkit's own, reference/tolerances.json of the source tree
 //      the executable was built from (toolkitToleranceFile()).
 // Commands without a scene (compare, extremes) skip step 2.
+//
+// The set root (setRootOf): climbing from the scene file's folder, the
+// folder holding the first folder named `scenes` on the way (the set
+// layout SET/scenes/..., docs/pack.md: SET/scenes/a/x.json -> SET); when
+// no folder on the way is named `scenes`, the scene file's own folder. So
+// the climb never leaves the user's set: a tolerances.json planted in a
+// shared ancestor (/tmp/, a home folder's parent) is never looked at.
+//
+// Who may own it: a file found by step 2 decides verdicts, so it is used
+// only when it (and, if it is a link, the link) is owned by the user
+// running xval, by the owner of the scene file, or by root, is not
+// writable by others, and lies in a folder others cannot write to (or one
+// with the sticky bit, as /tmp). Otherwise findToleranceFile refuses it,
+// naming the file, its owner and mode; the user can pass it with
+// --tolerances if it is trusted. The file used is printed on every run.
 //
 // The pair of two external renderers has no declared tolerance: it is
 // derived from theirs against the reference (lookupPair).
@@ -70,9 +86,11 @@ std::string defaultScenesHelp();
 // The rule above, for --help.
 inline constexpr const char* kToleranceFileHelp =
     "Tolerance file. Default: the nearest tolerances.json in the scene file's folder or one of its "
-    "ancestors (reference/scenes/x.json -> reference/tolerances.json; all scenes must find the same "
-    "one), else the toolkit's own reference/tolerances.json; never the working directory. The file "
-    "used is printed and recorded (docs/scene-format.md, \"Which tolerance file\")";
+    "ancestors up to the set's root, the folder holding `scenes` (reference/scenes/x.json -> "
+    "reference/tolerances.json; all scenes must find the same one; one owned by another user or "
+    "writable by others is refused), else the toolkit's own reference/tolerances.json; never the "
+    "working directory. The file used is printed and recorded (docs/scene-format.md, \"Which "
+    "tolerance file\")";
 
 // A tolerance file found by the rule above.
 struct ToleranceFile {
@@ -84,10 +102,15 @@ struct ToleranceFile {
   std::string describe() const { return shown() + " (" + found_by + ")"; }
 };
 
+// The set root of a scene file (the rule above), absolute and lexically
+// normal.
+std::filesystem::path setRootOf(const std::filesystem::path& scene_file);
+
 // The rule above. `given` empty: not given (a file given is not opened
 // here: loadTolerances says what is wrong with it). Throws
 // std::runtime_error when the scenes find different files (naming two of
-// them and what each found).
+// them and what each found), or when the file found is not trusted
+// (owner, mode: naming the file, its owner and what is allowed).
 ToleranceFile findToleranceFile(const std::filesystem::path& given,
                                 const std::vector<std::filesystem::path>& scene_files);
 

@@ -67,16 +67,34 @@ file(APPEND ${_u}/models/quad.mtl "# changed\n")
 run_xval(0 _o validate ${_u}/scenes --renderers golden,reference -o ${WORK}/out --plan-only --resume)
 expect("${_o}" "^0\n1\n.*wrote .*4 jobs .*2 to run" "validate --resume after the mtl changed")
 
-# Tampering, each file named.
+# Tampering, each file named. A file of another size is named without
+# being read: a 256 GiB sparse file in place of the texture is answered at
+# once (killed after 20 s, it would take minutes to hash); one of the same
+# size is hashed.
+file(READ ${_u}/tolerances.json _tol)
+string(REPLACE "fraction" "fractioN" _tol "${_tol}")
+file(WRITE ${_u}/tolerances.json "${_tol}")
+file(SHA256 ${_u}/models/quad_texture.png _texture_hash)
+execute_process(COMMAND truncate -s 256G ${_u}/models/quad_texture.png RESULT_VARIABLE _rc)
+if(NOT _rc EQUAL 0)
+  message(FATAL_ERROR "truncate -s 256G ${_u}/models/quad_texture.png: exit ${_rc}")
+endif()
+set(XVAL_RUN_TIMEOUT 20)
 run_xval(1 _o pack --verify ${_u})
-expect("${_o}" "FAIL ${_u}/models/quad.mtl: changed \\([0-9]+ bytes, SHA-256 [0-9a-f]+; packed: [0-9]+ bytes, ${_mtl_hash}\\)"
+set(XVAL_RUN_TIMEOUT 240)
+file(REMOVE ${_u}/models/quad_texture.png)
+expect("${_o}" "FAIL ${_u}/models/quad.mtl: changed \\([0-9]+ bytes; packed: [0-9]+ bytes, SHA-256 ${_mtl_hash}\\)"
        "pack --verify: a changed file")
+expect("${_o}" "FAIL ${_u}/models/quad_texture.png: changed \\(274877906944 bytes; packed: [0-9]+ bytes, SHA-256 ${_texture_hash}\\)"
+       "pack --verify: a sparse 256 GiB file, by its size")
+expect("${_o}" "FAIL ${_u}/tolerances.json: changed \\([0-9]+ bytes, SHA-256 [0-9a-f]+; packed: [0-9]+ bytes, [0-9a-f]+\\)"
+       "pack --verify: a file of the same size, by its hash")
 file(REMOVE ${_u}/golden/reference/tiny.exr)
 file(WRITE ${_u}/scenes/extra.json "{}")
 run_xval(1 _o pack --verify ${_u})
 expect("${_o}" "FAIL ${_u}/golden/reference/tiny.exr: missing" "pack --verify: a missing file")
 expect("${_o}" "FAIL ${_u}/scenes/extra.json: not in the pack manifest" "pack --verify: an added file")
-expect("${_o}" "3 file\\(s\\) not as packed" "pack --verify: the count")
+expect("${_o}" "5 file\\(s\\) not as packed" "pack --verify: the count")
 
 # Refusals: nothing written.
 function(refused set regex what)

@@ -26,6 +26,7 @@ endif()
 set(_def ${WORK}/def/standin.json)
 file(WRITE ${_def} "{\"format\": \"xval-renderer/1\",
  \"name\": \"standin\",
+ \"description\": \"a stand-in for a user's renderer\",
  \"input\": \"scene\",
  \"command\": [\"${_program}\", \"${MODE}\", \"{scene}\", \"{output}\", \"{width}\", \"{height}\"],
  \"version_command\": [\"./standin_renderer.sh\", \"--version\"]${_timeout}}\n")
@@ -91,9 +92,10 @@ if(_message AND NOT _err MATCHES "${_message}")
   message(FATAL_ERROR "xval crosscheck (${MODE}): the error does not match \"${_message}\":\n${_err}")
 endif()
 
-# `xval renderers` lists it with its version from version_command.
+# `xval renderers` lists it with its description and its version from
+# version_command.
 execute_process(COMMAND ${XVAL} renderers --renderer-file ${_def}
                 RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err TIMEOUT 60)
-if(NOT _rc EQUAL 0 OR NOT _out MATCHES "standin .*version: standin 1.0")
+if(NOT _rc EQUAL 0 OR NOT _out MATCHES "standin .*a stand-in for a user's renderer; defined by .*version: standin 1.0")
   message(FATAL_ERROR "xval renderers --renderer-file: exit ${_rc}\n${_out}\n${_err}")
 endif()

@@ -124,19 +124,61 @@ TEST_F(ExportCacheTest, SizeIsBounded) {
 // A store killed before its rename leaves CACHE/.tmp-*; the next store
 // removes such a temporary once it is stale, and never a live one.
 TEST_F(ExportCacheTest, StaleTemporariesOfKilledStoresAreRemoved) {
-  fs::create_directories(cache.dir);
-  const fs::path stale = cache.dir / ".tmp-killedstore", live = cache.dir / ".tmp-livestore";
-  for (const fs::path& t : {stale, live}) {
+  // A store's marker, as a killed store leaves it (the first file it writes).
+  run(exportKey("pov", "inputs-0"), "first");
+  const fs::path marker = entryFolder(cache, "pov", exportKey("pov", "inputs-0")) / kExportCacheMarker;
+  ASSERT_TRUE(fs::is_regular_file(marker));
+  // .tmp-mine: the user's, of the same name pattern but without the marker.
+  const fs::path stale = cache.dir / ".tmp-killedstore", live = cache.dir / ".tmp-livestore",
+                 mine = cache.dir / ".tmp-mine";
+  for (const fs::path& t : {stale, live, mine}) {
     fs::create_directories(t);
+    if (t != mine) fs::copy_file(marker, t / kExportCacheMarker);
     writeFileAtomically(t / "scene.pov", "half an export");
   }
   const auto now = fs::file_time_type::clock::now();
   fs::last_write_time(stale, now - std::chrono::seconds(kStaleTempSeconds + 60));
+  fs::last_write_time(mine, now - std::chrono::seconds(kStaleTempSeconds + 60));
   fs::last_write_time(live, now - std::chrono::seconds(kStaleTempSeconds - 60));
   run(exportKey("pov", "inputs-a"), "a");
   EXPECT_FALSE(fs::exists(stale)) << "a temporary untouched for over kStaleTempSeconds stays";
   EXPECT_TRUE(fs::exists(live / "scene.pov")) << "a temporary written to recently was removed";
+  EXPECT_TRUE(fs::exists(mine / "scene.pov")) << "a folder the cache did not mark was removed by its name";
   EXPECT_TRUE(fs::exists(entryFolder(cache, "pov", exportKey("pov", "inputs-a")) / "manifest.json"));
+}
+
+// The cache folder may hold the user's own folders and files: whatever
+// their size and name (even an entry's), the cache never counts, uses or
+// removes what it did not mark.
+TEST_F(ExportCacheTest, OnlyWhatTheCacheMarkedIsEverRemoved) {
+  cache.max_bytes = 2500;  // two entries of ~1.0 kB fit: pruning runs
+  fs::create_directories(cache.dir / "photos");
+  fs::create_directories(cache.dir / "notes");
+  writeFileAtomically(cache.dir / "photos" / "big.jpg", std::string(10000, 'p'));  // over max_bytes alone
+  writeFileAtomically(cache.dir / "notes" / "todo.txt", "mine");
+  writeFileAtomically(cache.dir / "loose.txt", std::string(10000, 'l'));
+  // A folder of the user's at the name of the entry the next export stores.
+  const std::string taken = exportKey("pov", "inputs-taken");
+  fs::create_directories(entryFolder(cache, "pov", taken));
+  writeFileAtomically(entryFolder(cache, "pov", taken) / "mine.txt", "mine");
+  for (int k = 0; k < 4; ++k) run(exportKey("pov", "inputs-" + std::to_string(k)), "d" + std::to_string(k));
+  const fs::path d = run(taken, "taken");
+  EXPECT_EQ(slurp(d / "scene.pov"), "scene text 42") << "exported without the cache";
+  EXPECT_EQ(exports, 5);
+  run(taken, "taken-again");
+  EXPECT_EQ(exports, 6) << "an entry stored over the user's folder";
+  EXPECT_EQ(slurp(cache.dir / "photos" / "big.jpg"), std::string(10000, 'p'));
+  EXPECT_EQ(slurp(cache.dir / "notes" / "todo.txt"), "mine");
+  EXPECT_EQ(slurp(cache.dir / "loose.txt"), std::string(10000, 'l'));
+  EXPECT_EQ(slurp(entryFolder(cache, "pov", taken) / "mine.txt"), "mine");
+  EXPECT_FALSE(fs::exists(entryFolder(cache, "pov", taken) / "manifest.json"));
+  // The cache's own entries are still bounded.
+  std::uintmax_t total = 0;
+  for (const auto& e : fs::directory_iterator(cache.dir))
+    if (fs::exists(e.path() / kExportCacheMarker))
+      for (const auto& f : fs::recursive_directory_iterator(e.path()))
+        if (f.is_regular_file()) total += f.file_size();
+  EXPECT_LE(total, cache.max_bytes);
 }
 
 // The inputs key changes with one byte of the scene file or of a texture.

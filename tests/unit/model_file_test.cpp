@@ -248,8 +248,13 @@ TEST_F(ModelFile, AssimpCrashIsAnError) {
     const Model m = loadModelFile(dir / "assimp_heap_overflow.glb");
     for (const auto& p : m.primitives) EXPECT_EQ(p.mesh.positions.size(), p.mesh.normals.size()) << p.label;
   } catch (const ModelFileError& e) {
-    EXPECT_NE(std::string(e.what()).find("Assimp failed reading it, in its child process"), std::string::npos)
-        << e.what();
+    // The bytes read past the buffer are whatever lies on the heap (it
+    // differs with what the process did before): the child may die, or
+    // the parent's checks refuse what it wrote (a non-finite position).
+    const std::string what = e.what();
+    EXPECT_TRUE(what.find("Assimp failed reading it, in its child process") != std::string::npos ||
+                what.find("is not finite") != std::string::npos)
+        << what;
   }
 }
 
@@ -444,7 +449,7 @@ TEST_F(ModelFile, GltfIndexOutOfRangeAndDeepJson) {
               "\"byteOffset\": " + std::to_string(two.idx) + ", \"byteLength\": 12");
   replaceOnce("\"componentType\": 5123, \"count\": 3", "\"componentType\": 5123, \"count\": 6");
   expectError(write("dropped.gltf", json), "declare 2 triangles, Assimp read 1");
-  expectError(write("deep.gltf", std::string(100000, '[') + std::string(100000, ']')), "nests deeper");
+  expectError(write("deep.gltf", std::string(100000, '[') + std::string(100000, ']')), "nested deeper");
   expectError(write("v1.gltf", R"({"asset": {"version": "1.0"}, "buffers": {}})"), "asset.version: '1.0'");
 }
 

@@ -270,5 +270,73 @@ TEST(FindToleranceFile, ScenesThatFindDifferentFilesAreRefused) {
   EXPECT_EQ(findToleranceFile(t.root / "a/tolerances.json", {a, b, c}).path, t.root / "a/tolerances.json");
 }
 
+// The climb stops at the set root: the folder holding `scenes`, else the
+// scene's own folder. A tolerances.json above it (in a shared folder such
+// as /tmp) is never looked at.
+TEST(FindToleranceFile, TheClimbStopsAtTheSetRoot) {
+  TempTree t;
+  t.write("tolerances.json", toleranceFile(65535, 0));  // planted above every set
+  const fs::path loose = t.write("loose/z.json", "{}"), deep = t.write("set/scenes/deep/x.json", "{}");
+  EXPECT_EQ(setRootOf(loose), t.root / "loose");
+  EXPECT_EQ(setRootOf(deep), t.root / "set");
+  EXPECT_EQ(findToleranceFile({}, {loose}).path, toolkitToleranceFile());
+  EXPECT_EQ(findToleranceFile({}, {deep}).path, toolkitToleranceFile());
+  const fs::path set_file = t.write("set/tolerances.json", toleranceFile(2, 0.999));
+  EXPECT_EQ(findToleranceFile({}, {deep}).path, set_file);
+  // The toolkit's own layout: reference/scenes/x.json -> reference/tolerances.json.
+  EXPECT_EQ(setRootOf(fs::path(XVAL_REFERENCE_DIR) / "scenes" / "light_spot.json"),
+            fs::path(XVAL_REFERENCE_DIR).lexically_normal());
+}
+
+// A file found (not given) that another user could have written is refused,
+// naming the file and why.
+void expectRefused(const fs::path& scene, const fs::path& file, const std::string& why) {
+  try {
+    const ToleranceFile f = findToleranceFile({}, {scene});
+    ADD_FAILURE() << "used " << f.path << " although " << why;
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    for (const std::string& s : {file.string(), why, std::string("--tolerances")})
+      EXPECT_NE(what.find(s), std::string::npos) << "no \"" << s << "\" in: " << what;
+  }
+  // Given, the user vouches for it.
+  EXPECT_EQ(findToleranceFile(file, {scene}).path, file);
+}
+
+TEST(FindToleranceFile, AFileWritableByOthersIsRefused) {
+  TempTree t;
+  const fs::path x = t.write("set/scenes/x.json", "{}");
+  const fs::path f = t.write("set/tolerances.json", toleranceFile(2, 0.999));
+  fs::permissions(f, fs::perms::others_write, fs::perm_options::add);
+  expectRefused(x, f, "writable by every user (mode 0");
+  fs::permissions(f, fs::perms::others_write, fs::perm_options::remove);
+  EXPECT_EQ(findToleranceFile({}, {x}).path, f);
+  // In a folder anyone may write to (no sticky bit): anyone could replace it.
+  fs::permissions(t.root / "set", fs::perms::others_all, fs::perm_options::add);
+  expectRefused(x, f, "writable by every user without the sticky bit");
+  // With the sticky bit (as /tmp), only its owner can replace it.
+  fs::permissions(t.root / "set", fs::perms::sticky_bit, fs::perm_options::add);
+  EXPECT_EQ(findToleranceFile({}, {x}).path, f);
+}
+
+TEST(FindToleranceFile, AFileOwnedByAnotherUserIsRefused) {
+  if (geteuid() != 0) GTEST_SKIP() << "needs root (to give a file to the user nobody); the mode checks run as anyone";
+  TempTree t;
+  const fs::path x = t.write("set/scenes/x.json", "{}");
+  const fs::path f = t.write("set/tolerances.json", toleranceFile(2, 0.999));
+  ASSERT_EQ(chown(f.c_str(), 65534, 65534), 0);
+  expectRefused(x, f, "owned by uid 65534");
+  // The scene's owner may own it (a colleague's set run by another user).
+  ASSERT_EQ(chown(x.c_str(), 65534, 65534), 0);
+  EXPECT_EQ(findToleranceFile({}, {x}).path, f);
+  // A link owned by another user to a trusted file is refused too.
+  ASSERT_EQ(chown(x.c_str(), 0, 0), 0);
+  ASSERT_EQ(chown(f.c_str(), 0, 0), 0);
+  fs::rename(f, t.root / "set/real.json");
+  fs::create_symlink("real.json", f);
+  ASSERT_EQ(lchown(f.c_str(), 65534, 65534), 0);
+  expectRefused(x, f, "a symbolic link owned by uid 65534");
+}
+
 }  // namespace
 }  // namespace xval

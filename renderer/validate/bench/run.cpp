@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "files/atomic_write.h"
+#include "files/scratch_folder.h"
 #include "render/renderer.h"
 #include "renderers/registry.h"
 #include "scene/scene_loader.h"
@@ -96,15 +97,17 @@ int runBench(const BenchRequest& request) {
     if (renderer.reference || !wants(renderer.id) || renderer.prepare_frames) continue;
     const std::string& r = renderer.id;
     std::vector<double> whole, own;
-    const std::filesystem::path work =
-        std::filesystem::temp_directory_path() / ("xval-bench-" + std::to_string(getpid()) + "-" + r);
+    // A private folder made for this run (files/scratch_folder.h), never a
+    // name known in advance: the renderer's output, the scene and its
+    // scratch folder go there.
+    const ScratchFolder scratch("bench-" + r);
+    const std::filesystem::path work = scratch.dir() / "work";
     for (int k = 0; k < request.runs; ++k) {
       renderers::RenderInfo info;
       renderer.render(scene, {work, request.timeout_seconds, {}}, &info);
       whole.push_back(info.seconds);
       if (info.render_seconds >= 0) own.push_back(info.render_seconds);
     }
-    std::filesystem::remove_all(work);
     Spread sw = spread(whole), so = spread(own);
     medians[r + "_render"] = so.median;
     medians[r + "_process"] = sw.median;

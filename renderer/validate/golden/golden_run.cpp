@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "files/output_folder.h"
+#include "files/scratch_folder.h"
 #include "golden/golden_set.h"
 #include "image/compare.h"
 #include "process/run_process.h"
@@ -21,19 +23,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A fresh scratch folder, removed with everything in it when done.
-struct Scratch {
-  fs::path dir = fs::temp_directory_path() / ("xval-golden-" + attemptToken());
-  Scratch() { fs::create_directories(dir); }
-  ~Scratch() {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
-  }
-};
-
 const renderers::Renderer& sourceRenderer(const std::string& id) {
   const renderers::Renderer& r = renderers::registry().at(id);
-  if (r.id == "golden" || r.id.rfind("golden-", 0) == 0)
+  if (renderers::isGoldenSetId(r.id))
     throw std::runtime_error("--renderer " + id + ": a golden set cannot store golden images of itself");
   if (r.geometry_passes)
     throw std::runtime_error("--renderer " + id + ": its images are geometry passes, compared only by crosscheck "
@@ -89,17 +81,21 @@ int goldenUpdate(const GoldenRequest& request) {
   const std::vector<fs::path> files = goldenSceneFiles(request.inputs);
   const renderers::Availability a = renderers::registry().availability(r.id);
   if (!a.available) throw std::runtime_error(r.display_name + " is not available: " + a.reason);
-  Scratch scratch;
-  const Provenance prov = collectProvenance(scratch.dir / "git.log");
+  const ScratchFolder scratch("golden");
+  const Provenance prov = collectProvenance(scratch.dir() / "git.log");
   const std::string version = renderers::registry().version(r.id);
   std::map<fs::path, golden::Manifest> manifests;
   for (const fs::path& file : files) {
     const Scene scene = loadScene(file, request.budget);
     const fs::path folder = golden::goldenFolder(file, r.id);
+    // SET/golden and SET/golden/<renderer> are real folders, never links
+    // (as validate's output folder): a link there would receive the images
+    // and the manifest outside the set.
+    makeRealFolder(folder.parent_path().parent_path(), folder);
     auto it = manifests.find(folder);
     if (it == manifests.end()) it = manifests.emplace(folder, golden::readManifest(folder, r.id)).first;
     const std::string scene_hash = golden::sha256File(file);
-    const fs::path work = scratch.dir / ("work-" + attemptToken());
+    const fs::path work = scratch.dir() / ("work-" + attemptToken());
     fs::create_directories(work);
     Render fresh = renderForGolden(r, scene, work, request.timeout_seconds);
     const std::string stem = file.stem().string();
@@ -135,7 +131,7 @@ int goldenCheck(const GoldenRequest& request) {
   const ToleranceFile tf = findToleranceFile(request.tolerances, files);
   const ToleranceTable table = loadTolerances(tf.path);
   std::printf("tolerances: %s\n", tf.describe().c_str());
-  Scratch scratch;
+  const ScratchFolder scratch("golden");
   int failed = 0;
   for (const fs::path& file : files) {
     const Scene scene = loadScene(file, request.budget);
@@ -157,7 +153,7 @@ int goldenCheck(const GoldenRequest& request) {
       continue;
     }
     const golden::Entry& e = m.entries.at(file.stem().string());
-    const fs::path work = scratch.dir / ("work-" + attemptToken());
+    const fs::path work = scratch.dir() / ("work-" + attemptToken());
     fs::create_directories(work);
     Render fresh = renderForGolden(r, scene, work, request.timeout_seconds, precision);
     // The fast path is compared with the exact path's image: the settings
