@@ -78,12 +78,16 @@ Image toImage(const GeometryPasses& g) {
 Image passesPreview(const GeometryPasses& g) {
   Image img(g.width, g.height, false);
   auto wrap = [](float x) { return x - std::floor(x); };
+  float near = INFINITY, far = -INFINITY;
+  for (size_t p = 0; p < g.size(); ++p)
+    if (g.hit[p] > 0.5f) near = std::min(near, g.depth[p]), far = std::max(far, g.depth[p]);
   for (size_t p = 0; p < g.size(); ++p) {
     float* px = &img.rgba[p * 4];
     const bool hit = g.hit[p] > 0.5f, uv = g.has_uv[p] > 0.5f;
-    px[0] = !hit ? 0.0f : uv ? wrap(g.u[p]) : 0.5f;
-    px[1] = !hit ? 0.0f : uv ? wrap(g.v[p]) : 0.5f;
-    px[2] = !hit ? 0.0f : uv ? 0.0f : 0.5f;
+    const float depth01 = far > near ? (g.depth[p] - near) / (far - near) : 0.0f;
+    px[0] = hit && uv ? wrap(g.u[p]) : 0.0f;
+    px[1] = hit && uv ? wrap(g.v[p]) : 0.0f;
+    px[2] = hit ? 1.0f - 0.75f * depth01 : 0.0f;
     px[3] = hit ? 1.0f : 0.0f;
   }
   return img;

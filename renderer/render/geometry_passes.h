@@ -49,9 +49,19 @@ Image toImage(const GeometryPasses& passes);
 GeometryPasses geometryPassesFromImage(const Image& image);
 
 // A picture of the passes for a report (validate's preview PNG of a
-// geometry check's job): where a pixel hits, red = u and green = v, each
-// wrapped to [0, 1) (a repeating uv stays visible), blue 0; grey 0.5 where
-// the primitive has no uvs; alpha = hit.
+// geometry check's job). Blue shows the hit mask and the depth, so the
+// shape shows even where the uv is 0 everywhere (Blender's UV pass of a
+// model without uvs, an STL: uv alone made such a picture all black):
+//   red     u, wrapped to [0, 1) (a repeating uv stays visible); 0 where
+//           the primitive has no uvs;
+//   green   v, likewise;
+//   blue    nearness: 1 at the nearest hit, falling linearly with the depth
+//           to 0.25 at the farthest (1 when every hit is at one depth);
+//   black   no hit (alpha = hit).
+// kPassesPreviewLegend says so in a line for the report's caption.
 Image passesPreview(const GeometryPasses& passes);
+inline constexpr const char* kPassesPreviewLegend =
+    "red = u, green = v (wrapped to [0, 1); 0 without uvs), blue = nearness (1 nearest, 0.25 farthest), "
+    "black = no hit";
 
 }  // namespace xval

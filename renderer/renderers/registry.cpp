@@ -183,7 +183,8 @@ std::vector<RendererPair> unorderedPairs(size_t n) {
   return out;
 }
 
-std::string pairKey(const Renderer& a, const Renderer& b) { return a.id + "-" + b.id; }
+std::string pairKey(const std::string& a, const std::string& b) { return a + "-" + b; }
+std::string pairKey(const Renderer& a, const Renderer& b) { return pairKey(a.id, b.id); }
 
 namespace {
 // No majority: say which pairs fail. "POV-Ray and Blender disagree (the

@@ -103,7 +103,9 @@ struct RendererPair {
 // ..., (0,n-1), (1,2), ... (for reference, povray, blender:
 // reference-povray, reference-blender, povray-blender).
 std::vector<RendererPair> unorderedPairs(size_t n);
-// "reference-povray": how results.json and the diff images name a pair.
+// "reference-povray": how results.json and the diff images name a pair
+// (the ids of its renderers, a before b in registry order, joined by '-').
+std::string pairKey(const std::string& a, const std::string& b);
 std::string pairKey(const Renderer& a, const Renderer& b);
 
 // Who deviates, from the pairwise verdicts of `renderers` (verdicts[k] for

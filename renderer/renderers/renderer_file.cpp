@@ -200,8 +200,10 @@ Renderer loadRendererFile(const fs::path& file) {
 
 void registerRendererFiles(const std::vector<std::string>& files) {
   Registry& reg = registry();
-  for (const std::string& f : files) {
-    Renderer r = loadRendererFile(f);
+  std::vector<std::pair<Renderer, std::string>> loaded;  // each renderer and its file
+  for (const std::string& f : files) loaded.emplace_back(loadRendererFile(f), f);
+  std::stable_sort(loaded.begin(), loaded.end(), [](const auto& a, const auto& b) { return a.first.id < b.first.id; });
+  for (auto& [r, f] : loaded) {
     try {
       reg.add(std::move(r));
     } catch (const std::invalid_argument& e) {

@@ -41,7 +41,9 @@ inline constexpr size_t kMaxRendererDescriptionBytes = 300;
 Renderer loadRendererFile(const std::filesystem::path& file);
 
 // Adds each file's renderer (and its golden set, golden-<name>) to the
-// process's registry, in order. Throws naming the file on any error (a
+// process's registry, by name (not in the order given: the registry's order
+// is that of jobs, pairs and reports, which must not change with the order
+// of --renderer-file options). Throws naming the file on any error (a
 // malformed file, a name already registered).
 void registerRendererFiles(const std::vector<std::string>& files);
 

@@ -19,6 +19,7 @@
 
 #include "image/image.h"
 #include "process/run_process.h"
+#include "render/geometry_passes.h"
 #include "renderers/registry.h"
 #include "scene/json_reader.h"
 #include "scene/scene_loader.h"
@@ -63,15 +64,53 @@ std::string gnuplotSafe(const std::string& n) {
   return safe;
 }
 
-// The pair ids of the run, in the order of their first appearance.
-std::vector<std::string> pairIds(const J& cases) {
+// The run's renderers in their one order: results.json `renderers` (the
+// registry's order when validate ran: the built-in renderers, then the
+// users' by name, renderers/renderer_file.h), then -- for a results.json
+// without it -- any other renderer of the cases' renders, in the order of
+// its first appearance. The summary, the plot and each case's renders
+// follow it, so two runs of the same renderers show them in the same order
+// whatever the order of the command line or of the cases' verdicts.
+std::vector<std::string> runRenderers(const J& results) {
   std::vector<std::string> ids;
-  for (const auto& c : cases)
-    for (const auto& p : c["pairs"]) {
-      const std::string id = p["pair"].get<std::string>();
-      if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
-    }
+  auto add = [&ids](const std::string& id) {
+    if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
+  };
+  for (const auto& id : results.value("renderers", J::array())) add(id.get<std::string>());
+  for (const auto& c : results["cases"])
+    for (auto it = c["renders"].begin(); it != c["renders"].end(); ++it) add(it.key());
   return ids;
+}
+
+// The image pairs of the run and the renderers they pair.
+struct RunPairs {
+  std::vector<std::string> ids;        // pair keys: every unordered pair of the run's renderers some case has
+  std::vector<std::string> renderers;  // the renderers of those pairs, in the run's order
+};
+
+// In the order of renderers::unorderedPairs over the run's renderers, then
+// any pair no two of them name (a results.json written by hand), in the
+// order of its first appearance.
+RunPairs runPairs(const J& cases, const std::vector<std::string>& renderers) {
+  std::vector<std::string> present;
+  for (const auto& c : cases)
+    for (const auto& p : c["pairs"]) present.push_back(p["pair"].get<std::string>());
+  auto has = [](const std::vector<std::string>& v, const std::string& x) {
+    return std::find(v.begin(), v.end(), x) != v.end();
+  };
+  RunPairs out;
+  std::vector<bool> paired(renderers.size(), false);
+  for (const renderers::RendererPair& rp : renderers::unorderedPairs(renderers.size())) {
+    const std::string key = renderers::pairKey(renderers[rp.a], renderers[rp.b]);
+    if (!has(present, key) || has(out.ids, key)) continue;
+    out.ids.push_back(key);
+    paired[rp.a] = paired[rp.b] = true;
+  }
+  for (size_t i = 0; i < renderers.size(); ++i)
+    if (paired[i]) out.renderers.push_back(renderers[i]);
+  for (const std::string& key : present)
+    if (!has(out.ids, key)) out.ids.push_back(key);
+  return out;
 }
 
 // A case's geometry checks (validate/validation/geometry_checks.h) as
@@ -181,6 +220,92 @@ std::string verdictCell(const std::string& v) {
   std::string upper;
   for (char ch : v) upper += char(std::toupper(static_cast<unsigned char>(ch)));
   return std::string("class=\"l ") + cls + "\">" + upper;
+}
+
+// A pair's verdict and its max unexplained error, as a table cell's class
+// attribute on: "class="l fail">FAIL 12.34".
+std::string pairCell(const J& p) {
+  if (p.contains("not_expressible")) return "class=\"l nexp\">not expressible";
+  std::string cell = verdictCell(pairVerdict(p));
+  if (p.contains("metrics")) cell += " " + fixed(p["metrics"].value("max_unexplained_16bit", J()), 2);
+  return cell;
+}
+
+// How bad a pair's verdict is: error, fail, pass, not expressible.
+int severity(const J& p) {
+  const std::string v = pairVerdict(p);
+  return v == "error" ? 3 : v == "fail" ? 2 : v == "pass" ? 1 : 0;
+}
+
+double maxUnexplained(const J& p) {
+  if (!p.contains("metrics")) return 0.0;
+  const J& v = p["metrics"].value("max_unexplained_16bit", J());
+  return v.is_number() ? v.get<double>() : 0.0;
+}
+
+// A case's worst pair: the most severe verdict, then the largest max
+// unexplained error, then the first in the run's order; null when the
+// case has no pair.
+const J* worstPair(const J& c, const std::vector<std::string>& pairs) {
+  const J* worst = nullptr;
+  for (const std::string& id : pairs) {
+    const J* p = findPair(c, id);
+    if (!p) continue;
+    if (!worst || severity(*p) > severity(*worst) ||
+        (severity(*p) == severity(*worst) && maxUnexplained(*p) > maxUnexplained(*worst)))
+      worst = p;
+  }
+  return worst;
+}
+
+// A case's pairs in the summary: one cell however many renderers the run
+// has (its width does not grow with the pairs: 15 pairs of 6 renderers fit
+// a 1280 px window), the count of each verdict, opening onto the
+// renderers x renderers matrix of the pairs' verdicts (row before column
+// in the run's order; a pair the case does not have is empty).
+std::string pairsCell(const J& c, const RunPairs& run) {
+  std::map<std::string, int> count;
+  int n = 0;
+  for (const std::string& id : run.ids)
+    if (const J* p = findPair(c, id)) ++count[pairVerdict(*p)], ++n;
+  if (n == 0) return "<td class=\"l\">no pairs</td>";
+  std::ostringstream h;
+  h << "<td class=\"l\"><details class=\"pairs\"><summary>" << n << (n == 1 ? " pair" : " pairs") << ":";
+  const char* sep = " ";
+  for (const char* v : {"error", "fail", "pass", "not expressible"})
+    if (count[v]) h << sep << count[v] << " " << v, sep = ", ";
+  h << "</summary><table class=\"matrix\"><tr><th></th>";
+  const std::vector<std::string>& rs = run.renderers;
+  for (size_t j = 1; j < rs.size(); ++j) h << "<th>" << htmlEscape(rs[j]) << "</th>";
+  h << "</tr>";
+  for (size_t i = 0; i + 1 < rs.size(); ++i) {
+    h << "<tr><th class=\"l\">" << htmlEscape(rs[i]) << "</th>";
+    for (size_t j = 1; j < rs.size(); ++j) {
+      const std::string key = renderers::pairKey(rs[i], rs[j]);
+      const J* p = j > i ? findPair(c, key) : nullptr;
+      if (!p) {
+        h << "<td></td>";
+        continue;
+      }
+      h << "<td title=\"" << htmlEscape(key) << "\" " << pairCell(*p) << "</td>";
+    }
+    h << "</tr>";
+  }
+  h << "</table></details></td>";
+  return h.str();
+}
+
+// Whether a case's render is a geometry check's: a picture of its passes
+// (render/geometry_passes.h passesPreview), not a render.
+bool isGeometryCheck(const J& c, const std::string& renderer) {
+  for (const auto& g : c.value("geometry_checks", J::array()))
+    if (g["renderer"] == renderer) return true;
+  return false;
+}
+
+std::string geometryCheckCaption() {
+  return std::string("not a render: its geometry passes (") + kPassesPreviewLegend +
+         "), compared with the reference's passes of our loaded triangles (the geometry check below)";
 }
 
 // A case's geometry checks: per check, each metric beside the bound it is
@@ -321,7 +446,9 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   std::stable_sort(cases.begin(), cases.end(), [](const J& a, const J& b) {
     return a["pass"].get<bool>() < b["pass"].get<bool>();
   });
-  const std::vector<std::string> pairs = pairIds(cases);
+  const std::vector<std::string> run_renderers = runRenderers(r);
+  const RunPairs run_pairs = runPairs(r["cases"], run_renderers);
+  const std::vector<std::string>& pairs = run_pairs.ids;
   const std::optional<fs::path> extremes_dir = sectionFolder(r, "extremes", sections.extremes, dir);
   const std::optional<fs::path> tradeoff_dir = sectionFolder(r, "tradeoff", sections.tradeoff, dir);
   if (extremes_dir) requireSectionFile(*extremes_dir, "extremes.json", "extremes");
@@ -371,6 +498,11 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
     << ".imgs{display:flex;flex-wrap:wrap;gap:10px}.imgs figure{margin:0}"
     << ".imgs>figure>img{width:256px;image-rendering:pixelated;border:1px solid #999}"
     << "figcaption{font-size:12px;text-align:center}.reason{font-size:12px;color:#444;max-width:900px}"
+    << ".imgs>figure{max-width:258px}.noimage{box-sizing:border-box;width:256px;min-height:64px;padding:4px;"
+    << "border:1px solid #b60;font-size:12px;white-space:pre-wrap;overflow-wrap:anywhere}"
+    << "td.deviates{max-width:22em}.pairname{font-weight:normal;color:#444;font-size:11px}"
+    << "details.pairs summary{cursor:pointer;white-space:nowrap}.matrix{margin:.3em 0 0}"
+    << ".matrix td,.matrix th{font-size:11px;padding:1px 3px;white-space:nowrap}"
     << "</style></head><body>\n";
   h << "<h1>xval cross-validation report</h1>\n";
   h << "<p>" << cases.size() << " scenes: <span class=\"pass\">" << pass << " pass</span>, "
@@ -393,33 +525,25 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
     h << "<tr><td class=\"l\">" << htmlEscape(it.key()) << "</td><td class=\"l\">"
       << htmlEscape(it.value().is_string() ? it.value().get<std::string>() : it.value().dump()) << "</td></tr>";
   h << "</table>\n";
-  h << "<h2>Summary</h2>\n<table><tr><th class=\"l\">scene</th><th class=\"l\">verdict</th>"
+  h << "<h2>Summary</h2>\n<table id=\"summary\"><tr><th class=\"l\">scene</th><th class=\"l\">verdict</th>"
        "<th class=\"l\">who deviates</th>";
-  for (const auto& p : pairs) h << "<th>" << htmlEscape(p) << "<br>verdict, max unexplained</th>";
+  if (!pairs.empty())
+    h << "<th class=\"l\">worst pair<br>verdict, max unexplained</th><th class=\"l\">pairs<br>(" << pairs.size()
+      << "; open for the renderers x renderers matrix)</th>";
   for (const auto& g : check_ids) h << "<th>" << htmlEscape(g) << "<br>verdict</th>";
   h << "</tr>\n";
   for (const auto& c : cases) {
     const std::string id = htmlEscape(c["scene"].get<std::string>());
     h << "<tr><td class=\"l\"><a href=\"#" << id << "\">" << id << "</a></td><td "
-      << verdictCell(caseVerdict(c)) << "</td><td class=\"l\">"
+      << verdictCell(caseVerdict(c)) << "</td><td class=\"l deviates\">"
       << htmlEscape(c["attribution"].get<std::string>()) << "</td>";
-    for (const auto& id : pairs) {
-      const J* pp = findPair(c, id);
-      if (!pp) {
-        h << "<td></td>";  // this case has no such pair
-        continue;
-      }
-      const J& p = *pp;
-      if (p.contains("not_expressible")) {
-        h << "<td class=\"nexp\">not expressible</td>";
-        continue;
-      }
-      if (!p.contains("metrics")) {
-        h << "<td " << verdictCell(pairVerdict(p)) << "</td>";
-        continue;
-      }
-      const J& m = p["metrics"];
-      h << "<td " << verdictCell(pairVerdict(p)) << " " << fixed(m.value("max_unexplained_16bit", J()), 2) << "</td>";
+    if (!pairs.empty()) {
+      if (const J* w = worstPair(c, pairs))
+        h << "<td " << pairCell(*w) << "<br><span class=\"pairname\">" << htmlEscape((*w)["pair"].get<std::string>())
+          << "</span></td>";
+      else
+        h << "<td></td>";  // this case has no pair
+      h << pairsCell(c, run_pairs);
     }
     for (const auto& id : check_ids) {
       const J* g = findCheck(c, id);
@@ -462,19 +586,28 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
           << htmlEscape(w["message"].get<std::string>()) << " [" << htmlEscape(w["code"].get<std::string>())
           << "]</p>\n";
     h << "<div class=\"imgs\">";
-    for (auto it = c["renders"].begin(); it != c["renders"].end(); ++it) {
-      const std::string renderer = htmlEscape(it.key());
-      const J& rr = it.value();
+    for (const std::string& rid : run_renderers) {
+      if (!c["renders"].contains(rid)) continue;
+      const std::string renderer = htmlEscape(rid);
+      const J& rr = c["renders"][rid];
       if (rr.contains("not_expressible")) {
         h << "<figure><figcaption>" << renderer << ": <span class=\"nexp\">not expressible: "
           << htmlEscape(rr["not_expressible"].get<std::string>()) << "</span></figcaption></figure>";
         continue;
       }
-      h << "<figure><img src=\"" << htmlEscape(rr["image"].get<std::string>()) << "\" alt=\""
-        << renderer << "\"><figcaption>" << renderer << ", "
-        << fixed(rr["seconds"], 2) << " s";
+      // A failed render shows its error where its image would be: no
+      // <img> of a file that is not there.
+      if (renderHasImage(rr, dir))
+        h << "<figure><img src=\"" << htmlEscape(rr["image"].get<std::string>()) << "\" alt=\"" << renderer << "\">";
+      else
+        h << "<figure><div class=\"noimage err\">"
+          << (rr.contains("error") ? "error: " + htmlEscape(rr["error"].get<std::string>())
+                                   : "no image: " + htmlEscape(rr.value("image", std::string("(none named)"))) +
+                                         " (named in results.json) is missing")
+          << "</div>";
+      h << "<figcaption>" << renderer << ", " << fixed(rr["seconds"], 2) << " s";
       if (rr.contains("render_seconds")) h << " (render " << fixed(rr["render_seconds"], 2) << " s)";
-      if (rr.contains("error")) h << "<br><span class=\"err\">" << htmlEscape(rr["error"].get<std::string>()) << "</span>";
+      if (isGeometryCheck(c, rid)) h << "<br>" << htmlEscape(geometryCheckCaption());
       h << "</figcaption></figure>";
     }
     h << "</div>\n" << casePixels(c, dir);

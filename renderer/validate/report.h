@@ -2,7 +2,12 @@
 // results.json and of the files it names, nothing else.
 //
 // What the report shows comes from results.json: the cases, their renders
-// (each with the preview PNG it names) and pairs in the order stored, the
+// (each with the preview PNG it names; a failed render by its error text,
+// never an <img> of a missing file) and pairs in the order of results.json
+// `renderers` (the registry's: built-in renderers, then users' by name),
+// the summary's row per case (its verdict, who deviates, its worst pair,
+// and its pairs' verdicts opening onto a renderers x renderers matrix: as
+// many columns for 15 pairs as for one), the
 // pairs' heat maps (the PNG each pair names in `heat_map`, written by the
 // compare step, which has the EXRs: writeHeatMapPng), the paper's Figure 1
 // verdicts (`paper_claims`, computed by the compare step:

@@ -56,6 +56,11 @@ std::string cropRow(const J& shown, const char* title, const std::string& pair) 
 
 }  // namespace
 
+bool renderHasImage(const J& render, const fs::path& dir) {
+  if (render.contains("error") || !render.contains("image") || !render["image"].is_string()) return false;
+  return fs::is_regular_file(dir / render["image"].get<std::string>());
+}
+
 std::string pairVerdict(const J& p) {
   if (p.contains("error")) return "error";
   if (p.contains("not_expressible")) return "not expressible";
@@ -82,7 +87,7 @@ std::string casePixels(const J& c, const fs::path& dir) {
   std::string first;
   for (auto it = c["renders"].begin(); it != c["renders"].end(); ++it) {
     // Only renders with an image: not a failed or a not-expressible one.
-    if (!it.value().contains("image") || !it.value()["image"].is_string()) continue;
+    if (!renderHasImage(it.value(), dir)) continue;
     const std::string src = it.value()["image"].get<std::string>();
     if (first.empty()) first = src;
     buttons << "<button type=\"button\" data-src=\"" << htmlEscape(src) << "\">" << htmlEscape(it.key())

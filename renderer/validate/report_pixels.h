@@ -14,6 +14,11 @@
 
 namespace xval {
 
+// Whether a render has an image to show: it names one, did not fail (no
+// `error`) and the file is in `dir`. A render without one is shown by its
+// error text, never by an <img> of a missing file.
+bool renderHasImage(const nlohmann::ordered_json& render, const std::filesystem::path& dir);
+
 // A pair's verdict word: "error", "not expressible", "pass" or "fail".
 std::string pairVerdict(const nlohmann::ordered_json& pair);
 

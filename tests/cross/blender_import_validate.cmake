@@ -91,6 +91,20 @@ if(MODE STREQUAL "pass")
   endforeach()
   get(_kept cases 1 geometry_checks 0 metrics max_uv)
   expect_eq("the kept case's max uv" "${_kept}" "${_max_uv}")
+  # The check's picture of its passes shows the shape even of a model
+  # without uvs (SECOND: an STL, whose UV pass is constant; the uv colours
+  # alone were all black), and the report says it is passes, not a render.
+  get_filename_component(_second ${SECOND} NAME_WE)
+  find_program(_oiiotool oiiotool REQUIRED)
+  execute_process(COMMAND ${_oiiotool} --stats ${OUT}/${_second}/blender-import.png
+                  OUTPUT_VARIABLE _stats RESULT_VARIABLE _rc)
+  string(REGEX MATCH "Stats Max: [0-9]+ [0-9]+ ([0-9]+)" _max "${_stats}")
+  if(NOT _rc EQUAL 0 OR NOT _max OR CMAKE_MATCH_1 LESS 64)
+    message(FATAL_ERROR "${OUT}/${_second}/blender-import.png: no visible shape (blue max ${CMAKE_MATCH_1}):\n${_stats}")
+  endif()
+  file(READ ${OUT}/report.html html)
+  expect_in("${html}" "blender-import, ")
+  expect_in("${html}" "not a render: its geometry passes (red = u, green = v")
 elseif(MODE STREQUAL "builtin")
   expect_eq("the check's verdict" "${_verdict}" "not_expressible")
   get(_why cases 0 geometry_checks 0 reason)

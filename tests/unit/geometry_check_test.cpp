@@ -123,3 +123,31 @@ TEST(GeometryCheck, EachConditionFails) {
     EXPECT_FALSE(compareGeometry(none, none).pass);
   }
 }
+
+// The preview of a geometry check's passes (passesPreview) shows the shape
+// where the uv says nothing: Blender's UV pass of a model without uvs (an
+// STL) is u = 0, v = 1 at every hit, which the uv colours alone made all
+// black. Every hit pixel is visibly blue, nearer ones brighter; a miss is
+// black.
+TEST(GeometryCheck, PreviewShowsTheShapeWhereTheUvIsConstant) {
+  GeometryPasses g = referenceGeometryPasses(referenceScene("mesh_wuson_stl"));
+  size_t nearest = 0, farthest = 0, hits = 0;
+  for (size_t p = 0; p < g.size(); ++p) {
+    if (g.hit[p] < 0.5f) continue;
+    g.u[p] = 0.0f, g.v[p] = 1.0f, g.has_uv[p] = 1.0f;  // as blender/model_import.cpp reads such a pass
+    if (hits++ == 0 || g.depth[p] < g.depth[nearest]) nearest = p;
+    if (g.depth[p] > g.depth[farthest] || g.hit[farthest] < 0.5f) farthest = p;
+  }
+  ASSERT_GT(hits, 1000u);
+  ASSERT_LT(g.depth[nearest], g.depth[farthest]);
+  const Image img = passesPreview(g);
+  for (size_t p = 0; p < g.size(); ++p) {
+    const float* px = &img.rgba[p * 4];
+    if (g.hit[p] > 0.5f)
+      ASSERT_GE(px[2], 0.25f) << "hit pixel " << p << " is not visible";
+    else
+      ASSERT_EQ(px[0] + px[1] + px[2], 0.0f) << "miss pixel " << p;
+  }
+  EXPECT_FLOAT_EQ(img.rgba[nearest * 4 + 2], 1.0f);
+  EXPECT_FLOAT_EQ(img.rgba[farthest * 4 + 2], 0.25f);
+}

@@ -34,12 +34,12 @@ std::string settingsHash(const std::vector<fs::path>& files) {
 
 J provenanceJson(const Plan& plan, const std::vector<fs::path>& setting_files) {
   J p = J::object();
-  // The outside tools' versions (probed with a time-out, renderers/registry.h).
-  for (const renderers::Renderer* r : renderers::registry().everySceneRenderers())
-    if (r->external()) p[r->id] = renderers::registry().version(r->id);
-  // And those of the run's geometry checks (blender-import: Blender's).
+  // The versions of the outside tools the run used (probed with a
+  // time-out, renderers/registry.h): those of its renderers, geometry
+  // checks (blender-import: Blender's) and users' renderers included, in
+  // the run's order; a renderer the run did not use is not listed.
   for (const std::string& id : plan.renderers)
-    if (const renderers::Renderer& r = renderers::registry().at(id); r.geometry_passes && r.external())
+    if (const renderers::Renderer& r = renderers::registry().at(id); r.external())
       p[r.id] = renderers::registry().version(r.id);
   // The one provenance record (validate/common/provenance.h): the compiler
   // that built this xval, the commit (with -dirty) it ran in.
