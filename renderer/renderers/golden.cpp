@@ -55,10 +55,10 @@ Renderer goldenRendererOf(const std::string& made_by, const std::string& made_by
 Renderer goldenRenderer() { return goldenRendererOf("reference", "the reference renderer"); }
 
 std::string goldenUpdateCommand(const std::filesystem::path& scene_file, const std::string& made_by) {
-  std::string c = "xval golden update " + shellWord(std::filesystem::absolute(scene_file).lexically_normal().string()) +
+  std::string c = "xval golden update " + shellPath(scene_file) +
                   " --renderer " + shellWord(made_by);
   if (const Renderer* r = registry().find(made_by); r && !r->definition_file.empty())
-    c += " --renderer-file " + shellWord(r->definition_file.string());
+    c += " --renderer-file " + shellPath(r->definition_file);
   return c;
 }
 

@@ -56,15 +56,15 @@ std::vector<std::string> goldenStepRenderers(const nlohmann::ordered_json& jc, c
 
 std::string runOptions(const Plan& plan, const fs::path& scene_file) {
   std::string o;
-  for (const RendererFile& f : plan.renderer_files) o += " --renderer-file " + shellWord(f.path.string());
+  for (const RendererFile& f : plan.renderer_files) o += " --renderer-file " + shellPath(f.path);
   if (findToleranceFile("", {scene_file}).path != plan.tolerances_path)
-    o += " --tolerances " + shellWord(plan.tolerances_path.string());
+    o += " --tolerances " + shellPath(plan.tolerances_path);
   return o;
 }
 
 std::string reproduceCommand(const Plan& plan, const PlannedScene& ps) {
-  std::string c = "xval validate " + shellWord(ps.path.string()) + " -o " +
-                  shellWord((plan.dir / (ps.name + ".validate")).string());
+  std::string c = "xval validate " + shellPath(ps.path) + " -o " +
+                  shellPath(plan.dir / (ps.name + ".validate"));
   if (plan.renderers != jobRenderers()) {
     std::string list;
     for (const std::string& id : plan.renderers) list += (list.empty() ? "" : ",") + id;
@@ -94,8 +94,8 @@ void printNextSteps(const Plan& plan, const nlohmann::ordered_json& cases) {
     for (const auto& [id, render] : jc["renders"].items())
       if (id != renderers::registry().reference().id && !render.contains("not_expressible"))
         std::fprintf(stderr, "  look closer: xval crosscheck %s --renderer %s -o %s%s\n",
-                     shellWord(ps.path.string()).c_str(), shellWord(id).c_str(),
-                     shellWord((plan.dir / (scene + "." + id)).string()).c_str(), options.c_str());
+                     shellPath(ps.path).c_str(), shellWord(id).c_str(),
+                     shellPath(plan.dir / (scene + "." + id)).c_str(), options.c_str());
     std::fprintf(stderr,
                  "  accept a documented difference: declare it, with its measured reason, in the\n"
                  "  `tolerances` field of %s (defaults: %s)\n",

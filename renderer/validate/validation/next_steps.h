@@ -8,7 +8,8 @@
 // report's "Reproduce:" line).
 //
 // Every printed command runs as printed: it carries what the run was given
-// beyond its scenes (runOptions), its paths are absolute and every word is
+// beyond its scenes (runOptions), its paths are relative to the working
+// folder when below it, else absolute (shellPath), and every word is
 // shell-quoted (process/shell_word.h), so a pasted command cannot run
 // anything a scene or folder name contains.
 #pragma once
