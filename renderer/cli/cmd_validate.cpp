@@ -146,7 +146,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
       "A plain run does it all here; --plan-only, --run-job and --compare-only do one step each, "
       "which is how scripts/slurm/submit.sh runs it on a Slurm cluster (docs/cluster.md).\n"
       "A renderer that declares it cannot express a scene is recorded as not expressible, with its "
-      "reason, and the case is decided on the other pairs. A scene's `renderers` field that names "
+      "reason, and the case is decided on the other pairs. A scene's \"renderers\" field that names "
       "reference takes golden (its stored images) too. A case with nothing compared (every other "
       "renderer left out or unable to express the scene) is NOT COMPARED, never a pass.\n"
       "Exit 0 when every case compared something and passes, 1 when any fails or compared nothing, "

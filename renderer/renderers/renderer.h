@@ -168,7 +168,7 @@ struct Renderer {
   std::filesystem::path definition_file;
   // A golden set (renderers/golden.cpp): the id of the renderer whose
   // stored images it reads ("reference" for `golden`); empty for every
-  // other renderer. A scene's `renderers` field that names that renderer
+  // other renderer. A scene's \"renderers\" field that names that renderer
   // takes the set in its place (meantFor, registry.h).
   std::string images_of;
 

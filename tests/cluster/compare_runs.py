@@ -10,7 +10,10 @@ differs between two runs of the same scenes:
   results.json  wall_seconds (the run's wall time), and each render's
                 `seconds`, `render_seconds`, `process_seconds`, `parse_seconds` (how long it took);
   report.html   the same figures where the report prints them: "Wall time
-                X s" and each render's caption "RENDERER, X s (render Y s)".
+                X s" and each render's caption "RENDERER, X s (render Y s)";
+  both          the run's own output folder in each case's `reproduce`
+                command (`-o RUN/SCENE.validate`, where RUN is the run's
+                folder: two runs are two folders).
 
 Provenance (POV-Ray, Blender, OpenImageIO, compiler versions, git commit,
 settings hash, tolerance file) is compared: both runs here use the same
@@ -28,6 +31,20 @@ import sys
 TIMING_KEYS = {"seconds", "render_seconds", "process_seconds", "parse_seconds", "wall_seconds"}
 
 
+# A case's reproduce command names the run's own folder: `-o RUN/x.validate`,
+# the word bare or shell-quoted (renderer/process/shell_word.h).
+RUN_FOLDER = [
+    (re.compile(r"-o '[^']*/([^/']+\.validate)'"), r"-o 'RUN/\1'"),
+    (re.compile(r"-o [^\s']*/([^/\s']+\.validate)"), r"-o RUN/\1"),
+]
+
+
+def without_run_folder(text):
+    for rx, repl in RUN_FOLDER:
+        text = rx.sub(repl, text)
+    return text
+
+
 def strip_timings(node, path="", dropped=None):
     """A copy of node without timing figures; their paths go to dropped."""
     if isinstance(node, dict):
@@ -37,6 +54,8 @@ def strip_timings(node, path="", dropped=None):
                 if dropped is not None:
                     dropped.append(f"{path}/{k}")
                 continue
+            if k == "reproduce" and isinstance(v, str):
+                v = without_run_folder(v)
             out[k] = strip_timings(v, f"{path}/{k}", dropped)
         return out
     if isinstance(node, list):
@@ -72,6 +91,7 @@ REPORT_TIMINGS = [
 
 
 def normalise_report(text):
+    text = without_run_folder(text)
     counts = []
     for rx, repl in REPORT_TIMINGS:
         text, n = rx.subn(repl, text)
