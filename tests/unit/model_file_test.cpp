@@ -4,8 +4,10 @@
 // and each class of error naming the file and the element.
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -478,6 +480,49 @@ TEST_F(ModelFile, GltfIndexOutOfRangeAndDeepJson) {
   expectError(write("dropped.gltf", json), "declare 2 triangles, Assimp read 1");
   expectError(write("deep.gltf", std::string(100000, '[') + std::string(100000, ']')), "nested deeper");
   expectError(write("v1.gltf", R"({"asset": {"version": "1.0"}, "buffers": {}})"), "asset.version: '1.0'");
+}
+
+// 21 nodes, each naming the next twice as a child, the last with the
+// triangle: 2^20 paths to one mesh in 1.5 KB of JSON (issue #34.9). The
+// limits hold over the graph before Assimp expands it: refused within
+// seconds, not after the child process built a million nodes.
+TEST_F(ModelFile, GltfNodeGraphIsCountedBeforeAssimpExpandsIt) {
+  GltfBuffers b;
+  write("tri.bin", b.bin);
+  write("wood.png", "x");
+  auto withNodes = [&](const std::string& nodes) {
+    std::string json = gltfJson(b, "tri.bin", "wood.png", 0);
+    const size_t from = json.find("\"nodes\": [{\"name\": \"root\"");
+    const size_t to = json.find("\"meshes\"");
+    json.replace(from, to - from, "\"nodes\": [" + nodes + "],\n  ");
+    return json;
+  };
+  std::string doubling;
+  for (int k = 0; k < 20; ++k)
+    doubling += "{\"children\": [" + std::to_string(k + 1) + ", " + std::to_string(k + 1) + "]}, ";
+  doubling += "{\"mesh\": 0}";
+  const auto t0 = std::chrono::steady_clock::now();
+  expectError(write("doubling.gltf", withNodes(doubling)), "more than 1048576 nodes");
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 5.0);
+  // No Assimp child built the expansion (2^21 aiNodes of over 1 KB each):
+  // the largest child this process waited for stayed small.
+  rusage children{};
+  getrusage(RUSAGE_CHILDREN, &children);
+  EXPECT_LT(children.ru_maxrss, 512l << 10) << "KiB, the largest child's resident memory";
+  // The placed meshes and the depth, over the same kind of graph.
+  ModelLoadOptions o;
+  o.limits.max_nodes = 1 << 22;
+  expectError(write("doubling2.gltf", withNodes(doubling)), "1048576 placed meshes; the limit is 65536", o);
+  std::string chain;
+  for (int k = 0; k < 300; ++k) chain += "{\"children\": [" + std::to_string(k + 1) + "]}, ";
+  chain += "{\"mesh\": 0}";
+  expectError(write("chain.gltf", withNodes(chain)), "deeper than 256 levels");
+  // A cycle: node 1 names node 0, its parent.
+  expectError(write("cycle.gltf", withNodes(R"({"children": [1]}, {"children": [0], "mesh": 0})")),
+              "nodes[1].children names node 0, which is its own ancestor");
+  // Shared children within the limits still load: both placements.
+  const Model shared = loadModelFile(write("shared.gltf", withNodes(R"({"children": [1, 1]}, {"mesh": 0})")));
+  EXPECT_EQ(shared.primitives.size(), 2u);
 }
 
 // --- every other error class -------------------------------------------------
