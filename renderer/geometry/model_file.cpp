@@ -25,6 +25,7 @@
 
 #include "geometry/assimp_dump.h"
 #include "geometry/degenerate_triangles.h"
+#include "geometry/model_references.h"
 #include "geometry/transform.h"
 #include "process/run_process.h"
 #include "scene/json_reader.h"
@@ -112,26 +113,10 @@ class GuardedIO : public Assimp::DefaultIOSystem {
   // The file `name` names, when it may be read: inside the folder after
   // following symlinks, a regular file. Else nullopt and why.
   std::optional<fs::path> allowed(const std::string& name, std::string* why) const {
-    std::string fixed = name;
-    std::replace(fixed.begin(), fixed.end(), '\\', '/');
-    fs::path p(fixed);
-    if (p.is_relative()) p = folder_ / p;
-    std::error_code ec;
-    fs::path real = fs::weakly_canonical(p, ec);
-    if (ec) {
-      if (why) *why = name + ": " + ec.message();
-      return std::nullopt;
-    }
-    auto [end, _] = std::mismatch(folder_.begin(), folder_.end(), real.begin(), real.end());
-    if (end != folder_.end()) {
-      if (why) *why = name + ": resolves to " + real.string() + ", outside the model's folder " + folder_.string();
-      return std::nullopt;
-    }
-    if (!fs::is_regular_file(real, ec)) {
-      if (why) *why = name + ": " + (fs::exists(real, ec) ? "not a regular file" : "no such file");
-      return std::nullopt;
-    }
-    return real;
+    const ResolvedName r = resolveInsideFolder(folder_, name);
+    if (r.kind == NameResolution::RegularFile) return r.real;
+    if (why) *why = r.why;
+    return std::nullopt;
   }
 
  private:
