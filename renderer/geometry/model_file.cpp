@@ -645,6 +645,16 @@ std::optional<ModelTexture> baseColorTexture(const aiScene* scene, const aiMesh*
 // memory). A crash, a sanitizer report or a hang of the child is this
 // file's ModelFileError, naming what happened.
 
+// An allocation past ModelLimits::max_import_memory_bytes fails in the
+// child with std::bad_alloc: out of Assimp's ReadFile as its error string,
+// out of the rest of the child's work as its exception message.
+bool ranOutOfMemory(const std::string& message) { return message.find("bad_alloc") != std::string::npos; }
+ModelFileError outOfImportMemory(const std::string& file, const ModelLimits& lim) {
+  return ModelFileError(file + ": Assimp's child process ran out of the memory it may use reading it (" +
+                        std::to_string(lim.max_import_memory_bytes) +
+                        " bytes of address space, ModelLimits::max_import_memory_bytes)");
+}
+
 struct ChildRead {
   std::string error;
   std::vector<std::string> refusals;
@@ -712,11 +722,12 @@ ChildRead readInChildProcess(const fs::path& real, const ModelLimits& lim) {
   // be several times the files' bytes (an OBJ corner's indices become a
   // vertex of its own).
   const size_t max_output = size_t(16 * lim.max_total_bytes + (64ll << 20));
-  ForkedResult f = runForked(work, lim.max_import_seconds, max_output);
+  ForkedResult f = runForked(work, lim.max_import_seconds, max_output, size_t(lim.max_import_memory_bytes));
   if (!f.process.ok()) {
     std::string what = f.process.describe();
     const std::string summary = f.summary();
     if (!summary.empty()) what += ": " + summary;
+    if (ranOutOfMemory(summary)) throw outOfImportMemory(file, lim);
     if (f.process.timed_out)
       throw ModelFileError(file + ": Assimp did not finish reading it: its child process " + what +
                            " (ModelLimits::max_import_seconds)");
@@ -787,7 +798,7 @@ std::string readKey(const fs::path& real, const ModelLimits& l) {
   k << real.string() << '\n'
     << l.max_file_bytes << ' ' << l.max_total_bytes << ' ' << l.max_triangles << ' ' << l.max_vertices << ' '
     << l.max_primitives << ' ' << l.max_nodes << ' ' << l.max_node_depth << ' ' << l.max_texture_bytes << ' '
-    << l.max_import_seconds;
+    << l.max_import_seconds << ' ' << l.max_import_memory_bytes;
   return k.str();
 }
 
@@ -903,6 +914,7 @@ Model loadModelFile(const fs::path& file_in, const ModelLoadOptions& options) {
   if (!child.refusals.empty())
     throw ModelFileError(file + ": refers to a file that cannot be read: " + child.refusals.front());
   if (!child.error.empty()) {
+    if (ranOutOfMemory(child.error)) throw outOfImportMemory(file, lim);
     if (child.error.find("No meshes remaining") != std::string::npos)  // aiProcess_SortByPType removed them all
       throw ModelFileError(file + ": no triangles (the file has only points or lines)");
     throw ModelFileError(file + ": cannot read: " + child.error);

@@ -74,6 +74,7 @@ struct ModelLimits {
   int max_node_depth = 256;                     // root = depth 0
   long long max_texture_bytes = 256ll << 20;    // one embedded image
   double max_import_seconds = 600.0;            // Assimp's read, in its child process (then killed)
+  long long max_import_memory_bytes = 8ll << 30;  // that child's address space (RLIMIT_AS; not in a sanitizer build)
 };
 
 // Which primitives must carry uvs (a texture on a mesh without uvs is an

@@ -270,6 +270,23 @@ TEST_F(ModelFile, AssimpHangIsTimedOut) {
   expectError(write("slow.obj", obj), "Assimp did not finish reading it: its child process timed out after 0.001 s", o);
 }
 
+TEST_F(ModelFile, AssimpChildMemoryIsCapped) {
+  // The child's address space capped at what it inherits plus 16 MiB: a
+  // model whose read needs more fails with the limit named, and loads
+  // under the default cap.
+  std::string obj;
+  for (int k = 0; k < 200000; ++k) obj += "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n";
+  const auto f = write("big.obj", obj);
+  EXPECT_EQ(loadModelFile(f).triangleCount(), 200000);
+  long long pages = 0;
+  std::ifstream("/proc/self/statm") >> pages;
+  ASSERT_GT(pages, 0);
+  ModelLoadOptions o;
+  o.limits.max_import_memory_bytes = pages * sysconf(_SC_PAGESIZE) + (16ll << 20);
+  o.limits.max_triangles += 1;  // another key: the read above is not reused
+  expectError(f, "Assimp's child process ran out of the memory it may use reading it", o);
+}
+
 // --- STL, OFF -------------------------------------------------------------
 
 TEST_F(ModelFile, StlCarriesFaceNormals) {
