@@ -330,6 +330,14 @@ std::string ForkedResult::summary() const {
   return last;
 }
 
+bool runForkedCapsMemory() {
+#ifdef XVAL_HAS_SANITIZER
+  return false;
+#else
+  return true;
+#endif
+}
+
 ForkedResult runForked(const std::function<std::string()>& work, double timeout_seconds,
                        size_t max_output_bytes, size_t max_memory_bytes) {
   ForkedResult f;

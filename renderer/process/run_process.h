@@ -68,6 +68,9 @@ struct ForkedResult {
 // in a sanitizer build, whose shadow memory reserves far more.
 ForkedResult runForked(const std::function<std::string()>& work, double timeout_seconds,
                        size_t max_output_bytes, size_t max_memory_bytes = 0);
+// Whether runForked sets `max_memory_bytes` in this build (false in a
+// sanitizer build).
+bool runForkedCapsMemory();
 
 // SIGINT, SIGTERM and SIGHUP (unless SIGHUP was ignored, as under nohup)
 // are taken by a thread of their own: on the first one, every process
