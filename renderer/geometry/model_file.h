@@ -42,10 +42,13 @@
 // bound is allocated where the count is known first: the file sizes before
 // Assimp reads them (every file it opens goes through a guarded IO system),
 // a PLY header's element counts against the file's size before Assimp
-// reserves for them, and Assimp's reported counts before the mesh arrays
-// are filled. Files the model refers to (OBJ's mtl and textures, glTF
+// reserves for them, a glTF node graph's nodes, placed meshes, triangles
+// and depth counted per path (without expanding the paths) before Assimp
+// copies a node once per path, and Assimp's reported counts before the
+// mesh arrays are filled. Files the model refers to (OBJ's mtl and textures, glTF
 // buffers and images) must resolve to regular files inside the model's
-// folder (after following symlinks; a backslash is taken as a separator).
+// folder (after following symlinks; a backslash is taken as a separator:
+// the rule of geometry/model_references.h).
 #pragma once
 
 #include <cstdint>
