@@ -10,6 +10,7 @@
 #include "camera/camera.h"
 #include "files/atomic_write.h"
 #include "geometry/model_file.h"
+#include "geometry/model_references.h"
 #include "geometry/transform.h"
 #include "image/image.h"
 #include "process/run_process.h"
@@ -72,7 +73,10 @@ nlohmann::json jobOf(const Scene& scene, const std::filesystem::path& out) {
   for (size_t k = 0; k < scene.objects.size(); ++k) {
     const auto& mf = std::get<MeshFile>(scene.objects[k].shape);
     const std::string fmt = importerFormat(mf.model->format);
-    j["objects"].push_back({{"path", std::filesystem::absolute(mf.path).string()},
+    // The file the loader read (canonical): Blender resolves the names in
+    // it against this file's folder, as the loader and the check of
+    // checkModelImportScene do, not against a symlink's.
+    j["objects"].push_back({{"path", mf.model->file.string()},
                             {"format", fmt},
                             {"matrix", placement(scene.objects[k].transform, fmt == "gltf")},
                             {"pass_index", k + 1}});
@@ -130,7 +134,14 @@ void checkModelImportScene(const Scene& scene) {
     if (importerFormat(mf->model->format).empty())
       throw ExportError(what + ": " + mf->path.string() + ": format '" + mf->model->format +
                         "': Blender 3.4 has no importer for it (it imports OBJ, PLY, STL, glTF and GLB)");
-    requireNoBackslash(std::filesystem::absolute(mf->path), what + ".path");
+    requireNoBackslash(mf->model->file, what + ".path");
+    // Blender's importers open every file the model names, not only those
+    // our loader opens (a glTF's normal map, an OBJ material's bump map):
+    // each must pass the loader's rule for files inside the model's folder
+    // (geometry/model_references.h) before Blender is started on it.
+    if (const std::string refused = refusedModelReference(mf->model->file); !refused.empty())
+      throw ExportError(what + ": " + refused + " (Blender's importer would open it; the check reads only files "
+                        "inside the model's folder)");
   }
 }
 

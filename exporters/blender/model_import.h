@@ -39,7 +39,10 @@ std::filesystem::path modelImportScript();
 
 // Throws ExportError, naming the object and why, unless every object is a
 // model file of a format Blender 3.4 imports (OBJ, PLY, STL, glTF, GLB;
-// not OFF: Blender has no OFF importer) at a path Blender reads as it is.
+// not OFF: Blender has no OFF importer) at a path Blender reads as it is,
+// naming no file the loader's rule refuses (geometry/model_references.h:
+// an absolute path, a ".." out of the model's folder, a URL, a FIFO, in
+// any field Blender's importer reads), so Blender never opens one.
 void checkModelImportScene(const Scene& scene);
 
 // Blender's passes of the scene (see above), at the camera's resolution.

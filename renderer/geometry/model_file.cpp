@@ -25,6 +25,7 @@
 
 #include "geometry/assimp_dump.h"
 #include "geometry/degenerate_triangles.h"
+#include "geometry/model_references.h"
 #include "geometry/transform.h"
 #include "process/run_process.h"
 #include "scene/json_reader.h"
@@ -112,26 +113,10 @@ class GuardedIO : public Assimp::DefaultIOSystem {
   // The file `name` names, when it may be read: inside the folder after
   // following symlinks, a regular file. Else nullopt and why.
   std::optional<fs::path> allowed(const std::string& name, std::string* why) const {
-    std::string fixed = name;
-    std::replace(fixed.begin(), fixed.end(), '\\', '/');
-    fs::path p(fixed);
-    if (p.is_relative()) p = folder_ / p;
-    std::error_code ec;
-    fs::path real = fs::weakly_canonical(p, ec);
-    if (ec) {
-      if (why) *why = name + ": " + ec.message();
-      return std::nullopt;
-    }
-    auto [end, _] = std::mismatch(folder_.begin(), folder_.end(), real.begin(), real.end());
-    if (end != folder_.end()) {
-      if (why) *why = name + ": resolves to " + real.string() + ", outside the model's folder " + folder_.string();
-      return std::nullopt;
-    }
-    if (!fs::is_regular_file(real, ec)) {
-      if (why) *why = name + ": " + (fs::exists(real, ec) ? "not a regular file" : "no such file");
-      return std::nullopt;
-    }
-    return real;
+    const ResolvedName r = resolveInsideFolder(folder_, name);
+    if (r.kind == NameResolution::RegularFile) return r.real;
+    if (why) *why = r.why;
+    return std::nullopt;
   }
 
  private:
@@ -269,6 +254,131 @@ void checkOffHeader(const fs::path& file, long long file_size, const ModelLimits
                          std::to_string(file_size) + " bytes the file has");
 }
 
+// A count that stops growing at kSaturated: the counts over a node graph
+// grow as 2^depth when nodes share children.
+constexpr long long kSaturated = 1ll << 62;
+long long satAdd(long long a, long long b) { return a >= kSaturated - b ? kSaturated : a + b; }
+std::string countText(long long n) { return n >= kSaturated ? "more than 2^62" : std::to_string(n); }
+
+// The limits on what the nodes place, with the one message each, whether
+// counted over the glTF node graph before Assimp reads it or over the
+// scene Assimp built.
+void requirePlacedWithinLimits(const std::string& file, long long prims, long long tris, const ModelLimits& lim) {
+  if (prims > lim.max_primitives)
+    throw ModelFileError(file + ": " + countText(prims) + " placed meshes; the limit is " +
+                         std::to_string(lim.max_primitives));
+  if (tris > lim.max_triangles)
+    throw ModelFileError(file + ": " + countText(tris) + " triangles (with every node's meshes); the limit is " +
+                         std::to_string(lim.max_triangles));
+}
+ModelFileError tooManyNodes(const std::string& file, const ModelLimits& lim) {
+  return ModelFileError(file + ": more than " + std::to_string(lim.max_nodes) + " nodes");
+}
+ModelFileError tooDeep(const std::string& file, const std::string& node, const ModelLimits& lim) {
+  return ModelFileError(file + ": node '" + node + "': deeper than " + std::to_string(lim.max_node_depth) + " levels");
+}
+
+// The glTF node graph counted before Assimp expands it: Assimp copies a
+// node once per path that reaches it, so 21 nodes that each name the next
+// twice as a child are 2^20 copies of the last one (and its mesh), built
+// in the child process before any limit of the expanded scene is checked.
+// Over nodes[].children, from the roots of the scene with the most (every
+// scene in scenes[]; without scenes, every node no other node names), by
+// memoised sums (saturating, kSaturated): the nodes visited, the meshes
+// placed (one per triangle primitive of a node's mesh) and their
+// triangles, and the deepest level (Assimp adds a root above two or more
+// root nodes). A cycle is refused (a node would be its own ancestor, and
+// the glTF spec requires the nodes to form trees). A child index out of
+// range is left to Assimp, which refuses it.
+void checkGltfNodeGraph(const fs::path& file, const nlohmann::json& j, const std::vector<long long>& mesh_triangles,
+                        const std::vector<long long>& mesh_placed, const ModelLimits& limits) {
+  const std::string name = file.string();
+  if (!j.contains("nodes") || !j["nodes"].is_array()) return;
+  const nlohmann::json& nodes = j["nodes"];
+  const size_t n = nodes.size();
+  auto childrenOf = [&](size_t k) {
+    std::vector<size_t> c;
+    const auto& node = nodes[k];
+    if (node.is_object() && node.contains("children") && node["children"].is_array())
+      for (const auto& i : node["children"])
+        if (i.is_number_unsigned() && i.get<unsigned long long>() < n) c.push_back(size_t(i.get<unsigned long long>()));
+    return c;
+  };
+  struct Sums { long long nodes = 0, placed = 0, triangles = 0, height = 0; };
+  std::vector<Sums> sums(n);
+  std::vector<char> state(n, 0);  // 0 new, 1 on the path, 2 done
+  for (size_t start = 0; start < n; ++start) {
+    if (state[start]) continue;
+    struct Frame { size_t node; std::vector<size_t> children; size_t next = 0; };
+    std::vector<Frame> path;
+    path.push_back({start, childrenOf(start)});
+    state[start] = 1;
+    while (!path.empty()) {
+      Frame& f = path.back();
+      if (f.next < f.children.size()) {
+        const size_t c = f.children[f.next++];
+        if (state[c] == 1)
+          throw ModelFileError(name + ": nodes[" + std::to_string(f.node) + "].children names node " +
+                               std::to_string(c) + ", which is its own ancestor (a cycle: glTF nodes form trees)");
+        if (state[c] == 0) {
+          state[c] = 1;
+          path.push_back({c, childrenOf(c)});
+        }
+        continue;
+      }
+      Sums s;
+      s.nodes = 1;
+      const auto& node = nodes[f.node];
+      if (node.is_object() && node.contains("mesh") && node["mesh"].is_number_unsigned() &&
+          node["mesh"].get<unsigned long long>() < mesh_placed.size()) {
+        const size_t m = size_t(node["mesh"].get<unsigned long long>());
+        s.placed = mesh_placed[m], s.triangles = mesh_triangles[m];
+      }
+      for (size_t c : f.children) {
+        s.nodes = satAdd(s.nodes, sums[c].nodes);
+        s.placed = satAdd(s.placed, sums[c].placed);
+        s.triangles = satAdd(s.triangles, sums[c].triangles);
+        s.height = std::max(s.height, sums[c].height + 1);
+      }
+      sums[f.node] = s;
+      state[f.node] = 2;
+      path.pop_back();
+    }
+  }
+  // The roots of each scene (the whole list: Assimp reads one scene).
+  std::vector<std::vector<size_t>> scenes;
+  if (j.contains("scenes") && j["scenes"].is_array())
+    for (const auto& sc : j["scenes"]) {
+      scenes.emplace_back();
+      if (sc.is_object() && sc.contains("nodes") && sc["nodes"].is_array())
+        for (const auto& i : sc["nodes"])
+          if (i.is_number_unsigned() && i.get<unsigned long long>() < n)
+            scenes.back().push_back(size_t(i.get<unsigned long long>()));
+    }
+  if (scenes.empty()) {
+    std::vector<char> named(n, 0);
+    for (size_t k = 0; k < n; ++k)
+      for (size_t c : childrenOf(k)) named[c] = 1;
+    scenes.emplace_back();
+    for (size_t k = 0; k < n; ++k)
+      if (!named[k]) scenes.back().push_back(k);
+  }
+  for (const auto& roots : scenes) {
+    Sums all;
+    const long long above = roots.size() > 1 ? 1 : 0;  // Assimp's added root
+    all.nodes = above;
+    for (size_t r : roots) {
+      all.nodes = satAdd(all.nodes, sums[r].nodes);
+      all.placed = satAdd(all.placed, sums[r].placed);
+      all.triangles = satAdd(all.triangles, sums[r].triangles);
+      if (sums[r].height + above > limits.max_node_depth)
+        throw tooDeep(name, "nodes[" + std::to_string(r) + "] (a root)", limits);
+    }
+    if (all.nodes > limits.max_nodes) throw tooManyNodes(name, limits);
+    requirePlacedWithinLimits(name, all.placed, all.triangles, limits);
+  }
+}
+
 // glTF JSON: checks every buffer's declared byteLength (Assimp allocates it
 // before reading). Returns the triangles the file's primitives declare (mode 4: count / 3,
 // strips and fans 5, 6: count - 2, of the indices accessor or else of
@@ -322,7 +432,7 @@ long long checkGltfJson(const fs::path& file, const std::string& text, long long
       throw ModelFileError(at + ".byteLength: " + std::to_string(len) + " exceeds " + what + " (" +
                            std::to_string(have) + " bytes)");
   }
-  long long declared = 0;
+  std::vector<long long> mesh_triangles, mesh_placed;  // per glTF mesh
   const auto count = [&](const nlohmann::json& index) -> long long {
     if (!index.is_number_unsigned() || !j.contains("accessors") || !j["accessors"].is_array()) return 0;
     const auto a = index.get<unsigned long long>();
@@ -334,6 +444,7 @@ long long checkGltfJson(const fs::path& file, const std::string& text, long long
   };
   if (j.contains("meshes") && j["meshes"].is_array())
     for (const auto& mesh : j["meshes"]) {
+      mesh_triangles.push_back(0), mesh_placed.push_back(0);
       if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
       for (const auto& prim : mesh["primitives"]) {
         if (!prim.is_object()) continue;
@@ -343,9 +454,13 @@ long long checkGltfJson(const fs::path& file, const std::string& text, long long
                               prim["attributes"].contains("POSITION")
                           ? count(prim["attributes"]["POSITION"])
                           : 0;
-        declared += mode == 4 ? n / 3 : mode == 5 || mode == 6 ? std::max(0ll, n - 2) : 0;
+        mesh_triangles.back() += mode == 4 ? n / 3 : mode == 5 || mode == 6 ? std::max(0ll, n - 2) : 0;
+        mesh_placed.back() += mode == 4 || mode == 5 || mode == 6;  // Assimp: one aiMesh per primitive
       }
     }
+  checkGltfNodeGraph(file, j, mesh_triangles, mesh_placed, limits);
+  long long declared = 0;
+  for (long long t : mesh_triangles) declared += t;
   return declared;
 }
 
@@ -432,11 +547,8 @@ std::vector<Placed> placeNodes(const aiScene* scene, const std::string& file, co
   while (!stack.empty()) {
     Item it = std::move(stack.back());
     stack.pop_back();
-    if ((long long)out.size() >= limits.max_nodes)
-      throw ModelFileError(file + ": more than " + std::to_string(limits.max_nodes) + " nodes");
-    if (it.depth > limits.max_node_depth)
-      throw ModelFileError(file + ": node '" + nodeName(it.node) + "': deeper than " +
-                           std::to_string(limits.max_node_depth) + " levels");
+    if ((long long)out.size() >= limits.max_nodes) throw tooManyNodes(file, limits);
+    if (it.depth > limits.max_node_depth) throw tooDeep(file, nodeName(it.node), limits);
     const std::string path = it.parent_path.empty() ? nodeName(it.node) : it.parent_path + "/" + nodeName(it.node);
     const aiMatrix4x4& m = it.node->mTransformation;
     const float all[16] = {m.a1, m.a2, m.a3, m.a4, m.b1, m.b2, m.b3, m.b4,
@@ -533,6 +645,16 @@ std::optional<ModelTexture> baseColorTexture(const aiScene* scene, const aiMesh*
 // memory). A crash, a sanitizer report or a hang of the child is this
 // file's ModelFileError, naming what happened.
 
+// An allocation past ModelLimits::max_import_memory_bytes fails in the
+// child with std::bad_alloc: out of Assimp's ReadFile as its error string,
+// out of the rest of the child's work as its exception message.
+bool ranOutOfMemory(const std::string& message) { return message.find("bad_alloc") != std::string::npos; }
+ModelFileError outOfImportMemory(const std::string& file, const ModelLimits& lim) {
+  return ModelFileError(file + ": Assimp's child process ran out of the memory it may use reading it (" +
+                        std::to_string(lim.max_import_memory_bytes) +
+                        " bytes of address space, ModelLimits::max_import_memory_bytes)");
+}
+
 struct ChildRead {
   std::string error;
   std::vector<std::string> refusals;
@@ -600,11 +722,12 @@ ChildRead readInChildProcess(const fs::path& real, const ModelLimits& lim) {
   // be several times the files' bytes (an OBJ corner's indices become a
   // vertex of its own).
   const size_t max_output = size_t(16 * lim.max_total_bytes + (64ll << 20));
-  ForkedResult f = runForked(work, lim.max_import_seconds, max_output);
+  ForkedResult f = runForked(work, lim.max_import_seconds, max_output, size_t(lim.max_import_memory_bytes));
   if (!f.process.ok()) {
     std::string what = f.process.describe();
     const std::string summary = f.summary();
     if (!summary.empty()) what += ": " + summary;
+    if (ranOutOfMemory(summary)) throw outOfImportMemory(file, lim);
     if (f.process.timed_out)
       throw ModelFileError(file + ": Assimp did not finish reading it: its child process " + what +
                            " (ModelLimits::max_import_seconds)");
@@ -675,7 +798,7 @@ std::string readKey(const fs::path& real, const ModelLimits& l) {
   k << real.string() << '\n'
     << l.max_file_bytes << ' ' << l.max_total_bytes << ' ' << l.max_triangles << ' ' << l.max_vertices << ' '
     << l.max_primitives << ' ' << l.max_nodes << ' ' << l.max_node_depth << ' ' << l.max_texture_bytes << ' '
-    << l.max_import_seconds;
+    << l.max_import_seconds << ' ' << l.max_import_memory_bytes;
   return k.str();
 }
 
@@ -791,6 +914,7 @@ Model loadModelFile(const fs::path& file_in, const ModelLoadOptions& options) {
   if (!child.refusals.empty())
     throw ModelFileError(file + ": refers to a file that cannot be read: " + child.refusals.front());
   if (!child.error.empty()) {
+    if (ranOutOfMemory(child.error)) throw outOfImportMemory(file, lim);
     if (child.error.find("No meshes remaining") != std::string::npos)  // aiProcess_SortByPType removed them all
       throw ModelFileError(file + ": no triangles (the file has only points or lines)");
     throw ModelFileError(file + ": cannot read: " + child.error);
@@ -832,12 +956,7 @@ Model loadModelFile(const fs::path& file_in, const ModelLoadOptions& options) {
       tris += m->mNumFaces, verts += m->mNumVertices, ++prims;
     }
   }
-  if (prims > lim.max_primitives)
-    throw ModelFileError(file + ": " + std::to_string(prims) + " placed meshes; the limit is " +
-                         std::to_string(lim.max_primitives));
-  if (tris > lim.max_triangles)
-    throw ModelFileError(file + ": " + std::to_string(tris) + " triangles (with every node's meshes); the limit is " +
-                         std::to_string(lim.max_triangles));
+  requirePlacedWithinLimits(file, prims, tris, lim);
   if (verts > lim.max_vertices)
     throw ModelFileError(file + ": " + std::to_string(verts) + " vertices (with every node's meshes); the limit is " +
                          std::to_string(lim.max_vertices));

@@ -42,10 +42,13 @@
 // bound is allocated where the count is known first: the file sizes before
 // Assimp reads them (every file it opens goes through a guarded IO system),
 // a PLY header's element counts against the file's size before Assimp
-// reserves for them, and Assimp's reported counts before the mesh arrays
-// are filled. Files the model refers to (OBJ's mtl and textures, glTF
+// reserves for them, a glTF node graph's nodes, placed meshes, triangles
+// and depth counted per path (without expanding the paths) before Assimp
+// copies a node once per path, and Assimp's reported counts before the
+// mesh arrays are filled. Files the model refers to (OBJ's mtl and textures, glTF
 // buffers and images) must resolve to regular files inside the model's
-// folder (after following symlinks; a backslash is taken as a separator).
+// folder (after following symlinks; a backslash is taken as a separator:
+// the rule of geometry/model_references.h).
 #pragma once
 
 #include <cstdint>
@@ -74,6 +77,7 @@ struct ModelLimits {
   int max_node_depth = 256;                     // root = depth 0
   long long max_texture_bytes = 256ll << 20;    // one embedded image
   double max_import_seconds = 600.0;            // Assimp's read, in its child process (then killed)
+  long long max_import_memory_bytes = 8ll << 30;  // that child's address space (RLIMIT_AS; not in a sanitizer build)
 };
 
 // Which primitives must carry uvs (a texture on a mesh without uvs is an

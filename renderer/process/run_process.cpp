@@ -5,6 +5,7 @@
 #include <spawn.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -267,8 +268,21 @@ std::string readBack(int fd, off_t from, size_t cap) {
   return s;
 }
 
-[[noreturn]] void childMain(const std::function<std::string()>& work, int out_fd, int err_fd) {
+[[noreturn]] void childMain(const std::function<std::string()>& work, int out_fd, int err_fd,
+                            size_t max_memory_bytes) {
   setpgid(0, 0);
+#ifndef XVAL_HAS_SANITIZER
+  if (max_memory_bytes > 0) {
+    const rlimit cap{rlim_t(max_memory_bytes), rlim_t(max_memory_bytes)};
+    if (setrlimit(RLIMIT_AS, &cap) != 0) {
+      const std::string m = std::string("setrlimit(RLIMIT_AS): ") + std::strerror(errno) + "\n";
+      writeAll(2, m.data(), m.size());
+      _exit(70);
+    }
+  }
+#else
+  (void)max_memory_bytes;
+#endif
   sigset_t none;
   sigemptyset(&none);
   sigprocmask(SIG_SETMASK, &none, nullptr);
@@ -316,8 +330,16 @@ std::string ForkedResult::summary() const {
   return last;
 }
 
+bool runForkedCapsMemory() {
+#ifdef XVAL_HAS_SANITIZER
+  return false;
+#else
+  return true;
+#endif
+}
+
 ForkedResult runForked(const std::function<std::string()>& work, double timeout_seconds,
-                       size_t max_output_bytes) {
+                       size_t max_output_bytes, size_t max_memory_bytes) {
   ForkedResult f;
   ProcessResult& r = f.process;
   r.timeout_seconds = timeout_seconds;
@@ -341,7 +363,7 @@ ForkedResult runForked(const std::function<std::string()>& work, double timeout_
       fork_errno = EINTR;
     } else {
       pid = fork();
-      if (pid == 0) childMain(work, out_fd, err_fd);
+      if (pid == 0) childMain(work, out_fd, err_fd, max_memory_bytes);
       if (pid < 0) fork_errno = errno;
       else g_children.insert(pid);
     }

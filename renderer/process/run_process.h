@@ -62,8 +62,15 @@ struct ForkedResult {
   std::string summary() const;
 };
 // `max_output_bytes`: a larger output is an error (exit code 71), not read.
+// `max_memory_bytes` (0: none): the child's whole address space, the part
+// it inherits included (RLIMIT_AS), so an allocation past it fails in the
+// child (std::bad_alloc) instead of taking the machine's memory; not set
+// in a sanitizer build, whose shadow memory reserves far more.
 ForkedResult runForked(const std::function<std::string()>& work, double timeout_seconds,
-                       size_t max_output_bytes);
+                       size_t max_output_bytes, size_t max_memory_bytes = 0);
+// Whether runForked sets `max_memory_bytes` in this build (false in a
+// sanitizer build).
+bool runForkedCapsMemory();
 
 // SIGINT, SIGTERM and SIGHUP (unless SIGHUP was ignored, as under nohup)
 // are taken by a thread of their own: on the first one, every process

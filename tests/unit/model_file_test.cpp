@@ -4,8 +4,10 @@
 // and each class of error naming the file and the element.
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -15,6 +17,7 @@
 #include <vector>
 
 #include "geometry/model_file.h"
+#include "process/run_process.h"
 
 namespace xval {
 namespace {
@@ -268,6 +271,24 @@ TEST_F(ModelFile, AssimpHangIsTimedOut) {
   expectError(write("slow.obj", obj), "Assimp did not finish reading it: its child process timed out after 0.001 s", o);
 }
 
+TEST_F(ModelFile, AssimpChildMemoryIsCapped) {
+  // The child's address space capped at what it inherits plus 16 MiB: a
+  // model whose read needs more fails with the limit named, and loads
+  // under the default cap.
+  if (!runForkedCapsMemory()) GTEST_SKIP() << "a sanitizer build sets no memory cap (process/run_process.h)";
+  std::string obj;
+  for (int k = 0; k < 200000; ++k) obj += "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n";
+  const auto f = write("big.obj", obj);
+  EXPECT_EQ(loadModelFile(f).triangleCount(), 200000);
+  long long pages = 0;
+  std::ifstream("/proc/self/statm") >> pages;
+  ASSERT_GT(pages, 0);
+  ModelLoadOptions o;
+  o.limits.max_import_memory_bytes = pages * sysconf(_SC_PAGESIZE) + (16ll << 20);
+  o.limits.max_triangles += 1;  // another key: the read above is not reused
+  expectError(f, "Assimp's child process ran out of the memory it may use reading it", o);
+}
+
 // --- STL, OFF -------------------------------------------------------------
 
 TEST_F(ModelFile, StlCarriesFaceNormals) {
@@ -478,6 +499,55 @@ TEST_F(ModelFile, GltfIndexOutOfRangeAndDeepJson) {
   expectError(write("dropped.gltf", json), "declare 2 triangles, Assimp read 1");
   expectError(write("deep.gltf", std::string(100000, '[') + std::string(100000, ']')), "nested deeper");
   expectError(write("v1.gltf", R"({"asset": {"version": "1.0"}, "buffers": {}})"), "asset.version: '1.0'");
+}
+
+// 21 nodes, each naming the next twice as a child, the last with the
+// triangle: 2^20 paths to one mesh in 1.5 KB of JSON (issue #34.9). The
+// limits hold over the graph before Assimp expands it: refused within
+// seconds, not after the child process built a million nodes.
+TEST_F(ModelFile, GltfNodeGraphIsCountedBeforeAssimpExpandsIt) {
+  GltfBuffers b;
+  write("tri.bin", b.bin);
+  write("wood.png", "x");
+  auto withNodes = [&](const std::string& nodes) {
+    std::string json = gltfJson(b, "tri.bin", "wood.png", 0);
+    const size_t from = json.find("\"nodes\": [{\"name\": \"root\"");
+    const size_t to = json.find("\"meshes\"");
+    json.replace(from, to - from, "\"nodes\": [" + nodes + "],\n  ");
+    return json;
+  };
+  std::string doubling;
+  for (int k = 0; k < 20; ++k)
+    doubling += "{\"children\": [" + std::to_string(k + 1) + ", " + std::to_string(k + 1) + "]}, ";
+  doubling += "{\"mesh\": 0}";
+  rusage before{};
+  getrusage(RUSAGE_SELF, &before);
+  const auto t0 = std::chrono::steady_clock::now();
+  expectError(write("doubling.gltf", withNodes(doubling)), "more than 1048576 nodes");
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 5.0);
+  // Neither an Assimp child nor this process built the expansion (2^21
+  // aiNodes of over 1 KB each): the largest resident memory of each stayed
+  // within 256 MiB of this process's before the read (a forked child's
+  // counts the pages it shares with its parent).
+  rusage children{}, self{};
+  getrusage(RUSAGE_CHILDREN, &children);
+  getrusage(RUSAGE_SELF, &self);
+  EXPECT_LT(children.ru_maxrss, before.ru_maxrss + (256l << 10)) << "KiB, the largest child's resident memory";
+  EXPECT_LT(self.ru_maxrss, before.ru_maxrss + (256l << 10)) << "KiB, this process's resident memory";
+  // The placed meshes and the depth, over the same kind of graph.
+  ModelLoadOptions o;
+  o.limits.max_nodes = 1 << 22;
+  expectError(write("doubling2.gltf", withNodes(doubling)), "1048576 placed meshes; the limit is 65536", o);
+  std::string chain;
+  for (int k = 0; k < 300; ++k) chain += "{\"children\": [" + std::to_string(k + 1) + "]}, ";
+  chain += "{\"mesh\": 0}";
+  expectError(write("chain.gltf", withNodes(chain)), "deeper than 256 levels");
+  // A cycle: node 1 names node 0, its parent.
+  expectError(write("cycle.gltf", withNodes(R"({"children": [1]}, {"children": [0], "mesh": 0})")),
+              "nodes[1].children names node 0, which is its own ancestor");
+  // Shared children within the limits still load: both placements.
+  const Model shared = loadModelFile(write("shared.gltf", withNodes(R"({"children": [1, 1]}, {"mesh": 0})")));
+  EXPECT_EQ(shared.primitives.size(), 2u);
 }
 
 // --- every other error class -------------------------------------------------
