@@ -1,6 +1,7 @@
 #include "validate/results_shape.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "validate/results_schema_text.h"  // generated from docs/results-schema.json (renderer/CMakeLists.txt)
@@ -58,7 +59,9 @@ bool hasType(const J& v, const std::string& type) {
   if (type == "array") return v.is_array();
   if (type == "string") return v.is_string();
   if (type == "number") return v.is_number();
-  if (type == "integer") return v.is_number_integer() || (v.is_number_float() && v.get<double>() == double(int64_t(v.get<double>())));
+  if (type == "integer")
+    return v.is_number_integer() || (v.is_number_float() && std::isfinite(v.get<double>()) &&
+                                     std::trunc(v.get<double>()) == v.get<double>());
   if (type == "boolean") return v.is_boolean();
   if (type == "null") return v.is_null();
   throw std::logic_error("results schema: unknown type " + type);
