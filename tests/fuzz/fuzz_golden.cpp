@@ -13,6 +13,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::filesystem::path& dir = xval::fuzz::scratchDir();
   const std::filesystem::path file = dir / "manifest.json";
   xval::fuzz::writeFile(file, data, size);
-  xval::fuzz::requireErrorNamingFile(file, [&] { (void)xval::readManifest(dir, "reference"); });
+  xval::fuzz::requireErrorNamingFile(file, [&] { (void)xval::golden::readManifest(dir, "reference"); });
   return 0;
 }
