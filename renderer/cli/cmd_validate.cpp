@@ -87,6 +87,7 @@
 #include "scene/json_reader.h"
 #include "scene/scene_loader.h"
 #include "validate/junit_report.h"
+#include "validate/results_shape.h"
 #include "common/export_common.h"
 #include "validate/tolerances.h"
 #include "validate/validation/compare_step.h"
@@ -106,6 +107,7 @@ int withJunit(const v::Plan& plan, int status, const std::string& junit) {
   if (junit.empty()) return status;
   const std::filesystem::path results = plan.dir / "results.json";
   const auto r = parseOrderedJsonText(readJsonFile(results, "results file"), results.string());
+  checkResultsShape(r, results.string());  // as the report reads it (validate/results_shape.h)
   writeFileAtomically(junit, junitXml(nlohmann::json(r), plan.dir.lexically_normal().filename().empty() ? std::string("xval validate") : plan.dir.lexically_normal().filename().string()));
   std::fprintf(stderr, "xval validate: wrote %s\n", junit.c_str());
   return status;

@@ -1,5 +1,7 @@
 #include "process/run_process.h"
 
+#include "files/utf8_text.h"
+
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
@@ -446,6 +448,11 @@ std::string tailOfFile(const std::filesystem::path& file, int lines) {
     text.resize(n > 0 ? size_t(n) : 0);
   }
   close(fd);
+  // A log is bytes and the cut may fall inside a character: the quote
+  // starts on a character boundary and holds valid UTF-8 only
+  // (files/utf8_text.h), as the records and results.json it goes into must.
+  if (cut) text.erase(0, utf8CharacterStart(text, 0));
+  text = validUtf8(text);
   // The last `lines` lines; the first is partial when the cut fell inside it.
   std::vector<std::string> all;
   size_t start = 0;

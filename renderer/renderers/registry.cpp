@@ -186,6 +186,15 @@ std::vector<RendererPair> unorderedPairs(size_t n) {
 std::string pairKey(const std::string& a, const std::string& b) { return a + "-" + b; }
 std::string pairKey(const Renderer& a, const Renderer& b) { return pairKey(a.id, b.id); }
 
+std::optional<PairKeyClash> pairKeyClash(const std::vector<std::string>& ids) {
+  std::map<std::string, RendererPair> seen;
+  for (const RendererPair& p : unorderedPairs(ids.size())) {
+    const auto [it, added] = seen.emplace(pairKey(ids[p.a], ids[p.b]), p);
+    if (!added) return PairKeyClash{it->second, p};
+  }
+  return std::nullopt;
+}
+
 namespace {
 // No majority: say which pairs fail. "POV-Ray and Blender disagree (the
 // other pairs agree)" for one failing pair; "no two renderers agree" when

@@ -21,6 +21,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -107,6 +108,15 @@ std::vector<RendererPair> unorderedPairs(size_t n);
 // (the ids of its renderers, a before b in registry order, joined by '-').
 std::string pairKey(const std::string& a, const std::string& b);
 std::string pairKey(const Renderer& a, const Renderer& b);
+// Ids contain '-' too (blender-import, a user's mutant-shininess), so two
+// pairs of `ids` may join to one key: reference + m-n and reference-m + n
+// are both "reference-m-n" (one heat map, one JUnit test for two pairs).
+// The first such clash among the pairs of `ids` (unorderedPairs order), as
+// its two pairs; none when every key is distinct.
+struct PairKeyClash {
+  RendererPair first, second;
+};
+std::optional<PairKeyClash> pairKeyClash(const std::vector<std::string>& ids);
 
 // Who deviates, from the pairwise verdicts of `renderers` (verdicts[k] for
 // unorderedPairs(renderers.size())[k]: 1 pass, 0 fail, -1 not compared).

@@ -211,6 +211,27 @@ void registerRendererFiles(const std::vector<std::string>& files) {
     }
   }
   addGoldenSets(reg);
+  // Pair names are the renderers' ids joined by '-', which ids contain
+  // too: names whose pairs would share a name (m-n beside reference-m and
+  // n) are refused, naming the files that define them.
+  const std::vector<std::string> ids = reg.ids();
+  if (const std::optional<PairKeyClash> clash = pairKeyClash(ids)) {
+    std::vector<std::string> defined;  // "FILE: name \"ID\"" of each renderer file involved
+    for (size_t i : {clash->first.a, clash->first.b, clash->second.a, clash->second.b}) {
+      const Renderer* r = &reg.at(ids[i]);
+      if (!r->images_of.empty()) r = &reg.at(r->images_of);  // a golden set: its renderer's file
+      const std::string d = r->definition_file.string() + ": name \"" + r->id + "\"";
+      if (!r->definition_file.empty() && std::find(defined.begin(), defined.end(), d) == defined.end())
+        defined.push_back(d);
+    }
+    std::string files;
+    for (const std::string& d : defined) files += (files.empty() ? "" : ", ") + d;
+    auto named = [&ids](const RendererPair& p) { return ids[p.a] + " + " + ids[p.b]; };
+    throw std::runtime_error(files + ": the pairs " + named(clash->first) + " and " + named(clash->second) +
+                             " would both be named \"" + pairKey(ids[clash->first.a], ids[clash->first.b]) +
+                             "\" (pair names join the renderers' names with '-'; results.json, the heat maps "
+                             "and JUnit name each pair once): rename one of these renderers");
+  }
 }
 
 }  // namespace xval::renderers

@@ -26,6 +26,7 @@
 #include "validate/common/number_text.h"
 #include "validate/extremes/report_section.h"
 #include "validate/report_pixels.h"
+#include "validate/results_shape.h"
 #include "validate/tolerances.h"
 #include "validate/tradeoff/report_section.h"
 #include "validate/validation/case_verdict.h"
@@ -437,8 +438,10 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
                  const ReportSections& sections) {
   // Read as scene files are: a key given twice is refused.
   const J r = parseOrderedJsonText(readJsonFile(results_json, "results file"), results_json.string());
-  if (r.value("format", "") != "xval-results/1")
-    throw std::runtime_error(results_json.string() + ": format: expected \"xval-results/1\"");
+  // Every field read below is one the schema allows where it is read
+  // (validate/results_shape.h): anything else is an error naming the file
+  // and the field before a line of the report is written.
+  checkResultsShape(r, results_json.string());
   const std::filesystem::path dir = results_json.parent_path().empty() ? "." : results_json.parent_path();
   const fs::path html_dir = html.parent_path().empty() ? "." : html.parent_path();
   J cases = r["cases"];

@@ -12,6 +12,9 @@
 #   wrong-size       a (WIDTH+1) x HEIGHT image
 #   two-channels     a 2-channel image
 #   nan              an RGBA image whose red channel is NaN
+#   bad-bytes        prints bytes that are no UTF-8 (0xFF 0xFE) after 3000
+#                    euro signs (3 bytes each), so that the log's quoted
+#                    4 KiB tail starts inside one, and exits 3
 set -eu
 if [ "${1:-}" = "--version" ]; then echo "standin 1.0"; exit 0; fi
 mode=$1 scene=$2 output=$3 width=$4 height=$5
@@ -26,5 +29,7 @@ case "$mode" in
   wrong-size) exec oiiotool --create "$((width + 1))x$height" 4 -d float -o "$output" ;;
   two-channels) exec oiiotool --create "${width}x$height" 2 -d float -o "$output" ;;
   nan) exec oiiotool --pattern constant:color=nan,0,0,1 "${width}x$height" 4 -d float -o "$output" ;;
+  bad-bytes) i=0; while [ $i -lt 3000 ]; do printf '\342\202\254'; i=$((i + 1)); done
+             printf '\n\377\376 end\n'; exit 3 ;;
   *) echo "standin: unknown mode $mode"; exit 2 ;;
 esac

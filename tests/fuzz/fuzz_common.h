@@ -10,7 +10,10 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 namespace xval::fuzz {
 
@@ -40,6 +43,25 @@ inline void writeFile(const std::filesystem::path& file, const uint8_t* data, si
   if (!f || std::fwrite(data, 1, size, f) != size || std::fclose(f) != 0) {
     std::perror(file.c_str());
     std::abort();
+  }
+}
+
+// Runs `read` on `file`: a reader that refuses an input throws a
+// std::runtime_error naming the file. Aborts (a finding) on a JSON
+// library's exception (a message without the file and field) or an error
+// that does not name the file.
+template <class Read>
+void requireErrorNamingFile(const std::filesystem::path& file, Read read) {
+  try {
+    read();
+  } catch (const nlohmann::json::exception& e) {
+    std::fprintf(stderr, "a library exception: %s\n", e.what());
+    std::abort();
+  } catch (const std::runtime_error& e) {
+    if (std::string(e.what()).find(file.string()) == std::string::npos) {
+      std::fprintf(stderr, "an error not naming %s: %s\n", file.c_str(), e.what());
+      std::abort();
+    }
   }
 }
 

@@ -195,3 +195,18 @@ TEST(MeantFor, AGoldenSetStandsInForTheRendererItStores) {
   EXPECT_TRUE(meantFor({}, registry().at("golden-povray")));  // no field: every renderer
   EXPECT_FALSE(meantFor(limited, stub("golden-like", "not a golden set")));
 }
+
+// Pair ids join the renderers' ids with '-', which ids contain: two pairs
+// that would share an id are found (issue #34.11).
+TEST(Registry, PairKeyClashIsFound) {
+  using xval::renderers::pairKeyClash;
+  EXPECT_FALSE(pairKeyClash({"reference", "m-n", "n", "reference-m"}).has_value());
+  const auto clash = pairKeyClash({"reference", "m-z", "reference-m", "z"});
+  ASSERT_TRUE(clash.has_value());
+  EXPECT_EQ(clash->first.a, 0u);   // reference
+  EXPECT_EQ(clash->first.b, 1u);   // + m-z
+  EXPECT_EQ(clash->second.a, 2u);  // reference-m
+  EXPECT_EQ(clash->second.b, 3u);  // + z
+  // The built-in renderers and their golden sets: no clash.
+  EXPECT_FALSE(pairKeyClash(registry().ids()).has_value());
+}

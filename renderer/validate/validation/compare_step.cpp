@@ -46,6 +46,7 @@ using J = nlohmann::ordered_json;
 
 // One renderer's render of a case: its image, or why there is none.
 struct Render {
+  fs::path file;  // the EXR the image was read from
   JobRecord rec;
   Image image;
   std::string error;
@@ -68,6 +69,7 @@ struct CompareContext {
 // (none when the renderer declared the scene not expressible).
 Render loadRender(const Plan& plan, const RenderJob& job, ImageHandoff* images) {
   Render r;
+  r.file = plan.dir / job.exr();
   r.rec = readRecord(plan, job);
   if (!r.rec.present) {
     r.error = "not rendered: " + r.rec.problem;
@@ -103,8 +105,14 @@ J renderJson(const RenderJob& job, const Render& r) {
 
 // Pair verdicts (renderers::attribute's: -1 not compared for a failed
 // render; and -2 for a pair that one of its renderers cannot express: not
-// compared, and no error).
-constexpr int kPass = 1, kFail = 0, kRenderError = -1, kNotExpressible = -2;
+// compared, and no error). -3: both renders are there but cannot be
+// compared (images of different sizes: one was replaced after its record
+// said ok), an error of the case that compareCase passes on to
+// renderers::attribute as not compared.
+constexpr int kPass = 1, kFail = 0, kRenderError = -1, kNotExpressible = -2, kCompareError = -3;
+
+void comparedPair(const CompareContext& cx, const Scene& scene, const std::string& key, const Tolerance& tol,
+                  const std::string& reason, Render& A, Render& B, Renders& renders, J& jp);
 
 // One pair of one case: compared with its tolerance, its difference EXR
 // and heat map written.
@@ -147,6 +155,26 @@ J comparePair(const CompareContext& cx, const Scene& scene, const renderers::Ren
     A.image.texel_edge = diagnostics->texel_edge;
     A.image.triangle_edge = diagnostics->triangle_edge;
   }
+  try {
+    comparedPair(cx, scene, key, tol, reason, A, B, renders, jp);
+  } catch (const std::exception& e) {
+    // This pair's error, naming its files: the other pairs and cases are
+    // still compared and reported.
+    verdict = kCompareError;
+    jp = {{"pair", key},
+          {"error", "not compared: " + A.file.string() + " (" + std::to_string(A.image.width) + "x" +
+                        std::to_string(A.image.height) + ") and " + B.file.string() + " (" +
+                        std::to_string(B.image.width) + "x" + std::to_string(B.image.height) + "): " + e.what()}};
+    return jp;
+  }
+  verdict = jp["pass"].get<bool>() ? kPass : kFail;
+  return jp;
+}
+
+// A pair whose two renders are there: its metrics, difference EXR, heat map
+// and crops into jp. Throws when the images cannot be compared.
+void comparedPair(const CompareContext& cx, const Scene& scene, const std::string& key, const Tolerance& tol,
+                  const std::string& reason, Render& A, Render& B, Renders& renders, J& jp) {
   CompareMetrics m = compareImages(A.image, B.image, tol);
   PerceptualMetrics pm = perceptualMetrics(A.image, A.perceptualOnce(), B.image, B.perceptualOnce());
   const Image diff = differenceImage(A.image, B.image);
@@ -166,8 +194,6 @@ J comparePair(const CompareContext& cx, const Scene& scene, const renderers::Ren
   jp["classification"] = {{"known", m.over_tolerance - m.over_unexplained},
                           {"unexplained", m.over_unexplained},
                           {"declared", !reason.empty()}};
-  verdict = tol.passes(m) ? kPass : kFail;
-  return jp;
 }
 
 // The reference image's colour statistics (validate/colour_stats.h).
@@ -263,8 +289,11 @@ J compareCase(const CompareContext& cx, size_t k) {
   const std::vector<renderers::RendererPair> pairs = renderers::unorderedPairs(rs.size());
   std::vector<int> verdict(pairs.size());
   J jpairs = J::array();
-  for (size_t p = 0; p < pairs.size(); ++p)
+  int compare_errors = 0;
+  for (size_t p = 0; p < pairs.size(); ++p) {
     jpairs.push_back(comparePair(cx, scene, *rs[pairs[p].a], *rs[pairs[p].b], renders, verdict[p]));
+    if (verdict[p] == kCompareError) ++compare_errors, verdict[p] = kRenderError;
+  }
   jc["pairs"] = jpairs;
   const auto ref = renders.find(renderers::registry().reference().id);
   if (ref != renders.end() && ref->second.error.empty() && !notExpressible(ref->second))
@@ -290,6 +319,7 @@ J compareCase(const CompareContext& cx, size_t k) {
   // pairs and geometry checks it compared and how they came out.
   CaseTally tally;
   for (const auto& [id, r] : renders) tally.errors += !r.error.empty();
+  tally.errors += compare_errors;
   tally.errors += geometryChecksWith(checks, "error");
   tally.failed = static_cast<int>(std::count(verdict.begin(), verdict.end(), kFail)) + geometryChecksWith(checks, "fail");
   tally.passed = static_cast<int>(std::count(verdict.begin(), verdict.end(), kPass)) + geometryChecksWith(checks, "pass");
@@ -318,6 +348,27 @@ int entriesWith(const J& entries, const char* key) {
   int n = 0;
   for (const auto& [id, e] : entries.items()) n += e.contains(key);
   return n;
+}
+
+// The case of plan.scenes[k] when comparing it threw: an error, saying why.
+J failedCase(const Plan& plan, size_t k, const std::exception_ptr& failure) {
+  std::string why;
+  try {
+    std::rethrow_exception(failure);
+  } catch (const std::exception& e) {
+    why = e.what();
+  } catch (...) {
+    why = "an unknown exception";
+  }
+  const PlannedScene& ps = plan.scenes[k];
+  return {{"scene", ps.name},
+          {"file", ps.file},
+          {"reproduce", reproduceCommand(plan, ps)},
+          {"renders", J::object()},
+          {"pairs", J::array()},
+          {"attribution", "error: the case could not be compared: " + why},
+          {"verdict", verdictName(CaseVerdict::Error)},
+          {"pass", false}};
 }
 
 }  // namespace
@@ -368,10 +419,11 @@ int CaseComparer::finish() {
   State& st = *state_;
   const Plan& plan = st.plan;
   const fs::path& dir = plan.dir;
-  // A case that threw stops the step: the first such case in plan order
-  // (whichever was compared first).
-  for (const std::exception_ptr& e : st.failed)
-    if (e) std::rethrow_exception(e);
+  // A case that threw (its scene file cannot be read any more, a file of
+  // its folder cannot be written) is that case's error, with the message
+  // that names the file: the other cases are still reported.
+  for (size_t k = 0; k < plan.scenes.size(); ++k)
+    if (st.failed[k]) st.compared[k] = failedCase(plan, k, st.failed[k]);
   std::map<CaseVerdict, int> cases;  // by verdict
   std::vector<CaseVerdict> verdicts;
   int not_expressible = 0, not_compared = 0;  // image renders, and their pairs
@@ -399,7 +451,13 @@ int CaseComparer::finish() {
     ++cases[verdicts.back()];
     jcases.push_back(std::move(jc));
   }
-  writeFileAtomically(dir / "results.json", resultsJson(plan, jcases, setting_files, st.jsections).dump(2) + "\n");
+  // Errors quote tools' logs and files' names, which are bytes: any that
+  // are not UTF-8 are written as U+FFFD (files/utf8_text.h), never a
+  // results.json that cannot be written.
+  writeFileAtomically(dir / "results.json",
+                      resultsJson(plan, jcases, setting_files, st.jsections)
+                              .dump(2, ' ', false, nlohmann::json::error_handler_t::replace) +
+                          "\n");
   writeReport(dir / "results.json", dir / "report.html");
   printNextSteps(plan, jcases);
   // "3 scenes, all pass", else the worst verdict and every verdict's count:

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "files/atomic_write.h"
+#include "files/utf8_text.h"
 #include "renderers/registry.h"
 #include "renderers/renderer.h"
 #include "scene/json_reader.h"
@@ -98,9 +99,12 @@ void writeRecord(const Plan& plan, const RenderJob& job, const JobRecord& rec) {
   if (rec.render_seconds >= 0) j["render_seconds"] = rec.render_seconds;
   if (rec.process_seconds >= 0) j["process_seconds"] = rec.process_seconds;
   if (rec.parse_seconds >= 0) j["parse_seconds"] = rec.parse_seconds;
-  if (!rec.error.empty()) j["error"] = rec.error;
-  if (!rec.not_expressible.empty()) j["not_expressible"] = rec.not_expressible;
-  if (!rec.notes.empty()) j["notes"] = rec.notes;
+  // An error quotes a tool's log, whose bytes are the tool's: stored as
+  // valid UTF-8 (files/utf8_text.h), so that the record of a failed render
+  // can always be written.
+  if (!rec.error.empty()) j["error"] = validUtf8(rec.error);
+  if (!rec.not_expressible.empty()) j["not_expressible"] = validUtf8(rec.not_expressible);
+  for (const std::string& n : rec.notes) j["notes"].push_back(validUtf8(n));
   j["host"] = hostName();
   j["finished_unix"] = nowUnix();
   writeFileAtomically(plan.dir / job.record(), j.dump(2) + "\n");
