@@ -22,6 +22,6 @@ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=
 cmake --build build-asan -j"$(nproc)" --target xval_unit_tests xval xval_blender_graph_samples \
   xval_model_probe xval_model_corpus \
   xval_fuzz_scene xval_fuzz_spec xval_fuzz_plan xval_fuzz_record xval_fuzz_tolerances xval_fuzz_model \
-  xval_fuzz_results xval_fuzz_golden xval_fuzz_renderer_file
+  xval_fuzz_results xval_fuzz_golden xval_fuzz_renderer_file xval_fuzz_pack_manifest
 (cd build-asan && ctest -L "unit|fuzz" --output-on-failure -j"$(nproc)") || status=1
 exit $status
