@@ -10,6 +10,7 @@
 
 #include "cli/commands.h"
 #include "image/compare.h"
+#include "renderers/registry.h"
 #include "image/image_header.h"
 #include "image/perceptual.h"
 #include "validate/tolerances.h"
@@ -20,7 +21,7 @@ namespace xval::cli {
 
 void addCompareCommand(CLI::App& app, std::function<int()>& run) {
   struct Args {
-    std::string a, b, diff, tolerances;
+    std::string a, b, diff, tolerances, renderers;
     std::optional<double> tol16, fraction;
     bool json = false;
   };
@@ -41,6 +42,10 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--fraction", args->fraction,
                   "Fraction of covered pixels that must be within it (default: the tolerance file's fraction)")
       ->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--renderers", args->renderers,
+                  "A,B: the renderers that made a and b (ids of `xval renderers`): the comparison adds their "
+                  "precision bounds (docs/precision-models.md) to what a's or b's diagnostics channels explain "
+                  "(default: none, so only the tolerance, edges and backfacing normals explain a difference)");
   cmd->add_option("--diff", args->diff, "Write |a - b| to this image");
   cmd->add_flag("--json", args->json, "Print the metrics as JSON");
   cmd->callback([args, &run]() {
@@ -63,7 +68,16 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
                                          ? std::string("from --tolerance-16bit and --fraction")
                                          : std::string(args->tol16 || args->fraction ? "the option given, the rest " : "") +
                                                "from the default of " + tol_file.describe();
-      CompareMetrics m = compareImages(a, b, t);
+      PairPrecision precision;
+      if (!args->renderers.empty()) {
+        const size_t comma = args->renderers.find(',');
+        if (comma == std::string::npos || args->renderers.find(',', comma + 1) != std::string::npos)
+          throw std::runtime_error("--renderers \"" + args->renderers +
+                                   "\": expected two renderer ids separated by a comma, e.g. reference,gl");
+        precision.a = renderers::precisionOf(renderers::registry().at(args->renderers.substr(0, comma)));
+        precision.b = renderers::precisionOf(renderers::registry().at(args->renderers.substr(comma + 1)));
+      }
+      CompareMetrics m = compareImages(a, b, t, precision);
       if (a.has_alpha != b.has_alpha)
         std::fprintf(stderr,
                      "xval compare: note: %s has no alpha channel (an RGB image: xval's own PNGs are RGBA), so "
@@ -82,18 +96,16 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
         std::printf("SSIM %.6f  CIEDE2000 mean %.4f max %.4f  YIQ delta mean %.3g max %.3g\n", pm.ssim,
                     pm.ciede2000_mean, pm.ciede2000_max, pm.yiq_mean, pm.yiq_max);
         std::printf(
-            "covered %lld px, mask disagreements %lld (%lld on silhouettes)\n"
+            "covered %lld px, mask disagreements %lld (%lld explained by edges)\n"
             "max %.3f  p99.9 %.3f  RMSE %.4f (x/65535)  PSNR %.1f dB  within %.3g: %.5f%%  -> %s\n",
-            m.covered_both, m.mask_disagree, m.mask_disagree_silhouette, m.max_abs * 65535,
+            m.covered_both, m.mask_disagree, m.mask_disagree_explained, m.max_abs * 65535,
             m.p999_abs * 65535, m.rmse * 65535, m.psnr_db, t.max_abs * 65535, 100 * m.fraction_within,
             t.passes(m) ? "PASS" : "FAIL");
         std::printf("pixels by error (x/65535):");
         const char* names[7] = {"<=0.5", "<=1", "<=2", "<=4", "<=16", "<=256", ">256"};
         for (int i = 0; i < 7; ++i) std::printf(" %s:%lld", names[i], m.histogram[i]);
-        std::printf("\nover tolerance: %lld (occlusion edge %lld, backfacing normal %lld, grazing %lld, "
-                    "texel boundary %lld, triangle edge %lld, unexplained %lld)\n",
-                    m.over_tolerance, m.over_occlusion_edge, m.over_backfacing, m.over_grazing,
-                    m.over_texel_boundary, m.over_triangle_edge, m.over_unexplained);
+        std::printf("\nover tolerance: %lld (%s; largest precision bound %.3f)\n", m.over_tolerance,
+                    classCountsText(m).c_str(), m.max_precision_bound * 65535);
         std::printf("max unexplained %.3f (x/65535) at (%d, %d), cap %.6g\n", m.max_unexplained * 65535,
                     m.worst_unexplained_x, m.worst_unexplained_y, t.max_unexplained * 65535);
         std::printf("worst pixel (%d, %d)\n", m.worst_x, m.worst_y);

@@ -13,28 +13,25 @@ namespace xval {
 namespace {
 bool hit(const Image& img, int x, int y) { return img.pixel(x, y)[3] > 0.0f; }
 
-bool onSilhouette(const Image& img, int x, int y) {
-  bool any_hit = false, any_miss = false;
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx) {
-      int xx = x + dx, yy = y + dy;
-      if (xx < 0 || yy < 0 || xx >= img.width || yy >= img.height) {
-        any_miss = true;
-        continue;
-      }
-      (hit(img, xx, yy) ? any_hit : any_miss) = true;
-    }
-  return any_hit && any_miss;
+// The largest colour channel of either image at (x, y): the value a
+// relative precision is a share of.
+double largerValue(const Image& a, const Image& b, int x, int y) {
+  double v = 0.0;
+  for (int c = 0; c < 3; ++c) v = std::max({v, double(std::abs(a.pixel(x, y)[c])), double(std::abs(b.pixel(x, y)[c]))});
+  return v;
 }
-
 }  // namespace
 
-CompareMetrics compareImages(const Image& a, const Image& b, const Tolerance& t) {
+CompareMetrics compareImages(const Image& a, const Image& b, const Tolerance& t, const PairPrecision& pp) {
   const double tolerance = t.max_abs;
   if (a.width != b.width || a.height != b.height)
     throw std::runtime_error("cannot compare a " + std::to_string(a.width) + "x" +
                              std::to_string(a.height) + " image with a " +
                              std::to_string(b.width) + "x" + std::to_string(b.height) + " one");
+  const Image* diag = boundsDiagnostics(a, b);
+  auto bounds = [&](int x, int y) {
+    return diag ? pixelBounds(*diag, x, y, largerValue(a, b, x, y), pp.a, pp.b) : PixelBounds{};
+  };
   CompareMetrics m;
   m.width = a.width, m.height = a.height;
   m.tolerance = tolerance;
@@ -54,9 +51,10 @@ CompareMetrics compareImages(const Image& a, const Image& b, const Tolerance& t)
         }
         errs_either.push_back(e);
       }
+      const double da = std::abs(double(a.pixel(x, y)[3]) - double(b.pixel(x, y)[3]));
       if (ha != hb) {
         ++m.mask_disagree;
-        if (onSilhouette(a, x, y) || onSilhouette(b, x, y)) ++m.mask_disagree_silhouette;
+        if (maskDisagreementExplained(da, bounds(x, y))) ++m.mask_disagree_explained;
         continue;
       }
       if (!ha) continue;
@@ -77,26 +75,29 @@ CompareMetrics compareImages(const Image& a, const Image& b, const Tolerance& t)
       int bin = 0;
       while (bin < 6 && e * 65535.0 > CompareMetrics::kHistogramEdges16[bin]) ++bin;
       ++m.histogram[bin];
-      within += e <= tolerance;
-      // Classified when over the tolerance (counted) or when it could be
-      // the largest unexplained error.
-      if (e <= tolerance && !(e > m.max_unexplained)) continue;
-      const PixelClass cls = classifyPixel(a, b, x, y);
-      if (cls == PixelClass::Unexplained && (e > m.max_unexplained || m.worst_unexplained_x < 0))
-        m.max_unexplained = e, m.worst_unexplained_x = x, m.worst_unexplained_y = y;
+      const PixelBounds pb = bounds(x, y);
+      m.max_precision_bound = std::max(m.max_precision_bound, pb.precision);
+      // A coverage difference no edge explains is unexplained whatever the
+      // colour does.
+      const bool coverage_ok = da <= tolerance + pb.edge;
+      if (e <= tolerance && coverage_ok) {
+        ++within;
+        continue;
+      }
+      const PixelClass cls = classifyPixel(e, da, tolerance, pb);
+      if (cls == PixelClass::Unexplained) {
+        if (e > m.max_unexplained || m.worst_unexplained_x < 0)
+          m.max_unexplained = e, m.worst_unexplained_x = x, m.worst_unexplained_y = y;
+      } else {
+        ++within;  // explained: within its bound
+      }
       if (e <= tolerance) continue;
       ++m.over_tolerance;
-      switch (cls) {
-        case PixelClass::BackfacingNormal: ++m.over_backfacing; break;
-        case PixelClass::OcclusionEdge: ++m.over_occlusion_edge; break;
-        case PixelClass::Grazing: ++m.over_grazing; break;
-        case PixelClass::TexelBoundary: ++m.over_texel_boundary; break;
-        case PixelClass::TriangleEdge: ++m.over_triangle_edge; break;
-        case PixelClass::Unexplained: ++m.over_unexplained; break;
-      }
-      if (const size_t k = size_t(cls); k < size_t(kPixelClassCount)) m.over_max[k] = std::max(m.over_max[k], e);
+      const size_t k = size_t(cls);
+      ++m.over[k];
+      m.over_max[k] = std::max(m.over_max[k], e);
       if (cls != PixelClass::Unexplained && (e > m.max_explained || m.worst_explained_x < 0))
-        m.max_explained = e, m.worst_explained_x = x, m.worst_explained_y = y;
+        m.max_explained = e, m.worst_explained_x = x, m.worst_explained_y = y, m.worst_explained_class = cls;
     }
   }
   if (!errs_either.empty()) {
@@ -123,6 +124,13 @@ double nearestRankPercentile(std::vector<double> v, double p) {
   return v[k];
 }
 
+std::string classCountsText(const CompareMetrics& m) {
+  std::string s;
+  for (const PixelClassInfo& c : kPixelClasses)
+    s += (s.empty() ? "" : ", ") + std::string(c.name) + " " + std::to_string(m.overCount(c.id));
+  return s;
+}
+
 Image differenceImage(const Image& a, const Image& b) {
   Image d(a.width, a.height, false);
   for (int y = 0; y < a.height; ++y)
@@ -147,7 +155,7 @@ nlohmann::json metricsJson(const CompareMetrics& m) {
       {"height", m.height},
       {"covered_both", m.covered_both},
       {"mask_disagree", m.mask_disagree},
-      {"mask_disagree_silhouette", m.mask_disagree_silhouette},
+      {"mask_disagree_explained", m.mask_disagree_explained},
       {"max_abs", finite(m.max_abs)},
       {"max_abs_16bit", finite(m.max_abs * 65535.0)},
       {"p999_abs", finite(m.p999_abs)},
@@ -164,6 +172,7 @@ nlohmann::json metricsJson(const CompareMetrics& m) {
       {"worst_unexplained_pixel", {m.worst_unexplained_x, m.worst_unexplained_y}},
       {"max_explained_16bit", finite(m.max_explained * 65535.0)},
       {"worst_explained_pixel", {m.worst_explained_x, m.worst_explained_y}},
+      {"max_precision_bound_16bit", finite(m.max_precision_bound * 65535.0)},
       {"histogram_16bit", {{"edges", CompareMetrics::kHistogramEdges16},
                            {"counts", m.histogram}}},
       {"either_covered", {{"pixels", m.covered_either},

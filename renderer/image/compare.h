@@ -1,12 +1,15 @@
 // Comparing two renders of one scene, over the pixels both cover.
 //
 // hit = alpha > 0. Pixels where exactly one image hits are "mask
-// disagreements"; those on a silhouette (their 3x3 neighbourhood in either
-// image holds both hits and misses) are expected where two renderers'
-// intersection arithmetic differ, any other is a real disagreement. Colour
-// metrics use the pixels both images hit; a pixel's error is its largest
-// channel difference. OpenImageIO's ImageBufAlgo::compare has no masks and
-// no percentiles, hence this.
+// disagreements"; one is explained only where the reference's diagnostics
+// say its whole coverage difference is samples within rounding of a
+// triangle's boundary (image/pixel_classes.h, the edge bound), any other
+// is a real disagreement. Colour metrics use the pixels both images hit; a
+// pixel's error is its largest channel difference. Every covered pixel
+// over the tolerance is explained by a cause up to the largest difference
+// that cause can produce there (pixel_classes.h: precision, edge,
+// backfacing normal), or it is unexplained. OpenImageIO's
+// ImageBufAlgo::compare has no masks and no percentiles, hence this.
 //
 // The same errors over the pixels EITHER image hits ("either_covered"):
 // the colours are premultiplied by coverage (over black), so a pixel one
@@ -25,6 +28,7 @@
 
 #include "image/image.h"
 #include "image/pixel_classes.h"
+#include "image/precision_bound.h"
 
 namespace xval {
 
@@ -32,43 +36,33 @@ struct CompareMetrics {
   int width = 0, height = 0;
   long long covered_both = 0;      // pixels both images hit
   long long mask_disagree = 0;     // hit in one image only
-  long long mask_disagree_silhouette = 0;  // ... of those, on a silhouette
+  long long mask_disagree_explained = 0;  // ... of those, edge samples explain (pixel_classes.h)
   double max_abs = 0.0;            // over covered_both pixels, largest channel difference
   double p999_abs = 0.0;           // 99.9th percentile of the per-pixel error
   double rmse = 0.0;               // over covered_both pixels and the 3 channels
   double psnr_db = 0.0;            // 20 log10(1 / rmse); infinite when equal
-  double fraction_within = 1.0;    // of covered_both pixels with error <= tolerance
+  double fraction_within = 1.0;    // of covered_both pixels within tolerance or explained
   double tolerance = 0.0;          // the per-pixel tolerance used for fraction_within
   int worst_x = -1, worst_y = -1;  // where max_abs is
-  // Pixels over the tolerance, by known cause (image/pixel_classes.h, from
-  // the images' diagnostics, when they have them):
+  // Pixels over the tolerance, by class (image/pixel_classes.h: the
+  // explained ones within their bounds):
   long long over_tolerance = 0;
-  long long over_occlusion_edge = 0;  // a depth jump (> 5%) or the mask edge in the 3x3 neighbourhood
-  long long over_backfacing = 0;      // shading normal facing away from the eye (N.V < 0)
-  long long over_grazing = 0;         // the ray meets its triangle at |cos| < 0.1
-  long long over_texel_boundary = 0;  // a nearest-filtered uv within float rounding of a texel edge
-  long long over_triangle_edge = 0;   // a ray within the rounding of a triangle edge (2^-8 px)
-  long long over_unexplained = 0;     // none of these
+  long long over[kPixelClassCount] = {};   // per class: how many
   double over_max[kPixelClassCount] = {};  // per class: the largest error of those pixels
-  // The largest error of a covered pixel no class explains (within the
-  // tolerance or not; 0 when there is none), and where: what the
-  // tolerance's max_unexplained caps.
+  long long overCount(PixelClass c) const { return over[size_t(c)]; }
+  long long over_unexplained() const { return overCount(PixelClass::Unexplained); }
+  // The largest error of a covered pixel neither within the tolerance nor
+  // explained (0 when there is none), and where: what the tolerance's
+  // max_unexplained caps.
   double max_unexplained = 0.0;
   int worst_unexplained_x = -1, worst_unexplained_y = -1;
   // The largest error of an over-tolerance pixel a class explains, and where.
   double max_explained = 0.0;
   int worst_explained_x = -1, worst_explained_y = -1;
-  long long overCount(PixelClass c) const {
-    switch (c) {
-      case PixelClass::BackfacingNormal: return over_backfacing;
-      case PixelClass::OcclusionEdge: return over_occlusion_edge;
-      case PixelClass::Grazing: return over_grazing;
-      case PixelClass::TexelBoundary: return over_texel_boundary;
-      case PixelClass::TriangleEdge: return over_triangle_edge;
-      case PixelClass::Unexplained: break;
-    }
-    return over_unexplained;
-  }
+  PixelClass worst_explained_class = PixelClass::Unexplained;  // its class
+  // The largest pair precision bound P(p) over the covered pixels (0
+  // without the reference's precision channels).
+  double max_precision_bound = 0.0;
   long long backfacing_pixels = 0;    // covered pixels with N.V < 0 at some sample
   // Pixels by error in 1/65535: <= 0.5, 1, 2, 4, 16, 256, and above.
   static constexpr double kHistogramEdges16[6] = {0.5, 1, 2, 4, 16, 256};
@@ -84,10 +78,11 @@ struct CompareMetrics {
 // 0). Throws std::invalid_argument for p outside (0, 1].
 double nearestRankPercentile(std::vector<double> values, double p);
 
-// A declared tolerance: per-pixel error <= max_abs on at least `fraction`
-// of the pixels both images cover, no pixel that no known cause explains
-// (image/pixel_classes.h) over max_unexplained (the hard cap: whatever the
-// fraction), and no mask disagreement off silhouettes.
+// A declared tolerance: every covered pixel within max_abs or explained
+// by a cause within its bound (image/pixel_classes.h) on at least
+// `fraction` of the pixels both images cover, no unexplained pixel over
+// max_unexplained (the hard cap: whatever the fraction), and every mask
+// disagreement explained.
 // With exclude_backfacing, pixels whose shading normal faces away from the
 // eye are left out of the colour metrics (for a renderer that documents
 // turning such normals around); they are still counted.
@@ -100,12 +95,24 @@ struct Tolerance {
   double max_unexplained = 0.0;
   bool passes(const CompareMetrics& m) const {
     return m.fraction_within >= fraction && m.max_unexplained <= max_unexplained &&
-           m.mask_disagree == m.mask_disagree_silhouette && m.covered_both > 0;
+           m.mask_disagree == m.mask_disagree_explained && m.covered_both > 0;
   }
 };
 
+// The two renderers' precision models (image/precision_bound.h), a's and
+// b's: a pair's precision bound is the sum of theirs.
+struct PairPrecision {
+  PrecisionModel a = exactPrecision(), b = exactPrecision();
+};
+
 // Throws std::runtime_error when the images differ in size.
-CompareMetrics compareImages(const Image& a, const Image& b, const Tolerance& t);
+// The bounds read the reference's diagnostics from whichever image
+// carries them (boundsDiagnostics); without them nothing is explained.
+CompareMetrics compareImages(const Image& a, const Image& b, const Tolerance& t, const PairPrecision& p = {});
+
+// "precision 3, edge 1, backfacing normal 0, unexplained 0": the
+// over-tolerance pixels of each class, in class order, for console lines.
+std::string classCountsText(const CompareMetrics& m);
 
 // |a - b| per channel (RGB, alpha = 1 where either hits), for looking at.
 Image differenceImage(const Image& a, const Image& b);
@@ -113,12 +120,12 @@ Image differenceImage(const Image& a, const Image& b);
 // The one JSON form of the metrics record: every field above, errors as
 // fractions of full scale and (suffix _16bit) in 1/65535; a value that is
 // not finite is null. Keys: width, height, covered_both, mask_disagree,
-// mask_disagree_silhouette, max_abs[_16bit], p999_abs[_16bit],
+// mask_disagree_explained, max_abs[_16bit], p999_abs[_16bit],
 // rmse[_16bit], psnr_db, fraction_within, worst_pixel [x, y],
 // backfacing_pixels, over_tolerance {total, and per class of
-// image/pixel_classes.h its count: backfacing_normal, occlusion_edge,
-// grazing, texel_boundary, unexplained}, over_tolerance_max_16bit {per
-// class its largest error}, max_unexplained_16bit,
+// image/pixel_classes.h its count: precision, edge, backfacing_normal,
+// unexplained}, over_tolerance_max_16bit {per class its largest error},
+// max_precision_bound_16bit, max_unexplained_16bit,
 // worst_unexplained_pixel [x, y], max_explained_16bit,
 // worst_explained_pixel [x, y] ([-1, -1]: none), histogram_16bit {edges,
 // counts}, either_covered {pixels, max_abs_16bit, p999_abs_16bit,

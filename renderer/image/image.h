@@ -43,6 +43,19 @@ struct Image {
   // (camera/triangle_edge.h; kFarFromTriangleEdge when no sample hits).
   // Empty in EXRs written before it existed.
   std::vector<float> depth, backfacing, incidence, albedo, texel_edge, triangle_edge;
+  // The bounds' diagnostics (render/precision_probe.h states the math;
+  // empty when absent):
+  // edge_fraction: the fraction of the pixel's samples whose first hit the
+  // renderers' rounding may change (within kTriangleEdgePixels of the
+  // projected boundary of a triangle hit in the pixel's 3x3 neighbourhood);
+  // backfacing_flip: the largest channel change of the pixel's colour when
+  // its backfacing samples are shaded with the normal turned around (0
+  // where none is backfacing);
+  // precision_position, precision_uv, precision_normal: the box filter of
+  // each sample's largest colour change when its hit point moves by
+  // kPositionStepPixels, its uv by kUvStepTexels, its normal by
+  // kNormalStepRadians (image/precision_bound.h).
+  std::vector<float> edge_fraction, backfacing_flip, precision_position, precision_uv, precision_normal;
   // False for an image read from a file without an alpha channel (an RGB
   // PNG from elsewhere): readImage then sets alpha = 1 everywhere, so every
   // pixel counts as covered.

@@ -1,82 +1,61 @@
 #include "image/pixel_classes.h"
 
-#include <cmath>
+#include <algorithm>
+
+#include "image/precision_bound.h"
 
 namespace xval {
 
 const std::array<PixelClassInfo, kPixelClassCount> kPixelClasses = {{
+    {PixelClass::Precision, "precision", "precision",
+     "within the two renderers' precision bounds: what their rounding of hit point, uv, normal and arithmetic can "
+     "move the value here",
+     "precision"},
+    {PixelClass::Edge, "edge", "edge",
+     "samples within 2^-8 px of a triangle's boundary, which another renderer may give to the other side: each can "
+     "move the pixel by 1/n^2 at most",
+     "edge"},
     {PixelClass::BackfacingNormal, "backfacing_normal", "backfacing normal",
      "the interpolated shading normal faces away from the eye (N.V < 0); POV-Ray turns it around, the paper's "
-     "shader uses it as it is",
+     "shader uses it as it is: up to what turning it changes here",
      "backfacing-normal"},
-    {PixelClass::OcclusionEdge, "occlusion_edge", "occlusion edge",
-     "one surface occludes another here (a depth jump or a miss next to the pixel): the renderers' intersection "
-     "arithmetic moves the edge by a fraction of a pixel",
-     "occlusion-edge"},
-    {PixelClass::Grazing, "grazing", "grazing incidence",
-     "the ray meets its triangle at |cos| < 0.1: float rounding of the hit point is amplified more than ten-fold",
-     "grazing-incidence"},
-    {PixelClass::TexelBoundary, "texel_boundary", "nearest-texel boundary",
-     "the uv lies within the float rounding of a texel edge of a nearest-filtered texture: a renderer may pick "
-     "the neighbouring texel",
-     "texel-boundary"},
-    {PixelClass::TriangleEdge, "triangle_edge", "triangle edge",
-     "the ray passes within the rounding of a triangle edge (2^-8 px): another renderer may hit the neighbouring "
-     "triangle or pass through a crack between the two",
-     "triangle-edge"},
     {PixelClass::Unexplained, "unexplained", "unexplained",
-     "none of the known causes: capped by max_unexplained_16bit", "unexplained"},
+     "beyond every bound: capped by max_unexplained_16bit", "unexplained"},
 }};
 
+PixelClass classifyPixel(double e, double da, double tol, const PixelBounds& b) {
+  if (!(da <= tol + b.edge)) return PixelClass::Unexplained;  // NaN too
+  if (e <= tol + b.precision) return PixelClass::Precision;
+  if (!(e <= tol + b.precision + b.edge + b.backfacing)) return PixelClass::Unexplained;
+  return b.backfacing > b.edge ? PixelClass::BackfacingNormal : PixelClass::Edge;
+}
+
+bool maskDisagreementExplained(double da, const PixelBounds& b) {
+  // E is a multiple of 1/n^2 stored in float, as is alpha: a float's
+  // rounding of either must not decide.
+  return da <= b.edge + 1e-6;
+}
+
 namespace {
-
-bool hit(const Image& img, int x, int y) { return img.pixel(x, y)[3] > 0.0f; }
-
-float channel(const std::vector<float>& c, const Image& img, int x, int y) {
-  return c[size_t(y) * img.width + x];
+float at(const std::vector<float>& c, const Image& img, int x, int y) {
+  return c.size() == size_t(img.width) * img.height ? c[size_t(y) * img.width + x] : 0.0f;
 }
-
-bool backfacing(const Image& img, int x, int y) {
-  return !img.backfacing.empty() && channel(img.backfacing, img, x, y) > 0.0f;
-}
-
-// A depth jump of more than kDepthJump to a neighbour, or a neighbour
-// missed: the pixel sits where one surface occludes another.
-bool onOcclusionEdge(const Image& img, int x, int y) {
-  if (img.depth.empty()) return false;
-  const float z = channel(img.depth, img, x, y);
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx) {
-      int xx = x + dx, yy = y + dy;
-      if (xx < 0 || yy < 0 || xx >= img.width || yy >= img.height || !hit(img, xx, yy)) return true;
-      if (std::abs(channel(img.depth, img, xx, yy) - z) > kDepthJump * z) return true;
-    }
-  return false;
-}
-
-bool grazing(const Image& img, int x, int y) {
-  return !img.incidence.empty() && channel(img.incidence, img, x, y) < kGrazingCos;
-}
-
-bool nearTexelEdge(const Image& img, int x, int y) {
-  return img.texel_edge.size() == size_t(img.width) * img.height &&
-         channel(img.texel_edge, img, x, y) <= kTexelEdgeRoundings;
-}
-
-bool nearTriangleEdge(const Image& img, int x, int y) {
-  return img.triangle_edge.size() == size_t(img.width) * img.height &&
-         channel(img.triangle_edge, img, x, y) <= kTriangleEdgePixels;
-}
-
 }  // namespace
 
-PixelClass classifyPixel(const Image& a, const Image& b, int x, int y) {
-  if (backfacing(a, x, y) || backfacing(b, x, y)) return PixelClass::BackfacingNormal;
-  if (onOcclusionEdge(a, x, y) || onOcclusionEdge(b, x, y)) return PixelClass::OcclusionEdge;
-  if (grazing(a, x, y) || grazing(b, x, y)) return PixelClass::Grazing;
-  if (nearTexelEdge(a, x, y) || nearTexelEdge(b, x, y)) return PixelClass::TexelBoundary;
-  if (nearTriangleEdge(a, x, y) || nearTriangleEdge(b, x, y)) return PixelClass::TriangleEdge;
-  return PixelClass::Unexplained;
+PixelBounds pixelBounds(const Image& d, int x, int y, double value, const PrecisionModel& a,
+                        const PrecisionModel& b) {
+  PixelBounds out;
+  out.edge = at(d.edge_fraction, d, x, y);
+  out.backfacing = at(d.backfacing_flip, d, x, y);
+  out.precision = precisionBound(d, x, y, value, a) + precisionBound(d, x, y, value, b);
+  return out;
+}
+
+const Image* boundsDiagnostics(const Image& a, const Image& b) {
+  const size_t n = size_t(a.width) * a.height;
+  if (a.edge_fraction.size() == n) return &a;
+  if (b.edge_fraction.size() == n) return &b;
+  return nullptr;
 }
 
 }  // namespace xval

@@ -37,6 +37,9 @@ Renderer eeveeRenderer() {
   r.version_command = {"blender", "--version"};
   r.version_marker = "Blender";
   r.missing = blenderScriptMissing;
+  // docs/precision-models.md, EEVEE.
+  r.precision = {1.0, 1.0, 1.0, std::ldexp(1.0, -16), 0.0,
+                 "Mesa llvmpipe: 8 sub-pixel bits, float32 varyings and shading, GPU level of detail"};
   r.exporter = blenderExport(BlenderEngine::Eevee);
   r.cannot_express = [ex = *r.exporter](const Scene& scene) { return refusalOf(ex, scene); };
   r.render = [](const Scene& scene, const RenderRequest& request, RenderInfo* info) {

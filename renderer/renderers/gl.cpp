@@ -35,6 +35,9 @@ Renderer glRenderer() {
   r.subject = "the OpenGL renderer";
   r.summary = "the models as GLSL through OpenGL 4.5 core on EGL (surfaceless; Mesa llvmpipe without a GPU)";
   r.missing = [] { return gl::glUnavailableReason(); };
+  // docs/precision-models.md, gl.
+  r.precision = {1.0, 1.0, 0.01, std::ldexp(1.0, -16), 0.0,
+                 "Mesa llvmpipe: 8 sub-pixel bits, float32 varyings, normals and shading, GPU level of detail"};
   // A supersampled frame within the image limits (common/supersample.h).
   r.cannot_express = [](const Scene& scene) -> std::string {
     try {

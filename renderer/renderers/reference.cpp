@@ -32,6 +32,9 @@ Renderer referenceRenderer() {
   r.subject = "the reference renderer";
   r.summary = "xval's ray caster (local illumination, no shadows; exact double-precision path)";
   r.reference = true;
+  // validate renders it on the double path: its roundings are 2^-29 of
+  // float32's, far below every probe step.
+  r.precision = {0.0, 0.0, 0.0, 1e-12, 0.0, "double precision throughout (docs/precision-models.md)"};
   r.render = [](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
     RenderOptions options = request.options ? *request.options : defaultOptions(scene);
     if (!request.options) options.precision = Precision::Double;

@@ -169,6 +169,12 @@ std::string joinNames(const std::vector<std::string>& names) {
   return out;
 }
 
+const PrecisionModel& precisionOf(const Renderer& r) {
+  if (r.images_of.empty()) return r.precision;
+  const Renderer* maker = registry().find(r.images_of);
+  return maker ? maker->precision : r.precision;
+}
+
 bool meantFor(const std::vector<std::string>& scene_renderers, const Renderer& renderer) {
   const auto named = [&](const std::string& id) {
     return std::find(scene_renderers.begin(), scene_renderers.end(), id) != scene_renderers.end();

@@ -94,6 +94,10 @@ std::string joinNames(const std::vector<std::string>& names);
 // renderer whose stored images it reads (Renderer::images_of: `golden` for
 // a scene meant for the reference renderer, as its golden images are that
 // renderer's images).
+// The precision model a comparison uses for `r`: its own, or for a golden
+// set the model of the renderer whose images it stores.
+const PrecisionModel& precisionOf(const Renderer& r);
+
 bool meantFor(const std::vector<std::string>& scene_renderers, const Renderer& renderer);
 
 // An unordered pair of renderers, a before b in registry order.

@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "image/precision_bound.h"
 #include "common/export_common.h"
 #include "image/image.h"
 #include "render/renderer.h"
@@ -158,6 +159,12 @@ struct Renderer {
   // tool that mostly waits: below 1): the job pool runs up to 1 / cpu_share
   // such jobs per core beside each other (process/job_pool.h).
   double cpu_share = 1.0;
+  // How far its arithmetic may put a pixel from the exact value, in steps
+  // of the reference's probes (image/precision_bound.h): the comparison's
+  // precision bound B_r(p). Each built-in renderer's file declares its own
+  // with the basis (docs/precision-models.md); the default is a float32
+  // GPU-like renderer's.
+  PrecisionModel precision = float32Precision();
   // A real-time renderer's frame loop for `xval bench` (frames per second
   // of the frame alone, as the paper's Table 2). Optional (absent: bench
   // times whole renders). Throws as render does.

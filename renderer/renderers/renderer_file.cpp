@@ -171,6 +171,23 @@ Renderer loadRendererFile(const fs::path& file) {
       r.failValue("description", "one line of 1 to " + std::to_string(kMaxRendererDescriptionBytes) +
                                      " bytes without control characters");
   }
+  // How far its arithmetic may be off (image/precision_bound.h); absent:
+  // a float32 GPU-like renderer's (float32Precision).
+  PrecisionModel precision = float32Precision();
+  if (std::optional<JsonReader> p = r.object("precision")) {
+    const Range steps = Range::closed(0.0, 1e6);
+    precision.position_steps = p->requireNumber("position_steps", steps);
+    precision.uv_steps = p->requireNumber("uv_steps", steps);
+    precision.normal_steps = p->requireNumber("normal_steps", steps);
+    precision.relative = p->requireNumber("relative", Range::closed(0.0, 1.0));
+    precision.quantum_16bit = p->requireNumber("quantum_16bit", Range::closed(0.0, 65535.0));
+    precision.basis = p->requireString("basis");
+    if (precision.basis.empty() || precision.basis.size() > kMaxRendererDescriptionBytes ||
+        std::any_of(precision.basis.begin(), precision.basis.end(), [](char c) { return (unsigned char)c < 0x20; }))
+      p->failValue("basis", "one line of 1 to " + std::to_string(kMaxRendererDescriptionBytes) +
+                                " bytes without control characters saying where the numbers come from");
+    p->finish();
+  }
   r.finish();
   if (d.command.empty() || d.command.front().empty()) r.fail("command", "expected the program and its arguments");
   if (version.empty() || version.front().empty())
@@ -186,6 +203,7 @@ Renderer loadRendererFile(const fs::path& file) {
   out.summary = (description.empty() ? "" : description + "; ") + "defined by " + d.file.string() + " (input " +
                 d.input + ")";
   out.version_command = version;
+  out.precision = precision;
   out.version_marker = d.name;
   out.definition_file = fs::absolute(d.file).lexically_normal();
   const std::string program = programPath(d.command.front(), d.file);

@@ -50,7 +50,7 @@ const J& field(const J& j, const char* key, const std::string& where) {
 }
 
 // "p99.9 0.55/65535, max 42219.5/65535, 99.9344% within 2/65535 (needs
-// 99.9%), 0 mask disagreements off silhouettes"
+// 99.9%), 0 mask disagreements no edge explains"
 std::string describeMetrics(const J& m) {
   std::string s;
   auto get = [&m](const char* k) { return m.contains(k) && m[k].is_number() ? m[k].get<double>() : 0.0; };
@@ -63,8 +63,8 @@ std::string describeMetrics(const J& m) {
   } else {
     s += "the tolerance";
   }
-  const double off = get("mask_disagree") - get("mask_disagree_silhouette");
-  s += ", " + num(off) + " mask disagreements off silhouettes";
+  const double off = get("mask_disagree") - get("mask_disagree_explained");
+  s += ", " + num(off) + " mask disagreements no edge explains";
   if (m.contains("tolerance_reason") && m["tolerance_reason"].is_string() &&
       !m["tolerance_reason"].get<std::string>().empty())
     s += "; declared tolerance: " + m["tolerance_reason"].get<std::string>();

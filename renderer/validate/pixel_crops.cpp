@@ -34,16 +34,19 @@ nlohmann::ordered_json writePairCrops(const Image& a, const Image& b, const std:
     const char* key;
     int x, y;
     double error;
+    PixelClass cls;
   };
-  for (const Shown s : {Shown{"worst_unexplained", m.worst_unexplained_x, m.worst_unexplained_y, m.max_unexplained},
-                        Shown{"worst_explained", m.worst_explained_x, m.worst_explained_y, m.max_explained}}) {
+  for (const Shown s : {Shown{"worst_unexplained", m.worst_unexplained_x, m.worst_unexplained_y, m.max_unexplained,
+                              PixelClass::Unexplained},
+                        Shown{"worst_explained", m.worst_explained_x, m.worst_explained_y, m.max_explained,
+                              m.worst_explained_class}}) {
     if (s.x < 0 || s.y < 0 || s.x >= heat.width || s.y >= heat.height) continue;  // none
     const CropWindow w = cropWindow(s.x, s.y, heat.width, heat.height);
     const std::string stem = scene + "/crop_" + pair + "_" + s.key + "_";
     J j;
     j["pixel"] = {s.x, s.y};
     j["error_16bit"] = std::isfinite(s.error) ? J(s.error * 65535.0) : J(nullptr);
-    j["class"] = pixelClassInfo(classifyPixel(a, b, s.x, s.y)).key;
+    j["class"] = pixelClassInfo(s.cls).key;
     j["window"] = {w.x0, w.y0, w.width, w.height};
     j["heat_map"] = stem + "heat.png";
     writePreviewPng(cropImage(heat, w), results_dir / (stem + "heat.png"), kCropSide);

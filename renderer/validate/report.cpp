@@ -640,7 +640,7 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
         << (m["psnr_db"].is_null() ? std::string("inf") : fixed(m["psnr_db"], 1)) << "</td><td>"
         << fixed(100.0 * m["fraction_within"].get<double>(), 3) << "%</td><td>"
         << significant(m["tolerance"]["max_abs_16bit"]) << " on " << significant(100.0 * m["tolerance"]["fraction"].get<double>())
-        << "%</td><td>" << m["mask_disagree"].get<long long>() << " (" << m["mask_disagree_silhouette"].get<long long>()
+        << "%</td><td>" << m["mask_disagree"].get<long long>() << " (" << m["mask_disagree_explained"].get<long long>()
         << ")</td>";
       for (const PixelClassInfo& k : kPixelClasses) {
         h << "<td>" << (o.contains(k.key) ? std::to_string(o[k.key].get<long long>()) : std::string("n/a"));

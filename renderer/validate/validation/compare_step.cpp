@@ -112,7 +112,8 @@ J renderJson(const RenderJob& job, const Render& r) {
 constexpr int kPass = 1, kFail = 0, kRenderError = -1, kNotExpressible = -2, kCompareError = -3;
 
 void comparedPair(const CompareContext& cx, const Scene& scene, const std::string& key, const Tolerance& tol,
-                  const std::string& reason, Render& A, Render& B, Renders& renders, J& jp);
+                  const PairPrecision& precision, const std::string& reason, Render& A, Render& B, Renders& renders,
+                  J& jp);
 
 // One pair of one case: compared with its tolerance, its difference EXR
 // and heat map written.
@@ -156,7 +157,8 @@ J comparePair(const CompareContext& cx, const Scene& scene, const renderers::Ren
     A.image.triangle_edge = diagnostics->triangle_edge;
   }
   try {
-    comparedPair(cx, scene, key, tol, reason, A, B, renders, jp);
+    const PairPrecision precision{renderers::precisionOf(ra), renderers::precisionOf(rb)};
+    comparedPair(cx, scene, key, tol, precision, reason, A, B, renders, jp);
   } catch (const std::exception& e) {
     // This pair's error, naming its files: the other pairs and cases are
     // still compared and reported.
@@ -174,8 +176,9 @@ J comparePair(const CompareContext& cx, const Scene& scene, const renderers::Ren
 // A pair whose two renders are there: its metrics, difference EXR, heat map
 // and crops into jp. Throws when the images cannot be compared.
 void comparedPair(const CompareContext& cx, const Scene& scene, const std::string& key, const Tolerance& tol,
-                  const std::string& reason, Render& A, Render& B, Renders& renders, J& jp) {
-  CompareMetrics m = compareImages(A.image, B.image, tol);
+                  const PairPrecision& precision, const std::string& reason, Render& A, Render& B, Renders& renders,
+                  J& jp) {
+  CompareMetrics m = compareImages(A.image, B.image, tol, precision);
   PerceptualMetrics pm = perceptualMetrics(A.image, A.perceptualOnce(), B.image, B.perceptualOnce());
   const Image diff = differenceImage(A.image, B.image);
   writeImage(diff, cx.plan.dir / scene.name / ("diff_" + key + ".exr"), kDifferenceExrCompression);
@@ -188,11 +191,12 @@ void comparedPair(const CompareContext& cx, const Scene& scene, const std::strin
   jp["crops"] = writePairCrops(A.image, B.image, images, heatMap(diff), m, cx.plan.dir, scene.name, key);
   J jm = J::parse(toJson(m, tol, &pm));
   jm["tolerance_reason"] = reason;
+  jm["precision"] = {{"a", precisionJson(precision.a)}, {"b", precisionJson(precision.b)}};
   jp["metrics"] = jm;
   jp["pass"] = tol.passes(m);
   // Known differences are the classified ones and a declared reason.
-  jp["classification"] = {{"known", m.over_tolerance - m.over_unexplained},
-                          {"unexplained", m.over_unexplained},
+  jp["classification"] = {{"known", m.over_tolerance - m.over_unexplained()},
+                          {"unexplained", m.over_unexplained()},
                           {"declared", !reason.empty()}};
 }
 
