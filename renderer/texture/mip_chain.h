@@ -4,12 +4,32 @@
 //
 // Chain. Level 0 is the texture (W_0 x H_0 = W x H). Level k+1 is
 //   W_{k+1} = max(1, floor(W_k / 2)),  H_{k+1} = max(1, floor(H_k / 2)),
-//   t_{k+1}(i, j) = (t_k(x0, y0) + t_k(x1, y0) + t_k(x0, y1) + t_k(x1, y1)) / 4
-// with x0 = 2i, x1 = min(2i + 1, W_k - 1) (the same in y): a 2x2 box
-// filter; where W_k is odd its last column is left out (as floor halving
-// does), and where W_k = 1 the one column counts twice. Sums in double,
-// each level rounded to float once. The chain ends at 1 x 1: q + 1 levels,
+// and its texel (i, j) is the bilinear interpolation of level k (clamped,
+// between texel centres, texel n's centre at n) at
+//   x = (i + 1/2) W_k / W_{k+1} - 1/2,  y = (j + 1/2) H_k / H_{k+1} - 1/2:
+// the centre of texel (i, j) when level k+1 is stretched over the whole of
+// level k. With x0 = floor(x), fx = x - x0, x1 = min(x0 + 1, W_k - 1) (the
+// same in y),
+//   t_{k+1}(i, j) = (1-fx)(1-fy) t_k(x0, y0) + fx (1-fy) t_k(x1, y0)
+//                 + (1-fx) fy t_k(x0, y1) + fx fy t_k(x1, y1).
+// Where W_k is even, x = 2i + 1/2: the mean of columns 2i and 2i+1, the
+// 2x2 box filter. Where W_k = 2m + 1 is odd, the step W_k / W_{k+1} is
+// 2 + 1/m, so every column of level k counts (none is left out) and the
+// taps drift across the 2x2 blocks; x stays within [1/2, W_k - 3/2], so
+// no lookup reaches past an edge and the wrap mode plays no part. Where
+// W_k = 1, x = 0: the one column (its weight split in halves between two
+// taps on it, so that a power-of-two chain is bit-identical to the 2x2
+// box). Weights exact (x is a ratio of integers), sums in double, each
+// level rounded to float once. The chain ends at 1 x 1: q + 1 levels,
 // q = floor(log2(max(W, H))).
+//
+// Why this rule: it is what the drivers build. glGenerateTextureMipmap on
+// Mesa (gl's uploadTexture; EEVEE's image textures, which Blender mip-maps
+// with the same call) blits each level from the whole previous one with a
+// linear filter: texel centre (i + 1/2) / W_{k+1} in normalised
+// coordinates of level k (docs/scene-format.md, "Trilinear filtering",
+// cites the sources). The OpenGL specification leaves the filter to the
+// implementation; other drivers may differ for odd sizes.
 //
 // Level. For the uv derivatives along the image's x and y at the sample
 // (per step of the sample grid: one pixel at 1 spp, 1/n of a pixel at

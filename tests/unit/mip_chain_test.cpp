@@ -23,21 +23,158 @@ Texture ramp(int w, int h) {
   return t;
 }
 
+// Texel (x, y) of a W x H texture with pseudo-random values in [0, 1):
+// no structure a wrong rule could hide behind.
+Texture noise(int w, int h) {
+  Texture t;
+  t.width = w, t.height = h;
+  unsigned s = 12345u;
+  for (int k = 0; k < w * h * 3; ++k) {
+    s = s * 1664525u + 1013904223u;
+    t.rgb.push_back(float(s >> 8) / 16777216.0f);
+  }
+  return t;
+}
+
+// Where texel i of a level n wide samples the level w wide above it
+// (mip_chain.h), in the form the rule states it.
+double sampleAt(int i, int w, int n) { return (i + 0.5) * w / n - 0.5; }
+
+// Every texel of level k + 1 of a ramp is the ramp of level k at the
+// texel's sample point (bilinear interpolation of a linear function is
+// exact), so the whole chain's sample points are checked at once.
+void expectRampChain(int w, int h) {
+  const MipChain c = mipChain(ramp(w, h));
+  int q = 0;
+  while (std::max(w, h) >> (q + 1)) ++q;
+  ASSERT_EQ(c.maxLevel(), q) << w << " x " << h;
+  // The ramp of each level: texel (i, j) = (a + b i, d + e j, ...).
+  double a = 0, b = 1, d = 0, e = 1;
+  for (int k = 1; k <= q; ++k) {
+    const Texture& s = c.levels[size_t(k - 1)];
+    const Texture& n = c.levels[size_t(k)];
+    ASSERT_EQ(n.width, std::max(1, s.width / 2));
+    ASSERT_EQ(n.height, std::max(1, s.height / 2));
+    // The new ramp: x(i) = a + b * sampleAt(i) is linear in i.
+    const double a1 = a + b * sampleAt(0, s.width, n.width);
+    const double b1 = n.width > 1 ? b * (sampleAt(1, s.width, n.width) - sampleAt(0, s.width, n.width)) : 0.0;
+    const double d1 = d + e * sampleAt(0, s.height, n.height);
+    const double e1 = n.height > 1 ? e * (sampleAt(1, s.height, n.height) - sampleAt(0, s.height, n.height)) : 0.0;
+    a = a1, b = b1, d = d1, e = e1;
+    for (int j = 0; j < n.height; ++j)
+      for (int i = 0; i < n.width; ++i) {
+        const double x = a + b * i, y = d + e * j;
+        const glm::vec3 v = n.texel(i, j);
+        EXPECT_NEAR(v.x, x, 2e-5) << w << " x " << h << " level " << k << " texel " << i << "," << j;
+        EXPECT_NEAR(v.y, y, 2e-5) << w << " x " << h << " level " << k << " texel " << i << "," << j;
+        EXPECT_NEAR(v.z, x + 10 * y, 2e-4) << w << " x " << h << " level " << k << " texel " << i << "," << j;
+      }
+  }
+}
+
 }  // namespace
 
-TEST(MipChain, HalvesWithFloorDownToOneByOneAndBoxFilters) {
+// 5 x 3 -> 2 x 1 -> 1 x 1. Level 1 texel i samples level 0 at
+// x = (i + 1/2) 5/2 - 1/2 = 0.75, 3.25 and y = (1/2) 3 - 1/2 = 1: the
+// whole level, the odd last column and row included (the earlier rule,
+// a 2x2 box that left them out, gave (0.5, 0.5, 5.5) and (2.5, 0.5, 7.5)).
+TEST(MipChain, HalvesWithFloorAndResamplesTheWholeLevel) {
   const MipChain c = mipChain(ramp(5, 3));
   ASSERT_EQ(c.levels.size(), 3u);  // q = floor(log2(5)) = 2
   EXPECT_EQ(c.levels[1].width, 2);
   EXPECT_EQ(c.levels[1].height, 1);
   EXPECT_EQ(c.levels[2].width, 1);
   EXPECT_EQ(c.levels[2].height, 1);
-  // Level 1 texel (1, 0): the mean of x in {2, 3}, y in {0, 1}; the odd
-  // last column (x = 4) and row (y = 2) are left out.
-  EXPECT_EQ(c.levels[1].texel(1, 0), glm::vec3(2.5f, 0.5f, 7.5f));
-  EXPECT_EQ(c.levels[1].texel(0, 0), glm::vec3(0.5f, 0.5f, 5.5f));
-  // Level 2 from level 1's 2 x 1: its one row counts twice.
-  EXPECT_EQ(c.levels[2].texel(0, 0), glm::vec3(1.5f, 0.5f, 6.5f));
+  EXPECT_EQ(c.levels[1].texel(0, 0), glm::vec3(0.75f, 1.0f, 10.75f));
+  EXPECT_EQ(c.levels[1].texel(1, 0), glm::vec3(3.25f, 1.0f, 13.25f));
+  // Level 2 from level 1's 2 x 1: x = 1/2 (the mean of its two texels),
+  // y = 0 (its one row).
+  EXPECT_EQ(c.levels[2].texel(0, 0), glm::vec3(2.0f, 1.0f, 12.0f));
+}
+
+// The generated set's noise16_37x23: 37 x 23 -> 18 x 11 -> 9 x 5 -> 4 x 2
+// -> 2 x 1 -> 1 x 1, odd on both axes at level 0.
+TEST(MipChain, OddSizesSampleEveryColumnAndRow) {
+  expectRampChain(37, 23);
+  const MipChain c = mipChain(ramp(37, 23));
+  const int sizes[][2] = {{37, 23}, {18, 11}, {9, 5}, {4, 2}, {2, 1}, {1, 1}};
+  ASSERT_EQ(c.levels.size(), 6u);
+  for (size_t k = 0; k < 6; ++k) {
+    EXPECT_EQ(c.levels[k].width, sizes[k][0]) << k;
+    EXPECT_EQ(c.levels[k].height, sizes[k][1]) << k;
+  }
+  // Level 1's last texel (17, 10) reaches into level 0's last column and
+  // row: x = 17.5 * 37/18 - 1/2 = 35 + 17/36, y = 10.5 * 23/11 - 1/2 = 21 + 10/22.
+  const glm::vec3 last = c.levels[1].texel(17, 10);
+  EXPECT_FLOAT_EQ(last.x, float(35.0 + 17.0 / 36.0));
+  EXPECT_FLOAT_EQ(last.y, float(21.0 + 10.0 / 22.0));
+}
+
+// A hand computation on values with no structure: level 1 texel (17, 10)
+// of a 37 x 23 texture takes texels x 35, 36 at weights 19/36, 17/36 and
+// y 21, 22 at 12/22, 10/22 (from the sample point above).
+TEST(MipChain, OddLevelTexelIsTheBilinearMixOfItsFourTaps) {
+  const Texture t = noise(37, 23);
+  const MipChain c = mipChain(t);
+  const double wx0 = 19.0 / 36.0, wx1 = 17.0 / 36.0, wy0 = 12.0 / 22.0, wy1 = 10.0 / 22.0;
+  const glm::dvec3 want = wx0 * wy0 * glm::dvec3(t.texel(35, 21)) + wx1 * wy0 * glm::dvec3(t.texel(36, 21)) +
+                          wx0 * wy1 * glm::dvec3(t.texel(35, 22)) + wx1 * wy1 * glm::dvec3(t.texel(36, 22));
+  const glm::vec3 got = c.levels[1].texel(17, 10);
+  for (int q = 0; q < 3; ++q) EXPECT_FLOAT_EQ(got[q], float(want[q])) << q;
+  // Texel (0, 0): x = 1/2 * 37/18 - 1/2 = 19/36, y = 1/2 * 23/11 - 1/2 = 6/11.
+  const double fx = 19.0 / 36.0, fy = 6.0 / 11.0;
+  const glm::dvec3 want0 = (1 - fx) * (1 - fy) * glm::dvec3(t.texel(0, 0)) + fx * (1 - fy) * glm::dvec3(t.texel(1, 0)) +
+                           (1 - fx) * fy * glm::dvec3(t.texel(0, 1)) + fx * fy * glm::dvec3(t.texel(1, 1));
+  const glm::vec3 got0 = c.levels[1].texel(0, 0);
+  for (int q = 0; q < 3; ++q) EXPECT_FLOAT_EQ(got0[q], float(want0[q])) << q;
+}
+
+// One texel wide or high: that axis stays at its one column or row, the
+// other is resampled as above (1 x 7 -> 1 x 3 -> 1 x 1: level 2 is level
+// 1's middle texel, y = (1/2) 3 - 1/2 = 1).
+TEST(MipChain, OneWideAndOneHighTextures) {
+  expectRampChain(1, 7);
+  expectRampChain(7, 1);
+  expectRampChain(1, 8);
+  expectRampChain(13, 1);
+  const Texture t = noise(1, 7);
+  const MipChain c = mipChain(t);
+  ASSERT_EQ(c.levels.size(), 3u);
+  EXPECT_EQ(c.levels[2].texel(0, 0), c.levels[1].texel(0, 1));
+  const MipChain r = mipChain(noise(7, 1));
+  EXPECT_EQ(r.levels[2].texel(0, 0), r.levels[1].texel(1, 0));
+}
+
+// Even sides: the sample point is 2i + 1/2, the mean of the 2x2 block,
+// bit for bit the box filter ((a + b) + c + d) / 4 in double, rounded once.
+TEST(MipChain, EvenSizesAreTheTwoByTwoBoxBitForBit) {
+  for (const auto& wh : {std::pair{64, 32}, std::pair{16, 16}, std::pair{12, 6}}) {
+    const MipChain c = mipChain(noise(wh.first, wh.second));
+    for (size_t k = 1; k < c.levels.size(); ++k) {
+      const Texture& s = c.levels[k - 1];
+      if (s.width % 2 || s.height % 2) break;  // 12 x 6 -> 6 x 3: odd from here
+      const Texture& n = c.levels[k];
+      for (int j = 0; j < n.height; ++j)
+        for (int i = 0; i < n.width; ++i) {
+          const glm::dvec3 box = (glm::dvec3(s.texel(2 * i, 2 * j)) + glm::dvec3(s.texel(2 * i + 1, 2 * j)) +
+                                  glm::dvec3(s.texel(2 * i, 2 * j + 1)) + glm::dvec3(s.texel(2 * i + 1, 2 * j + 1))) /
+                                 4.0;
+          EXPECT_EQ(n.texel(i, j), glm::vec3(box)) << wh.first << " x " << wh.second << " level " << k << " " << i << "," << j;
+        }
+    }
+  }
+  // A power-of-two chain down to its 1-wide levels (64 x 16 -> ... -> 4 x 1
+  // -> 2 x 1 -> 1 x 1): the one row counts as both rows of the box.
+  const MipChain c = mipChain(noise(64, 16));
+  for (size_t k = 5; k < c.levels.size(); ++k) {
+    const Texture& s = c.levels[k - 1];
+    const Texture& n = c.levels[k];
+    ASSERT_EQ(s.height, 1);
+    for (int i = 0; i < n.width; ++i) {
+      const glm::dvec3 a(s.texel(2 * i, 0)), b(s.texel(2 * i + 1, 0));
+      EXPECT_EQ(n.texel(i, 0), glm::vec3((a + b + a + b) / 4.0)) << "level " << k << " " << i;
+    }
+  }
 }
 
 TEST(MipChain, LevelOfDetailIsLog2OfTheLongerFootprintClamped) {
