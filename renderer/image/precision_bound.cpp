@@ -7,8 +7,8 @@ namespace xval {
 
 PrecisionModel float32Precision() {
   // docs/precision-models.md, "A renderer that declares none".
-  return {1.0, 1.0, 0.0, std::ldexp(1.0, -16), 0.0,
-          "float32 throughout, a GPU's 2^-8 px sub-pixel grid and 8-bit texture weights (the default)"};
+  return {1.0, 1.0, std::ldexp(1.0, -10), 1e-5, 0.0,
+          "float32 throughout, like gl's (the default of a renderer file that declares none)"};
 }
 
 bool hasPrecisionChannels(const Image& img) {

@@ -87,8 +87,8 @@ Renderer blenderRenderer() {
   // leave a core to the POV-Ray and reference jobs beside them.
   r.cpu_share = 0.5;
   // docs/precision-models.md, Cycles.
-  r.precision = {0.05, 0.05, 0.0, std::ldexp(1.0, -18), 0.0,
-                 "float32 intersection, interpolation and shading; a float32 EXR"};
+  r.precision = {1.0, 1.0, std::ldexp(1.0, -10), 2e-6, 0.0,
+                 "float32 Embree robust intersection, barycentric uv and normals, SVM math; float32 EXR"};
   r.missing = blenderScriptMissing;
   r.exporter = blenderExport(BlenderEngine::Cycles);
   r.cannot_express = [ex = *r.exporter](const Scene& scene) { return refusalOf(ex, scene); };

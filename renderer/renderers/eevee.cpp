@@ -38,8 +38,8 @@ Renderer eeveeRenderer() {
   r.version_marker = "Blender";
   r.missing = blenderScriptMissing;
   // docs/precision-models.md, EEVEE.
-  r.precision = {1.0, 1.0, 1.0, std::ldexp(1.0, -16), 0.0,
-                 "Mesa llvmpipe: 8 sub-pixel bits, float32 varyings and shading, GPU level of detail"};
+  r.precision = {1.0, 1.0, std::ldexp(1.0, -10), 1e-5, 0.0,
+                 "Mesa llvmpipe: float32 world positions, uv and normal varyings, exp2/log2 pow; RGBA32F"};
   r.exporter = blenderExport(BlenderEngine::Eevee);
   r.cannot_express = [ex = *r.exporter](const Scene& scene) { return refusalOf(ex, scene); };
   r.render = [](const Scene& scene, const RenderRequest& request, RenderInfo* info) {

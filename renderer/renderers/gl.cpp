@@ -17,6 +17,7 @@
 // Unavailable, with EGL's reason, when no OpenGL 4.5 core context can be
 // made (no EGL vendor library, no surfaceless platform, no 4.5 core
 // driver): then every gl render fails with that reason, never a pass.
+#include <cmath>
 #include <chrono>
 #include <memory>
 
@@ -36,8 +37,8 @@ Renderer glRenderer() {
   r.summary = "the models as GLSL through OpenGL 4.5 core on EGL (surfaceless; Mesa llvmpipe without a GPU)";
   r.missing = [] { return gl::glUnavailableReason(); };
   // docs/precision-models.md, gl.
-  r.precision = {1.0, 1.0, 0.01, std::ldexp(1.0, -16), 0.0,
-                 "Mesa llvmpipe: 8 sub-pixel bits, float32 varyings, normals and shading, GPU level of detail"};
+  r.precision = {1.0, 1.0, std::ldexp(1.0, -10), 1e-5, 0.0,
+                 "Mesa llvmpipe: float32 varyings and normals, exp2/log2 pow, GPU level of detail; RGBA32F"};
   // A supersampled frame within the image limits (common/supersample.h).
   r.cannot_express = [](const Scene& scene) -> std::string {
     try {

@@ -32,8 +32,8 @@ Renderer povrayRenderer() {
   // process. A quarter of a core: four jobs per core.
   r.cpu_share = 0.25;
   // docs/precision-models.md, POV-Ray.
-  r.precision = {0.05, 0.05, 0.0, 1e-6, 0.5,
-                 "float32 triangle planes and vertex data, double shading; a 16-bit PNG (half a code)"};
+  r.precision = {1.0, 1.0, std::ldexp(1.0, -10), 2e-6, 0.5,
+                 "float32 triangle planes, vertices and normals, double weights, float colours; 16-bit PNG"};
   r.summary = "POV-Ray 3.7: the scene exported as SDL, rendered by `povray` with a time-out";
   r.version_command = {"povray", "--version"};
   r.version_marker = "POV-Ray";
