@@ -131,6 +131,21 @@ std::string classCountsText(const CompareMetrics& m) {
   return s;
 }
 
+Image precisionBoundImage(const Image& a, const Image& b, const PairPrecision& pp) {
+  const Image* diag = boundsDiagnostics(a, b);
+  if (!diag || a.width != b.width || a.height != b.height) return Image();
+  Image out(a.width, a.height, false);
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      float* px = out.pixel(x, y);
+      if (!hit(a, x, y) && !hit(b, x, y)) continue;
+      const PixelBounds pb = pixelBounds(*diag, x, y, largerValue(a, b, x, y), pp.a, pp.b);
+      px[0] = px[1] = px[2] = float(pb.precision);
+      px[3] = 1.0f;
+    }
+  return out;
+}
+
 Image differenceImage(const Image& a, const Image& b) {
   Image d(a.width, a.height, false);
   for (int y = 0; y < a.height; ++y)

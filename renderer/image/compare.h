@@ -114,6 +114,12 @@ CompareMetrics compareImages(const Image& a, const Image& b, const Tolerance& t,
 // over-tolerance pixels of each class, in class order, for console lines.
 std::string classCountsText(const CompareMetrics& m);
 
+// The pair's precision bound P(p) = B_a(p) + B_b(p) as an image to look at
+// beside |a - b| (the same heat map scale: image/heat_map.h): P in every
+// colour channel, alpha = covered by either. An empty image (0 x 0) when
+// neither image carries the reference's diagnostics.
+Image precisionBoundImage(const Image& a, const Image& b, const PairPrecision& p);
+
 // |a - b| per channel (RGB, alpha = 1 where either hits), for looking at.
 Image differenceImage(const Image& a, const Image& b);
 

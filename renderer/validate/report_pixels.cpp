@@ -93,10 +93,14 @@ std::string casePixels(const J& c, const fs::path& dir) {
     buttons << "<button type=\"button\" data-src=\"" << htmlEscape(src) << "\">" << htmlEscape(it.key())
             << "</button>";
   }
-  for (const auto& p : c["pairs"])
+  for (const auto& p : c["pairs"]) {
     if (p.contains("heat_map"))
       buttons << "<button type=\"button\" data-src=\"" << htmlEscape(p["heat_map"].get<std::string>()) << "\">|"
               << htmlEscape(p["pair"].get<std::string>()) << "|</button>";
+    if (p.contains("bound_map"))
+      buttons << "<button type=\"button\" data-src=\"" << htmlEscape(p["bound_map"].get<std::string>())
+              << "\">bound " << htmlEscape(p["pair"].get<std::string>()) << "</button>";
+  }
   if (!first.empty() && width > 0)
     h << "<div class=\"viewer\" data-viewer><div class=\"swapbar\">show: " << buttons.str()
       << "</div><img class=\"swap\" src=\"" << htmlEscape(first) << "\" alt=\"render\" style=\"width:" << width
@@ -124,6 +128,17 @@ std::string casePixels(const J& c, const fs::path& dir) {
     if (crops.contains("worst_unexplained")) h << "; red box: worst unexplained";
     if (crops.contains("worst_explained")) h << "; blue box: worst explained";
     h << "</figcaption></figure>";
+    // The precision bound on the same scale: where |a - b| is brighter than
+    // it, only an edge, a backfacing normal or nothing explains the pixel.
+    if (p.contains("bound_map")) {
+      const std::string bound = p["bound_map"].get<std::string>();
+      if (!fs::is_regular_file(dir / bound))
+        h << "<p class=\"err\">bound map " << htmlEscape(bound) << " (named in results.json) is missing</p>";
+      else
+        h << "<figure><img class=\"heat\" src=\"" << htmlEscape(bound) << "\" alt=\"precision bound "
+          << htmlEscape(pair) << "\" style=\"width:" << width << "px\"><figcaption>precision bound of "
+          << htmlEscape(pair) << " (same scale)</figcaption></figure>";
+    }
   }
   h << "</div>\n";
   for (const auto& p : c["pairs"]) {

@@ -183,6 +183,9 @@ void comparedPair(const CompareContext& cx, const Scene& scene, const std::strin
   const Image diff = differenceImage(A.image, B.image);
   writeImage(diff, cx.plan.dir / scene.name / ("diff_" + key + ".exr"), kDifferenceExrCompression);
   jp["heat_map"] = writeHeatMapPng(diff, cx.plan.dir, scene.name, key);  // the report only shows it
+  // The pair's precision bound on the same scale, beside it.
+  if (const Image bound = precisionBoundImage(A.image, B.image, precision); bound.width > 0)
+    jp["bound_map"] = writeHeatMapPng(bound, cx.plan.dir, scene.name, "bound_" + key);
   std::map<std::string, const Image*> images;
   // The renders of the scene (a geometry check's passes are no render of it).
   for (const auto& [id, rr] : renders)
