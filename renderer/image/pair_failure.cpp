@@ -91,4 +91,10 @@ nlohmann::json failedJson(const std::vector<PairFailure>& failed) {
   return j;
 }
 
+std::string failedText(const std::vector<PairFailure>& failed) {
+  std::string s;
+  for (const PairFailure& f : failed) s += (s.empty() ? "" : "; ") + f.text;
+  return s;
+}
+
 }  // namespace xval

@@ -17,6 +17,7 @@
 // deviates (renderers/registry.h attribute) weighs them differently.
 #pragma once
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -47,5 +48,25 @@ bool failsOnlyOnFraction(const std::vector<PairFailure>& failed);
 // results.json's pair "failed": [{"key", "text", "brief"}, ...] (empty: the
 // pair passes).
 nlohmann::json failedJson(const std::vector<PairFailure>& failed);
+
+// The failures of results.json's "failed" (nlohmann::json or
+// ordered_json); throws std::runtime_error "WHERE: ..." when it is not a
+// list of objects with "key", "text" and "brief" strings.
+template <class Json>
+std::vector<PairFailure> failedFromJson(const Json& failed, const std::string& where) {
+  if (!failed.is_array()) throw std::runtime_error(where + ": expected a list of failed criteria");
+  std::vector<PairFailure> out;
+  for (const auto& f : failed) {
+    for (const char* k : {"key", "text", "brief"})
+      if (!f.is_object() || !f.contains(k) || !f[k].is_string())
+        throw std::runtime_error(where + ": each entry needs a \"" + k + "\" string");
+    out.push_back({f["key"].template get<std::string>(), f["text"].template get<std::string>(),
+                   f["brief"].template get<std::string>()});
+  }
+  return out;
+}
+
+// Every failure's text, joined by "; ".
+std::string failedText(const std::vector<PairFailure>& failed);
 
 }  // namespace xval

@@ -12,6 +12,7 @@
 #include "files/output_folder.h"
 #include "geometry/scene_meshes.h"
 #include "image/compare.h"
+#include "image/pair_failure.h"
 #include "image/perceptual.h"
 #include "render/renderer.h"
 #include "renderers/job_export.h"
@@ -100,6 +101,8 @@ int crosscheck(const CrosscheckRequest& request) {
   writeImage(differenceImage(ref, ext), dir / "diff.exr", kDifferenceExrCompression);
   PerceptualMetrics pm = perceptualMetrics(ref, ext);
   nlohmann::json j = nlohmann::json::parse(toJson(m, tol, &pm));
+  const std::vector<PairFailure> failed = failedCriteria(m, tol);
+  j["failed"] = failedJson(failed);
   j["scene"] = scene.name;
   j["renderer"] = request.renderer;
   j["tolerance_reason"] = reason;
@@ -119,6 +122,7 @@ int crosscheck(const CrosscheckRequest& request) {
       m.mask_disagree_silhouette, m.over_tolerance, m.over_occlusion_edge, m.over_backfacing,
       m.over_grazing, m.over_texel_boundary, m.over_triangle_edge, m.over_unexplained, m.max_unexplained * 65535,
       tol.max_unexplained * 65535, ref_s, request.renderer.c_str(), info.seconds);
+  for (const PairFailure& f : failed) std::printf("  fails: %s\n", f.text.c_str());
   if (!reason.empty()) std::printf("  declared tolerance: %s\n", reason.c_str());
   return pass ? 0 : 1;
 }
@@ -146,6 +150,7 @@ nlohmann::json crosscheckAsResults(const CrosscheckRequest& request, const std::
         for (const auto& [who, seconds] : m.at("seconds").items())
           if (who == reference || who == request.renderer) c["renders"][who] = {{"seconds", seconds}};
         p["pass"] = m.at("pass");
+        p["failed"] = m.at("failed");
         p["metrics"] = m;
       }
     } catch (const std::exception& e) {
