@@ -89,7 +89,8 @@ string(FIND "${_html}" "<h2>Cases</h2>" _cases_at)
 string(SUBSTRING "${_html}" 0 ${_cases_at} _summary)
 expect_in("${_summary}" "<th></th><th>alpha</th><th>bravo</th><th>kilo</th><th>mike</th><th>zulu</th></tr>")
 expect_in("${_summary}" "<tr><th class=\"l\">reference</th><td title=\"reference-alpha\"")
-expect_in("${_summary}" "<td title=\"reference-kilo\" class=\"l fail\">FAIL")
+# The failing pair's cell names the first criterion it fails, with its numbers.
+expect_in("${_summary}" "<td title=\"reference-kilo\" class=\"l fail\">FAIL unexplained ")
 # The worst pair: an error before a failure.
 expect_in("${_summary}" "class=\"l err\">ERROR<br><span class=\"pairname\">reference-mike</span>")
 
