@@ -2,36 +2,21 @@
 #include "image/pair_failure.h"
 
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
+
+#include "validate/common/number_text.h"
 
 namespace xval {
 
 namespace {
 
-// "%.*f" of v.
-std::string decimals(double v, int d) {
-  if (std::isnan(v)) return "nan";
-  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", d, v);
-  return buf;
-}
-
-// A bound as declared: its digits, up to 6 significant ones ("99.9", "16").
-std::string declared(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-
 // v with at least `min_digits` decimals, and more (up to 9) until the text
 // itself is on the side of `bound` that v is (below: v < bound, else v >
 // bound): 99.8999% against 99.9% is "99.8999", never "99.90".
 std::string beside(double v, double bound, bool below, int min_digits) {
-  std::string s = decimals(v, min_digits);
+  std::string s = fixed(v, min_digits);
   for (int d = min_digits; d <= 9 && std::isfinite(v); ++d) {
-    s = decimals(v, d);
+    s = fixed(v, d);
     const double shown = std::strtod(s.c_str(), nullptr);
     if (below ? shown < bound : shown > bound) break;
   }
@@ -60,13 +45,13 @@ std::vector<PairFailure> failedCriteria(const CompareMetrics& m, const Tolerance
     const double cap16 = t.max_unexplained * 65535.0;
     const std::string v = beside(m.max_unexplained * 65535.0, cap16, false, 1);
     out.push_back({"unexplained_cap",
-                   "unexplained error " + v + "/65535 > cap " + declared(cap16) + "/65535 at (" +
+                   "unexplained error " + v + "/65535 > cap " + significant(cap16) + "/65535 at (" +
                        std::to_string(m.worst_unexplained_x) + ", " + std::to_string(m.worst_unexplained_y) + ")",
-                   "unexplained " + v + " > " + declared(cap16)});
+                   "unexplained " + v + " > " + significant(cap16)});
   }
   if (!(m.fraction_within >= t.fraction)) {
     const std::string v = beside(100.0 * m.fraction_within, 100.0 * t.fraction, true, 2) + "%";
-    const std::string need = declared(100.0 * t.fraction) + "%";
+    const std::string need = significant(100.0 * t.fraction) + "%";
     // The pixels outside, from the fraction of the covered ones.
     const long long outside =
         std::isfinite(m.fraction_within) ? std::llround((1.0 - m.fraction_within) * double(m.covered_both)) : -1;
