@@ -15,15 +15,8 @@ get_filename_component(XVAL ${XVAL} ABSOLUTE)  # the stand-in runs it from its w
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK}/def)
 file(COPY ${STANDIN} DESTINATION ${WORK}/def)
-foreach(_pair "alpha;pass" "kilo;dim")
-  list(GET _pair 0 _name)
-  list(GET _pair 1 _mode)
-  file(WRITE ${WORK}/def/${_name}.json "{\"format\": \"xval-renderer/1\",
- \"name\": \"${_name}\",
- \"input\": \"scene\",
- \"command\": [\"./standin_renderer.sh\", \"${_mode}\", \"{scene}\", \"{output}\", \"{width}\", \"{height}\"],
- \"version_command\": [\"./standin_renderer.sh\", \"--version\"]}\n")
-endforeach()
+write_standin_renderer(${WORK}/def alpha pass)
+write_standin_renderer(${WORK}/def kilo dim)
 # The default tolerance but for the cap: the whole scale.
 file(WRITE ${WORK}/wide_cap.json "{\"description\": \"the default, with no cap on unexplained error\",
  \"default\": {\"max_abs_16bit\": 2, \"fraction\": 0.999, \"max_unexplained_16bit\": 65535}}\n")

@@ -34,11 +34,7 @@ foreach(_name ${_users})
   elseif(_name STREQUAL "kilo")
     set(_mode dim)
   endif()
-  file(WRITE ${WORK}/def/${_name}.json "{\"format\": \"xval-renderer/1\",
- \"name\": \"${_name}\",
- \"input\": \"scene\",
- \"command\": [\"./standin_renderer.sh\", \"${_mode}\", \"{scene}\", \"{output}\", \"{width}\", \"{height}\"],
- \"version_command\": [\"./standin_renderer.sh\", \"--version\"]}\n")
+  write_standin_renderer(${WORK}/def ${_name} ${_mode})
 endforeach()
 
 # validate with the renderers and their files in the order given; the
