@@ -11,6 +11,7 @@
 #include "cli/commands.h"
 #include "image/compare.h"
 #include "renderers/registry.h"
+#include "image/pair_failure.h"
 #include "image/image_header.h"
 #include "image/perceptual.h"
 #include "validate/tolerances.h"
@@ -88,6 +89,7 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
       PerceptualMetrics pm = perceptualMetrics(a, b);
       if (args->json) {
         nlohmann::json j = nlohmann::json::parse(toJson(m, t, &pm));
+        j["failed"] = failedJson(failedCriteria(m, t));
         j["tolerance_source"] = tol_source;
         std::printf("%s\n", j.dump(2).c_str());
       } else {
@@ -109,6 +111,7 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
         std::printf("max unexplained %.3f (x/65535) at (%d, %d), cap %.6g\n", m.max_unexplained * 65535,
                     m.worst_unexplained_x, m.worst_unexplained_y, t.max_unexplained * 65535);
         std::printf("worst pixel (%d, %d)\n", m.worst_x, m.worst_y);
+        for (const PairFailure& f : failedCriteria(m, t)) std::printf("fails: %s\n", f.text.c_str());
       }
       return t.passes(m) ? 0 : 1;
      } catch (const std::exception& e) {

@@ -204,36 +204,33 @@ std::optional<PairKeyClash> pairKeyClash(const std::vector<std::string>& ids) {
 namespace {
 // No majority: say which pairs fail. "POV-Ray and Blender disagree (the
 // other pairs agree)" for one failing pair; "no two renderers agree" when
-// every pair fails; otherwise the failing pairs, "A and B disagree; ...".
+// every pair fails hard; otherwise the failing pairs, "A and B disagree;
+// C and D disagree only on the fraction within tolerance; ...".
 std::string failingPairsText(const std::vector<const Renderer*>& rs, const std::vector<RendererPair>& pairs,
                              const std::vector<int>& verdicts) {
   std::vector<std::string> failing;
+  size_t hard = 0;
   for (size_t k = 0; k < pairs.size(); ++k)
-    if (verdicts[k] == 0)
-      failing.push_back(rs[pairs[k].a]->sentenceSubject() + " and " + rs[pairs[k].b]->display_name + " disagree");
-  if (failing.size() == pairs.size()) return pairs.size() == 1 ? failing[0] : "no two renderers agree";
+    if (verdicts[k] == kPairFails || verdicts[k] == kPairFailsOnlyOnFraction) {
+      hard += verdicts[k] == kPairFails;
+      failing.push_back(rs[pairs[k].a]->sentenceSubject() + " and " + rs[pairs[k].b]->display_name + " disagree" +
+                        (verdicts[k] == kPairFails ? "" : " only on the fraction within tolerance"));
+    }
+  if (hard == pairs.size()) return pairs.size() == 1 ? failing[0] : "no two renderers agree";
   std::string out;
   for (size_t k = 0; k < failing.size(); ++k) out += (k == 0 ? "" : "; ") + failing[k];
-  return failing.size() == 1 ? out + " (the other pairs agree)" : out;
+  return failing.size() == 1 && pairs.size() > 1 ? out + " (the other pairs agree)" : out;
 }
-}  // namespace
 
-std::vector<size_t> deviating(size_t n, const std::vector<int>& verdicts) {
-  const std::vector<RendererPair> pairs = unorderedPairs(n);
-  if (verdicts.size() != pairs.size())
-    throw std::invalid_argument("deviating: " + std::to_string(verdicts.size()) + " verdicts for " +
-                                std::to_string(n) + " renderers (expected " + std::to_string(pairs.size()) + ")");
-  if (n < 2 || std::any_of(verdicts.begin(), verdicts.end(), [](int v) { return v != 1 && v != 0; }) ||
-      std::all_of(verdicts.begin(), verdicts.end(), [](int v) { return v == 1; }))
-    return {};
+// The majority M of n renderers whose pairs agree (agree[k] for
+// unorderedPairs(n)[k]): more than half, agreeing pairwise, every other
+// renderer disagreeing with each of M; the renderers outside it, or none.
+// Two such sets would share a member (both are over half) and then one's
+// outsider would agree with it: M is unique, so the first found is the one.
+std::vector<size_t> outsideMajority(size_t n, const std::vector<RendererPair>& pairs, const std::vector<bool>& agree) {
   // pass[a][b]: renderers a and b agree.
   std::vector<std::vector<bool>> pass(n, std::vector<bool>(n, true));
-  for (size_t k = 0; k < pairs.size(); ++k)
-    pass[pairs[k].a][pairs[k].b] = pass[pairs[k].b][pairs[k].a] = verdicts[k] == 1;
-  // The majority M: more than half, agreeing pairwise, every other
-  // renderer failing against each of M. Two such sets would share a member
-  // (both are over half) and then one's outsider would agree with it: M is
-  // unique, so the first found is the one.
+  for (size_t k = 0; k < pairs.size(); ++k) pass[pairs[k].a][pairs[k].b] = pass[pairs[k].b][pairs[k].a] = agree[k];
   for (uint32_t m = 1; n <= 20 && m < (uint32_t(1) << n); ++m) {  // 2^n subsets: not for more
     const size_t size = size_t(std::popcount(m));
     if (2 * size <= n || size == n) continue;
@@ -252,24 +249,65 @@ std::vector<size_t> deviating(size_t n, const std::vector<int>& verdicts) {
   return {};
 }
 
+// Who deviates (registry.h attribute), and how M was found: with soft
+// failures counted as agreement (`lenient`), or as failures.
+struct Deviation {
+  std::vector<size_t> out;
+  bool lenient = false;
+};
+
+Deviation deviation(size_t n, const std::vector<int>& verdicts, const char* caller) {
+  const std::vector<RendererPair> pairs = unorderedPairs(n);
+  if (verdicts.size() != pairs.size())
+    throw std::invalid_argument(std::string(caller) + ": " + std::to_string(verdicts.size()) + " verdicts for " +
+                                std::to_string(n) + " renderers (expected " + std::to_string(pairs.size()) + ")");
+  auto known = [](int v) { return v == kPairPasses || v == kPairFails || v == kPairFailsOnlyOnFraction; };
+  if (n < 2 || !std::all_of(verdicts.begin(), verdicts.end(), known) ||
+      std::all_of(verdicts.begin(), verdicts.end(), [](int v) { return v == kPairPasses; }))
+    return {};
+  std::vector<bool> agree_lenient, agree_strict;
+  for (int v : verdicts) {
+    agree_lenient.push_back(v != kPairFails);
+    agree_strict.push_back(v == kPairPasses);
+  }
+  if (std::vector<size_t> out = outsideMajority(n, pairs, agree_lenient); !out.empty()) return {out, true};
+  // A hard failure no majority explains: a majority found on soft failures
+  // would blame a renderer for rounding.
+  if (std::find(verdicts.begin(), verdicts.end(), kPairFails) != verdicts.end()) return {};
+  return {outsideMajority(n, pairs, agree_strict), false};
+}
+}  // namespace
+
+std::vector<size_t> deviating(size_t n, const std::vector<int>& verdicts) {
+  return deviation(n, verdicts, "deviating").out;
+}
+
 std::string attribute(const std::vector<const Renderer*>& rs, const std::vector<int>& verdicts) {
   const size_t n = rs.size();
   const std::vector<RendererPair> pairs = unorderedPairs(n);
-  if (verdicts.size() != pairs.size())
-    throw std::invalid_argument("attribute: " + std::to_string(verdicts.size()) + " verdicts for " +
-                                std::to_string(n) + " renderers (expected " + std::to_string(pairs.size()) + ")");
+  const Deviation d = deviation(n, verdicts, "attribute");
   if (n < 2) return "nothing compared (fewer than two renderers)";
   if (std::any_of(verdicts.begin(), verdicts.end(), [](int v) { return v < 0; }))
     return "incomplete (a renderer failed)";
-  if (std::all_of(verdicts.begin(), verdicts.end(), [](int v) { return v == 1; }))
+  if (std::all_of(verdicts.begin(), verdicts.end(), [](int v) { return v == kPairPasses; }))
     return n == 2 ? "both agree" : n == 3 ? "all three agree" : "all " + std::to_string(n) + " agree";
-  if (const std::vector<size_t> out = deviating(n, verdicts); !out.empty()) {
-    std::vector<std::string> deviators, agreeing;
+  if (!d.out.empty()) {
+    auto deviates = [&](size_t k) { return std::find(d.out.begin(), d.out.end(), k) != d.out.end(); };
+    std::vector<std::string> deviators, agreeing, soft;
     for (size_t k = 0; k < n; ++k)
-      if (std::find(out.begin(), out.end(), k) != out.end()) deviators.push_back(rs[k]->sentenceSubject());
+      if (deviates(k)) deviators.push_back(rs[k]->sentenceSubject());
       else agreeing.push_back(rs[k]->display_name);
-    return joinNames(deviators) + (deviators.size() == 1 ? " deviates (" : " deviate (") + joinNames(agreeing) +
-           " agree)";
+    for (size_t k = 0; k < pairs.size(); ++k)
+      if (verdicts[k] == kPairFailsOnlyOnFraction && !deviates(pairs[k].a) && !deviates(pairs[k].b))
+        soft.push_back(rs[pairs[k].a]->sentenceSubject() + " and " + rs[pairs[k].b]->display_name);
+    const std::string verb = deviators.size() == 1 ? " deviates" : " deviate";
+    if (!d.lenient)
+      return joinNames(deviators) + verb + ", only on the fraction within tolerance (" + joinNames(agreeing) + " agree)";
+    if (soft.empty()) return joinNames(deviators) + verb + " (" + joinNames(agreeing) + " agree)";
+    std::string soft_text;
+    for (size_t k = 0; k < soft.size(); ++k) soft_text += (k == 0 ? "" : ", ") + soft[k];
+    return joinNames(deviators) + verb + " (unexplained differences against " + joinNames(agreeing) + "; " + soft_text +
+           " fail only on the fraction within tolerance)";
   }
   return failingPairsText(rs, pairs, verdicts);
 }

@@ -122,17 +122,35 @@ struct PairKeyClash {
 };
 std::optional<PairKeyClash> pairKeyClash(const std::vector<std::string>& ids);
 
+// A pair's verdict, as attribute and deviating read them: it passes, it
+// fails (hard: a mask disagreement or an unexplained error over the cap,
+// or nothing covered: image/pair_failure.h), or it fails only on the
+// fraction within tolerance (soft: many small differences under the cap,
+// such as rounding). A negative verdict: the pair was not compared.
+constexpr int kPairPasses = 1, kPairFails = 0, kPairFailsOnlyOnFraction = 2;
+
 // Who deviates, from the pairwise verdicts of `renderers` (verdicts[k] for
-// unorderedPairs(renderers.size())[k]: 1 pass, 0 fail, -1 not compared).
+// unorderedPairs(renderers.size())[k], as above).
 //   - any pair not compared: "incomplete (a renderer failed)";
 //   - every pair passes: "all three agree" ("both agree", "all N agree");
 //   - a majority M (more than half of them) agree pairwise and every
 //     renderer outside M fails against every member of M (such an M is
-//     unique): "X deviates (A and B agree)", "X and Y deviate (...)";
+//     unique): "X deviates (A and B agree)", "X and Y deviate (...)".
+//     M is looked for first with soft failures counted as agreement: a
+//     renderer with unexplained differences against the others is named
+//     even when the others fail among themselves on the fraction alone,
+//     "X deviates (unexplained differences against A and B; A and B fail
+//     only on the fraction within tolerance)". When that finds no M and
+//     some pair fails hard, nobody is named on soft failures (that would
+//     blame a renderer for rounding beside a real fault it is not part
+//     of). When every failure is soft, M is looked for with them as
+//     failures: "X deviates, only on the fraction within tolerance (A and
+//     B agree)";
 //   - otherwise the failing pairs: "POV-Ray and Blender disagree (the other
 //     pairs agree)" when one pair fails, "A and B disagree; C and D
-//     disagree" for several, "no two renderers agree" when every pair fails
-//     ("A and B disagree" for two renderers).
+//     disagree only on the fraction within tolerance" for several, "no two
+//     renderers agree" when every pair fails hard ("A and B disagree" for
+//     two renderers).
 // For three renderers this is the one deviating from the other two.
 std::string attribute(const std::vector<const Renderer*>& renderers, const std::vector<int>& verdicts);
 // The renderers outside that majority M (indices into the n renderers, in

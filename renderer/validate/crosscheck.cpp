@@ -12,6 +12,7 @@
 #include "files/output_folder.h"
 #include "geometry/scene_meshes.h"
 #include "image/compare.h"
+#include "image/pair_failure.h"
 #include "image/perceptual.h"
 #include "render/renderer.h"
 #include "renderers/job_export.h"
@@ -100,6 +101,8 @@ int crosscheck(const CrosscheckRequest& request) {
   writeImage(differenceImage(ref, ext), dir / "diff.exr", kDifferenceExrCompression);
   PerceptualMetrics pm = perceptualMetrics(ref, ext);
   nlohmann::json j = nlohmann::json::parse(toJson(m, tol, &pm));
+  const std::vector<PairFailure> failed = failedCriteria(m, tol);
+  j["failed"] = failedJson(failed);
   j["scene"] = scene.name;
   j["renderer"] = request.renderer;
   j["tolerance_reason"] = reason;
@@ -117,6 +120,7 @@ int crosscheck(const CrosscheckRequest& request) {
       100 * m.fraction_within, 100 * tol.fraction, m.mask_disagree,
       m.mask_disagree_explained, m.over_tolerance, classCountsText(m).c_str(), m.max_unexplained * 65535,
       tol.max_unexplained * 65535, ref_s, request.renderer.c_str(), info.seconds);
+  for (const PairFailure& f : failed) std::printf("  fails: %s\n", f.text.c_str());
   if (!reason.empty()) std::printf("  declared tolerance: %s\n", reason.c_str());
   return pass ? 0 : 1;
 }
@@ -144,6 +148,7 @@ nlohmann::json crosscheckAsResults(const CrosscheckRequest& request, const std::
         for (const auto& [who, seconds] : m.at("seconds").items())
           if (who == reference || who == request.renderer) c["renders"][who] = {{"seconds", seconds}};
         p["pass"] = m.at("pass");
+        p["failed"] = m.at("failed");
         p["metrics"] = m;
       }
     } catch (const std::exception& e) {

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "image/pair_failure.h"
 #include "validate/validation/case_verdict.h"
 #include "validate/validation/geometry_checks.h"
 
@@ -142,7 +143,9 @@ std::string junitXml(const J& results, const std::string& suite_name) {
         body += "/>\n";
       } else if (jp.contains("pass") && jp["pass"] == false && jp.contains("metrics")) {
         ++n.failures;
-        body += ">\n      <failure message=\"" + xmlEscape("outside the tolerance: " + describeMetrics(jp["metrics"])) +
+        body += ">\n      <failure message=\"" +
+                xmlEscape("outside the tolerance: " + failedText(failedFromJson(field(jp, "failed", pw), pw + ".failed")) +
+                          "; " + describeMetrics(jp["metrics"])) +
                 "\" type=\"outside_tolerance\"/>\n    </testcase>\n";
       } else {
         throw std::runtime_error(pw + ": neither \"pass\" (with \"metrics\"), \"error\" nor \"not_expressible\"");

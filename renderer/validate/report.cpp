@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "image/image.h"
+#include "image/pair_failure.h"
 #include "process/run_process.h"
 #include "render/geometry_passes.h"
 #include "renderers/registry.h"
@@ -223,13 +224,12 @@ std::string verdictCell(const std::string& v) {
   return std::string("class=\"l ") + cls + "\">" + upper;
 }
 
-// A pair's verdict and its max unexplained error, as a table cell's class
-// attribute on: "class="l fail">FAIL 12.34".
+// A pair's summary (report.h pairSummary) as a table cell's class attribute
+// on: "class="l fail">FAIL fraction 99.81% &lt; 99.9%".
 std::string pairCell(const J& p) {
   if (p.contains("not_expressible")) return "class=\"l nexp\">not expressible";
-  std::string cell = verdictCell(pairVerdict(p));
-  if (p.contains("metrics")) cell += " " + fixed(p["metrics"].value("max_unexplained_16bit", J()), 2);
-  return cell;
+  const std::string cell = verdictCell(pairVerdict(p));
+  return cell.substr(0, cell.find('>') + 1) + htmlEscape(pairSummary(p));
 }
 
 // How bad a pair's verdict is: error, fail, pass, not expressible.
@@ -414,6 +414,16 @@ void requireSectionFile(const fs::path& folder, const char* file, const char* wh
 
 }  // namespace
 
+std::string pairSummary(const J& p) {
+  std::string text;
+  for (char ch : pairVerdict(p)) text += char(std::toupper(static_cast<unsigned char>(ch)));
+  const J none = J::array();
+  const J& failed = p.contains("failed") ? p["failed"] : none;
+  if (!failed.empty()) return text + " " + failed[0]["brief"].get<std::string>();
+  if (p.contains("metrics")) text += " " + fixed(p["metrics"].value("max_unexplained_16bit", J()), 2);
+  return text;
+}
+
 nlohmann::ordered_json sectionsJson(const ReportSections& sections, const fs::path& results_dir) {
   J j = J::object();
   if (sections.extremes) {
@@ -531,7 +541,7 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   h << "<h2>Summary</h2>\n<table id=\"summary\"><tr><th class=\"l\">scene</th><th class=\"l\">verdict</th>"
        "<th class=\"l\">who deviates</th>";
   if (!pairs.empty())
-    h << "<th class=\"l\">worst pair<br>verdict, max unexplained</th><th class=\"l\">pairs<br>(" << pairs.size()
+    h << "<th class=\"l\">worst pair<br>verdict: the first criterion it fails, or its max unexplained</th><th class=\"l\">pairs<br>(" << pairs.size()
       << "; open for the renderers x renderers matrix)</th>";
   for (const auto& g : check_ids) h << "<th>" << htmlEscape(g) << "<br>verdict</th>";
   h << "</tr>\n";
@@ -654,6 +664,12 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
     }
     h << "</table>\n";
     h << geometryChecksTable(c);
+    // Why each failing pair fails: every criterion, with its numbers.
+    for (const auto& p : c["pairs"]) {
+      if (p.value("failed", J::array()).empty()) continue;
+      h << "<p class=\"reason\"><b>" << htmlEscape(p["pair"].get<std::string>()) << " fails:</b> "
+        << htmlEscape(failedText(failedFromJson(p["failed"], "failed"))) << "</p>\n";
+    }
     for (const auto& p : c["pairs"])
       if (p.contains("metrics") && !p["metrics"].value("tolerance_reason", "").empty())
         h << "<p class=\"reason\"><b>" << htmlEscape(p["pair"].get<std::string>())

@@ -62,4 +62,11 @@ std::string writeHeatMapPng(const Image& diff, const std::filesystem::path& resu
 
 std::string htmlEscape(const std::string& s);
 
+// What the summary shows of a pair of results.json (not HTML-escaped): its
+// verdict in capitals, then, when it fails, the short form of the first
+// criterion it fails ("FAIL fraction 99.81% < 99.9%": results.json
+// "failed", image/pair_failure.h), else its max unexplained error in
+// 1/65535 ("PASS 3.76"); "ERROR" for a pair not compared.
+std::string pairSummary(const nlohmann::ordered_json& pair);
+
 }  // namespace xval

@@ -13,6 +13,9 @@
 #   --version and otherwise runs the shell text MAKE with $out set to the
 #   image path the real POV-Ray would write (scene.ini's Output_File_Name,
 #   or a +O argument).
+# write_standin_renderer(DIR NAME MODE): DIR/NAME.json, a renderer file
+#   (docs/renderer-file.md) of renderer NAME that runs the stand-in
+#   DIR/standin_renderer.sh (tests/cli) in MODE.
 # expect_valid_junit(FILE XSD): fails unless xmllint finds FILE valid
 #   against the schema XSD (tests/junit/junit.xsd); a missing xmllint fails.
 function(require_defined script)
@@ -67,6 +70,14 @@ function(write_povray_stand_in bin make)
     "for a in \"$@\"; do o=$(echo \"$a\" | /bin/sed -n 's/^+O//p'); [ -z \"$o\" ] || out=$o; done\n"
     "${make}\n")
   file(CHMOD ${bin}/povray PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
+endfunction()
+
+function(write_standin_renderer dir name mode)
+  file(WRITE ${dir}/${name}.json "{\"format\": \"xval-renderer/1\",
+ \"name\": \"${name}\",
+ \"input\": \"scene\",
+ \"command\": [\"./standin_renderer.sh\", \"${mode}\", \"{scene}\", \"{output}\", \"{width}\", \"{height}\"],
+ \"version_command\": [\"./standin_renderer.sh\", \"--version\"]}\n")
 endfunction()
 
 function(expect_valid_junit file xsd)

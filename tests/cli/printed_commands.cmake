@@ -94,6 +94,9 @@ define_standin(dim)
 run_xval(1 _o validate "${_set}/scenes" --renderers reference,golden,standin --renderer-file "${_def}"
          --tolerances ${WORK}/tol/tolerances.json -o ${WORK}/out1)
 expect("${_o}" "FAIL tiny \\(standin deviates" "the standin is to blame")
+# Each failing pair says which criteria it fails, with their numbers.
+expect("${_o}" "\n  reference-standin fails: unexplained error [0-9.]+/65535 > cap 128/65535 at \\([0-9]+, [0-9]+\\)"
+       "the failing pair's criteria")
 if(_o MATCHES "golden update")
   message(FATAL_ERROR "a golden update step was printed although the reference is not to blame:\n${_o}")
 endif()

@@ -34,11 +34,7 @@ foreach(_name ${_users})
   elseif(_name STREQUAL "kilo")
     set(_mode dim)
   endif()
-  file(WRITE ${WORK}/def/${_name}.json "{\"format\": \"xval-renderer/1\",
- \"name\": \"${_name}\",
- \"input\": \"scene\",
- \"command\": [\"./standin_renderer.sh\", \"${_mode}\", \"{scene}\", \"{output}\", \"{width}\", \"{height}\"],
- \"version_command\": [\"./standin_renderer.sh\", \"--version\"]}\n")
+  write_standin_renderer(${WORK}/def ${_name} ${_mode})
 endforeach()
 
 # validate with the renderers and their files in the order given; the
@@ -89,7 +85,8 @@ string(FIND "${_html}" "<h2>Cases</h2>" _cases_at)
 string(SUBSTRING "${_html}" 0 ${_cases_at} _summary)
 expect_in("${_summary}" "<th></th><th>alpha</th><th>bravo</th><th>kilo</th><th>mike</th><th>zulu</th></tr>")
 expect_in("${_summary}" "<tr><th class=\"l\">reference</th><td title=\"reference-alpha\"")
-expect_in("${_summary}" "<td title=\"reference-kilo\" class=\"l fail\">FAIL")
+# The failing pair's cell names the first criterion it fails, with its numbers.
+expect_in("${_summary}" "<td title=\"reference-kilo\" class=\"l fail\">FAIL unexplained ")
 # The worst pair: an error before a failure.
 expect_in("${_summary}" "class=\"l err\">ERROR<br><span class=\"pairname\">reference-mike</span>")
 

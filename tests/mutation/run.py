@@ -33,6 +33,7 @@ are Debian's (python3-numpy, python3-openimageio).
 import argparse
 import json
 import os
+import re
 import subprocess
 import sys
 import time
@@ -151,19 +152,35 @@ def read_cases(out):
         return {c["scene"]: c for c in json.load(f)["cases"]}
 
 
+# How renderers::attribute (registry.cpp) says that a pair disagrees: at
+# the end of its clause, before "(the other pairs agree)", or before "only
+# on the fraction within tolerance" (a pair failing on the fraction alone).
+DISAGREE_CLAUSE = re.compile(r" disagree( \(| only on the fraction|$)")
+
+
 def names_as_deviating(attribution, name):
     """Whether the attribution (renderers::attribute in registry.cpp) puts
     `name` among the renderers that deviate ("X deviates (A and B agree)",
-    "X and Y deviate (...)") or in a pair that disagrees ("A and X
-    disagree; ..."), not among those that agree."""
+    "X deviates (unexplained differences against A and B; A and B fail
+    only on the fraction within tolerance)", "X deviates, only on the
+    fraction within tolerance (...)", "X and Y deviate (...)") or in a pair
+    that disagrees ("A and X disagree; ...", "A and X disagree only on the
+    fraction within tolerance"), not among those that agree."""
     for clause in attribution.split("; "):
         if " deviate" in clause:
             if name in clause.split(" deviate")[0]:
                 return True
-        elif clause.endswith(" disagree") or " disagree (" in clause:
+        elif DISAGREE_CLAUSE.search(clause):
             if name in clause.split(" disagree")[0]:
                 return True
     return False
+
+
+def fails_hard(pair):
+    """Whether a pair of results.json fails on more than the fraction within
+    tolerance (a mask disagreement, the unexplained cap: its "failed"
+    criteria, renderer/image/pair_failure.h)."""
+    return pair.get("pass") is False and any(f["key"] != "fraction" for f in pair.get("failed", []))
 
 
 def miss_cause(cell, correct_cases):
@@ -175,7 +192,10 @@ def miss_cause(cell, correct_cases):
         return "no case"
     pairs = {p["pair"]: p for p in correct_cases.get(cell["scene"], {}).get("pairs", [])}
     beside = "-".join(BESIDE_MUTANT)
-    if beside in pairs and not pairs[beside]["pass"]:
+    # A pair of correct renderers failing on the fraction alone still lets
+    # the attribution single the mutant out (renderers::attribute): only a
+    # hard failure between them leaves no majority.
+    if beside in pairs and fails_hard(pairs[beside]):
         return "fails, but %s already disagree (no majority to single the mutant out)" % " and ".join(BESIDE_MUTANT)
     return "fails, attribution does not name the mutant"
 

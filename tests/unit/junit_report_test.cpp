@@ -18,7 +18,7 @@ namespace {
 J results() {
   J metrics_fail = {{"p999_abs_16bit", 9.5},       {"max_abs_16bit", 300.0},
                     {"fraction_within", 0.95},     {"mask_disagree", 3},
-                    {"mask_disagree_silhouette", 1}, {"tolerance", {{"max_abs_16bit", 2.0}, {"fraction", 0.999}}},
+                    {"mask_disagree_explained", 1}, {"tolerance", {{"max_abs_16bit", 2.0}, {"fraction", 0.999}}},
                     {"tolerance_reason", ""}};
   J metrics_pass = metrics_fail;
   metrics_pass["fraction_within"] = 1.0;
@@ -27,13 +27,20 @@ J results() {
            {{{"scene", "knot <&\"'\x01>"},
              {"renders", {{"reference", {{"seconds", 0.25}}}, {"povray", {{"seconds", 1.5}}}, {"blender", {{"seconds", 2.0}, {"error", "exit code 1 <tail>"}}}}},
              {"pairs",
-              {{{"pair", "reference-povray"}, {"pass", true}, {"metrics", metrics_pass}},
+              {{{"pair", "reference-povray"}, {"pass", true}, {"failed", J::array()}, {"metrics", metrics_pass}},
                {{"pair", "reference-blender"}, {"error", "not compared: a render failed"}},
                {{"pair", "povray-blender"}, {"error", "not compared: a render failed"}}}}},
             {{"scene", "sphere"},
              {"renders", {{"reference", {{"seconds", 0.00001}}}, {"povray", {{"seconds", 1.0}}}}},
              {"pairs",
-              {{{"pair", "reference-povray"}, {"pass", false}, {"metrics", metrics_fail}},
+              {{{"pair", "reference-povray"},
+                {"pass", false},
+                {"failed",
+                 {{{"key", "mask"}, {"text", "2 mask disagreements no edge explains"}, {"brief", "2 mask disagreements"}},
+                  {{"key", "fraction"},
+                   {"text", "fraction within tolerance 95.00% < 99.9% (5 of 100 pixels outside)"},
+                   {"brief", "fraction 95.00% < 99.9%"}}}},
+                {"metrics", metrics_fail}},
                {{"pair", "reference-blender"}, {"not_expressible", "blender: spp 9 not supported"}}}}}}}};
 }
 
@@ -55,7 +62,9 @@ TEST(JunitReport, OneTestcasePerScenePairWithItsOutcome) {
   EXPECT_NE(x.find("<testsuite name=\"reference set\" tests=\"5\" failures=\"1\" errors=\"2\" skipped=\"1\""),
             std::string::npos) << x;
   EXPECT_NE(x.find("<testcase classname=\"sphere\" name=\"reference-povray\""), std::string::npos) << x;
-  EXPECT_NE(x.find("<failure message=\"outside the tolerance: p99.9 9.5/65535, max 300/65535, 95% within "
+  // The failing criteria first, then the figures.
+  EXPECT_NE(x.find("<failure message=\"outside the tolerance: 2 mask disagreements no edge explains; fraction within "
+                   "tolerance 95.00% &lt; 99.9% (5 of 100 pixels outside); p99.9 9.5/65535, max 300/65535, 95% within "
                    "2/65535 (needs 99.9%), 2 mask disagreements off silhouettes\""),
             std::string::npos) << x;
   EXPECT_NE(x.find("<skipped message=\"not expressible: blender: spp 9 not supported\"/>"), std::string::npos) << x;

@@ -182,6 +182,57 @@ TEST(Attribution, DeviatingAreTheOnesOutsideTheMajority) {
   EXPECT_THROW(deviating(3, {1, 1}), std::invalid_argument);
 }
 
+// Soft failures (a pair failing only on the fraction within tolerance,
+// image/pair_failure.h) beside hard ones (issue #36): the renderer with
+// unexplained differences against the others is the one named.
+TEST(Attribution, SoftFailuresDoNotHideTheRendererThatFailsHard) {
+  const std::vector<Renderer> three{stub("reference", "reference", true), stub("gl", "OpenGL"),
+                                    stub("mutant", "mutant")};
+  const auto rs = pointers(three);
+  const int pass = kPairPasses, hard = kPairFails, soft = kPairFailsOnlyOnFraction;
+  // reference-gl, reference-mutant, gl-mutant: reference and OpenGL fail
+  // on the fraction alone, the mutant fails hard against both. The
+  // majority of pass verdicts found nobody ("no two renderers agree").
+  EXPECT_EQ(attribute(rs, {soft, hard, hard}),
+            "mutant deviates (unexplained differences against reference and OpenGL; reference and OpenGL fail only "
+            "on the fraction within tolerance)");
+  EXPECT_EQ(deviating(3, {soft, hard, hard}), (std::vector<size_t>{2}));
+  // The mutant passes against OpenGL (its fault is where OpenGL's pixels
+  // are explained) and fails hard against the reference, which fails
+  // against OpenGL on the fraction alone: the majority of pass verdicts
+  // blamed the reference. Nobody is singled out; the hard pair is named.
+  EXPECT_TRUE(deviating(3, {soft, hard, pass}).empty());
+  EXPECT_EQ(attribute(rs, {soft, hard, pass}),
+            "reference and OpenGL disagree only on the fraction within tolerance; reference and mutant disagree");
+  // Every failure soft: the majority of pass verdicts, said to be about
+  // the fraction.
+  EXPECT_EQ(attribute(rs, {pass, soft, soft}),
+            "mutant deviates, only on the fraction within tolerance (reference and OpenGL agree)");
+  EXPECT_EQ(deviating(3, {pass, soft, soft}), (std::vector<size_t>{2}));
+  EXPECT_EQ(attribute(rs, {soft, soft, soft}),
+            "reference and OpenGL disagree only on the fraction within tolerance; reference and mutant disagree only on "
+            "the fraction within tolerance; OpenGL and mutant disagree only on the fraction within tolerance");
+  // Hard failures against a majority that passes: as before.
+  EXPECT_EQ(attribute(rs, {pass, hard, hard}), "mutant deviates (reference and OpenGL agree)");
+  // A mutant failing soft against one and hard against the other: no majority.
+  EXPECT_TRUE(deviating(3, {pass, soft, hard}).empty());
+  const std::vector<Renderer> two{stub("a", "A", true), stub("b", "B")};
+  EXPECT_EQ(attribute(pointers(two), {soft}), "A and B disagree only on the fraction within tolerance");
+  EXPECT_TRUE(deviating(2, {soft}).empty());
+}
+
+// Four renderers: two correct ones fail among themselves on the fraction,
+// the other pairs of the majority pass, the mutant fails hard against all.
+TEST(Attribution, SoftFailuresInsideALargerMajority) {
+  const std::vector<Renderer> four{stub("a", "A", true), stub("b", "B"), stub("c", "C"), stub("d", "D")};
+  const int pass = kPairPasses, hard = kPairFails, soft = kPairFailsOnlyOnFraction;
+  // pairs: ab ac ad bc bd cd
+  EXPECT_EQ(attribute(pointers(four), {soft, pass, hard, pass, hard, hard}),
+            "D deviates (unexplained differences against A, B and C; A and B fail only on the fraction within "
+            "tolerance)");
+  EXPECT_EQ(deviating(4, {soft, pass, hard, pass, hard, hard}), (std::vector<size_t>{3}));
+}
+
 // A scene's `renderers` field: a golden set stands in for the renderer
 // whose images it stores (issue #30: `golden` was left out of a scene
 // meant for the reference).

@@ -9,6 +9,7 @@
 #include "files/scratch_folder.h"
 #include "golden/golden_set.h"
 #include "image/compare.h"
+#include "image/pair_failure.h"
 #include "process/run_process.h"
 #include "process/shell_word.h"
 #include "render/renderer.h"
@@ -181,9 +182,11 @@ int goldenCheck(const GoldenRequest& request) {
         (reason.empty() ? "" : "; declared: " + reason);
     if (pass)
       std::printf("pass %s (%s): %s\n", file.string().c_str(), request.precision.c_str(), figures.c_str());
-    else
+    else {
+      const std::string why = failedText(failedCriteria(cm, tol));
       fail("outside the tolerance against " + (folder / e.image).string() + " (stored " + e.date_utc + ", " +
-           e.git_commit + "): " + figures);
+           e.git_commit + "): " + why + "; " + figures);
+    }
   }
   std::printf("%zu of %zu scenes match their golden images of %s\n", files.size() - size_t(failed), files.size(),
               r.display_name.c_str());

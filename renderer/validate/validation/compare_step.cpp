@@ -21,6 +21,7 @@
 #include "image/compare.h"
 #include "image/heat_map.h"
 #include "image/image.h"
+#include "image/pair_failure.h"
 #include "image/perceptual.h"
 #include "process/job_pool.h"
 #include "renderers/registry.h"
@@ -103,17 +104,20 @@ J renderJson(const RenderJob& job, const Render& r) {
   return jr;
 }
 
-// Pair verdicts (renderers::attribute's: -1 not compared for a failed
-// render; and -2 for a pair that one of its renderers cannot express: not
-// compared, and no error). -3: both renders are there but cannot be
-// compared (images of different sizes: one was replaced after its record
-// said ok), an error of the case that compareCase passes on to
+// Pair verdicts (renderers::attribute's, registry.h: pass, fail, and a
+// failure of the fraction within tolerance alone; -1 not compared for a
+// failed render; and -2 for a pair that one of its renderers cannot
+// express: not compared, and no error). -3: both renders are there but
+// cannot be compared (images of different sizes: one was replaced after
+// its record said ok), an error of the case that compareCase passes on to
 // renderers::attribute as not compared.
-constexpr int kPass = 1, kFail = 0, kRenderError = -1, kNotExpressible = -2, kCompareError = -3;
+constexpr int kPass = renderers::kPairPasses, kFail = renderers::kPairFails,
+              kFailOnlyFraction = renderers::kPairFailsOnlyOnFraction, kRenderError = -1, kNotExpressible = -2,
+              kCompareError = -3;
 
-void comparedPair(const CompareContext& cx, const Scene& scene, const std::string& key, const Tolerance& tol,
-                  const PairPrecision& precision, const std::string& reason, Render& A, Render& B, Renders& renders,
-                  J& jp);
+std::vector<PairFailure> comparedPair(const CompareContext& cx, const Scene& scene, const std::string& key,
+                                      const Tolerance& tol, const PairPrecision& precision, const std::string& reason,
+                                      Render& A, Render& B, Renders& renders, J& jp);
 
 // One pair of one case: compared with its tolerance, its difference EXR
 // and heat map written.
@@ -156,9 +160,10 @@ J comparePair(const CompareContext& cx, const Scene& scene, const renderers::Ren
     A.image.texel_edge = diagnostics->texel_edge;
     A.image.triangle_edge = diagnostics->triangle_edge;
   }
+  std::vector<PairFailure> failed;
   try {
     const PairPrecision precision{renderers::precisionOf(ra), renderers::precisionOf(rb)};
-    comparedPair(cx, scene, key, tol, precision, reason, A, B, renders, jp);
+    failed = comparedPair(cx, scene, key, tol, precision, reason, A, B, renders, jp);
   } catch (const std::exception& e) {
     // This pair's error, naming its files: the other pairs and cases are
     // still compared and reported.
@@ -169,15 +174,16 @@ J comparePair(const CompareContext& cx, const Scene& scene, const renderers::Ren
                         std::to_string(B.image.width) + "x" + std::to_string(B.image.height) + "): " + e.what()}};
     return jp;
   }
-  verdict = jp["pass"].get<bool>() ? kPass : kFail;
+  verdict = failed.empty() ? kPass : failsOnlyOnFraction(failed) ? kFailOnlyFraction : kFail;
   return jp;
 }
 
 // A pair whose two renders are there: its metrics, difference EXR, heat map
-// and crops into jp. Throws when the images cannot be compared.
-void comparedPair(const CompareContext& cx, const Scene& scene, const std::string& key, const Tolerance& tol,
-                  const PairPrecision& precision, const std::string& reason, Render& A, Render& B, Renders& renders,
-                  J& jp) {
+// and crops into jp; returns the criteria it fails (none: it passes).
+// Throws when the images cannot be compared.
+std::vector<PairFailure> comparedPair(const CompareContext& cx, const Scene& scene, const std::string& key,
+                                      const Tolerance& tol, const PairPrecision& precision, const std::string& reason,
+                                      Render& A, Render& B, Renders& renders, J& jp) {
   CompareMetrics m = compareImages(A.image, B.image, tol, precision);
   PerceptualMetrics pm = perceptualMetrics(A.image, A.perceptualOnce(), B.image, B.perceptualOnce());
   const Image diff = differenceImage(A.image, B.image);
@@ -197,10 +203,13 @@ void comparedPair(const CompareContext& cx, const Scene& scene, const std::strin
   jm["precision"] = {{"a", precisionJson(precision.a)}, {"b", precisionJson(precision.b)}};
   jp["metrics"] = jm;
   jp["pass"] = tol.passes(m);
+  std::vector<PairFailure> failed = failedCriteria(m, tol);
+  jp["failed"] = failedJson(failed);
   // Known differences are the classified ones and a declared reason.
   jp["classification"] = {{"known", m.over_tolerance - m.over_unexplained()},
                           {"unexplained", m.over_unexplained()},
                           {"declared", !reason.empty()}};
+  return failed;
 }
 
 // The reference image's colour statistics (validate/colour_stats.h).
@@ -328,7 +337,9 @@ J compareCase(const CompareContext& cx, size_t k) {
   for (const auto& [id, r] : renders) tally.errors += !r.error.empty();
   tally.errors += compare_errors;
   tally.errors += geometryChecksWith(checks, "error");
-  tally.failed = static_cast<int>(std::count(verdict.begin(), verdict.end(), kFail)) + geometryChecksWith(checks, "fail");
+  tally.failed = static_cast<int>(std::count(verdict.begin(), verdict.end(), kFail) +
+                                  std::count(verdict.begin(), verdict.end(), kFailOnlyFraction)) +
+                 geometryChecksWith(checks, "fail");
   tally.passed = static_cast<int>(std::count(verdict.begin(), verdict.end(), kPass)) + geometryChecksWith(checks, "pass");
   const CaseVerdict v = caseVerdict(tally);
   jc["verdict"] = verdictName(v);

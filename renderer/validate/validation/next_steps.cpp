@@ -6,6 +6,7 @@
 #include <string>
 
 #include "golden/golden_set.h"
+#include "image/pair_failure.h"
 #include "process/shell_word.h"
 #include "renderers/registry.h"
 #include "validate/tolerances.h"
@@ -90,6 +91,12 @@ void printNextSteps(const Plan& plan, const nlohmann::ordered_json& cases) {
     const std::string options = runOptions(plan, ps.path);
     std::fprintf(stderr, "%s %s (%s)\n", v == CaseVerdict::Error ? "ERROR" : "FAIL", scene.c_str(),
                  jc["attribution"].get<std::string>().c_str());
+    // Each failing pair, with every criterion it fails (image/pair_failure.h).
+    for (const auto& p : jc["pairs"]) {
+      if (p.value("failed", nlohmann::ordered_json::array()).empty()) continue;
+      std::fprintf(stderr, "  %s fails: %s\n", p["pair"].get<std::string>().c_str(),
+                   failedText(failedFromJson(p["failed"], scene + ": failed")).c_str());
+    }
     // Every renderer of the case that rendered it, but the reference.
     for (const auto& [id, render] : jc["renders"].items())
       if (id != renderers::registry().reference().id && !render.contains("not_expressible"))
