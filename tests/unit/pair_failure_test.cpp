@@ -83,7 +83,7 @@ TEST(PairFailure, EmptyExactlyWhenThePairPasses) {
         for (double unexplained : {0.0, t.max_unexplained, std::nextafter(t.max_unexplained, 1.0), 1.0, inf, nan})
           for (double fraction : {1.0, t.fraction, std::nextafter(t.fraction, 0.0), 0.5, 0.0, nan}) {
             CompareMetrics m;
-            m.covered_both = covered, m.mask_disagree = mask, m.mask_disagree_silhouette = explained;
+            m.covered_both = covered, m.mask_disagree = mask, m.mask_disagree_explained = explained;
             m.max_unexplained = unexplained, m.fraction_within = fraction;
             const auto f = failedCriteria(m, t);
             EXPECT_EQ(f.empty(), t.passes(m)) << "covered " << covered << " mask " << mask << "/" << explained
