@@ -65,7 +65,7 @@ TEST(JunitReport, OneTestcasePerScenePairWithItsOutcome) {
   // The failing criteria first, then the figures.
   EXPECT_NE(x.find("<failure message=\"outside the tolerance: 2 mask disagreements no edge explains; fraction within "
                    "tolerance 95.00% &lt; 99.9% (5 of 100 pixels outside); p99.9 9.5/65535, max 300/65535, 95% within "
-                   "2/65535 (needs 99.9%), 2 mask disagreements off silhouettes\""),
+                   "2/65535 (needs 99.9%), 2 mask disagreements no edge explains\""),
             std::string::npos) << x;
   EXPECT_NE(x.find("<skipped message=\"not expressible: blender: spp 9 not supported\"/>"), std::string::npos) << x;
   EXPECT_NE(x.find("<error message=\"not compared: a render failed\" type=\"error\">blender: exit code 1 &lt;tail&gt;"),
