@@ -83,7 +83,8 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--stats", args->stats,
                   "Also write what was rendered and how long it took to this JSON file (reference "
                   "renderer: width, height, spp, precision, visibility, culled_triangles, shading, "
-                  "setup_s, frame_s; external: renderer, width, height, process_s)");
+                  "setup_s, frame_s, edge_fraction_s: the part of frame_s the diagnostics' edge-fraction pass took; "
+                  "external: renderer, width, height, process_s)");
   cmd->add_option("--timeout", args->timeout,
                   "Seconds before an external renderer is killed and the render fails (default 600)")
       ->check(Seconds);

@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "golden/golden_set.h"
+#include "head_on_camera.h"
 #include "image/image.h"
 #include "image/pixel_classes.h"
 #include "render/precision_probe.h"
@@ -24,19 +25,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A camera at z = 5 looking down -z at the origin, 100 x 100 pixels, 60
-// degrees: a world length in the plane z = 0 is kPixelsPerUnit pixels, and
-// world x maps to image x = 50 + kPixelsPerUnit x.
-Camera headOn() {
-  Camera c;
-  c.position = {0, 0, 5};
-  c.target = {0, 0, 0};
-  c.up = {0, 1, 0};
-  c.fov_y_deg = 60;
-  c.width = c.height = 100;
-  return c;
-}
-const double kPixelsPerUnit = 100.0 / (2.0 * std::tan(std::numbers::pi / 6)) / 5.0;
+// tests/unit/head_on_camera.h: world x maps to image x = 50 + kPixelsPerUnit x.
+using testing::headOn;
+const double kPixelsPerUnit = testing::headOnPixelsPerUnit();
 
 // A 2 x 2 square facing the camera whose left edge is at image x = left,
 // lit head-on (Lambert: every hit is its base colour).
