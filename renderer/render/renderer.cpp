@@ -241,14 +241,15 @@ __attribute__((flatten)) glm::vec<3, T> shadeHit(const Shading<T>& sh, const Hit
 
 // The precision probes of one sample (render/precision_probe.h): the
 // largest channel change of its saturated colour c under each probe, and
-// its saturated colour with N turned around. at: the sample's image point;
-// n: samples per pixel side.
+// its saturated colour with N turned around (when backfacing: shadeHit's
+// flag for it). at: the sample's image point; n: samples per pixel side.
 template <class T> struct SampleProbes {
   double position = 0.0, uv = 0.0, normal = 0.0;
   glm::vec<3, T> flipped{0};
 };
 template <class T>
-SampleProbes<T> probeSample(const Shading<T>& sh, const Hit& h, double step, glm::vec<3, T> c, glm::dvec2 at, int n) {
+SampleProbes<T> probeSample(const Shading<T>& sh, const Hit& h, double step, glm::vec<3, T> c, bool backfacing,
+                            glm::dvec2 at, int n) {
   using V = glm::vec<3, T>;
   SampleProbes<T> out;
   const ShadedMesh<T>& m = sh.meshes[h.mesh];
@@ -266,8 +267,6 @@ SampleProbes<T> probeSample(const Shading<T>& sh, const Hit& h, double step, glm
     if (std::isfinite(moved.b1) && std::isfinite(moved.b2)) out.position = std::max(out.position, change(moved, nullptr));
   }
   if (sh.mode == ShadingMode::Gouraud) return out;  // the model ran at the vertices: no uv, N or flip here
-  bool backfacing = false;
-  shadeHit(sh, h, step, backfacing);
   if (backfacing) {
     ShadingNudge<T> flip;
     flip.flip = true;
@@ -389,7 +388,7 @@ template <class T> struct Accumulation {
     px.final_sum += models::saturate(c);
     if (diag) {
       px.raw_sum += c;
-      const SampleProbes<T> probes = probeSample(sh, h, step, models::saturate(c), at, n);
+      const SampleProbes<T> probes = probeSample(sh, h, step, models::saturate(c), back, at, n);
       px.position += probes.position, px.uv += probes.uv, px.normal += probes.normal;
       px.flipped_sum += back ? probes.flipped : models::saturate(c);
     }
