@@ -51,6 +51,42 @@ Image render(const Scene& s, int spp, Precision prec = Precision::Double) {
 
 float at(const std::vector<float>& v, int i, int j) { return v[size_t(j) * 100 + i]; }
 
+// barycentricDerivatives is the derivative of planeBarycentrics: on a
+// tilted triangle, central differences over 1e-4 px agree to 1e-6 of it.
+TEST(PrecisionProbe, BarycentricDerivativesAreThoseOfThePlaneIntersection) {
+  const CameraRays cam(headOn());
+  const glm::dvec3 P[3] = {{-1, -0.5, 0.3}, {1.2, -0.7, -0.8}, {0.1, 1.1, 0.2}};
+  const double x = 47.3, y = 55.8, h = 1e-4;
+  const glm::dvec2 b = planeBarycentrics(cam, P, x, y);
+  const BarycentricDerivatives d = barycentricDerivatives(cam, P, b.x, b.y, 1.0);
+  const glm::dvec2 fx = (planeBarycentrics(cam, P, x + h, y) - planeBarycentrics(cam, P, x - h, y)) / (2 * h);
+  const glm::dvec2 fy = (planeBarycentrics(cam, P, x, y + h) - planeBarycentrics(cam, P, x, y - h)) / (2 * h);
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_NEAR(d.dx[k], fx[k], 1e-6 * glm::length(fx)) << k;
+    EXPECT_NEAR(d.dy[k], fy[k], 1e-6 * glm::length(fy)) << k;
+  }
+}
+
+// On a head-on triangle with uv = world (x, y), uv is affine in the image:
+// the 2x2-quad differences are the exact derivatives, 1 / kPixelsPerUnit
+// per pixel along u and -1 / kPixelsPerUnit along v (image y runs down),
+// per sample step 1 / n, whichever corner of its quad the sample is in.
+TEST(PrecisionProbe, QuadDifferencesOfAnAffineUvAreItsDerivatives) {
+  const CameraRays cam(headOn());
+  const glm::dvec3 P[3] = {{-2, -2, 0}, {2, -2, 0}, {0, 2, 0}};
+  const glm::dvec2 uv[3] = {{-2, -2}, {2, -2}, {0, 2}};
+  for (int n : {1, 2, 4})
+    for (double x : {50.1, 50.6, 51.3, 51.9})
+      for (double y : {49.2, 49.7}) {
+        const auto q = quadUvDerivatives(cam, P, uv, x, y, n);
+        const double s = 1.0 / (kPixelsPerUnit * n);
+        EXPECT_NEAR(q[0].x, s, 1e-9) << n << " " << x << " " << y;
+        EXPECT_NEAR(q[0].y, 0.0, 1e-9);
+        EXPECT_NEAR(q[1].x, 0.0, 1e-9);
+        EXPECT_NEAR(q[1].y, -s, 1e-9) << n << " " << x << " " << y;
+      }
+}
+
 TEST(PrecisionProbe, AnUnperturbedProbeIsTheSampleColourBitForBit) {
   Scene s = loadScene(std::string(XVAL_REFERENCE_DIR) + "/scenes/fig1_yiq_front.json");
   s.camera.width = s.camera.height = 48;
