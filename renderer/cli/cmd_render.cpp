@@ -60,7 +60,8 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
       ->check(CLI::IsMember({"auto", "rays"}));
   cmd->add_flag("--no-diagnostics", args->no_diagnostics,
                 "Do not compute the EXR's diagnostic channels (raw, Z, backfacing, incidence, "
-                "albedo); in float the hits are then shaded by the SIMD kernel where it covers the "
+                "albedo, texel_edge, triangle_edge and the precision probes: edge_fraction, "
+                "backfacing_flip, precision.*); in float the hits are then shaded by the SIMD kernel where it covers the "
                 "scene (same pixels)");
   cmd->add_flag("--keep-back-faces", args->keep_back_faces,
                 "Do not skip the back faces of closed meshes seen from outside (the image is the "
@@ -82,7 +83,8 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--stats", args->stats,
                   "Also write what was rendered and how long it took to this JSON file (reference "
                   "renderer: width, height, spp, precision, visibility, culled_triangles, shading, "
-                  "setup_s, frame_s; external: renderer, width, height, process_s)");
+                  "setup_s, frame_s, edge_fraction_s: the part of frame_s the diagnostics' edge-fraction pass took; "
+                  "external: renderer, width, height, process_s)");
   cmd->add_option("--timeout", args->timeout,
                   "Seconds before an external renderer is killed and the render fails (default 600)")
       ->check(Seconds);
@@ -140,13 +142,14 @@ void addRenderCommand(CLI::App& app, std::function<int()>& run) {
                        {"height", img.height}, {"spp", opt.spp}, {"precision", toString(opt.precision)},
                        {"visibility", stats.visibility}, {"culled_triangles", stats.culled_triangles},
                        {"shading", stats.shading}, {"setup_s", stats.setup_seconds},
-                       {"frame_s", stats.trace_seconds}});
+                       {"frame_s", stats.trace_seconds}, {"edge_fraction_s", stats.edge_fraction_seconds}});
       if (!args->quiet)
         std::fprintf(stderr,
                      "xval render: wrote %s (%dx%d, %d spp, %s, visibility: %s): setup %.3f s, "
-                     "frame %.3f s\n",
+                     "frame %.3f s (of which the edge-fraction pass %.3f s)\n",
                      args->output.c_str(), img.width, img.height, opt.spp, toString(opt.precision),
-                     describeVisibility(stats).c_str(), stats.setup_seconds, stats.trace_seconds);
+                     describeVisibility(stats).c_str(), stats.setup_seconds, stats.trace_seconds,
+                     stats.edge_fraction_seconds);
       return 0;
     };
   });

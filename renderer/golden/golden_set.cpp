@@ -110,7 +110,10 @@ void writeGoldenImage(const Image& img, const fs::path& file) {
   writeFileAtomically(file, [&](const fs::path& tmp) {
     auto out = OIIO::ImageOutput::create(tmp.string());
     if (!out) throw std::runtime_error(file.string() + ": cannot create image writer: " + OIIO::geterror());
-    const int nc = diag ? 7 + texel + edge : 4;
+    std::vector<const DiagnosticsChannel*> probes;  // kProbeChannels present, in order
+    for (const DiagnosticsChannel& c : kProbeChannels)
+      if (diag && (img.*c.member).size() == n) probes.push_back(&c);
+    const int nc = diag ? 7 + texel + edge + int(probes.size()) : 4;
     OIIO::ImageSpec spec(img.width, img.height, nc, OIIO::TypeDesc::FLOAT);
     spec.channelnames = {"R", "G", "B", "A"};
     spec.channelformats.assign(size_t(nc), OIIO::TypeDesc::FLOAT);
@@ -118,6 +121,7 @@ void writeGoldenImage(const Image& img, const fs::path& file) {
       spec.channelnames.insert(spec.channelnames.end(), {"Z", "backfacing", "incidence"});
       if (texel) spec.channelnames.push_back("texel_edge");
       if (edge) spec.channelnames.push_back("triangle_edge");
+      for (const DiagnosticsChannel* c : probes) spec.channelnames.push_back(c->name);
       for (int c = 4; c < nc; ++c) spec.channelformats[size_t(c)] = OIIO::TypeDesc::HALF;
       spec.z_channel = 4;
     }
@@ -133,6 +137,8 @@ void writeGoldenImage(const Image& img, const fs::path& file) {
         buf[i * nc + 6] = img.incidence[i];
         if (texel) buf[i * nc + 7] = storedDistance(img.texel_edge[i], kTexelEdgeRoundings);
         if (edge) buf[i * nc + 7 + texel] = storedDistance(img.triangle_edge[i], kTriangleEdgePixels);
+        for (size_t k = 0; k < probes.size(); ++k)
+          buf[i * nc + 7 + texel + edge + k] = (img.*probes[k]->member)[i];
       }
     }
     bool ok = out->open(tmp.string(), spec) && out->write_image(OIIO::TypeDesc::FLOAT, buf.data());

@@ -8,8 +8,9 @@
 //                              from the reference renderer, the diagnostics
 //                              the comparison's classification of pixels
 //                              over the tolerance reads (Z, backfacing,
-//                              incidence, texel_edge, triangle_edge as
-//                              16-bit floats)
+//                              incidence, texel_edge, triangle_edge and
+//                              the probes' kProbeChannels as 16-bit
+//                              floats)
 //   DIR/golden/R/manifest.json one entry per stored image (below)
 // i.e. the folder `golden` beside the scene file's folder; the scene set
 // reference/scenes stores into reference/golden.
@@ -84,7 +85,8 @@ struct Manifest {
 // image/pixel_classes.h, elsewhere infinity, "far": the class compares
 // with the bound only, and the far values, most pixels, would cost space;
 // a value above the bound is kept above it, so every pixel's class is the
-// render's). The unsaturated raw colour and the albedo, for
+// render's), and kProbeChannels (image/image.h; edge_fraction, k / n^2, is
+// exact; the colour bounds keep relative error <= 2^-11). The unsaturated raw colour and the albedo, for
 // diagnosis only, are left out. Measured on reference/scenes: 21.0 MB
 // (du -sb), against 47 MB for every channel in 32-bit floats.
 inline constexpr float kGoldenEdgeMargin = 16.0f;

@@ -9,6 +9,7 @@
 // diagnosis; empty when a renderer cannot provide it).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <filesystem>
 #include <vector>
@@ -42,19 +43,25 @@ struct Image {
   // in pixels of a hit from an edge of its triangle, in the image plane
   // (camera/triangle_edge.h; kFarFromTriangleEdge when no sample hits).
   // Empty in EXRs written before it existed.
+  // The bounds of what other renderers' rounding may change (constants and
+  // math: render/precision_probe.h); each empty in EXRs written before it
+  // existed, 0 where nothing is hit:
+  // edge_fraction: the fraction of the pixel's n x n samples whose image-
+  // plane point lies within kTriangleEdgePixels of the projected boundary
+  // of a triangle hit by a sample of this pixel or of its 8 neighbours (a
+  // rasteriser's rounding may give the sample another first hit).
+  // backfacing_flip: the largest channel difference between rgba's colour
+  // and the colour with every backfacing sample (N.V < 0) shaded with -N
+  // (as POV-Ray turns such normals); 0 where no sample is backfacing.
+  // precision_position: the box filter (sum / n^2) over the hit samples of
+  // the largest channel change of the saturated colour when the hit moves
+  // by kPositionStepPixels along the image's x or y on its triangle.
+  // precision_uv: the same for the texture coordinate moved by
+  // kUvStepTexels texels along u or v (and a trilinear texture's level of
+  // detail by its 2x2-quad estimate's difference, at least kLodStep).
+  // precision_normal: the same for the shading normal turned by
+  // kNormalStepRadians (0 for Gouraud shading).
   std::vector<float> depth, backfacing, incidence, albedo, texel_edge, triangle_edge;
-  // The bounds' diagnostics (render/precision_probe.h states the math;
-  // empty when absent):
-  // edge_fraction: the fraction of the pixel's samples whose first hit the
-  // renderers' rounding may change (within kTriangleEdgePixels of the
-  // projected boundary of a triangle hit in the pixel's 3x3 neighbourhood);
-  // backfacing_flip: the largest channel change of the pixel's colour when
-  // its backfacing samples are shaded with the normal turned around (0
-  // where none is backfacing);
-  // precision_position, precision_uv, precision_normal: the box filter of
-  // each sample's largest colour change when its hit point moves by
-  // kPositionStepPixels, its uv by kUvStepTexels, its normal by
-  // kNormalStepRadians (image/precision_bound.h).
   std::vector<float> edge_fraction, backfacing_flip, precision_position, precision_uv, precision_normal;
   // False for an image read from a file without an alpha channel (an RGB
   // PNG from elsewhere): readImage then sets alpha = 1 everywhere, so every
@@ -70,10 +77,38 @@ struct Image {
         incidence(with_raw ? size_t(w) * h : 0, 0.0f),
         albedo(with_raw ? size_t(w) * h * 3 : 0, 0.0f),
         texel_edge(with_raw ? size_t(w) * h : 0, kFarFromTexelEdge),
-        triangle_edge(with_raw ? size_t(w) * h : 0, kFarFromTriangleEdge) {}
+        triangle_edge(with_raw ? size_t(w) * h : 0, kFarFromTriangleEdge),
+        edge_fraction(with_raw ? size_t(w) * h : 0, 0.0f),
+        backfacing_flip(with_raw ? size_t(w) * h : 0, 0.0f),
+        precision_position(with_raw ? size_t(w) * h : 0, 0.0f),
+        precision_uv(with_raw ? size_t(w) * h : 0, 0.0f),
+        precision_normal(with_raw ? size_t(w) * h : 0, 0.0f) {}
   float* pixel(int x, int y) { return &rgba[(size_t(y) * width + x) * 4]; }
   const float* pixel(int x, int y) const { return &rgba[(size_t(y) * width + x) * 4]; }
 };
+
+// A one-float-per-pixel diagnostics channel: its EXR channel name and where
+// Image keeps it.
+struct DiagnosticsChannel {
+  const char* name;
+  std::vector<float> Image::*member;
+};
+// The channels of the precision probes (render/precision_probe.h), in the
+// order an EXR stores them (after triangle_edge); each optional (empty in
+// older files, and read only with Z, backfacing and incidence).
+inline constexpr std::array<DiagnosticsChannel, 5> kProbeChannels = {{
+    {"edge_fraction", &Image::edge_fraction},
+    {"backfacing_flip", &Image::backfacing_flip},
+    {"precision.position", &Image::precision_position},
+    {"precision.uv", &Image::precision_uv},
+    {"precision.normal", &Image::precision_normal},
+}};
+
+// Gives `to` (another renderer's image of the same scene and size) the
+// diagnostics of `from` (the reference's): depth, backfacing, incidence,
+// texel_edge, triangle_edge and kProbeChannels, which the comparison's
+// classification reads from its first image. Colour, raw and albedo stay.
+void copyDiagnostics(const Image& from, Image& to);
 
 // What the colour channels of every image xval writes hold (the files'
 // "xval:encoding" attribute).
@@ -86,7 +121,7 @@ inline constexpr const char* kColourEncoding =
 // compression the largest CPU cost of a validate run (about a quarter of
 // the reference set's CPU, under perf); the choices and their measured
 // costs are in docs/performance.md ("What xval's own files cost").
-//   kRenderExrCompression      renders' EXRs (up to 17 float channels):
+//   kRenderExrCompression      renders' EXRs (up to 20 float channels):
 //                              zlib at level 1
 //   kDifferenceExrCompression  difference EXRs (4 float channels): PIZ, a
 //                              third less CPU than zip on them
@@ -104,7 +139,7 @@ inline constexpr int kPngFilter = 8;  // PNG_FILTER_NONE
 
 // OpenEXR (32-bit float; channels R,G,B,A and, when present, raw.R, raw.G,
 // raw.B, Z, backfacing, incidence, albedo.R/G/B (only when present),
-// texel_edge and triangle_edge (each only when present); its colour
+// texel_edge, triangle_edge and kProbeChannels (each only when present); its colour
 // encoding in the attribute xval:encoding, since OpenEXR has no attribute
 // for a transfer function and OpenImageIO 2.4 neither writes nor reads
 // oiio:ColorSpace in an EXR: it reads every EXR as "Linear") or, by extension
@@ -131,7 +166,7 @@ void requireDecodable(const std::filesystem::path& file, int width, int height);
 // Images read back (from the external renderers, by `xval compare` and
 // `xval validate`): at most the largest image xval renders (kMaxImageSide,
 // kMaxImagePixels: scene/scene_loader.h) and this many channels (xval's EXRs
-// have 15, a Blender multilayer EXR a few dozen); checked on the header
+// have up to 20, a Blender multilayer EXR a few dozen); checked on the header
 // before any pixel is allocated (image/image_header.h).
 inline constexpr int kMaxReadImageChannels = 64;
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "files/atomic_write.h"
 #include "image/image.h"
@@ -52,8 +53,12 @@ void writeImage(const Image& img, const std::filesystem::path& file, const char*
     const bool albedo = diag && !img.albedo.empty();
     const bool texel = diag && img.texel_edge.size() == img.depth.size();
     const bool edge = diag && img.triangle_edge.size() == img.depth.size();
+    std::vector<const std::vector<float>*> probes;  // kProbeChannels present, in order
+    for (const DiagnosticsChannel& c : kProbeChannels)
+      if (diag && (img.*c.member).size() == img.depth.size()) probes.push_back(&(img.*c.member));
     OIIO::ImageSpec spec(img.width, img.height,
-                         4 + (raw ? 3 : 0) + (diag ? 3 : 0) + (albedo ? 3 : 0) + (texel ? 1 : 0) + (edge ? 1 : 0),
+                         4 + (raw ? 3 : 0) + (diag ? 3 : 0) + (albedo ? 3 : 0) + (texel ? 1 : 0) + (edge ? 1 : 0) +
+                             int(probes.size()),
                          OIIO::TypeDesc::FLOAT);
     spec.channelnames = {"R", "G", "B", "A"};
     if (raw) spec.channelnames.insert(spec.channelnames.end(), {"raw.R", "raw.G", "raw.B"});
@@ -62,6 +67,8 @@ void writeImage(const Image& img, const std::filesystem::path& file, const char*
       if (albedo) spec.channelnames.insert(spec.channelnames.end(), {"albedo.R", "albedo.G", "albedo.B"});
       if (texel) spec.channelnames.push_back("texel_edge");
       if (edge) spec.channelnames.push_back("triangle_edge");
+      for (const DiagnosticsChannel& c : kProbeChannels)
+        if ((img.*c.member).size() == img.depth.size()) spec.channelnames.push_back(c.name);
       spec.z_channel = 4 + (raw ? 3 : 0);
     }
     spec.alpha_channel = 3;
@@ -87,6 +94,8 @@ void writeImage(const Image& img, const std::filesystem::path& file, const char*
           for (int c = 0; c < 3; ++c) buf[i * spec.nchannels + spec.z_channel + 3 + c] = img.albedo[i * 3 + c];
         if (texel) buf[i * spec.nchannels + spec.z_channel + 3 + (albedo ? 3 : 0)] = img.texel_edge[i];
         if (edge) buf[i * spec.nchannels + spec.z_channel + 3 + (albedo ? 3 : 0) + (texel ? 1 : 0)] = img.triangle_edge[i];
+        const size_t first_probe = i * spec.nchannels + spec.nchannels - probes.size();
+        for (size_t k = 0; k < probes.size(); ++k) buf[first_probe + k] = (*probes[k])[i];
       }
     }
     ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::FLOAT, buf.data());
@@ -218,6 +227,12 @@ Image readImage(const std::filesystem::path& file, int expect_width, int expect_
   img.texel_edge.assign(diag && tc >= 0 ? img.depth.size() : 0, kFarFromTexelEdge);
   const int ec = channel("triangle_edge");  // likewise
   img.triangle_edge.assign(diag && ec >= 0 ? img.depth.size() : 0, kFarFromTriangleEdge);
+  std::vector<std::pair<int, std::vector<float>*>> probes;  // kProbeChannels in the file: likewise
+  for (const DiagnosticsChannel& c : kProbeChannels) {
+    const int pc = channel(c.name);
+    (img.*c.member).assign(diag && pc >= 0 ? img.depth.size() : 0, 0.0f);
+    if (diag && pc >= 0) probes.emplace_back(pc, &(img.*c.member));
+  }
   for (size_t i = 0; i < size_t(spec.width) * spec.height; ++i) {
     if (diag) {
       img.depth[i] = buf[i * nc + zc];
@@ -227,6 +242,7 @@ Image readImage(const std::filesystem::path& file, int expect_width, int expect_
         for (int c = 0; c < 3; ++c) img.albedo[i * 3 + c] = buf[i * nc + ac[c]];
       if (!img.texel_edge.empty()) img.texel_edge[i] = buf[i * nc + tc];
       if (!img.triangle_edge.empty()) img.triangle_edge[i] = buf[i * nc + ec];
+      for (const auto& [pc, v] : probes) (*v)[i] = buf[i * nc + pc];
     }
     for (int c = 0; c < 4; ++c)
       img.rgba[i * 4 + c] = ch[c] >= 0 ? buf[i * nc + ch[c]] : 1.0f;

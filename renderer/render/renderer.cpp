@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
@@ -16,11 +17,13 @@
 #include "camera/camera.h"
 #include "camera/triangle_edge.h"
 #include "geometry/front_faces.h"
+#include "image/pixel_classes.h"
 #include "geometry/mesh.h"
 #include "geometry/model_textures.h"
 #include "process/job_pool.h"
 #include "geometry/scene_meshes.h"
 #include "render/accel.h"
+#include "render/precision_probe.h"
 #include "render/raster.h"
 #include "scene/precision_limits.h"
 #include "shading/batch_shader.h"
@@ -111,36 +114,18 @@ double geometricIncidence(const TriangleMesh& m, const glm::u32vec3& t, glm::dve
 
 // The derivatives of the hit's uv along the image's x and y, per `step`
 // pixels (the sample grid's spacing), from the camera ray's differentials:
-// the ray through image point (x, y) is O + t D with D = forward + sx right
-// + sy up' (camera/camera.h, D . forward = 1), so
-//   dD/dx = (2 / W) tan(fov_y / 2) (W / H) right,  dD/dy = -(2 / H) tan(fov_y / 2) up'.
-// On the triangle's plane (P0 + b1 e1 + b2 e2, e_k = P_k - P0, T = O - P0)
-//   b1 = (D . a1) / (D . m), b2 = (D . a2) / (D . m),
-//   a1 = e2 x T, a2 = T x e1, m = e2 x e1 (Cramer's rule, as Moller-Trumbore),
-// whose derivative along x is db1/dx = ((Dx . a1)(D . m) - (D . a1)(Dx . m)) / (D . m)^2
-// (the same for b2 and y); duv = db1 (uv1 - uv0) + db2 (uv2 - uv0). In
-// double from the world-space mesh, whatever the shading precision; D from
-// the hit point p: D = (p - O) / ((p - O) . forward).
+// duv = db1 (uv1 - uv0) + db2 (uv2 - uv0), db from barycentricDerivatives
+// (render/precision_probe.h). In double from the world-space mesh,
+// whatever the shading precision.
 struct UvFootprint {
   glm::dvec2 dx{0}, dy{0};
 };
 UvFootprint uvFootprint(const CameraRays& cam, const TriangleMesh& m, const glm::u32vec3& tri, double b1, double b2,
                         double step) {
-  const glm::dvec3 P0 = m.positions[tri[0]], e1 = m.positions[tri[1]] - P0, e2 = m.positions[tri[2]] - P0;
-  const glm::dvec3 T = cam.origin - P0, a1 = glm::cross(e2, T), a2 = glm::cross(T, e1), mm = glm::cross(e2, e1);
-  const glm::dvec3 to_p = P0 + b1 * e1 + b2 * e2 - cam.origin;
-  const glm::dvec3 D = to_p / glm::dot(to_p, cam.forward);
-  const double s = cam.tan_half_fov * step;
-  const glm::dvec3 Dx = (2.0 / cam.width) * s * cam.aspect * cam.right, Dy = (-2.0 / cam.height) * s * cam.up;
-  const double dm = glm::dot(D, mm), da1 = glm::dot(D, a1), da2 = glm::dot(D, a2);
+  const glm::dvec3 P[3] = {m.positions[tri[0]], m.positions[tri[1]], m.positions[tri[2]]};
+  const BarycentricDerivatives d = barycentricDerivatives(cam, P, b1, b2, step);
   const glm::dvec2 du1 = m.uvs[tri[1]] - m.uvs[tri[0]], du2 = m.uvs[tri[2]] - m.uvs[tri[0]];
-  auto along = [&](const glm::dvec3& Dd) {
-    const double dmd = glm::dot(Dd, mm);
-    const double db1 = (glm::dot(Dd, a1) * dm - da1 * dmd) / (dm * dm);
-    const double db2 = (glm::dot(Dd, a2) * dm - da2 * dmd) / (dm * dm);
-    return db1 * du1 + db2 * du2;
-  };
-  return {along(Dx), along(Dy)};
+  return {d.dx.x * du1 + d.dx.y * du2, d.dy.x * du1 + d.dy.y * du2};
 }
 
 // Everything the per-sample work needs in precision T. One shader and
@@ -181,15 +166,37 @@ template <class T> struct Shading {
 
 // ---- Accumulation: what a hit contributes to its pixel ----------------------
 
-// The surface colour C of a hit at its wrapped uv; a trilinear texture at
-// the level of the hit's footprint per `step` pixels (uvFootprint).
-template <class T>
-glm::vec<3, T> hitColour(const Shading<T>& sh, const Hit& h, glm::vec<2, T> uv, double step) {
+// What a precision probe changes in a hit's shading (render/
+// precision_probe.h); the default changes nothing, so a probe with it is
+// the sample's own colour bit for bit.
+template <class T> struct ShadingNudge {
+  using V = glm::vec<3, T>;
+  glm::vec<2, T> duv{0};  // added to the interpolated uv
+  double dlambda = 0.0;   // added to a trilinear texture's level, clamped to its chain
+  bool flip = false;      // N -> -N
+  bool turn = false;      // N -> turn_cos N + turn_sin (turn_axis x N)
+  V turn_axis{0};
+  T turn_cos = 1, turn_sin = 0;
+};
+
+// A trilinear texture's level of detail at the hit: its footprint per
+// `step` pixels (uvFootprint).
+template <class T> double hitLambda(const Shading<T>& sh, const Hit& h, double step) {
   const ShadedMesh<T>& m = sh.meshes[h.mesh];
-  const SurfaceColour<T>& colour = sh.colours[m.object];
-  if (!colour.usesFootprint()) return colour.at(uv);
   const UvFootprint f = uvFootprint(sh.cam, *m.src, m.src->triangles[h.triangle], h.b1, h.b2, step);
-  return colour.at(uv, colour.mips->lambda(f.dx, f.dy));
+  return sh.colours[m.object].mips->lambda(f.dx, f.dy);
+}
+
+// The surface colour C of a hit at its wrapped uv; a trilinear texture at
+// the level of the hit's footprint per `step` pixels (hitLambda), moved by
+// dlambda within the chain's levels.
+template <class T>
+glm::vec<3, T> hitColour(const Shading<T>& sh, const Hit& h, glm::vec<2, T> uv, double step, double dlambda = 0.0) {
+  const SurfaceColour<T>& colour = sh.colours[sh.meshes[h.mesh].object];
+  if (!colour.usesFootprint()) return colour.at(uv);
+  const double lambda = hitLambda(sh, h, step);
+  if (dlambda == 0.0) return colour.at(uv, lambda);
+  return colour.at(uv, std::clamp(lambda + dlambda, 0.0, double(colour.mips->maxLevel())));
 }
 
 // The unsaturated colour c of one hit: the model at the hit's point p =
@@ -197,9 +204,12 @@ glm::vec<3, T> hitColour(const Shading<T>& sh, const Hit& h, glm::vec<2, T> uv, 
 // with normalize_normal off the sum itself; flat: the face normal), texture
 // colour at the wrapped uv (hitColour, per `step` pixels); Gouraud: sum b_k
 // of the vertex colours. backfacing: the shading normal faces away from the
-// eye, N . (eye - p) < 0 (always false for Gouraud).
+// eye, N . (eye - p) < 0 (always false for Gouraud). nudge: a probe's
+// change of N, uv or the level (none for Gouraud, whose model ran at the
+// vertices).
 template <class T>
-__attribute__((flatten)) glm::vec<3, T> shadeHit(const Shading<T>& sh, const Hit& h, double step, bool& backfacing) {
+__attribute__((flatten)) glm::vec<3, T> shadeHit(const Shading<T>& sh, const Hit& h, double step, bool& backfacing,
+                                                 const ShadingNudge<T>* nudge = nullptr) {
   using V = glm::vec<3, T>;
   const ShadedMesh<T>& m = sh.meshes[h.mesh];
   const auto& tri = m.src->triangles[h.triangle];
@@ -219,17 +229,117 @@ __attribute__((flatten)) glm::vec<3, T> shadeHit(const Shading<T>& sh, const Hit
       nrm = len > T(0) ? nrm / len : V(0);  // zero-length normals stay 0
     }
   }
-  const glm::vec<2, T> uv = interpolateUv(m.uv, tri, b1, b2);
+  glm::vec<2, T> uv = interpolateUv(m.uv, tri, b1, b2);
   V v = glm::normalize(sh.eye - p);
   backfacing = glm::dot(nrm, v) < T(0);
-  return sh.shaders[m.object].shade(p, nrm, v, hitColour(sh, h, uv, step));
+  if (!nudge) return sh.shaders[m.object].shade(p, nrm, v, hitColour(sh, h, uv, step));
+  if (nudge->flip) nrm = -nrm;
+  if (nudge->turn) nrm = nudge->turn_cos * nrm + nudge->turn_sin * glm::cross(nudge->turn_axis, nrm);
+  uv += nudge->duv;
+  return sh.shaders[m.object].shade(p, nrm, v, hitColour(sh, h, uv, step, nudge->dlambda));
 }
+
+// The precision probes of one sample (render/precision_probe.h): the
+// largest channel change of its saturated colour c under each probe, and
+// its saturated colour with N turned around (when backfacing: shadeHit's
+// flag for it). at: the sample's image point; n: samples per pixel side.
+template <class T> struct SampleProbes {
+  double position = 0.0, uv = 0.0, normal = 0.0;
+  glm::vec<3, T> flipped{0};
+};
+template <class T>
+SampleProbes<T> probeSample(const Shading<T>& sh, const Hit& h, double step, glm::vec<3, T> c, bool backfacing,
+                            glm::dvec2 at, int n) {
+  using V = glm::vec<3, T>;
+  SampleProbes<T> out;
+  const ShadedMesh<T>& m = sh.meshes[h.mesh];
+  const auto& tri = m.src->triangles[h.triangle];
+  bool back = false;
+  auto change = [&](const Hit& hh, const ShadingNudge<T>* nudge) {
+    return double(largestChannelDifference(models::saturate(shadeHit(sh, hh, step, back, nudge)), c));
+  };
+  // Position: the hit moved along x and y on its triangle's plane.
+  const glm::dvec3 P[3] = {m.src->positions[tri[0]], m.src->positions[tri[1]], m.src->positions[tri[2]]};
+  const BarycentricDerivatives d = barycentricDerivatives(sh.cam, P, h.b1, h.b2, kPositionStepPixels);
+  for (const glm::dvec2 db : {d.dx, -d.dx, d.dy, -d.dy}) {
+    Hit moved = h;
+    moved.b1 += db.x, moved.b2 += db.y;
+    if (std::isfinite(moved.b1) && std::isfinite(moved.b2)) out.position = std::max(out.position, change(moved, nullptr));
+  }
+  if (sh.mode == ShadingMode::Gouraud) return out;  // the model ran at the vertices: no uv, N or flip here
+  if (backfacing) {
+    ShadingNudge<T> flip;
+    flip.flip = true;
+    out.flipped = models::saturate(shadeHit(sh, h, step, back, &flip));
+  }
+  // uv: one 1/256 texel of level 0 along u and v; a trilinear level by its
+  // quad estimate's difference.
+  const SurfaceColour<T>& colour = sh.colours[m.object];
+  if (colour.texture) {
+    const T du = T(kUvStepTexels / colour.texture->width), dv = T(kUvStepTexels / colour.texture->height);
+    for (const glm::vec<2, T> duv : {glm::vec<2, T>(du, 0), glm::vec<2, T>(-du, 0), glm::vec<2, T>(0, dv),
+                                     glm::vec<2, T>(0, -dv)}) {
+      ShadingNudge<T> nudge;
+      nudge.duv = duv;
+      out.uv = std::max(out.uv, change(h, &nudge));
+    }
+    if (colour.usesFootprint()) {
+      const glm::dvec2 uv[3] = {m.src->uvs[tri[0]], m.src->uvs[tri[1]], m.src->uvs[tri[2]]};
+      const auto q = quadUvDerivatives(sh.cam, P, uv, at.x, at.y, n);
+      const double dl = kLodStep + std::abs(colour.mips->lambda(q[0], q[1]) - hitLambda(sh, h, step));
+      for (const double s : {dl, -dl}) {
+        ShadingNudge<T> nudge;
+        nudge.dlambda = s;
+        out.uv = std::max(out.uv, change(h, &nudge));
+      }
+    }
+  }
+  // Normal: turned about two axes perpendicular to it, both ways. The
+  // shading normal (flat's face normal, Phong's interpolated one) is
+  // recomputed here as shadeHit forms it.
+  V nrm;
+  if (sh.mode == ShadingMode::Flat) {
+    nrm = m.face_n[h.triangle];
+  } else {
+    const T b1 = T(h.b1), b2 = T(h.b2), b0 = T(1) - b1 - b2;
+    nrm = b0 * m.n[tri[0]] + b1 * m.n[tri[1]] + b2 * m.n[tri[2]];
+  }
+  if (glm::dot(nrm, nrm) > T(0)) {
+    for (const V& axis : turnAxes(nrm))
+      for (const double s : {kNormalStepRadians, -kNormalStepRadians}) {
+        ShadingNudge<T> nudge;
+        nudge.turn = true;
+        nudge.turn_axis = axis;
+        nudge.turn_cos = T(std::cos(s)), nudge.turn_sin = T(std::sin(s));
+        out.normal = std::max(out.normal, change(h, &nudge));
+      }
+  }
+  return out;
+}
+
+// The distinct triangles a pixel's samples hit, for the edge-fraction pass
+// (edgeFractionPass): the first kPixelTriangles; a pixel whose samples hit
+// more keeps those, so a sample may be counted as not near an edge it is
+// near (a possible false failure of a comparison, never a false pass).
+inline constexpr int kPixelTriangles = 4;
+struct PixelTriangles {
+  std::array<uint32_t, kPixelTriangles> mesh{}, triangle{};
+  int count = 0;
+  void add(uint32_t m, uint32_t t) {
+    for (int k = 0; k < count; ++k)
+      if (mesh[size_t(k)] == m && triangle[size_t(k)] == t) return;
+    if (count < kPixelTriangles) mesh[size_t(count)] = m, triangle[size_t(count)] = t, ++count;
+  }
+};
 
 // One pixel's running sums over its samples.
 template <class T> struct PixelSums {
   glm::vec<3, T> final_sum{0}, raw_sum{0}, albedo{0};
+  glm::vec<3, T> flipped_sum{0};  // final_sum with the backfacing samples shaded with -N
   int hits = 0, backfacing = 0;
   double nearest = 0.0, incidence = 1.0, texel_edge = kFarFromTexelEdge, triangle_edge = kFarFromTriangleEdge;
+  double position = 0.0, uv = 0.0, normal = 0.0;  // sums of the samples' probes
+  PixelTriangles triangles;
 };
 
 // A pixel's value from its n x n samples, box-filtered:
@@ -241,7 +351,11 @@ template <class T> struct PixelSums {
 // texel_edge = the smallest texelEdge over the hits (texture/texel_edge.h),
 // triangle_edge = the smallest distance in pixels of a hit from an edge of
 // its triangle (camera/triangle_edge.h): a pixel is near an edge when any
-// of its samples is.
+// of its samples is; the precision probes (render/precision_probe.h):
+// precision_* = sum of the samples' probes / n^2, backfacing_flip = the
+// largest channel of |sum saturate(c with -N where backfacing) - sum
+// saturate(c)| / n^2; the pixel's triangles into `triangles` for the
+// edge-fraction pass.
 template <class T> struct Accumulation {
   const Shading<T>& sh;
   Image& img;
@@ -249,11 +363,15 @@ template <class T> struct Accumulation {
   T inv;      // 1 / n^2
   double step;  // 1 / n: the sample grid's spacing in pixels (hitColour)
   const CameraRays& cam;  // the frame's camera (triangle_edge)
+  std::vector<PixelTriangles>* triangles = nullptr;  // per pixel, with diagnostics
+  int n = 1;  // samples per pixel side (the probes' 2x2 quads of samples)
 
-  // Adds one sample's hit (dir: its ray direction, read with diagnostics).
-  void add(const Hit& h, const glm::dvec3& dir, PixelSums<T>& px) const {
+  // Adds one sample's hit (dir: its ray direction, at: its image point,
+  // both read with diagnostics).
+  void add(const Hit& h, const glm::dvec3& dir, glm::dvec2 at, PixelSums<T>& px) const {
     if (px.hits == 0 || h.t < px.nearest) px.nearest = h.t;
     if (diag) {
+      px.triangles.add(h.mesh, h.triangle);
       const ShadedMesh<T>& m = sh.meshes[h.mesh];
       const auto& tri = m.src->triangles[h.triangle];
       px.incidence = std::min(px.incidence, geometricIncidence(*m.src, tri, dir));
@@ -268,7 +386,12 @@ template <class T> struct Accumulation {
     const glm::vec<3, T> c = shadeHit(sh, h, step, back);
     px.backfacing += back;
     px.final_sum += models::saturate(c);
-    if (diag) px.raw_sum += c;
+    if (diag) {
+      px.raw_sum += c;
+      const SampleProbes<T> probes = probeSample(sh, h, step, models::saturate(c), back, at, n);
+      px.position += probes.position, px.uv += probes.uv, px.normal += probes.normal;
+      px.flipped_sum += back ? probes.flipped : models::saturate(c);
+    }
     ++px.hits;
   }
 
@@ -286,6 +409,11 @@ template <class T> struct Accumulation {
       for (int q = 0; q < 3; ++q) img.albedo[at * 3 + q] = float(s.albedo[q]);
       img.texel_edge[at] = float(s.texel_edge);
       img.triangle_edge[at] = float(s.triangle_edge);
+      img.precision_position[at] = float(s.position * double(inv));
+      img.precision_uv[at] = float(s.uv * double(inv));
+      img.precision_normal[at] = float(s.normal * double(inv));
+      img.backfacing_flip[at] = s.backfacing ? float(largestChannelDifference(s.flipped_sum, s.final_sum) * inv) : 0.0f;
+      (*triangles)[at] = s.triangles;
     }
   }
 
@@ -418,7 +546,9 @@ void accumulateTile(const Accumulation<T>& acc, int n, int x0, int y0, const std
       for (int sy = 0; sy < n; ++sy)
         for (int sx = 0; sx < n; ++sx) {
           const size_t at = size_t(ty * n + sy) * side + tx * n + sx;
-          if (hit[at].hit) acc.add(hit[at], acc.diag ? dir[at] : glm::dvec3(0), px);
+          if (hit[at].hit)
+            acc.add(hit[at], acc.diag ? dir[at] : glm::dvec3(0),
+                    glm::dvec2(x0 + tx + (sx + 0.5) / n, y0 + ty + (sy + 0.5) / n), px);
         }
       acc.store(px, x0 + tx, y0 + ty);
     }
@@ -491,13 +621,71 @@ struct RasterBand {
             const Hit& h = buf.hits[size_t(r) * W + i];
             if (!h.hit) continue;
             const glm::dvec3 dir = acc.diag ? cam.direction(i + ox, row0 + r + oy) : glm::dvec3(0);
-            acc.add(h, dir, buf.sums[size_t(r) * W + i]);
+            acc.add(h, dir, glm::dvec2(i + ox, row0 + r + oy), buf.sums[size_t(r) * W + i]);
           }
       }
     for (int r = 0; r < rows; ++r)
       for (int i = 0; i < W; ++i) acc.store(buf.sums[size_t(r) * W + i], i, row0 + r);
   }
 };
+
+// Image::edge_fraction of every pixel, after the frame's samples are all
+// in: the fraction of its n x n samples whose image-plane point lies within
+// kTriangleEdgePixels of the projected boundary of a triangle hit by a
+// sample of the pixel or of its 8 neighbours (triangles: each pixel's, from
+// the accumulation; render/precision_probe.h). A triangle whose projection
+// misses the pixel's square grown by kTriangleEdgePixels is skipped (no
+// point of the pixel can be near its boundary). Rows are shared among
+// `threads` threads.
+void edgeFractionPass(const std::vector<TriangleMesh>& meshes, const CameraRays& cam, int n,
+                      const std::vector<PixelTriangles>& triangles, Image& img, int threads) {
+  const int W = img.width, H = img.height;
+  const double within = kTriangleEdgePixels;
+  std::atomic<int> next_row{0};
+  auto worker = [&]() {
+    std::vector<std::pair<uint32_t, uint32_t>> seen;
+    std::vector<ProjectedTriangle> near;
+    std::vector<glm::dvec2> samples(size_t(n) * n);
+    for (int j = next_row++; j < H; j = next_row++)
+      for (int i = 0; i < W; ++i) {
+        glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+        for (int sy = 0; sy < n; ++sy)
+          for (int sx = 0; sx < n; ++sx) {
+            const glm::dvec2 p = projectSample(cam, i + (sx + 0.5) / n, j + (sy + 0.5) / n);
+            samples[size_t(sy) * n + sx] = p;
+            lo = glm::min(lo, p), hi = glm::max(hi, p);
+          }
+        lo -= within, hi += within;
+        seen.clear(), near.clear();
+        for (int y = std::max(0, j - 1); y <= std::min(H - 1, j + 1); ++y)
+          for (int x = std::max(0, i - 1); x <= std::min(W - 1, i + 1); ++x) {
+            const PixelTriangles& t = triangles[size_t(y) * W + x];
+            for (int k = 0; k < t.count; ++k) {
+              const std::pair<uint32_t, uint32_t> key{t.mesh[size_t(k)], t.triangle[size_t(k)]};
+              if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
+              seen.push_back(key);
+              const TriangleMesh& m = meshes[key.first];
+              const glm::u32vec3& tri = m.triangles[key.second];
+              const glm::dvec3 P[3] = {m.positions[tri[0]], m.positions[tri[1]], m.positions[tri[2]]};
+              const ProjectedTriangle pt = projectTriangle(cam, P);
+              const glm::dvec2 tlo = glm::min(pt.c[0], glm::min(pt.c[1], pt.c[2]));
+              const glm::dvec2 thi = glm::max(pt.c[0], glm::max(pt.c[1], pt.c[2]));
+              if (pt.in_front && (thi.x < lo.x || thi.y < lo.y || tlo.x > hi.x || tlo.y > hi.y)) continue;
+              near.push_back(pt);
+            }
+          }
+        int count = 0;
+        for (const glm::dvec2& p : samples)
+          for (const ProjectedTriangle& t : near)
+            if (nearProjectedBoundary(t, p, within)) {
+              ++count;
+              break;
+            }
+        img.edge_fraction[size_t(j) * W + i] = float(count) / float(n * n);
+      }
+  };
+  runOnThreads(std::min(threads, H), worker);
+}
 
 // n of the n x n sample grid (spp is a perfect square).
 int samplesPerSide(const RenderOptions& opt) { return int(std::lround(std::sqrt(double(opt.spp)))); }
@@ -631,6 +819,28 @@ void PreparedScene::render(const RenderOptions& opt, Image& img, RenderStats* st
   if (stats_out) *stats_out = stats;
 }
 
+PreparedScene::ProbeCheck PreparedScene::checkProbe(double x, double y, int spp) const {
+  const Impl& d = *impl_;
+  const CameraRays cam(d.scene.camera);
+  const Hit h = d.accel->intersect(cam.origin, cam.direction(x, y));
+  ProbeCheck out;
+  if (!h.hit) return out;
+  out.hit = true;
+  const double step = 1.0 / std::lround(std::sqrt(double(spp)));
+  auto both = [&](const auto& sh) {
+    using Nudge = ShadingNudge<typename std::decay_t<decltype(sh)>::V::value_type>;
+    bool back = false;
+    const Nudge none;
+    out.colour = glm::dvec3(models::saturate(shadeHit(sh, h, step, back)));
+    out.unperturbed = glm::dvec3(models::saturate(shadeHit(sh, h, step, back, &none)));
+  };
+  if (auto* f = std::get_if<Shading<float>>(&d.shading))
+    both(*f);
+  else
+    both(std::get<Shading<double>>(d.shading));
+  return out;
+}
+
 // One frame: visibility (rasterised when the float path may, else traced)
 // and accumulation, on threadCount(opt) threads; the timings into stats.
 template <class T>
@@ -656,7 +866,9 @@ void PreparedScene::Impl::renderRasterised(const Shading<float>& sh, const Rende
                                            RenderStats& stats, Progress& progress) const {
   const CameraRays cam(scene.camera);
   const int n = samplesPerSide(opt);
-  const Accumulation<float> acc{sh, img, opt.diagnostics && !img.raw.empty(), 1.0f / float(n * n), 1.0 / n, cam};
+  const bool diag = opt.diagnostics && !img.raw.empty();
+  std::vector<PixelTriangles> triangles(diag ? size_t(img.width) * img.height : 0);
+  const Accumulation<float> acc{sh, img, diag, 1.0f / float(n * n), 1.0 / n, cam, &triangles, n};
   stats.visibility = "rasterised";
   const Rasteriser raster(meshes, cam, kBand, opt.cull_back_faces ? back_faces_hidden : std::vector<bool>{},
                           threadCount(opt));
@@ -673,6 +885,11 @@ void PreparedScene::Impl::renderRasterised(const Shading<float>& sh, const Rende
     }
   };
   runOnThreads(std::min(threadCount(opt), raster.bands()), worker);
+  if (diag) {
+    const auto t0 = Clock::now();
+    edgeFractionPass(meshes, cam, n, triangles, img, threadCount(opt));
+    stats.edge_fraction_seconds = secondsSince(t0);
+  }
 }
 
 // Traced visibility (Embree packets; the BVH without the back faces no
@@ -683,7 +900,9 @@ void PreparedScene::Impl::renderTraced(const Shading<T>& sh, const RenderOptions
                                        RenderStats& stats, Progress& progress) const {
   const CameraRays cam(scene.camera);
   const int n = samplesPerSide(opt), W = img.width, H = img.height;
-  const Accumulation<T> acc{sh, img, opt.diagnostics && !img.raw.empty(), T(1) / T(n * n), 1.0 / n, cam};
+  const bool diag = opt.diagnostics && !img.raw.empty();
+  std::vector<PixelTriangles> triangles(diag ? size_t(W) * H : 0);
+  const Accumulation<T> acc{sh, img, diag, T(1) / T(n * n), 1.0 / n, cam, &triangles, n};
   stats.visibility = std::is_same_v<T, float> ? "Embree 16-ray packets (float)"
                                               : "Embree 16-ray packets, double-precision watertight test";
   stats.culled_triangles = bvh_culled;
@@ -708,6 +927,11 @@ void PreparedScene::Impl::renderTraced(const Shading<T>& sh, const RenderOptions
     }
   };
   runOnThreads(std::min(threadCount(opt), tiles), worker);
+  if (diag) {
+    const auto t0 = Clock::now();
+    edgeFractionPass(meshes, cam, n, triangles, img, threadCount(opt));
+    stats.edge_fraction_seconds = secondsSince(t0);
+  }
 }
 
 Image renderScene(const Scene& scene, const RenderOptions& options, RenderStats* stats) {

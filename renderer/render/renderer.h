@@ -45,7 +45,7 @@ struct RenderOptions {
   int threads = 0;  // 0: every hardware thread
   bool progress = false;  // progress lines on stderr
   // Fill the diagnostic channels (raw, depth, backfacing, incidence,
-  // albedo) when the image has them allocated (Image(w, h, true)).
+  // albedo, texel_edge, triangle_edge, kProbeChannels) when the image has them allocated (Image(w, h, true)).
   // renderScene allocates them only when this is set.
   bool diagnostics = true;
   // Float path only: rasterise visibility when applicable (false: always
@@ -67,6 +67,7 @@ RenderOptions defaultOptions(const Scene& scene);
 struct RenderStats {
   double setup_seconds = 0.0;   // tessellation, texture, BVH build, per-vertex data
   double trace_seconds = 0.0;   // visibility and shading
+  double edge_fraction_seconds = 0.0;  // of trace_seconds: the edge-fraction pass (diagnostics)
   const char* visibility = "";  // how first hits were found
   size_t culled_triangles = 0;  // back faces skipped: by the raster, or left out of the BVH
   std::string shading = "one hit at a time";  // or "SIMD, <instruction set>" (batch_shading)
@@ -102,6 +103,16 @@ class PreparedScene {
   // channels are written when allocated and options.diagnostics is set.
   // options.precision must equal the prepared precision.
   void render(const RenderOptions& options, Image& img, RenderStats* stats = nullptr) const;
+
+  // The probes' own check (render/precision_probe.h): the sample at image
+  // point (x, y), traced alone, with the frame's shading at spp samples
+  // per pixel: its saturated colour and that of a probe that changes
+  // nothing (which must be the same bits).
+  struct ProbeCheck {
+    bool hit = false;
+    glm::dvec3 colour{0}, unperturbed{0};
+  };
+  ProbeCheck checkProbe(double x, double y, int spp) const;
 
   struct Impl;
 

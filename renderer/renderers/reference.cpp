@@ -13,7 +13,9 @@
 //                    path (rasterised or Embree packets)
 //   spp              the scene's render.spp (n x n stratified, box filter)
 //   threads          0: every hardware thread
-//   diagnostics      on: the EXR's raw, Z, backfacing, incidence and albedo
+//   diagnostics      on: the EXR's raw, Z, backfacing, incidence, albedo,
+//                    texel_edge, triangle_edge and the precision probes
+//                    (image/image.h kProbeChannels)
 //   cull_back_faces  on: back faces of closed meshes seen from outside are
 //                    skipped (never a first hit; the image is the same)
 //   rasterise        on (float only): rasterise when the whole scene is in

@@ -111,9 +111,10 @@ TEST(ImageHandoff, AFileChangedSinceItWasWrittenIsNotHandedOver) {
 TEST(ImageHandoff, AnImageOverTheLimitIsNotKept) {
   Image back;
   writeImage(sample(0.5f), dir() / "big.exr", kRenderExrCompression, &back);
-  const size_t one = (back.rgba.size() + back.raw.size() + back.depth.size() + back.backfacing.size() +
-                      back.incidence.size() + back.albedo.size() + back.texel_edge.size() +
-                      back.triangle_edge.size()) * sizeof(float);
+  size_t floats = back.rgba.size() + back.raw.size() + back.depth.size() + back.backfacing.size() +
+                  back.incidence.size() + back.albedo.size() + back.texel_edge.size() + back.triangle_edge.size();
+  for (const DiagnosticsChannel& c : kProbeChannels) floats += (back.*c.member).size();
+  const size_t one = floats * sizeof(float);
   ImageHandoff h(one + one / 2);
   writeImage(sample(0.5f), dir() / "big2.exr", kRenderExrCompression, &back);
   h.put(dir() / "big.exr", readImage(dir() / "big.exr"));

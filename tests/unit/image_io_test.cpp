@@ -73,6 +73,8 @@ TEST(ImageIo, EveryExrCompressionReadsBackBitForBit) {
   };
   for (auto* v : {&a.rgba, &a.raw, &a.depth, &a.backfacing, &a.incidence, &a.albedo, &a.texel_edge, &a.triangle_edge})
     for (float& f : *v) f = anyFinite();
+  for (const DiagnosticsChannel& c : kProbeChannels)
+    for (float& f : a.*c.member) f = anyFinite();
   a.rgba[0] = 0.0f, a.rgba[1] = -0.0f, a.rgba[2] = std::numeric_limits<float>::denorm_min();
   auto sameBits = [](const std::vector<float>& x, const std::vector<float>& y) {
     return x.size() == y.size() && (x.empty() || std::memcmp(x.data(), y.data(), x.size() * sizeof(float)) == 0);
@@ -93,6 +95,7 @@ TEST(ImageIo, EveryExrCompressionReadsBackBitForBit) {
     EXPECT_TRUE(sameBits(a.albedo, b.albedo)) << codec;
     EXPECT_TRUE(sameBits(a.texel_edge, b.texel_edge)) << codec;
     EXPECT_TRUE(sameBits(a.triangle_edge, b.triangle_edge)) << codec;
+    for (const DiagnosticsChannel& c : kProbeChannels) EXPECT_TRUE(sameBits(a.*c.member, b.*c.member)) << codec << " " << c.name;
   }
 }
 

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "camera/triangle_edge.h"
+#include "head_on_camera.h"
 #include "golden/golden_set.h"
 #include "image/compare.h"
 #include "image/image.h"
@@ -19,22 +20,11 @@
 namespace xval {
 namespace {
 
-// A camera at z = 5 looking down -z at the origin, 100 x 100 pixels, 60
-// degrees: k = 100 / (2 tan 30) = 86.60 pixels per unit of the image plane,
-// so a world length in the plane z = 0 is k / 5 pixels.
-Camera headOn() {
-  Camera c;
-  c.position = {0, 0, 5};
-  c.target = {0, 0, 0};
-  c.up = {0, 1, 0};
-  c.fov_y_deg = 60;
-  c.width = c.height = 100;
-  return c;
-}
+using testing::headOn;  // tests/unit/head_on_camera.h
 
 TEST(TriangleEdge, DistanceInPixelsOfTheNearestEdgeInTheImagePlane) {
   const CameraRays cam(headOn());
-  const double px_per_unit = 100.0 / (2.0 * std::tan(std::numbers::pi / 6)) / 5.0;
+  const double px_per_unit = testing::headOnPixelsPerUnit();
   // The edge P0 P1 lies on y = -1; P2 is 2 above it, so barycentric b2 is
   // the distance from that edge over 2.
   const glm::dvec3 P[3] = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};

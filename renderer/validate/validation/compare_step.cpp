@@ -154,11 +154,7 @@ J comparePair(const CompareContext& cx, const Scene& scene, const renderers::Ren
                              : A.image.depth.empty() && !B.image.depth.empty() ? &B.image
                                                                            : nullptr;
   if (!ra.reference && !rb.reference && diagnostics != nullptr && diagnostics != &A.image) {
-    A.image.depth = diagnostics->depth;
-    A.image.backfacing = diagnostics->backfacing;
-    A.image.incidence = diagnostics->incidence;
-    A.image.texel_edge = diagnostics->texel_edge;
-    A.image.triangle_edge = diagnostics->triangle_edge;
+    copyDiagnostics(*diagnostics, A.image);
   }
   std::vector<PairFailure> failed;
   try {

@@ -11,6 +11,7 @@ namespace {
 size_t pixelBytes(const Image& img) {
   size_t floats = img.rgba.size() + img.raw.size() + img.depth.size() + img.backfacing.size() +
                   img.incidence.size() + img.albedo.size() + img.texel_edge.size() + img.triangle_edge.size();
+  for (const DiagnosticsChannel& c : kProbeChannels) floats += (img.*c.member).size();
   return floats * sizeof(float);
 }
 }  // namespace

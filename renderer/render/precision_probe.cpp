@@ -1,0 +1,73 @@
+// The precision probes' per-sample math (render/precision_probe.h).
+#include "render/precision_probe.h"
+
+#include <algorithm>
+
+namespace xval {
+
+BarycentricDerivatives barycentricDerivatives(const CameraRays& cam, const glm::dvec3 P[3], double b1, double b2,
+                                              double step) {
+  const glm::dvec3 P0 = P[0], e1 = P[1] - P0, e2 = P[2] - P0;
+  const glm::dvec3 T = cam.origin - P0, a1 = glm::cross(e2, T), a2 = glm::cross(T, e1), mm = glm::cross(e2, e1);
+  const glm::dvec3 to_p = P0 + b1 * e1 + b2 * e2 - cam.origin;
+  const glm::dvec3 D = to_p / glm::dot(to_p, cam.forward);
+  const double s = cam.tan_half_fov * step;
+  const glm::dvec3 Dx = (2.0 / cam.width) * s * cam.aspect * cam.right, Dy = (-2.0 / cam.height) * s * cam.up;
+  const double dm = glm::dot(D, mm), da1 = glm::dot(D, a1), da2 = glm::dot(D, a2);
+  auto along = [&](const glm::dvec3& Dd) {
+    const double dmd = glm::dot(Dd, mm);
+    return glm::dvec2((glm::dot(Dd, a1) * dm - da1 * dmd) / (dm * dm), (glm::dot(Dd, a2) * dm - da2 * dmd) / (dm * dm));
+  };
+  return {along(Dx), along(Dy)};
+}
+
+glm::dvec2 planeBarycentrics(const CameraRays& cam, const glm::dvec3 P[3], double x, double y) {
+  const glm::dvec3 P0 = P[0], e1 = P[1] - P0, e2 = P[2] - P0;
+  const glm::dvec3 T = cam.origin - P0, D = cam.direction(x, y);
+  const double dm = glm::dot(D, glm::cross(e2, e1));
+  return glm::dvec2(glm::dot(D, glm::cross(e2, T)), glm::dot(D, glm::cross(T, e1))) / dm;
+}
+
+std::array<glm::dvec2, 2> quadUvDerivatives(const CameraRays& cam, const glm::dvec3 P[3], const glm::dvec2 uv[3],
+                                            double x, double y, int n) {
+  const int gx = int(std::floor(x * n)), gy = int(std::floor(y * n));
+  auto uvAt = [&](int cx, int cy) {
+    const glm::dvec2 b = planeBarycentrics(cam, P, (cx + 0.5) / n, (cy + 0.5) / n);
+    return (1.0 - b.x - b.y) * uv[0] + b.x * uv[1] + b.y * uv[2];
+  };
+  const glm::dvec2 here = uvAt(gx, gy);
+  // Partner minus sample, signed so that the difference runs along +x (+y).
+  const double sx = (gx & 1) ? -1.0 : 1.0, sy = (gy & 1) ? -1.0 : 1.0;
+  return {sx * (uvAt(gx ^ 1, gy) - here), sy * (uvAt(gx, gy ^ 1) - here)};
+}
+
+ProjectedTriangle projectTriangle(const CameraRays& cam, const glm::dvec3 P[3]) {
+  ProjectedTriangle t;
+  for (int k = 0; k < 3; ++k) {
+    double z = 0.0;
+    t.c[size_t(k)] = projectToPixels(cam, P[k], &z);
+    t.in_front = t.in_front && z > 0.0;
+  }
+  return t;
+}
+
+glm::dvec2 projectSample(const CameraRays& cam, double x, double y) {
+  const glm::dvec3 d = cam.direction(x, y);
+  return projectToPixels(cam, cam.origin + d / glm::dot(d, cam.forward));
+}
+
+double segmentDistance(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
+  const glm::dvec2 ab = b - a, ap = p - a;
+  const double len2 = glm::dot(ab, ab);
+  const double f = len2 > 0.0 ? std::clamp(glm::dot(ap, ab) / len2, 0.0, 1.0) : 0.0;
+  return glm::length(ap - f * ab);
+}
+
+bool nearProjectedBoundary(const ProjectedTriangle& t, glm::dvec2 p, double within) {
+  if (!t.in_front) return true;
+  for (int k = 0; k < 3; ++k)
+    if (segmentDistance(p, t.c[size_t(k)], t.c[size_t(k + 1) % 3]) <= within) return true;
+  return false;
+}
+
+}  // namespace xval

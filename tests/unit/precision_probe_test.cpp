@@ -1,0 +1,264 @@
+// The precision probes (render/precision_probe.h) and their channels
+// (image/image.h kProbeChannels): an unperturbed probe is the sample's
+// colour, each channel measures what its rounding changes on scenes whose
+// answer is known, and the channels survive an EXR and a golden image.
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <numbers>
+#include <unistd.h>
+
+#include "golden/golden_set.h"
+#include "head_on_camera.h"
+#include "image/image.h"
+#include "image/pixel_classes.h"
+#include "render/precision_probe.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+
+namespace xval {
+namespace {
+
+namespace fs = std::filesystem;
+
+// tests/unit/head_on_camera.h: world x maps to image x = 50 + kPixelsPerUnit x.
+using testing::headOn;
+const double kPixelsPerUnit = testing::headOnPixelsPerUnit();
+
+// A 2 x 2 square facing the camera whose left edge is at image x = left,
+// lit head-on (Lambert: every hit is its base colour).
+Scene squareWithLeftEdgeAt(double left) {
+  Scene s;
+  s.camera = headOn();
+  Plane p;
+  p.center = {(left - 50.0) / kPixelsPerUnit + 1.0, 0, 0};
+  s.objects = {p};
+  s.material.model = Lambert{glm::dvec3(1.0)};
+  s.material.base_color = {0.5, 0.25, 0.125};
+  s.lights = {DirectionalLight{{0, 0, -1}, glm::dvec3(1.0)}};
+  return s;
+}
+
+Image render(const Scene& s, int spp, Precision prec = Precision::Double) {
+  RenderOptions o;
+  o.spp = spp, o.precision = prec, o.diagnostics = true;
+  return renderScene(s, o);
+}
+
+float at(const std::vector<float>& v, int i, int j) { return v[size_t(j) * 100 + i]; }
+
+// barycentricDerivatives is the derivative of planeBarycentrics: on a
+// tilted triangle, central differences over 1e-4 px agree to 1e-6 of it.
+TEST(PrecisionProbe, BarycentricDerivativesAreThoseOfThePlaneIntersection) {
+  const CameraRays cam(headOn());
+  const glm::dvec3 P[3] = {{-1, -0.5, 0.3}, {1.2, -0.7, -0.8}, {0.1, 1.1, 0.2}};
+  const double x = 47.3, y = 55.8, h = 1e-4;
+  const glm::dvec2 b = planeBarycentrics(cam, P, x, y);
+  const BarycentricDerivatives d = barycentricDerivatives(cam, P, b.x, b.y, 1.0);
+  const glm::dvec2 fx = (planeBarycentrics(cam, P, x + h, y) - planeBarycentrics(cam, P, x - h, y)) / (2 * h);
+  const glm::dvec2 fy = (planeBarycentrics(cam, P, x, y + h) - planeBarycentrics(cam, P, x, y - h)) / (2 * h);
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_NEAR(d.dx[k], fx[k], 1e-6 * glm::length(fx)) << k;
+    EXPECT_NEAR(d.dy[k], fy[k], 1e-6 * glm::length(fy)) << k;
+  }
+}
+
+// On a head-on triangle with uv = world (x, y), uv is affine in the image:
+// the 2x2-quad differences are the exact derivatives, 1 / kPixelsPerUnit
+// per pixel along u and -1 / kPixelsPerUnit along v (image y runs down),
+// per sample step 1 / n, whichever corner of its quad the sample is in.
+TEST(PrecisionProbe, QuadDifferencesOfAnAffineUvAreItsDerivatives) {
+  const CameraRays cam(headOn());
+  const glm::dvec3 P[3] = {{-2, -2, 0}, {2, -2, 0}, {0, 2, 0}};
+  const glm::dvec2 uv[3] = {{-2, -2}, {2, -2}, {0, 2}};
+  for (int n : {1, 2, 4})
+    for (double x : {50.1, 50.6, 51.3, 51.9})
+      for (double y : {49.2, 49.7}) {
+        const auto q = quadUvDerivatives(cam, P, uv, x, y, n);
+        const double s = 1.0 / (kPixelsPerUnit * n);
+        EXPECT_NEAR(q[0].x, s, 1e-9) << n << " " << x << " " << y;
+        EXPECT_NEAR(q[0].y, 0.0, 1e-9);
+        EXPECT_NEAR(q[1].x, 0.0, 1e-9);
+        EXPECT_NEAR(q[1].y, -s, 1e-9) << n << " " << x << " " << y;
+      }
+}
+
+TEST(PrecisionProbe, AnUnperturbedProbeIsTheSampleColourBitForBit) {
+  Scene s = loadScene(std::string(XVAL_REFERENCE_DIR) + "/scenes/fig1_yiq_front.json");
+  s.camera.width = s.camera.height = 48;
+  for (Precision prec : {Precision::Double, Precision::Float}) {
+    const PreparedScene prepared(s, prec);
+    RenderOptions o;
+    o.spp = 1, o.precision = prec, o.rasterise = false;
+    Image img(48, 48, true);
+    prepared.render(o, img);
+    int hits = 0;
+    for (int j = 0; j < 48; ++j)
+      for (int i = 0; i < 48; ++i) {
+        const PreparedScene::ProbeCheck c = prepared.checkProbe(i + 0.5, j + 0.5, 1);
+        if (!c.hit) continue;
+        ++hits;
+        for (int q = 0; q < 3; ++q) {
+          EXPECT_EQ(std::memcmp(&c.colour[q], &c.unperturbed[q], sizeof(double)), 0) << i << "," << j;
+          if (prec == Precision::Double) EXPECT_EQ(float(c.unperturbed[q]), img.pixel(i, j)[q]) << i << "," << j;
+        }
+      }
+    EXPECT_GT(hits, 200);
+  }
+}
+
+// The left edge 0.003 px right of the samples at x = 40.25 (2 x 2 samples
+// per pixel: offsets 0.25, 0.75): those two samples of pixel 40 miss,
+// within 2^-8 px of the edge of the triangle the pixel's other samples
+// hit: 2 / 4. Pixels 39 and 41: no sample within 2^-8 px of any edge.
+TEST(PrecisionProbe, EdgeFractionCountsTheSamplesNearAnEdgeOfAHitTriangle) {
+  const Image img = render(squareWithLeftEdgeAt(40.253), 4);
+  ASSERT_EQ(img.edge_fraction.size(), 100u * 100u);
+  for (int j = 45; j < 55; ++j) {  // far from the square's diagonal, top and bottom
+    EXPECT_EQ(at(img.edge_fraction, 40, j), 0.5f) << j;
+    EXPECT_EQ(at(img.edge_fraction, 39, j), 0.0f) << j;
+    EXPECT_EQ(at(img.edge_fraction, 41, j), 0.0f) << j;
+  }
+}
+
+// The edge 0.003 px right of x = 39.75: pixel 39's samples all miss, and
+// its two at x = 39.75 lie within 2^-8 px of the triangle its neighbour 40
+// hit: 2 / 4, with no hit of its own. Pixel 40 (nearest sample 0.497 px
+// away) and 38: 0.
+TEST(PrecisionProbe, AMissedPixelCountsItsSamplesNearANeighboursTriangle) {
+  const Image img = render(squareWithLeftEdgeAt(39.753), 4);
+  for (int j = 45; j < 55; ++j) {
+    EXPECT_EQ(img.pixel(39, j)[3], 0.0f) << j;
+    EXPECT_EQ(at(img.edge_fraction, 39, j), 0.5f) << j;
+    EXPECT_EQ(at(img.edge_fraction, 40, j), 0.0f) << j;
+    EXPECT_EQ(at(img.edge_fraction, 38, j), 0.0f) << j;
+  }
+}
+
+// The shared diagonal of a 64 x 64 head-on plane passes through the pixel
+// centres (i + 0.5, i + 0.5) (tests/unit/triangle_edge_test.cpp): at 1 spp
+// those pixels are near an edge of their own triangle, the ones beside
+// them (1/sqrt(2) px away) are not.
+TEST(PrecisionProbe, EdgeFractionCountsAnEdgeSharedInsideAMesh) {
+  Scene s;
+  s.camera.width = s.camera.height = 64;
+  s.objects = {Plane{}};
+  s.material.model = Lambert{glm::dvec3(1.0)};
+  s.lights = {DirectionalLight{{0, 0, -1}, glm::dvec3(1.0)}};
+  const Image img = render(s, 1);
+  for (int i = 24; i < 40; ++i) {
+    EXPECT_EQ(img.edge_fraction[size_t(i) * 64 + i], 1.0f) << i;
+    EXPECT_EQ(img.edge_fraction[size_t(i + 1) * 64 + i], 0.0f) << i;
+  }
+}
+
+// A texture whose codes rise by one per column (k / 255 at column k): a
+// bilinear lookup is linear in u, and on a head-on square u is linear in
+// image x, so the colour's slope is (1/255 per texel) (256 texels per u)
+// / (2 kPixelsPerUnit pixels per u) and a 2^-8 px move changes it by that
+// times 2^-8; along y it does not change.
+fs::path writeRamp() {
+  const fs::path file = fs::temp_directory_path() / ("xval_ramp_" + std::to_string(getpid()) + ".png");
+  std::vector<unsigned char> px(256 * 4 * 3);
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 256; ++x)
+      for (int c = 0; c < 3; ++c) px[(size_t(y) * 256 + x) * 3 + c] = (unsigned char)x;
+  auto out = OIIO::ImageOutput::create(file.string());
+  EXPECT_TRUE(out);
+  OIIO::ImageSpec spec(256, 4, 3, OIIO::TypeDesc::UINT8);
+  EXPECT_TRUE(out->open(file.string(), spec) && out->write_image(OIIO::TypeDesc::UINT8, px.data()) && out->close());
+  return file;
+}
+
+TEST(PrecisionProbe, PositionProbeIsTheColourSlopeTimesTheStep) {
+  const fs::path ramp = writeRamp();
+  Scene s = squareWithLeftEdgeAt(50.0 - kPixelsPerUnit);  // centred
+  s.material.texture = TextureSpec{TextureSpec::Source::Image, ramp, TextureFilter::Bilinear, nullptr};
+  for (Precision prec : {Precision::Double, Precision::Float}) {
+    const Image img = render(s, 1, prec);
+    const double expected = 256.0 / 255.0 / (2.0 * kPixelsPerUnit) * kPositionStepPixels;
+    for (int j = 40; j < 60; j += 3)
+      for (int i = 40; i < 60; i += 3)
+        EXPECT_NEAR(at(img.precision_position, i, j), expected, 2e-3 * expected) << i << "," << j;
+    // The uv probe: 1/256 texel of a 1/255-per-texel ramp.
+    EXPECT_NEAR(at(img.precision_uv, 50, 50), kUvStepTexels / 255.0, 2e-3 / 255.0 * kUvStepTexels);
+  }
+  fs::remove(ramp);
+}
+
+// Ambient light only: the colour does not depend on N, so turning it
+// changes nothing; a tight highlight (shininess 1000, the light behind the
+// eye) changes under a 2^-9 rad turn.
+TEST(PrecisionProbe, NormalProbeIsZeroWithoutLightAndPositiveInAHighlight) {
+  Scene s = squareWithLeftEdgeAt(50.0 - kPixelsPerUnit);
+  s.shading = ShadingMode::Phong;
+  s.lights = {AmbientLight{glm::dvec3(0.5)}};
+  Image img = render(s, 4);
+  float largest = 0.0f;
+  for (float v : img.precision_normal) largest = std::max(largest, v);
+  EXPECT_EQ(largest, 0.0f);
+  ClassicPhong phong;
+  phong.ka = 0.0, phong.kd = 0.0, phong.ks = 1.0, phong.shininess = 1000.0;
+  s.material.model = phong;
+  s.lights = {PointLight{{0, 0, 5}, glm::dvec3(1.0), {}}};
+  img = render(s, 4);
+  for (float v : img.precision_normal) largest = std::max(largest, v);
+  EXPECT_GT(largest, 1e-3f);
+}
+
+// Two squares: the left faces the camera, the right faces away (its
+// shading normal is backfacing; lit from the camera's side it is black,
+// turned around it is its base colour). backfacing_flip is the base
+// colour's largest channel over the right square and 0 wherever no
+// sample is backfacing.
+TEST(PrecisionProbe, BackfacingFlipIsPositiveOnlyWhereASampleIsBackfacing) {
+  Scene s = squareWithLeftEdgeAt(10.0);
+  Plane away;
+  away.center = {(60.0 - 50.0) / kPixelsPerUnit + 1.0, 0, 0};
+  away.normal = {0, 0, -1};
+  s.objects.push_back(away);
+  const Image img = render(s, 4);
+  int flipped = 0;
+  for (size_t k = 0; k < img.backfacing.size(); ++k) {
+    if (img.backfacing[k] == 0.0f) EXPECT_EQ(img.backfacing_flip[k], 0.0f) << k;
+    if (img.backfacing[k] == 1.0f && img.rgba[k * 4 + 3] == 1.0f) {
+      EXPECT_EQ(img.backfacing_flip[k], 0.5f) << k;
+      ++flipped;
+    }
+  }
+  EXPECT_GT(flipped, 500);
+}
+
+// The channels survive an EXR (bit for bit) and a golden image (16-bit
+// floats: relative error <= 2^-11).
+TEST(PrecisionProbe, TheChannelsSurviveAnExrAndAGoldenImage) {
+  Image a(9, 7, true);
+  uint32_t state = 7;
+  for (const DiagnosticsChannel& c : kProbeChannels)
+    for (float& f : a.*c.member) f = float((state = state * 1664525u + 1013904223u) >> 8) / float(1 << 24);
+  const fs::path exr = fs::temp_directory_path() / ("xval_probes_" + std::to_string(getpid()) + ".exr");
+  const fs::path gold = fs::temp_directory_path() / ("xval_probes_golden_" + std::to_string(getpid()) + ".exr");
+  writeImage(a, exr);
+  golden::writeGoldenImage(a, gold);
+  const Image b = readImage(exr), g = readImage(gold);
+  fs::remove(exr), fs::remove(gold);
+  for (const DiagnosticsChannel& c : kProbeChannels) {
+    ASSERT_EQ((b.*c.member).size(), (a.*c.member).size()) << c.name;
+    ASSERT_EQ((g.*c.member).size(), (a.*c.member).size()) << c.name;
+    EXPECT_EQ(std::memcmp((b.*c.member).data(), (a.*c.member).data(), (a.*c.member).size() * sizeof(float)), 0)
+        << c.name;
+    for (size_t k = 0; k < (a.*c.member).size(); ++k)
+      EXPECT_NEAR((g.*c.member)[k], (a.*c.member)[k], std::ldexp((a.*c.member)[k], -11) + 6e-8f) << c.name;
+  }
+  // copyDiagnostics hands them on.
+  Image other(9, 7, false);
+  copyDiagnostics(b, other);
+  for (const DiagnosticsChannel& c : kProbeChannels) EXPECT_EQ(other.*c.member, b.*c.member) << c.name;
+}
+
+}  // namespace
+}  // namespace xval
