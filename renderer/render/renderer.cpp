@@ -637,13 +637,81 @@ struct RasterBand {
 // misses the pixel's square grown by kTriangleEdgePixels is skipped (no
 // point of the pixel can be near its boundary). Rows are shared among
 // `threads` threads.
+// The triangles whose projection comes within kTriangleEdgePixels of a
+// pixel the frame does not cover whole (alpha < 1: a silhouette, a crack, a
+// sliver between hits), per such pixel: found by binning every projected
+// triangle's bounding box over those pixels, so a thin triangle at a
+// silhouette that no sample around hits (near a sphere's pole, along a
+// knot's fold) is still a candidate there, though a rasteriser may give it
+// the pixel. Triangles with a corner not in front of the camera are left to
+// the 3x3 hits (they count as near every sample there). The binning visits
+// every pixel of every bounding box: beyond kBinningBudget visits per pixel
+// of the frame it stops and the pass uses the 3x3 hits alone (a sample may
+// then count as far from an edge it is near: a possible false failure,
+// never a false pass).
+inline constexpr double kBinningBudget = 64.0;
+struct OpenPixelTriangles {
+  std::vector<int32_t> index;                                         // per pixel: its row below, or -1
+  std::vector<std::vector<std::pair<uint32_t, uint32_t>>> triangles;  // per open pixel
+  bool complete = true;
+};
+OpenPixelTriangles openPixelTriangles(const std::vector<TriangleMesh>& meshes, const CameraRays& cam,
+                                      const Image& img) {
+  const int W = img.width, H = img.height;
+  OpenPixelTriangles out;
+  out.index.assign(size_t(W) * H, -1);
+  int32_t open = 0;
+  for (int j = 0; j < H; ++j)
+    for (int i = 0; i < W; ++i)
+      if (img.pixel(i, j)[3] < 1.0f) out.index[size_t(j) * W + i] = open++;
+  out.triangles.resize(size_t(open));
+  if (open == 0) return out;
+  // projectSample is affine in the image point: p = o + (x dx, y dy).
+  const glm::dvec2 o = projectSample(cam, 0.0, 0.0), d = projectSample(cam, 1.0, 1.0) - o;
+  const double within = kTriangleEdgePixels, budget = kBinningBudget * double(W) * H;
+  double visits = 0.0;
+  for (size_t mi = 0; mi < meshes.size(); ++mi) {
+    const TriangleMesh& m = meshes[mi];
+    for (size_t ti = 0; ti < m.triangles.size(); ++ti) {
+      const glm::u32vec3& tri = m.triangles[ti];
+      const glm::dvec3 P[3] = {m.positions[tri[0]], m.positions[tri[1]], m.positions[tri[2]]};
+      const ProjectedTriangle pt = projectTriangle(cam, P);
+      if (!pt.in_front) continue;
+      // The image points whose sample could lie within `within` of it.
+      double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+      for (const glm::dvec2& c : pt.c) {
+        const double x = (c.x - o.x) / d.x, y = (c.y - o.y) / d.y;
+        x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+      }
+      const double mx = within / std::abs(d.x), my = within / std::abs(d.y);
+      const int i0 = std::max(0, int(std::floor(x0 - mx))), i1 = std::min(W - 1, int(std::floor(x1 + mx)));
+      const int j0 = std::max(0, int(std::floor(y0 - my))), j1 = std::min(H - 1, int(std::floor(y1 + my)));
+      if (i0 > i1 || j0 > j1) continue;
+      visits += double(i1 - i0 + 1) * double(j1 - j0 + 1);
+      if (visits > budget) {
+        out.complete = false;
+        for (auto& t : out.triangles) t.clear();
+        return out;
+      }
+      for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i)
+          if (const int32_t k = out.index[size_t(j) * W + i]; k >= 0)
+            out.triangles[size_t(k)].emplace_back(uint32_t(mi), uint32_t(ti));
+    }
+  }
+  return out;
+}
+
+// A pixel's candidates are the triangles its 3x3 neighbourhood hit and,
+// where it is not covered whole, those openPixelTriangles bins to it.
 void edgeFractionPass(const std::vector<TriangleMesh>& meshes, const CameraRays& cam, int n,
                       const std::vector<PixelTriangles>& triangles, Image& img, int threads) {
   const int W = img.width, H = img.height;
   const double within = kTriangleEdgePixels;
+  const OpenPixelTriangles binned = openPixelTriangles(meshes, cam, img);
   std::atomic<int> next_row{0};
   auto worker = [&]() {
-    std::vector<std::pair<uint32_t, uint32_t>> seen;
+    std::vector<std::pair<uint32_t, uint32_t>> seen, hit;
     std::vector<ProjectedTriangle> near;
     std::vector<glm::dvec2> samples(size_t(n) * n);
     for (int j = next_row++; j < H; j = next_row++)
@@ -656,24 +724,27 @@ void edgeFractionPass(const std::vector<TriangleMesh>& meshes, const CameraRays&
             lo = glm::min(lo, p), hi = glm::max(hi, p);
           }
         lo -= within, hi += within;
-        seen.clear(), near.clear();
+        seen.clear(), near.clear(), hit.clear();
         for (int y = std::max(0, j - 1); y <= std::min(H - 1, j + 1); ++y)
           for (int x = std::max(0, i - 1); x <= std::min(W - 1, i + 1); ++x) {
             const PixelTriangles& t = triangles[size_t(y) * W + x];
-            for (int k = 0; k < t.count; ++k) {
-              const std::pair<uint32_t, uint32_t> key{t.mesh[size_t(k)], t.triangle[size_t(k)]};
-              if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
-              seen.push_back(key);
-              const TriangleMesh& m = meshes[key.first];
-              const glm::u32vec3& tri = m.triangles[key.second];
-              const glm::dvec3 P[3] = {m.positions[tri[0]], m.positions[tri[1]], m.positions[tri[2]]};
-              const ProjectedTriangle pt = projectTriangle(cam, P);
-              const glm::dvec2 tlo = glm::min(pt.c[0], glm::min(pt.c[1], pt.c[2]));
-              const glm::dvec2 thi = glm::max(pt.c[0], glm::max(pt.c[1], pt.c[2]));
-              if (pt.in_front && (thi.x < lo.x || thi.y < lo.y || tlo.x > hi.x || tlo.y > hi.y)) continue;
-              near.push_back(pt);
-            }
+            for (int k = 0; k < t.count; ++k) hit.emplace_back(t.mesh[size_t(k)], t.triangle[size_t(k)]);
           }
+        seen = hit;
+        if (const int32_t k = binned.index[size_t(j) * W + i]; k >= 0)
+          seen.insert(seen.end(), binned.triangles[size_t(k)].begin(), binned.triangles[size_t(k)].end());
+        std::sort(seen.begin(), seen.end());
+        seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
+        for (const std::pair<uint32_t, uint32_t>& key : seen) {
+          const TriangleMesh& m = meshes[key.first];
+          const glm::u32vec3& tri = m.triangles[key.second];
+          const glm::dvec3 P[3] = {m.positions[tri[0]], m.positions[tri[1]], m.positions[tri[2]]};
+          const ProjectedTriangle pt = projectTriangle(cam, P);
+          const glm::dvec2 tlo = glm::min(pt.c[0], glm::min(pt.c[1], pt.c[2]));
+          const glm::dvec2 thi = glm::max(pt.c[0], glm::max(pt.c[1], pt.c[2]));
+          if (pt.in_front && (thi.x < lo.x || thi.y < lo.y || tlo.x > hi.x || tlo.y > hi.y)) continue;
+          near.push_back(pt);
+        }
         int count = 0;
         for (const glm::dvec2& p : samples)
           for (const ProjectedTriangle& t : near)

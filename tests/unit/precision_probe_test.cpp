@@ -4,6 +4,8 @@
 // answer is known, and the channels survive an EXR and a golden image.
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
@@ -137,6 +139,39 @@ TEST(PrecisionProbe, AMissedPixelCountsItsSamplesNearANeighboursTriangle) {
     EXPECT_EQ(at(img.edge_fraction, 40, j), 0.0f) << j;
     EXPECT_EQ(at(img.edge_fraction, 38, j), 0.0f) << j;
   }
+}
+
+// A sliver no sample hits: a triangle 0.001 px thin whose lower edge
+// passes 0.002 px above the sample row y = 50.5 from x = 30 to 70. Nothing
+// in the image is hit, yet a rasteriser's 2^-8 px may give it those
+// samples: every pixel of row 50 between is an edge sample. (Found only by
+// binning the triangles over the pixels not covered whole: no neighbour
+// hits it.)
+TEST(PrecisionProbe, ASliverNoSampleHitsStillMakesEdgeSamples) {
+  const fs::path dir = fs::temp_directory_path() / ("xval_sliver_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  auto world = [](double ix, double iy) { return glm::dvec2((ix - 50.0) / kPixelsPerUnit, (50.0 - iy) / kPixelsPerUnit); };
+  const glm::dvec2 a = world(30.0, 50.498), b = world(70.0, 50.498), c = world(70.0, 50.497);
+  {
+    std::ofstream obj(dir / "sliver.obj");
+    obj.precision(17);
+    obj << "v " << a.x << " " << a.y << " 0\nv " << b.x << " " << b.y << " 0\nv " << c.x << " " << c.y
+        << " 0\nvn 0 0 1\nf 1//1 2//1 3//1\n";
+    std::ofstream scene(dir / "sliver.json");
+    scene << R"({"format": "xval-scene/1", "name": "sliver",
+      "camera": {"position": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0], "fov_y_deg": 60, "width": 100, "height": 100},
+      "objects": [{"shape": "mesh", "path": "sliver.obj"}],
+      "material": {"model": {"type": "lambert"}}, "lights": [{"type": "directional", "direction": [0, 0, -1]}]})";
+  }
+  const Image img = render(loadScene(dir / "sliver.json"), 1);
+  fs::remove_all(dir);
+  for (int i = 31; i < 69; ++i) {
+    EXPECT_EQ(img.pixel(i, 50)[3], 0.0f) << i;  // no sample hits it
+    EXPECT_EQ(at(img.edge_fraction, i, 50), 1.0f) << i;
+    EXPECT_EQ(at(img.edge_fraction, i, 49), 0.0f) << i;
+    EXPECT_EQ(at(img.edge_fraction, i, 51), 0.0f) << i;
+  }
+  EXPECT_EQ(at(img.edge_fraction, 20, 50), 0.0f);
 }
 
 // The shared diagonal of a 64 x 64 head-on plane passes through the pixel
