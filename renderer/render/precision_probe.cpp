@@ -28,17 +28,16 @@ glm::dvec2 planeBarycentrics(const CameraRays& cam, const glm::dvec3 P[3], doubl
   return glm::dvec2(glm::dot(D, glm::cross(e2, T)), glm::dot(D, glm::cross(T, e1))) / dm;
 }
 
-std::array<glm::dvec2, 2> quadUvDerivatives(const CameraRays& cam, const glm::dvec3 P[3], const glm::dvec2 uv[3],
-                                            double x, double y, int n) {
-  const int gx = int(std::floor(x * n)), gy = int(std::floor(y * n));
+std::array<std::array<glm::dvec2, 2>, 4> quadUvDerivativeChoices(const CameraRays& cam, const glm::dvec3 P[3],
+                                                                 const glm::dvec2 uv[3], double x, double y, int n) {
+  const int gx = int(std::floor(x * n)) & ~1, gy = int(std::floor(y * n)) & ~1;
   auto uvAt = [&](int cx, int cy) {
     const glm::dvec2 b = planeBarycentrics(cam, P, (cx + 0.5) / n, (cy + 0.5) / n);
     return (1.0 - b.x - b.y) * uv[0] + b.x * uv[1] + b.y * uv[2];
   };
-  const glm::dvec2 here = uvAt(gx, gy);
-  // Partner minus sample, signed so that the difference runs along +x (+y).
-  const double sx = (gx & 1) ? -1.0 : 1.0, sy = (gy & 1) ? -1.0 : 1.0;
-  return {sx * (uvAt(gx ^ 1, gy) - here), sy * (uvAt(gx, gy ^ 1) - here)};
+  const glm::dvec2 u00 = uvAt(gx, gy), u10 = uvAt(gx + 1, gy), u01 = uvAt(gx, gy + 1), u11 = uvAt(gx + 1, gy + 1);
+  const glm::dvec2 dx[2] = {u10 - u00, u11 - u01}, dy[2] = {u01 - u00, u11 - u10};
+  return {{{dx[0], dy[0]}, {dx[0], dy[1]}, {dx[1], dy[0]}, {dx[1], dy[1]}}};
 }
 
 ProjectedTriangle projectTriangle(const CameraRays& cam, const glm::dvec3 P[3]) {

@@ -37,8 +37,9 @@
 //     stays);
 //   uv: uv +- (kUvStepTexels / W, 0) and uv +- (0, kUvStepTexels / H), W x H
 //     the level-0 texture; for a trilinear texture also lambda +- dl,
-//     dl = kLodStep + |lambda_quad - lambda|, lambda_quad the level a
-//     GPU takes from 2x2-quad finite differences (quadLambdaUv below);
+//     dl = kLodStep + max |lambda_quad - lambda|, lambda_quad the levels
+//     a GPU may take from 2x2-quad finite differences
+//     (quadUvDerivativeChoices below);
 //   normal: N turned by kNormalStepRadians about either of two unit axes
 //     a perpendicular to it: N' = cos(s) N + sin(s) (a x N) (N's length
 //     kept; turnAxes below);
@@ -97,12 +98,18 @@ glm::dvec2 planeBarycentrics(const CameraRays& cam, const glm::dvec3 P[3], doubl
 // GPU's pixels (gl renders n x n samples as an n-times larger frame), the
 // sample at grid column gx = floor(x n), row gy = floor(y n) (x, y its
 // image point; n samples per pixel side) sits in the 2x2 quad of even
-// (gx, gy), and the derivatives are the differences of the exact
-// perspective uv (planeBarycentrics, uv = b0 uv0 + b1 uv1 + b2 uv2) at the
-// grid centres of the sample and its horizontal partner (gx xor 1) and
-// vertical partner (gy xor 1), per grid step. Returns (duv/dx, duv/dy).
-std::array<glm::dvec2, 2> quadUvDerivatives(const CameraRays& cam, const glm::dvec3 P[3], const glm::dvec2 uv[3],
-                                            double x, double y, int n);
+// (gx, gy), and the differences are those of the exact perspective uv
+// (planeBarycentrics, uv = b0 uv0 + b1 uv1 + b2 uv2) at the quad's grid
+// centres, per grid step. The (duv/dx, duv/dy) pairs a GPU may take for
+// the whole quad holding that sample: the x difference of either row and the y difference of either
+// column, in all four combinations. A driver that computes one level of
+// detail per quad takes them at the quad's first pixel, which the window
+// origin decides (OpenGL's is at the bottom, the image's row 0 at the top);
+// one that computes it per pixel takes the pixel's own row and column, one
+// of the four. llvmpipe computes one per quad (docs/precision-models.md,
+// "LOD"). The probe takes the farthest of their levels from the exact one.
+std::array<std::array<glm::dvec2, 2>, 4> quadUvDerivativeChoices(const CameraRays& cam, const glm::dvec3 P[3],
+                                                                 const glm::dvec2 uv[3], double x, double y, int n);
 
 // Two unit axes perpendicular to n (n not zero): a1 = normalize(n x e),
 // e the coordinate axis least aligned with n, and a2 = normalize(n x a1).

@@ -285,8 +285,11 @@ SampleProbes<T> probeSample(const Shading<T>& sh, const Hit& h, double step, glm
     }
     if (colour.usesFootprint()) {
       const glm::dvec2 uv[3] = {m.src->uvs[tri[0]], m.src->uvs[tri[1]], m.src->uvs[tri[2]]};
-      const auto q = quadUvDerivatives(sh.cam, P, uv, at.x, at.y, n);
-      const double dl = kLodStep + std::abs(colour.mips->lambda(q[0], q[1]) - hitLambda(sh, h, step));
+      const double exact = hitLambda(sh, h, step);
+      double far = 0.0;
+      for (const auto& q : quadUvDerivativeChoices(sh.cam, P, uv, at.x, at.y, n))
+        far = std::max(far, std::abs(colour.mips->lambda(q[0], q[1]) - exact));
+      const double dl = kLodStep + far;
       for (const double s : {dl, -dl}) {
         ShadingNudge<T> nudge;
         nudge.dlambda = s;
