@@ -92,6 +92,8 @@ QUICK_SCENES = [
     "gen_knot_phong_paper_phong_plain_spot_attenuated_spp4",
     "gen_sphere_phong_paper_phong_noise_min_bilinear_point_attenuated_spp1",
     "gen_wuson_ply_wrap_phong_noise_min_bilinear_several_spp1",
+    "gen_wuson_stl_mirrored_wrap_phong_noise_min_trilinear_point_attenuated_spp1",
+    "gen_suzanne_gltf_phong_paper_phong_brick_spot_attenuated_spp1",
 ]
 
 
@@ -263,7 +265,8 @@ def main():
     ap.add_argument("--xval", required=True, help="the xval executable")
     ap.add_argument("-o", "--output", required=True, help="output folder (resumable)")
     ap.add_argument("--jobs", type=int, default=2)
-    ap.add_argument("--quick", action="store_true", help="only the scenes of QUICK_SCENES, every mutant")
+    ap.add_argument("--quick", action="store_true",
+                    help="only the scenes of QUICK_SCENES and the user scenes, every mutant")
     ap.add_argument("--mutants", default="", help="only these mutants, comma-separated")
     ap.add_argument("--no-specificity", action="store_true",
                     help="skip the five-renderer run (the mutants then render their reference and gl images)")
@@ -297,10 +300,9 @@ def main():
             sys.exit("run.py: QUICK_SCENES not in the generated set: " + ", ".join(missing))
         names = QUICK_SCENES
     scenes = [os.path.join(set_dir, s + ".json") for s in names]
-    if not args.quick:
-        users = sorted(f[:-5] for f in os.listdir(USER_SCENES) if f.endswith(".json"))
-        names += users
-        scenes += [os.path.join(USER_SCENES, s + ".json") for s in users]
+    users = sorted(f[:-5] for f in os.listdir(USER_SCENES) if f.endswith(".json"))
+    names = names + users
+    scenes += [os.path.join(USER_SCENES, s + ".json") for s in users]
     report = {"command": " ".join(sys.argv), "scenes": len(names), "quick": args.quick,
               "report_only": args.report_only,
               "definition_of_visible": "more than %g%% of the covered pixels differ by more than %g/65535, or any "
