@@ -48,18 +48,18 @@ def readme(cases):
 
 def povray(cases):
     print("| scene | verdict | max | p99.9 | RMSE | within tol. | tol. | "
-          "over tol.: occl./backf./unexpl. | ref s | POV-Ray s |")
+          "over tol.: precision/edge/backf./unexpl. | ref s | POV-Ray s |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     for c in cases:
         p = pair(c, "reference-povray")
         if p is None:
-            print("| %s | (not compared) |||||||||" % c["scene"])
+            print("| %s | (not compared) ||||||||||" % c["scene"])
             continue
         m, o = p["metrics"], p["metrics"]["over_tolerance"]
-        print("| %s | %s | %.2f | %.2f | %.3f | %.3f%% | %g | %d/%d/%d | %.2f | %.2f |" % (
+        print("| %s | %s | %.2f | %.2f | %.3f | %.3f%% | %g | %d/%d/%d/%d | %.2f | %.2f |" % (
             c["scene"], "PASS" if p["pass"] else "FAIL", m["max_abs_16bit"], m["p999_abs_16bit"],
             m["rmse_16bit"], 100.0 * m["fraction_within"], m["tolerance"]["max_abs_16bit"],
-            o["occlusion_edge"], o["backfacing_normal"], o["unexplained"],
+            o["precision"], o["edge"], o["backfacing_normal"], o["unexplained"],
             c["renders"]["reference"]["seconds"], c["renders"]["povray"]["seconds"]))
 
 
