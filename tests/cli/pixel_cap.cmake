@@ -2,9 +2,10 @@
 # image/compare.h), though one pixel in 65,536 is well within the default
 # fraction: the reference render of a scene against a copy of itself with
 # one pixel painted magenta, 20 px from any triangle edge (the reference's
-# triangle_edge channel). The same paint at the image centre, on the edge
+# edge_fraction channel is 0 there). The same paint at the image centre, on the edge
 # the plane's two triangles share (0 px from it), is explained by the
-# triangle-edge class (image/pixel_classes.h) and passes.
+# edge class (its one sample is an edge sample: image/pixel_classes.h) and
+# passes.
 # -DXVAL=... -DSCENE=... -DOUT=... ; needs oiiotool (Debian openimageio-tools).
 find_program(OIIOTOOL oiiotool REQUIRED)
 file(MAKE_DIRECTORY ${OUT})
@@ -31,7 +32,7 @@ if(NOT rc EQUAL 0)
 endif()
 # ... the change on the triangle edge passes, counted in its class ...
 run(${XVAL} compare ${OUT}/a.exr ${OUT}/on_edge.exr)
-if(NOT rc EQUAL 0 OR NOT out MATCHES "triangle edge 1, unexplained 0")
+if(NOT rc EQUAL 0 OR NOT out MATCHES "edge 1, backfacing normal 0, unexplained 0")
   message(FATAL_ERROR "one wrong pixel on a triangle edge: expected exit 0, counted as triangle edge; "
                       "got exit ${rc}:\n${out}")
 endif()
