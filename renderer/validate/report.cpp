@@ -57,7 +57,6 @@ namespace {
 
 // Heat maps: at full resolution up to this size; larger ones reduced by
 // their block maximum (image/heat_map.h maxDownscaled).
-constexpr int kHeatMapSide = 1024;
 
 // gnuplot string: only [A-Za-z0-9_.-] of a name, the rest '_'.
 std::string gnuplotSafe(const std::string& n) {
@@ -438,9 +437,9 @@ nlohmann::ordered_json sectionsJson(const ReportSections& sections, const fs::pa
 }
 
 std::string writeHeatMapPng(const Image& diff, const fs::path& results_dir, const std::string& scene,
-                            const std::string& pair) {
+                            const std::string& pair, int max_side) {
   const std::string rel = scene + "/heat_" + pair + ".png";
-  writePreviewPng(heatMap(maxDownscaled(diff, kHeatMapSide)), results_dir / rel, kHeatMapSide);
+  writePreviewPng(heatMap(maxDownscaled(diff, max_side)), results_dir / rel, max_side);
   return rel;
 }
 

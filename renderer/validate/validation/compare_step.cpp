@@ -187,7 +187,7 @@ std::vector<PairFailure> comparedPair(const CompareContext& cx, const Scene& sce
   jp["heat_map"] = writeHeatMapPng(diff, cx.plan.dir, scene.name, key);  // the report only shows it
   // The pair's precision bound on the same scale, beside it.
   if (const Image bound = precisionBoundImage(A.image, B.image, precision); bound.width > 0)
-    jp["bound_map"] = writeHeatMapPng(bound, cx.plan.dir, scene.name, "bound_" + key);
+    jp["bound_map"] = writeHeatMapPng(bound, cx.plan.dir, scene.name, "bound_" + key, kBoundMapSide);
   std::map<std::string, const Image*> images;
   // The renders of the scene (a geometry check's passes are no render of it).
   for (const auto& [id, rr] : renders)
