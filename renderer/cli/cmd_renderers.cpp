@@ -22,10 +22,12 @@ void addRenderersCommand(CLI::App& app, std::function<int()>& run) {
   CLI::App* cmd = app.add_subcommand(
       "renderers",
       "List the renderers (" + renderers::joinNames(renderers::registry().ids()) +
-          "): id, name, version, and whether each is available on this machine and, if not, why.");
+          "): id, name, version, its precision model (docs/precision-models.md), and whether each is available "
+          "on this machine and, if not, why.");
   cmd->add_flag("--json", *json,
                 "Print JSON instead: {\"renderers\": [{id, display_name, summary, reference, every_scene, "
-                "geometry_passes, validate (run by `xval validate` by default), version, available, reason}]}");
+                "geometry_passes, validate (run by `xval validate` by default), precision {position_steps, uv_steps, "
+                "normal_steps, relative, quantum_16bit, basis}, version, available, reason}]}");
   auto renderer_files = addRendererFileOption(cmd);
   cmd->callback([json, renderer_files, &run]() {
     run = [json, renderer_files]() -> int {
@@ -44,6 +46,7 @@ void addRenderersCommand(CLI::App& app, std::function<int()>& run) {
                                       {"every_scene", r.every_scene},
                                       {"geometry_passes", r.geometry_passes},
                                       {"validate", r.every_scene || r.geometry_passes},
+                                      {"precision", precisionJson(renderers::precisionOf(r))},
                                       {"version", version},
                                       {"available", a.available},
                                       {"reason", a.reason}});
@@ -51,6 +54,11 @@ void addRenderersCommand(CLI::App& app, std::function<int()>& run) {
         }
         std::printf("%-16s %-24s %s\n", r.id.c_str(), r.display_name.c_str(), r.summary.c_str());
         std::printf("%-16s version: %s\n", "", version.c_str());
+        if (!r.geometry_passes) {
+          const PrecisionModel& p = renderers::precisionOf(r);
+          std::printf("%-16s precision: %g position, %g uv, %g normal steps, relative %g, quantum %g/65535 (%s)\n", "",
+                      p.position_steps, p.uv_steps, p.normal_steps, p.relative, p.quantum_16bit, p.basis.c_str());
+        }
         std::printf("%-16s %s%s%s\n", "", a.available ? "available" : "UNAVAILABLE: ", a.reason.c_str(),
                     r.reference      ? " (the reference: every other renderer is compared with it)"
                     : r.every_scene ? ""
