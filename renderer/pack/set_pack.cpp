@@ -16,6 +16,7 @@
 #include "files/atomic_write.h"
 #include "files/scratch_folder.h"
 #include "geometry/model_file.h"
+#include "files/sha256.h"
 #include "golden/golden_set.h"
 #include "process/run_process.h"
 #include "renderers/renderer.h"
@@ -297,7 +298,7 @@ PackSummary packSet(const fs::path& set, const fs::path& archive_file,
       const long long size = (long long)fs::file_size(f.source);
       writeHeader(a.get(), entry, size, mtime, archive_file);
       long long done = 0;
-      const std::string sha = golden::sha256Pieces([&](const auto& update) {
+      const std::string sha = sha256Pieces([&](const auto& update) {
         while (in.read(buf.data(), std::streamsize(buf.size())) || in.gcount() > 0) {
           const size_t n = size_t(in.gcount());
           if (done + (long long)n > size) break;
@@ -369,7 +370,7 @@ std::vector<std::string> verifyUnpacked(const fs::path& dir) {
     }
     std::string sha;
     try {
-      sha = golden::sha256File(f, want_size);
+      sha = sha256File(f, want_size);
     } catch (const std::runtime_error& err) {
       problems.push_back(err.what());
       continue;

@@ -14,7 +14,7 @@
 
 #include "files/atomic_write.h"
 #include "files/scratch_folder.h"
-#include "golden/golden_set.h"
+#include "files/sha256.h"
 #include "process/run_process.h"
 #include "scene/json_reader.h"
 #include "scene/scene_loader.h"
@@ -71,7 +71,7 @@ std::string copyHashing(const fs::path& from, const fs::path& to) {
   std::ifstream in(from, std::ios::binary);
   if (!in) throw std::runtime_error(from.string() + ": cannot read");
   std::string bytes;
-  const std::string h = golden::sha256Pieces([&](const std::function<void(const char*, size_t)>& update) {
+  const std::string h = sha256Pieces([&](const std::function<void(const char*, size_t)>& update) {
     std::vector<char> buf(1 << 16);
     while (in.read(buf.data(), std::streamsize(buf.size())) || in.gcount() > 0) {
       update(buf.data(), size_t(in.gcount()));
@@ -93,7 +93,7 @@ std::vector<StoredFile> exportedFiles(const fs::path& dir, std::string* why) {
       *why = "the export holds " + n + ", not a plain file";
       return {};
     }
-    files.push_back({n, e.file_size(), golden::sha256File(e.path())});
+    files.push_back({n, e.file_size(), sha256File(e.path())});
   }
   std::sort(files.begin(), files.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
   return files;
@@ -252,12 +252,12 @@ ExportCache exportCache() {
 }
 
 std::string xvalIdentity() {
-  static const std::string id = golden::sha256File("/proc/self/exe");
+  static const std::string id = sha256File("/proc/self/exe");
   return id;
 }
 
 std::string exportKey(const std::string& exporter, const std::string& inputs_key) {
-  return golden::sha256Pieces([&](const std::function<void(const char*, size_t)>& update) {
+  return sha256Pieces([&](const std::function<void(const char*, size_t)>& update) {
     for (const std::string& piece : {std::string(kEntryFormat), exporter, xvalIdentity(), inputs_key}) {
       update(piece.data(), piece.size());
       update("\0", 1);

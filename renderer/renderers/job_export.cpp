@@ -1,7 +1,7 @@
 // A job's refusal and export in one (job_export.h).
 #include "renderers/job_export.h"
 
-#include "golden/golden_set.h"
+#include "files/sha256.h"
 #include "renderers/export_cache.h"
 
 namespace xval::renderers {
@@ -9,8 +9,8 @@ namespace xval::renderers {
 std::string refusalKey(const Renderer& renderer, const std::string& inputs_key) {
   if (inputs_key.empty()) return "";
   const std::string definition =
-      renderer.definition_file.empty() ? std::string() : golden::sha256File(renderer.definition_file);
-  return golden::sha256Pieces([&](const std::function<void(const char*, size_t)>& update) {
+      renderer.definition_file.empty() ? std::string() : sha256File(renderer.definition_file);
+  return sha256Pieces([&](const std::function<void(const char*, size_t)>& update) {
     for (const std::string& piece : {inputs_key, renderer.id, definition}) {
       update(piece.data(), piece.size());
       update("\0", 1);

@@ -95,7 +95,7 @@ int goldenUpdate(const GoldenRequest& request) {
     makeRealFolder(folder.parent_path().parent_path(), folder);
     auto it = manifests.find(folder);
     if (it == manifests.end()) it = manifests.emplace(folder, golden::readManifest(folder, r.id)).first;
-    const std::string scene_hash = golden::sha256File(file);
+    const std::string scene_hash = sha256File(file);
     const fs::path work = scratch.dir() / ("work-" + attemptToken());
     fs::create_directories(work);
     Render fresh = renderForGolden(r, scene, work, request.timeout_seconds);
@@ -108,7 +108,7 @@ int goldenUpdate(const GoldenRequest& request) {
     e.settings = fresh.settings;
     e.settings_sha256 = golden::settingsHash(fresh.settings);
     e.image = image.filename().string();
-    e.image_sha256 = golden::sha256File(image);
+    e.image_sha256 = sha256File(image);
     e.renderer_version = version;
     e.git_commit = prov.git_commit;
     e.date_utc = prov.date_utc;

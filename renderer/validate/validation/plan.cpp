@@ -14,7 +14,7 @@
 #include "files/atomic_write.h"
 #include "files/output_folder.h"
 #include "geometry/model_file.h"
-#include "golden/golden_set.h"
+#include "files/sha256.h"
 #include "renderers/renderer_file.h"
 #include "renderers/registry.h"
 #include "scene/json_reader.h"
@@ -216,7 +216,7 @@ std::vector<RendererFile> rendererFiles(const std::vector<std::string>& run) {
       const renderers::Renderer* r = name.empty() ? nullptr : renderers::registry().find(name);
       if (!r || r->definition_file.empty()) continue;
       if (std::none_of(out.begin(), out.end(), [&](const RendererFile& f) { return f.name == r->id; }))
-        out.push_back({r->id, r->definition_file, golden::sha256File(r->definition_file)});
+        out.push_back({r->id, r->definition_file, sha256File(r->definition_file)});
     }
   return out;
 }
@@ -236,7 +236,7 @@ std::vector<RendererFile> readRendererFiles(const FieldReader& rd, const J& j) {
     if (!std::filesystem::is_regular_file(f.path))
       throw std::runtime_error(at + "path: " + f.path.string() + ": the renderer file of " + f.name +
                                " is missing (the plan's jobs render with it; make a new plan)");
-    if (const std::string now = golden::sha256File(f.path); now != f.sha256)
+    if (const std::string now = sha256File(f.path); now != f.sha256)
       throw std::runtime_error(at + "path: " + f.path.string() + ": the renderer file of " + f.name +
                                " changed since the plan was made (SHA-256 " + now + ", the plan's " + f.sha256 +
                                "); its jobs would render with another renderer: make a new plan");
@@ -287,7 +287,7 @@ std::string inputHash(const Scene& scene, const fs::path& scene_file, const std:
 }
 
 std::string exportInputsKey(const Scene& scene, const fs::path& scene_file) {
-  return golden::sha256Pieces([&](const std::function<void(const char*, size_t)>& update) {
+  return sha256Pieces([&](const std::function<void(const char*, size_t)>& update) {
     // Each piece with its length, so no two sequences of pieces feed the same bytes.
     auto add = [&](const std::string& bytes) {
       const std::string n = std::to_string(bytes.size()) + ":";
