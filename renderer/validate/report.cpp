@@ -436,13 +436,6 @@ nlohmann::ordered_json sectionsJson(const ReportSections& sections, const fs::pa
   return j;
 }
 
-std::string writeHeatMapPng(const Image& diff, const fs::path& results_dir, const std::string& scene,
-                            const std::string& pair, int max_side) {
-  const std::string rel = scene + "/heat_" + pair + ".png";
-  writePreviewPng(heatMap(maxDownscaled(diff, max_side)), results_dir / rel, max_side);
-  return rel;
-}
-
 void writeReport(const std::filesystem::path& results_json, const std::filesystem::path& html,
                  const ReportSections& sections) {
   // Read as scene files are: a key given twice is refused.

@@ -9,7 +9,7 @@
 // and its pairs' verdicts opening onto a renderers x renderers matrix: as
 // many columns for 15 pairs as for one), the
 // pairs' heat maps (the PNG each pair names in `heat_map`, written by the
-// compare step, which has the EXRs: writeHeatMapPng), the paper's Figure 1
+// compare step, which has the EXRs: image/heat_map.h writeHeatMapPng), the paper's Figure 1
 // verdicts (`paper_claims`, computed by the compare step:
 // validate/paper_claims.h), and the extremes and trade-off sections from
 // the folders `sections` names (or the ones given to writeReport). It
@@ -51,19 +51,6 @@ nlohmann::ordered_json sectionsJson(const ReportSections& sections, const std::f
 // gnuplot is missing or fails.
 void writeReport(const std::filesystem::path& results_json, const std::filesystem::path& html,
                  const ReportSections& sections = {});
-
-// The heat map of one pair (image/heat_map.h) at full resolution up to
-// max_side px a side (larger: reduced by the block maximum, so a single bad
-// pixel stays visible)
-// as results_dir/<scene>/heat_<pair>.png; returns that path relative to
-// results_dir, for the pair's `heat_map` in results.json.
-inline constexpr int kHeatMapSide = 1024;
-// A pair's precision bound map (`bound_map`): smaller, since it is looked
-// at beside the heat map, not searched pixel by pixel (the block maximum
-// keeps each block's largest bound).
-inline constexpr int kBoundMapSide = 128;
-std::string writeHeatMapPng(const Image& diff, const std::filesystem::path& results_dir,
-                            const std::string& scene, const std::string& pair, int max_side = kHeatMapSide);
 
 std::string htmlEscape(const std::string& s);
 
