@@ -7,6 +7,8 @@
 #include <thread>
 #include <vector>
 
+#include "process/job_pool.h"
+
 namespace xval {
 
 namespace {
@@ -241,10 +243,7 @@ std::string embedded(const TriangleMesh& m) {
         }
     }
   };
-  std::vector<std::thread> pool;
-  for (unsigned w = 1; w < threads; ++w) pool.emplace_back(work, w);
-  work(0);
-  for (auto& t : pool) t.join();
+  runJobPool(threads, int(threads), [&](size_t w) { work(unsigned(w)); });
   const size_t first = size_t(std::min_element(failed_run.begin(), failed_run.end()) - failed_run.begin());
   if (failed_run[first] != SIZE_MAX)
     return "not embedded: " + tri(failed[first].first) + " and " + tri(failed[first].second) +

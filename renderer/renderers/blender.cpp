@@ -24,8 +24,8 @@
 // (--batch).
 #include "blender/blender_render.h"
 #include "gltf/gltf_exporter.h"
+#include "renderers/blender_engine.h"
 #include "renderers/export_cache.h"
-#include "renderers/renderer.h"
 
 namespace xval::renderers {
 
@@ -36,14 +36,13 @@ std::string blenderScriptMissing() {
   return "Blender script " + script.string() + " not found (set XVAL_BLENDER_SCRIPT)";
 }
 
+namespace {
+
 // The Blender harness's export with that engine: its check, then the glTF.
 RendererExport blenderExport(BlenderEngine engine) {
   return {"gltf", [engine](const Scene& scene) { checkBlenderScene(scene, engine); },
           [](const Scene& scene, const std::filesystem::path& dir) { exportGltf(scene, dir); }, ""};
 }
-
-// The Cycles harness's refusal of a scene, "" when it can render it.
-std::string blenderRefusal(const Scene& scene) { return refusalOf(blenderExport(BlenderEngine::Cycles), scene); }
 
 // The ExportThrough of a request: its work folder's export, or the cache's.
 ExportThrough blenderThrough(const RenderRequest& request) {
@@ -72,37 +71,57 @@ std::vector<BatchOutcome> blenderBatch(const std::vector<BatchItem>& items, Blen
   return out;
 }
 
-Renderer blenderRenderer() {
+}  // namespace
+
+// The Cycles harness's refusal of a scene, "" when it can render it.
+std::string blenderRefusal(const Scene& scene) { return refusalOf(blenderExport(BlenderEngine::Cycles), scene); }
+
+// The Cycles and EEVEE renderers: one harness, one export, one batch
+// runner; they differ in what BlenderEngineFacts holds.
+Renderer blenderEngineRenderer(const BlenderEngineFacts& facts) {
   Renderer r;
-  r.id = "blender";
-  r.display_name = "Blender";
-  r.summary = "Blender 3.4 Cycles: the scene exported as glTF, the model rebuilt as shader nodes";
+  r.id = facts.id;
+  r.display_name = facts.display_name;
+  r.summary = facts.summary;
   r.version_command = {"blender", "--version"};
   r.version_marker = "Blender";
+  r.cpu_share = facts.cpu_share;
+  // Per scene of a batch: import, render, write (validate/validation/job_cost.h).
+  r.job_cost = {1.5, 2.0, 10.0};
+  r.precision = facts.precision;
+  r.missing = blenderScriptMissing;
+  r.exporter = blenderExport(facts.engine);
+  r.cannot_express = [ex = *r.exporter](const Scene& scene) { return refusalOf(ex, scene); };
+  r.render = [engine = facts.engine](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
+    ExternalRenderInfo tool;
+    Image image = renderWithBlender(scene, request.work_dir, request.timeout_seconds, &tool, BlenderMode::Model,
+                                    engine, blenderThrough(request));
+    setInfo(info, tool);
+    return image;
+  };
+  r.render_batch = [engine = facts.engine](const std::vector<BatchItem>& items, const BatchItemDone& item_done) {
+    return blenderBatch(items, engine, item_done);
+  };
+  return r;
+}
+
+Renderer blenderRenderer() {
+  BlenderEngineFacts f;
+  f.engine = BlenderEngine::Cycles;
+  f.id = "blender";
+  f.display_name = "Blender";
+  f.summary = "Blender 3.4 Cycles: the scene exported as glTF, the model rebuilt as shader nodes";
   // A batch's worker process keeps 0.27-0.28 of a core busy on average
   // (process CPU over wall: 10.8 s of 39.2 s and 8.3 s of 30.4 s for the
   // two batches of the reference set at load average 6-8): most of its
   // time is Blender's start-up, the factory reset and the glTF import per
   // scene, on one thread. Half a core: the two batches of a 2-core run
   // leave a core to the POV-Ray and reference jobs beside them.
-  r.cpu_share = 0.5;
+  f.cpu_share = 0.5;
   // docs/precision-models.md, Cycles.
-  r.precision = {1.0, 1.0, std::ldexp(1.0, -10), 2e-6, 0.0,
+  f.precision = {1.0, 1.0, std::ldexp(1.0, -10), 2e-6, 0.0,
                  "float32 Embree robust intersection, barycentric uv and normals, SVM math; float32 EXR"};
-  r.missing = blenderScriptMissing;
-  r.exporter = blenderExport(BlenderEngine::Cycles);
-  r.cannot_express = [ex = *r.exporter](const Scene& scene) { return refusalOf(ex, scene); };
-  r.render = [](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
-    ExternalRenderInfo tool;
-    Image image = renderWithBlender(scene, request.work_dir, request.timeout_seconds, &tool, BlenderMode::Model,
-                                    BlenderEngine::Cycles, blenderThrough(request));
-    setInfo(info, tool);
-    return image;
-  };
-  r.render_batch = [](const std::vector<BatchItem>& items, const BatchItemDone& item_done) {
-    return blenderBatch(items, BlenderEngine::Cycles, item_done);
-  };
-  return r;
+  return blenderEngineRenderer(f);
 }
 
 }  // namespace xval::renderers

@@ -16,12 +16,10 @@
 // Needs what the blender renderer needs; same version line.
 #include "blender/blender_render.h"
 #include "blender/native_lambert.h"
-#include "renderers/renderer.h"
+#include "renderers/blender_engine.h"
 
 namespace xval::renderers {
 
-std::string blenderScriptMissing();              // renderers/blender.cpp
-std::string blenderRefusal(const Scene& scene);  // renderers/blender.cpp
 
 Renderer blenderNativeRenderer() {
   Renderer r;

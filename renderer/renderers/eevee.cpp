@@ -16,43 +16,22 @@
 //   timeout_seconds  default kDefaultToolTimeoutSeconds (600)
 // Needs what the blender renderer needs (blender on PATH, the harness
 // script); same version line. render_seconds: the log's render Time.
-// Batches as the blender renderer's (renderers/blender.cpp).
-#include "blender/blender_render.h"
-#include "renderers/export_cache.h"
-#include "renderers/renderer.h"
+// Batches as the blender renderer's: both are renderers/blender.cpp's
+// blenderEngineRenderer (renderers/blender_engine.h).
+#include "renderers/blender_engine.h"
 
 namespace xval::renderers {
 
-std::string blenderScriptMissing();              // renderers/blender.cpp
-RendererExport blenderExport(BlenderEngine engine);                 // renderers/blender.cpp
-ExportThrough blenderThrough(const RenderRequest& request);        // renderers/blender.cpp
-std::vector<BatchOutcome> blenderBatch(const std::vector<BatchItem>& items, BlenderEngine engine,
-                                       const BatchItemDone& item_done);  // renderers/blender.cpp
-
 Renderer eeveeRenderer() {
-  Renderer r;
-  r.id = "eevee";
-  r.display_name = "EEVEE";
-  r.summary = "Blender 3.4 EEVEE: the blender renderer's node trees, rasterised on OpenGL (Mesa, headless)";
-  r.version_command = {"blender", "--version"};
-  r.version_marker = "Blender";
-  r.missing = blenderScriptMissing;
+  BlenderEngineFacts f;
+  f.engine = BlenderEngine::Eevee;
+  f.id = "eevee";
+  f.display_name = "EEVEE";
+  f.summary = "Blender 3.4 EEVEE: the blender renderer's node trees, rasterised on OpenGL (Mesa, headless)";
   // docs/precision-models.md, EEVEE.
-  r.precision = {1.0, 1.0, std::ldexp(1.0, -10), 1e-5, 0.0,
+  f.precision = {1.0, 1.0, std::ldexp(1.0, -10), 1e-5, 0.0,
                  "Mesa llvmpipe: float32 world positions, uv and normal varyings, exp2/log2 pow; RGBA32F"};
-  r.exporter = blenderExport(BlenderEngine::Eevee);
-  r.cannot_express = [ex = *r.exporter](const Scene& scene) { return refusalOf(ex, scene); };
-  r.render = [](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
-    ExternalRenderInfo tool;
-    Image image = renderWithBlender(scene, request.work_dir, request.timeout_seconds, &tool, BlenderMode::Model,
-                                    BlenderEngine::Eevee, blenderThrough(request));
-    setInfo(info, tool);
-    return image;
-  };
-  r.render_batch = [](const std::vector<BatchItem>& items, const BatchItemDone& item_done) {
-    return blenderBatch(items, BlenderEngine::Eevee, item_done);
-  };
-  return r;
+  return blenderEngineRenderer(f);
 }
 
 }  // namespace xval::renderers

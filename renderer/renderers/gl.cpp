@@ -32,6 +32,7 @@ namespace xval::renderers {
 Renderer glRenderer() {
   Renderer r;
   r.id = "gl";
+  r.job_cost = {0.2, 1.0, 2.0};  // validate/validation/job_cost.h
   r.display_name = "OpenGL";
   r.subject = "the OpenGL renderer";
   r.summary = "the models as GLSL through OpenGL 4.5 core on EGL (surfaceless; Mesa llvmpipe without a GPU)";

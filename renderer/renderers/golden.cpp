@@ -27,10 +27,14 @@
 
 namespace xval::renderers {
 
+std::string goldenSetIdOf(std::string_view made_by) {
+  return made_by == "reference" ? std::string("golden") : "golden-" + std::string(made_by);
+}
+
 Renderer goldenRendererOf(const std::string& made_by, const std::string& made_by_name) {
   Renderer r;
   const bool reference = made_by == "reference";
-  r.id = reference ? "golden" : "golden-" + made_by;
+  r.id = goldenSetIdOf(made_by);
   r.display_name = reference ? "golden" : "golden (" + made_by_name + ")";
   r.subject = reference ? "the golden images" : "the golden images of " + made_by_name;
   r.summary = "the images " + made_by_name + " stored beside the scene set (golden/" + made_by +
@@ -65,8 +69,7 @@ std::string goldenUpdateCommand(const std::filesystem::path& scene_file, const s
 std::string goldenAlias(std::string_view id) {
   constexpr std::string_view prefix = "golden:";
   if (id.substr(0, prefix.size()) != prefix) return "";
-  const std::string_view made_by = id.substr(prefix.size());
-  return made_by == "reference" ? std::string("golden") : "golden-" + std::string(made_by);
+  return goldenSetIdOf(id.substr(prefix.size()));
 }
 
 bool isGoldenSetId(std::string_view id) { return id == "golden" || id.substr(0, 7) == "golden-"; }
@@ -76,7 +79,7 @@ void addGoldenSets(Registry& registry) {
   for (const Renderer& r : registry.all())
     if (!r.reference && !r.geometry_passes && !isGoldenSetId(r.id)) sources.emplace_back(r.id, r.display_name);
   for (const auto& [id, name] : sources)
-    if (!registry.find("golden-" + id)) registry.add(goldenRendererOf(id, name));
+    if (!registry.find(goldenSetIdOf(id))) registry.add(goldenRendererOf(id, name));
 }
 
 }  // namespace xval::renderers

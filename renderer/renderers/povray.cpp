@@ -31,6 +31,8 @@ Renderer povrayRenderer() {
   // Table 2 knot's trace keeps two threads busy for 0.45 s of a 1.6 s
   // process. A quarter of a core: four jobs per core.
   r.cpu_share = 0.25;
+  // Its start-up and parse, then tracing (validate/validation/job_cost.h).
+  r.job_cost = {1.0, 6.0, 25.0};
   // docs/precision-models.md, POV-Ray.
   r.precision = {1.0, 1.0, std::ldexp(1.0, -10), 2e-6, 0.5,
                  "float32 triangle planes, vertices and normals, double weights, float colours; 16-bit PNG"};

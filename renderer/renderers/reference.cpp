@@ -31,6 +31,7 @@ namespace xval::renderers {
 Renderer referenceRenderer() {
   Renderer r;
   r.id = "reference";
+  r.job_cost = kReferenceJobCost;
   r.display_name = "reference";
   r.subject = "the reference renderer";
   r.summary = "xval's ray caster (local illumination, no shadows; exact double-precision path)";

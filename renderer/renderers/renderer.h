@@ -100,6 +100,17 @@ struct RendererExport {
   std::string folder;
 };
 
+// The coefficients of a job's estimated seconds on an idle core
+// (validate/validation/job_cost.h: fixed + per_megasample x samples / 1e6 +
+// per_megatriangle x triangles / 1e6), fitted to the job records of the
+// reference set. Only the order they give matters.
+struct JobCost {
+  double fixed = 0.0, per_megasample = 0.0, per_megatriangle = 0.0;
+};
+// The reference renderer's (renderers/reference.cpp), and the cost of a
+// renderer that declares none.
+inline constexpr JobCost kReferenceJobCost{0.1, 2.5, 2.0};
+
 struct Renderer {
   // How commands, file names and scene files name it: lower-case letters,
   // digits and '-' (it names files such as OUT/<scene>/<id>.exr).
@@ -159,6 +170,8 @@ struct Renderer {
   // tool that mostly waits: below 1): the job pool runs up to 1 / cpu_share
   // such jobs per core beside each other (process/job_pool.h).
   double cpu_share = 1.0;
+  // Its jobs' estimated cost, for validate's job order (JobCost).
+  JobCost job_cost = kReferenceJobCost;
   // How far its arithmetic may put a pixel from the exact value, in steps
   // of the reference's probes (image/precision_bound.h): the comparison's
   // precision bound B_r(p). Each built-in renderer's file declares its own
@@ -198,6 +211,9 @@ std::string refusalOf(const RendererExport& ex, const Scene& scene);
 // renderer that is neither the reference nor a golden set.
 class Registry;
 Renderer goldenRendererOf(const std::string& made_by, const std::string& made_by_name);
+// The id of the golden set of the renderer `made_by` (the one place of
+// that rule).
+std::string goldenSetIdOf(std::string_view made_by);
 std::string goldenAlias(std::string_view id);
 void addGoldenSets(Registry& registry);
 // The command that stores renderer `made_by`'s image of `scene_file` in its

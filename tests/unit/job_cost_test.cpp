@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "renderers/registry.h"
 #include "validate/validation/job_cost.h"
 
 using namespace xval;
@@ -18,12 +19,14 @@ TEST(JobCost, LongestFirstKeepsTheGivenOrderOfEqualCosts) {
 
 TEST(JobCost, EstimateGrowsWithSamplesAndTriangles) {
   const JobSize small{256.0 * 256.0, 2000.0}, knot{720.0 * 720.0, 61440.0};
-  for (const char* r : {"reference", "povray", "blender", "eevee", "gl", "golden"}) {
-    EXPECT_GT(estimateJobSeconds(r, knot), estimateJobSeconds(r, small)) << r;
-    EXPECT_GT(estimateJobSeconds(r, small), 0.0) << r;
+  for (const std::string& id : renderers::registry().ids()) {
+    const renderers::JobCost& c = renderers::registry().at(id).job_cost;
+    EXPECT_GT(estimateJobSeconds(c, knot), estimateJobSeconds(c, small)) << id;
+    EXPECT_GT(estimateJobSeconds(c, small), 0.0) << id;
   }
-  // A renderer without an entry is estimated as the reference renderer.
-  EXPECT_DOUBLE_EQ(estimateJobSeconds("golden", knot), estimateJobSeconds("reference", knot));
+  // A renderer that declares no cost is estimated as the reference renderer.
+  EXPECT_DOUBLE_EQ(estimateJobSeconds(renderers::registry().at("golden").job_cost, knot),
+                   estimateJobSeconds(renderers::registry().at("reference").job_cost, knot));
 }
 
 // The reference set's critical path: Table 2's 720 x 720 knot's POV-Ray job
@@ -49,6 +52,7 @@ TEST(JobCost, TheLargeKnotsPovRayJobRanksFirst) {
   const std::vector<Job> jobs = {{"reference", &fig1},   {"povray", &fig1},  {"reference", &sphere},
                                  {"povray", &sphere},    {"reference", &table2}, {"povray", &table2}};
   std::vector<double> cost;
-  for (const Job& j : jobs) cost.push_back(estimateJobSeconds(j.renderer, sceneSize(*j.scene)));
+  for (const Job& j : jobs)
+    cost.push_back(estimateJobSeconds(renderers::registry().at(j.renderer).job_cost, sceneSize(*j.scene)));
   EXPECT_EQ(longestFirst(cost), (std::vector<size_t>{5, 1, 4, 3, 0, 2}));
 }

@@ -34,7 +34,7 @@ const renderers::Renderer& sourceRenderer(const std::string& id) {
   return r;
 }
 
-std::string goldenSetId(const renderers::Renderer& r) { return r.reference ? "golden" : "golden-" + r.id; }
+std::string goldenSetId(const renderers::Renderer& r) { return renderers::goldenSetIdOf(r.id); }
 
 // The render golden images are made of, and the settings it used.
 struct Render {

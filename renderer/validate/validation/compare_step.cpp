@@ -148,8 +148,13 @@ J comparePair(const CompareContext& cx, const Scene& scene, const renderers::Ren
   // image, which follows the external renderers in registry order): they
   // describe the same pixels. A run with the reference renderer's golden
   // images in its place takes theirs (they carry its diagnostics).
-  auto ref = renders.find(renderers::registry().reference().id);
-  if (ref == renders.end()) ref = renders.find("golden");
+  const std::string& reference_id = renderers::registry().reference().id;
+  auto ref = renders.find(reference_id);
+  if (ref == renders.end())
+    ref = std::find_if(renders.begin(), renders.end(), [&](const auto& entry) {
+      const renderers::Renderer* r = renderers::registry().find(entry.first);
+      return r && r->images_of == reference_id;
+    });
   const Image* diagnostics = ref != renders.end()                         ? &ref->second.image
                              : A.image.depth.empty() && !B.image.depth.empty() ? &B.image
                                                                            : nullptr;

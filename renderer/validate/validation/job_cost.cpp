@@ -15,11 +15,8 @@ JobSize sceneSize(const Scene& scene) {
   return s;
 }
 
-double estimateJobSeconds(const std::string& renderer, const JobSize& size) {
-  const JobCost* c = &kJobCosts[0];  // the reference renderer's: for a renderer without an entry
-  for (const JobCost& e : kJobCosts)
-    if (renderer == e.renderer) c = &e;
-  return c->fixed + c->per_megasample * size.samples / 1e6 + c->per_megatriangle * size.triangles / 1e6;
+double estimateJobSeconds(const renderers::JobCost& c, const JobSize& size) {
+  return c.fixed + c.per_megasample * size.samples / 1e6 + c.per_megatriangle * size.triangles / 1e6;
 }
 
 std::vector<size_t> longestFirst(const std::vector<double>& costs) {

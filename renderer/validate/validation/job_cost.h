@@ -14,14 +14,17 @@
 // reference set (results/validation/results.json, 2026-12-02: e.g.
 // POV-Ray 1.2-2.1 s for a 256 x 256 sphere, 2.6-3.8 s for a 360 x 360
 // knot of 61,440 triangles, 5.3-5.5 s at 720 x 720; the reference renderer
-// 0.2-0.4 s, 0.4-0.8 s, 1.2-1.6 s); a renderer without an entry takes the
-// reference renderer's. Only their order matters: they rank the jobs.
+// 0.2-0.4 s, 0.4-0.8 s, 1.2-1.6 s). Each renderer's entry declares its own
+// (renderers::Renderer::job_cost, in its file); one that declares none has
+// the reference renderer's (renderers::kReferenceJobCost), which is the
+// struct's default. Only their order matters: they rank the jobs.
 #pragma once
 
 #include <cstddef>
 #include <string>
 #include <vector>
 
+#include "renderers/renderer.h"
 #include "scene/scene.h"
 
 namespace xval::validation {
@@ -35,21 +38,9 @@ struct JobSize {
 // The scene's size (its camera, spp and objects; model files as loaded).
 JobSize sceneSize(const Scene& scene);
 
-// One renderer's coefficients (see above).
-struct JobCost {
-  const char* renderer;
-  double fixed, per_megasample, per_megatriangle;
-};
-inline constexpr JobCost kJobCosts[] = {
-    {"reference", 0.1, 2.5, 2.0},
-    {"povray", 1.0, 6.0, 25.0},  // its start-up and parse, then tracing
-    {"blender", 1.5, 2.0, 10.0},  // per scene of a batch: import, render, write
-    {"eevee", 1.5, 2.0, 10.0},
-    {"gl", 0.2, 1.0, 2.0},
-};
-
-// The estimated seconds of a job of `renderer` on a scene of `size`.
-double estimateJobSeconds(const std::string& renderer, const JobSize& size);
+// The estimated seconds of a job of a renderer with coefficients `cost`
+// (its registry entry's job_cost) on a scene of `size`.
+double estimateJobSeconds(const renderers::JobCost& cost, const JobSize& size);
 
 // The indices of `costs`, the largest cost first; equal costs keep their
 // given order (so equal jobs run in plan order).

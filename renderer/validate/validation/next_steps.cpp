@@ -25,7 +25,7 @@ const PlannedScene& plannedScene(const Plan& plan, const std::string& name) {
 }
 
 // The id of renderer `id`'s golden set: golden for the reference, else golden-ID.
-std::string goldenSetOf(const std::string& id) { return renderers::goldenAlias("golden:" + id); }
+std::string goldenSetOf(const std::string& id) { return renderers::goldenSetIdOf(id); }
 
 bool pairFailed(const nlohmann::ordered_json& jc, const std::string& a, const std::string& b) {
   for (const auto& p : jc["pairs"])
@@ -39,7 +39,7 @@ std::vector<std::string> goldenStepRenderers(const nlohmann::ordered_json& jc, c
   std::vector<std::string> out;
   for (const auto& [id, render] : jc["renders"].items()) {
     const renderers::Renderer* r = renderers::registry().find(id);
-    if (!r || r->geometry_passes || id == "golden" || id.rfind("golden-", 0) == 0) continue;
+    if (!r || r->geometry_passes || !r->images_of.empty()) continue;
     const bool deviates = jc.contains("deviating") &&
                           std::find(jc["deviating"].begin(), jc["deviating"].end(), id) != jc["deviating"].end();
     if (!deviates && !pairFailed(jc, id, goldenSetOf(id))) continue;

@@ -208,16 +208,19 @@ std::vector<RenderJob> readJobs(const FieldReader& rd, const J& j, const Plan& p
   return out;
 }
 
-// The run's renderers defined by a file, and golden-NAME's NAME when NAME is.
+// The run's renderers defined by a file, and the maker of a golden set
+// when a file defines it (Renderer::images_of).
 std::vector<RendererFile> rendererFiles(const std::vector<std::string>& run) {
   std::vector<RendererFile> out;
-  for (const std::string& id : run)
-    for (const std::string& name : {id, id.rfind("golden-", 0) == 0 ? id.substr(7) : std::string()}) {
+  for (const std::string& id : run) {
+    const renderers::Renderer* run_r = renderers::registry().find(id);
+    for (const std::string& name : {id, run_r ? run_r->images_of : std::string()}) {
       const renderers::Renderer* r = name.empty() ? nullptr : renderers::registry().find(name);
       if (!r || r->definition_file.empty()) continue;
       if (std::none_of(out.begin(), out.end(), [&](const RendererFile& f) { return f.name == r->id; }))
         out.push_back({r->id, r->definition_file, sha256File(r->definition_file)});
     }
+  }
   return out;
 }
 
@@ -301,7 +304,10 @@ std::string exportInputsKey(const Scene& scene, const fs::path& scene_file) {
 
 std::vector<std::string> jobRenderers() { return renderers::registry().validateIds(); }
 
-bool runsWhenNamed(const std::string& id) { return id == "golden" || id.rfind("golden-", 0) == 0; }
+bool runsWhenNamed(const std::string& id) {
+  const renderers::Renderer* r = renderers::registry().find(id);
+  return r && !r->images_of.empty();
+}
 
 std::vector<std::string> runRenderers(const std::vector<std::string>& names) {
   const std::vector<std::string> every = jobRenderers();

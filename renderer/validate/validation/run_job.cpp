@@ -255,6 +255,13 @@ struct Task {
   bool batch = false;        // one renderer's jobs in one outside process (runJobBatch)
 };
 
+// A job's renderer's cost coefficients (a renderer the registry lacks
+// fails its job when it runs; its cost only places it in the order).
+renderers::JobCost jobCost(const std::string& id) {
+  const renderers::Renderer* r = renderers::registry().find(id);
+  return r ? r->job_cost : renderers::kReferenceJobCost;
+}
+
 std::vector<Task> runTasks(const Plan& plan, const std::vector<size_t>& todo, const RunSettings& settings) {
   std::vector<Task> tasks;
   // Per renderer that renders batches: its jobs, in plan order.
@@ -299,7 +306,7 @@ std::vector<Task> runTasks(const Plan& plan, const std::vector<size_t>& todo, co
   std::vector<double> cost(tasks.size(), 0.0);
   for (size_t t = 0; t < tasks.size(); ++t)
     for (size_t index : tasks[t].jobs)
-      cost[t] += estimateJobSeconds(plan.jobs.at(index).renderer, sizes.at(plan.jobs.at(index).scene));
+      cost[t] += estimateJobSeconds(jobCost(plan.jobs.at(index).renderer), sizes.at(plan.jobs.at(index).scene));
   std::vector<Task> ordered;
   for (size_t t : longestFirst(cost)) ordered.push_back(std::move(tasks[t]));
   return ordered;
