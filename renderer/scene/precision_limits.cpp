@@ -6,6 +6,8 @@
 #include <functional>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "geometry/model_file.h"
 #include "geometry/transform.h"
 #include "scene/json_reader.h"
@@ -15,11 +17,8 @@ namespace xval {
 
 namespace {
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
+// Six significant digits, as the reports' numbers (validate/common/number_text.h significant).
+std::string num(double v) { return fmt::format("{:.6g}", v); }
 
 // Every number of the scene that a renderer computes with, with its field
 // path as in the scene file and whether it is a coordinate or length of the

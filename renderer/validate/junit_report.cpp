@@ -5,6 +5,7 @@
 
 #include "image/pair_failure.h"
 #include "validate/validation/case_verdict.h"
+#include "validate/common/number_text.h"
 #include "validate/validation/geometry_checks.h"
 
 namespace xval {
@@ -31,18 +32,10 @@ std::string xmlEscape(const std::string& s) {
 
 namespace {
 
-std::string num(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.6g", v);
-  return b;
-}
+std::string num(double v) { return significant(v); }
 
 // xs:decimal: no exponent.
-std::string secondsText(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3f", v < 0 ? 0.0 : v);
-  return b;
-}
+std::string secondsText(double v) { return fixed(v < 0 ? 0.0 : v, 3); }
 
 const J& field(const J& j, const char* key, const std::string& where) {
   if (!j.is_object() || !j.contains(key))

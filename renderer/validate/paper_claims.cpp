@@ -3,15 +3,13 @@
 #include <cstdio>
 #include <string>
 
+#include "validate/common/number_text.h"
+
 namespace xval {
 
 namespace {
 
-std::string fmt(double v, int prec) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*f", prec, v);
-  return b;
-}
+std::string fmt(double v, int prec) { return fixed(v, prec); }
 
 const nlohmann::ordered_json* statsOf(const nlohmann::ordered_json& cases, const char* scene) {
   for (const auto& c : cases)

@@ -17,6 +17,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "image/image.h"
 #include "image/pair_failure.h"
 #include "process/run_process.h"
@@ -145,9 +147,7 @@ const J* findCheck(const J& c, const std::string& name) {
 // A small number in two significant digits ("3.3e-06", "0.84").
 std::string twoDigits(const J& v) {
   if (!v.is_number()) return "n/a";
-  char b[32];
-  std::snprintf(b, sizeof b, "%.2g", v.get<double>());
-  return b;
+  return fmt::format("{:.2g}", v.get<double>());
 }
 
 const J* findPair(const J& c, const std::string& id) {

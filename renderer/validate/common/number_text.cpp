@@ -2,16 +2,15 @@
 #include "validate/common/number_text.h"
 
 #include <cmath>
-#include <cstdio>
+
+#include <fmt/format.h>
 
 namespace xval {
 
 std::string fixed(double v, int digits) {
   if (std::isnan(v)) return "nan";
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  char b[512];
-  std::snprintf(b, sizeof b, "%.*f", digits, v);
-  return b;
+  return fmt::format("{:.{}f}", v, digits);
 }
 
 std::string fixed(const nlohmann::json& j, int digits) {
@@ -25,9 +24,7 @@ std::string fixed(const nlohmann::ordered_json& j, int digits) {
 std::string significant(double v) {
   if (std::isnan(v)) return "nan";
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  char b[64];
-  std::snprintf(b, sizeof b, "%.6g", v);
-  return b;
+  return fmt::format("{:.6g}", v);
 }
 
 std::string significant(const nlohmann::json& j) { return j.is_number() ? significant(j.get<double>()) : "n/a"; }

@@ -1,7 +1,10 @@
 // Numbers as text for tables and reports (Markdown, TSV, HTML).
 //
+// Written with libfmt, whose output is printf's for these formats.
+//
 // fixed(v, digits): v with `digits` digits after the point ("%.*f"), so
-// fixed(0.125, 2) == "0.13" (printf rounding of the binary value); the
+// fixed(0.125, 2) == "0.12" (the exact binary value rounded half to even,
+// as printf does) and fixed(0.1251, 2) == "0.13"; the
 // non-finite values as "inf", "-inf" and "nan".
 // fixed(j, digits): the same for a JSON number; "n/a" for anything else
 // (null is how a results file writes a value that does not exist, e.g.

@@ -11,6 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <fmt/format.h>
+
 #include "files/atomic_write.h"
 #include "files/output_folder.h"
 #include "geometry/model_file.h"
@@ -38,11 +40,7 @@ struct Fnv {
     for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
     h = (h ^ 0xffu) * 1099511628211ull;  // separator
   }
-  std::string hex() const {
-    char buf[17];
-    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-    return buf;
-  }
+  std::string hex() const { return fmt::format("{:016x}", h); }
 };
 
 std::vector<fs::path> collectScenes(const std::vector<std::string>& inputs) {

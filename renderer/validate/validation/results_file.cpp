@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <cstdio>
 
+#include <fmt/format.h>
+
 #include "renderers/registry.h"
 #include "validate/common/provenance.h"
 #include "validate/paper_claims.h"
@@ -27,9 +29,7 @@ std::string settingsHash(const std::vector<fs::path>& files) {
     bytes += f.filename().string();
     for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
   }
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
+  return fmt::format("{:016x}", h);
 }
 
 J provenanceJson(const Plan& plan, const std::vector<fs::path>& setting_files) {
