@@ -63,8 +63,8 @@ TradeoffError errorFromJson(const J& j) {
   e.rmse_16bit = j.at("rmse_16bit").get<double>();
   e.ciede2000_mean = j.at("ciede2000_mean").get<double>();
   e.ciede2000_max = j.at("ciede2000_max").get<double>();
-  for (const auto& [id, v] : j.value("metrics", J::object()).items())
-    e.metrics[id] = v.is_number() ? v.get<double>() : std::nan("");
+  const J metrics = j.value("metrics", J::object());  // a local: items() refers to it
+  for (const auto& [id, v] : metrics.items()) e.metrics[id] = v.is_number() ? v.get<double>() : std::nan("");
   return e;
 }
 
