@@ -29,10 +29,10 @@ constexpr double kQc = 0.7, kPc = 0.4, kPt = 0.95;
 constexpr double kFeatureWidthDegrees = 0.082;  // q_f = 0.5: the square root below
 
 // One plane of doubles, row by row.
-struct Plane {
+struct Grid {
   int w = 0, h = 0;
   std::vector<double> v;
-  Plane(int w_, int h_) : w(w_), h(h_), v(size_t(w_) * h_, 0.0) {}
+  Grid(int w_, int h_) : w(w_), h(h_), v(size_t(w_) * h_, 0.0) {}
   double& at(int x, int y) { return v[size_t(y) * w + x]; }
   double at(int x, int y) const { return v[size_t(y) * w + x]; }
 };
@@ -43,9 +43,9 @@ using Kernel = std::vector<double>;
 // Separable convolution: kx along x, then ky along y, edge pixels repeated.
 // Each pass copies its line into a buffer padded with the edge values, so
 // the inner loop has no bounds to check.
-Plane convolve(const Plane& in, const Kernel& kx, const Kernel& ky) {
+Grid convolve(const Grid& in, const Kernel& kx, const Kernel& ky) {
   const int rx = int(kx.size() / 2), ry = int(ky.size() / 2);
-  Plane tmp(in.w, in.h), out(in.w, in.h);
+  Grid tmp(in.w, in.h), out(in.w, in.h);
   auto pass = [](const double* src, size_t stride, int n, const Kernel& k, int r, std::vector<double>& line,
                  double* dst) {
     for (int i = 0; i < n + 2 * r; ++i) line[size_t(i)] = src[size_t(std::clamp(i - r, 0, n - 1)) * stride];
@@ -87,7 +87,7 @@ Kernel scaled(Kernel k, double f) {
 // The channel convolved with its CSF's 2-D kernel normalised to sum 1:
 // s(x, y) = c1 g1(x) g1(y) + c2 g2(x) g2(y), c = a sqrt(pi / b), whose sum
 // is c1 S1^2 + c2 S2^2 (S: the 1-D sum).
-Plane csfFilter(const Plane& in, const CsfFit& f, double ppd) {
+Grid csfFilter(const Grid& in, const CsfFit& f, double ppd) {
   const int r = int(std::ceil(3.0 * std::sqrt(kCsfWidestB / (2.0 * kPi * kPi)) * ppd));
   const Kernel g1 = csfGaussian(f.b1, r, ppd);
   const double c1 = f.a1 * std::sqrt(kPi / f.b1), s1 = sum(g1);
@@ -96,8 +96,8 @@ Plane csfFilter(const Plane& in, const CsfFit& f, double ppd) {
   const double c2 = f.a2 * std::sqrt(kPi / f.b2), s2 = sum(g2);
   const double total = c1 * s1 * s1 + c2 * s2 * s2;
   const double w1 = c1 * s1 * s1 / total, w2 = c2 * s2 * s2 / total;
-  Plane p1 = convolve(in, scaled(g1, 1.0 / s1), scaled(g1, 1.0 / s1));
-  const Plane p2 = convolve(in, scaled(g2, 1.0 / s2), scaled(g2, 1.0 / s2));
+  Grid p1 = convolve(in, scaled(g1, 1.0 / s1), scaled(g1, 1.0 / s1));
+  const Grid p2 = convolve(in, scaled(g2, 1.0 / s2), scaled(g2, 1.0 / s2));
   for (size_t i = 0; i < p1.v.size(); ++i) p1.v[i] = w1 * p1.v[i] + w2 * p2.v[i];
   return p1;
 }
@@ -131,9 +131,9 @@ FeatureKernels featureKernels(double ppd) {
 }
 
 // |(response along x, response along y)| of the derivative kernel d.
-Plane detector(const Plane& y, const Kernel& d, const Kernel& g) {
-  const Plane gx = convolve(y, d, g), gy = convolve(y, g, d);
-  Plane out(y.w, y.h);
+Grid detector(const Grid& y, const Kernel& d, const Kernel& g) {
+  const Grid gx = convolve(y, d, g), gy = convolve(y, g, d);
+  Grid out(y.w, y.h);
   for (size_t i = 0; i < out.v.size(); ++i) out.v[i] = std::sqrt(gx.v[i] * gx.v[i] + gy.v[i] * gy.v[i]);
   return out;
 }
@@ -155,17 +155,19 @@ double hyab(glm::dvec3 p, glm::dvec3 q) {
   return std::abs(p.x - q.x) + std::sqrt(da * da + db * db);
 }
 
-// The per-image planes: Yy, Cx, Cz filtered, and the feature responses.
-struct FlipPlanes {
-  std::vector<glm::dvec3> hunt_lab;  // of the filtered colour
-  Plane edge, point;
-  FlipPlanes(int w, int h) : edge(w, h), point(w, h) {}
-};
+void requireViewingDistance(double ppd) {
+  if (!(ppd > 0.0) || !std::isfinite(ppd))
+    throw std::invalid_argument("FLIP: pixels per degree " + std::to_string(ppd) + ": expected a finite number > 0");
+}
 
-FlipPlanes flipPlanes(const Image& img, double ppd, const FeatureKernels& fk) {
+}  // namespace
+
+FlipImage flipImage(const Image& img, double ppd) {
+  requireViewingDistance(ppd);
+  const FeatureKernels fk = featureKernels(ppd);
   const int w = img.width, h = img.height;
   const size_t n = size_t(w) * h;
-  Plane yy(w, h), cx(w, h), cz(w, h), achromatic(w, h);
+  Grid yy(w, h), cx(w, h), cz(w, h), achromatic(w, h);
   for (size_t i = 0; i < n; ++i) {
     const glm::dvec3 c = code(img, i);
     const glm::dvec3 xyz = linearSrgbToXyz({srgbDecode(c.r), srgbDecode(c.g), srgbDecode(c.b)});
@@ -173,40 +175,41 @@ FlipPlanes flipPlanes(const Image& img, double ppd, const FeatureKernels& fk) {
     yy.v[i] = 116.0 * yr - 16.0, cx.v[i] = 500.0 * (xr - yr), cz.v[i] = 200.0 * (yr - zr);
     achromatic.v[i] = yr;
   }
-  const Plane fy = csfFilter(yy, kCsfAchromatic, ppd), fx = csfFilter(cx, kCsfRedGreen, ppd),
+  const Grid fy = csfFilter(yy, kCsfAchromatic, ppd), fx = csfFilter(cx, kCsfRedGreen, ppd),
               fz = csfFilter(cz, kCsfBlueYellow, ppd);
-  FlipPlanes out(w, h);
+  FlipImage out;
+  out.width = w, out.height = h, out.pixels_per_degree = ppd;
   out.hunt_lab.resize(n);
   for (size_t i = 0; i < n; ++i) {
     const double yr = (fy.v[i] + 16.0) / 116.0, xr = fx.v[i] / 500.0 + yr, zr = yr - fz.v[i] / 200.0;
     const glm::dvec3 xyz(xr * kD65White[0], yr * kD65White[1], zr * kD65White[2]);
     out.hunt_lab[i] = huntLab(xyzToLinearSrgb(xyz));
   }
-  out.edge = detector(achromatic, fk.d1, fk.g);
-  out.point = detector(achromatic, fk.d2, fk.g);
+  out.edge = std::move(detector(achromatic, fk.d1, fk.g).v);
+  out.point = std::move(detector(achromatic, fk.d2, fk.g).v);
   return out;
 }
-
-}  // namespace
 
 std::vector<float> flipErrorMap(const Image& a, const Image& b, double ppd) {
   if (a.width != b.width || a.height != b.height)
     throw std::invalid_argument("FLIP: image sizes differ (" + std::to_string(a.width) + "x" +
                                 std::to_string(a.height) + " vs " + std::to_string(b.width) + "x" +
                                 std::to_string(b.height) + ")");
-  if (!(ppd > 0.0) || !std::isfinite(ppd))
-    throw std::invalid_argument("FLIP: pixels per degree " + std::to_string(ppd) + ": expected a finite number > 0");
-  const FeatureKernels fk = featureKernels(ppd);
-  const FlipPlanes pa = flipPlanes(a, ppd, fk), pb = flipPlanes(b, ppd, fk);
+  return flipErrorMap(flipImage(a, ppd), flipImage(b, ppd));
+}
+
+std::vector<float> flipErrorMap(const FlipImage& pa, const FlipImage& pb) {
+  if (pa.width != pb.width || pa.height != pb.height || pa.pixels_per_degree != pb.pixels_per_degree)
+    throw std::invalid_argument("FLIP: the two images' FLIP planes differ in size or viewing distance");
   static const double c_max =
       std::pow(hyab(huntLab({0.0, 1.0, 0.0}), huntLab({0.0, 0.0, 1.0})), kQc);
-  const size_t n = size_t(a.width) * a.height;
+  const size_t n = size_t(pa.width) * pa.height;
   std::vector<float> map(n);
   for (size_t i = 0; i < n; ++i) {
     const double e = std::pow(hyab(pa.hunt_lab[i], pb.hunt_lab[i]), kQc);
     const double colour = e < kPc * c_max ? e * kPt / (kPc * c_max)
                                           : kPt + (e - kPc * c_max) / (c_max - kPc * c_max) * (1.0 - kPt);
-    const double df = std::max(std::abs(pa.edge.v[i] - pb.edge.v[i]), std::abs(pa.point.v[i] - pb.point.v[i]));
+    const double df = std::max(std::abs(pa.edge[i] - pb.edge[i]), std::abs(pa.point[i] - pb.point[i]));
     const double feature = std::sqrt(df / std::sqrt(2.0));  // ^q_f, q_f = 0.5
     map[i] = float(std::pow(colour, 1.0 - feature));
   }

@@ -53,16 +53,32 @@
 
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "image/image.h"
 
 namespace xval {
 
 inline constexpr double kFlipDefaultPixelsPerDegree = 67.0;
 
+// What the error map reads of one image, computed once for every pair the
+// image is in (as image/perceptual.h's PerceptualImage): per pixel, the
+// Hunt-adjusted L*a*b* of the CSF-filtered colour and the edge and point
+// detectors' responses. The map from two of them is bit for bit the map
+// from the two images.
+struct FlipImage {
+  int width = 0, height = 0;
+  double pixels_per_degree = kFlipDefaultPixelsPerDegree;
+  std::vector<glm::dvec3> hunt_lab;
+  std::vector<double> edge, point;
+};
+FlipImage flipImage(const Image& img, double pixels_per_degree = kFlipDefaultPixelsPerDegree);
+
 // The error map, row by row (width * height values in [0, 1]). Throws
-// std::invalid_argument when the sizes differ or ppd is not a finite
-// number > 0.
+// std::invalid_argument when the sizes (or the FlipImages' viewing
+// distances) differ or ppd is not a finite number > 0.
 std::vector<float> flipErrorMap(const Image& a, const Image& b, double pixels_per_degree = kFlipDefaultPixelsPerDegree);
+std::vector<float> flipErrorMap(const FlipImage& a, const FlipImage& b);
 
 // Summaries of the map over the pixels either image covers (alpha > 0;
 // every pixel of an image read without alpha), as the "either covered"

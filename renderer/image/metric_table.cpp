@@ -52,12 +52,19 @@ std::string labelWithUnit(const MetricInfo& m) {
   return std::string(m.label) + (*m.unit ? std::string(" (") + m.unit + ")" : std::string());
 }
 
+MeasuredImage measuredImage(const Image& img) { return {perceptualImage(img), flipImage(img)}; }
+
 PairMeasures measurePair(const Image& a, const Image& b, const Tolerance& t, const PairPrecision& p,
-                         const PerceptualImage* pa, const PerceptualImage* pb) {
+                         const MeasuredImage* ma, const MeasuredImage* mb) {
   PairMeasures m;
-  m.compare = compareImages(a, b, t, p);
-  m.perceptual = pa && pb ? perceptualMetrics(a, *pa, b, *pb) : perceptualMetrics(a, b);
-  m.flip = flipMetrics(a, b);
+  m.compare = compareImages(a, b, t, p);  // first: it refuses images of different sizes
+  if (ma && mb) {
+    m.perceptual = perceptualMetrics(a, ma->perceptual, b, mb->perceptual);
+    m.flip = flipSummary(flipErrorMap(ma->flip, mb->flip), a, b);
+  } else {
+    m.perceptual = perceptualMetrics(a, b);
+    m.flip = flipMetrics(a, b);
+  }
   return m;
 }
 

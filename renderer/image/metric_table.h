@@ -66,11 +66,20 @@ std::string joinedIds(const std::vector<std::string>& ids);
 // "RMSE (1/65535)": the label with its unit, if any.
 std::string labelWithUnit(const MetricInfo& m);
 
+// What measurePair reads of one image beyond the image, for a caller that
+// keeps it for every pair the image is in (validate: n - 1 pairs each).
+struct MeasuredImage {
+  PerceptualImage perceptual;
+  FlipImage flip;
+};
+MeasuredImage measuredImage(const Image& img);
+
 // Measures the pair once: compareImages(a, b, t, p), perceptualMetrics and
-// flipMetrics. perceptual: a's and b's perceptualImage when the caller
-// keeps them (one per image for all its pairs), else null.
+// FLIP (flipErrorMap, flipSummary). ma, mb: a's and b's measuredImage when
+// the caller keeps them, else null (computed here); the values are the
+// same either way.
 PairMeasures measurePair(const Image& a, const Image& b, const Tolerance& t, const PairPrecision& p = {},
-                         const PerceptualImage* pa = nullptr, const PerceptualImage* pb = nullptr);
+                         const MeasuredImage* ma = nullptr, const MeasuredImage* mb = nullptr);
 
 // {id: value} over the table, a value that is not finite as null.
 nlohmann::json metricValuesJson(const PairMeasures& m);

@@ -142,3 +142,12 @@ TEST(Flip, RefusesMismatchedSizesAndBadViewingDistance) {
   EXPECT_THROW(flipErrorMap(a, a, 0.0), std::invalid_argument);
   EXPECT_THROW(flipErrorMap(a, a, std::nan("")), std::invalid_argument);
 }
+
+// A FlipImage kept for several pairs gives the map of the images bit for
+// bit; planes of different viewing distances are refused.
+TEST(Flip, KeptImagePlanesGiveTheSameMap) {
+  const Image a = noise(21, 17, 4), b = noise(21, 17, 5);
+  const FlipImage fa = flipImage(a), fb = flipImage(b);
+  EXPECT_EQ(flipErrorMap(fa, fb), flipErrorMap(a, b));
+  EXPECT_THROW(flipErrorMap(fa, flipImage(b, 30.0)), std::invalid_argument);
+}

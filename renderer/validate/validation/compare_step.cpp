@@ -52,10 +52,10 @@ struct Render {
   JobRecord rec;
   Image image;
   std::string error;
-  std::optional<PerceptualImage> perceptual;  // of image, once its first pair needs it
-  const PerceptualImage& perceptualOnce() {
-    if (!perceptual) perceptual = perceptualImage(image);
-    return *perceptual;
+  std::optional<MeasuredImage> measured;  // of image, once its first pair needs it
+  const MeasuredImage& measuredOnce() {
+    if (!measured) measured = measuredImage(image);
+    return *measured;
   }
 };
 using Renders = std::map<std::string, Render>;  // by renderer id
@@ -182,7 +182,7 @@ std::vector<PairFailure> comparedPair(const CompareContext& cx, const Scene& sce
                                       const Tolerance& tol, const PairPrecision& precision, const std::string& reason,
                                       Render& A, Render& B, Renders& renders, J& jp) {
   const PairMeasures measures =
-      measurePair(A.image, B.image, tol, precision, &A.perceptualOnce(), &B.perceptualOnce());
+      measurePair(A.image, B.image, tol, precision, &A.measuredOnce(), &B.measuredOnce());
   const CompareMetrics& m = measures.compare;
   const Image diff = differenceImage(A.image, B.image);
   writeImage(diff, cx.plan.dir / scene.name / ("diff_" + key + ".exr"), kDifferenceExrCompression);
