@@ -13,6 +13,7 @@
 #include "renderers/registry.h"
 #include "image/pair_failure.h"
 #include "image/image_header.h"
+#include "image/metric_table.h"
 #include "image/perceptual.h"
 #include "validate/tolerances.h"
 
@@ -78,7 +79,8 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
         precision.a = renderers::precisionOf(renderers::registry().at(args->renderers.substr(0, comma)));
         precision.b = renderers::precisionOf(renderers::registry().at(args->renderers.substr(comma + 1)));
       }
-      CompareMetrics m = compareImages(a, b, t, precision);
+      const PairMeasures measures = measurePair(a, b, t, precision);
+      const CompareMetrics& m = measures.compare;
       if (a.has_alpha != b.has_alpha)
         std::fprintf(stderr,
                      "xval compare: note: %s has no alpha channel (an RGB image: xval's own PNGs are RGBA), so "
@@ -86,9 +88,9 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
                      "about coverage; compare the EXRs (xval render -o OUT.exr) for the hit mask\n",
                      (a.has_alpha ? args->b : args->a).c_str(), m.mask_disagree);
       if (!args->diff.empty()) writeImage(differenceImage(a, b), args->diff, kDifferenceExrCompression);
-      PerceptualMetrics pm = perceptualMetrics(a, b);
+      const PerceptualMetrics& pm = measures.perceptual;
       if (args->json) {
-        nlohmann::json j = nlohmann::json::parse(toJson(m, t, &pm));
+        nlohmann::json j = pairJson(measures, t);
         j["failed"] = failedJson(failedCriteria(m, t));
         j["tolerance_source"] = tol_source;
         std::printf("%s\n", j.dump(2).c_str());
@@ -97,6 +99,7 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
                     tol_source.c_str());
         std::printf("SSIM %.6f  CIEDE2000 mean %.4f max %.4f  YIQ delta mean %.3g max %.3g\n", pm.ssim,
                     pm.ciede2000_mean, pm.ciede2000_max, pm.yiq_mean, pm.yiq_max);
+        std::printf("metrics: %s\n", metricValuesText(measures).c_str());
         std::printf(
             "covered %lld px, mask disagreements %lld (%lld explained by edges)\n"
             "max %.3f  p99.9 %.3f  RMSE %.4f (x/65535)  PSNR %.1f dB  within %.3g: %.5f%%  -> %s\n",

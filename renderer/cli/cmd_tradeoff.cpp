@@ -9,6 +9,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "image/metric_table.h"
 #include "scene/scene_loader.h"  // kMaxImageSide
 #include "validate/tradeoff/run.h"
 
@@ -58,8 +59,9 @@ void addTradeoffCommand(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--height", r.height, "Override the camera's height in pixels")
       ->check(CLI::Range(1, kMaxImageSide));
   cmd->add_option("--metric", r.metric,
-                  "Error on the Pareto plot and front: rmse (default), p999, max, or ciede2000 (mean)")
-      ->check(CLI::IsMember({"rmse", "p999", "max", "ciede2000"}));
+                  "Error on the Pareto plot and front (default rmse), an error of the metric table: " +
+                      joinedIds(metricIds(true)))
+      ->check(CLI::IsMember(metricIds(true)));
   cmd->add_flag("--images", r.images, "Also write every configuration's image as DIR/images/ID.exr");
   addBudgetOptions(cmd, args->budget);
   cmd->callback([args, &run]() {

@@ -11,11 +11,21 @@
 
 namespace xval {
 
-namespace {
 double srgbDecode(double v) {
   return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
 }
+
+namespace {
+// Linear sRGB -> XYZ (D65), IEC 61966-2-1 (glm is column-major: each
+// glm::dvec3 below is a column, the XYZ of one primary).
+const glm::dmat3 kLinearSrgbToXyz(glm::dvec3(0.4124564, 0.2126729, 0.0193339),
+                                  glm::dvec3(0.3575761, 0.7151522, 0.1191920),
+                                  glm::dvec3(0.1804375, 0.0721750, 0.9503041));
+const glm::dmat3 kXyzToLinearSrgb = glm::inverse(kLinearSrgbToXyz);
 }  // namespace
+
+glm::dvec3 linearSrgbToXyz(glm::dvec3 l) { return kLinearSrgbToXyz * l; }
+glm::dvec3 xyzToLinearSrgb(glm::dvec3 xyz) { return kXyzToLinearSrgb * xyz; }
 
 // The decoding and the matrix are written here, the CIELAB step is lcms2's:
 // its profile route (cmsCreate_sRGBProfile -> cmsCreateLab4Profile with
@@ -23,16 +33,16 @@ double srgbDecode(double v) {
 // connection space and gave L*a*b* up to 11.6 away from this D65
 // definition on 1e5 random colours; cmsXYZ2Lab with the D65 white below
 // agrees with the textbook formula to 2.9e-13 (1e6 random colours).
-glm::dvec3 srgbToLab(glm::dvec3 c) {
-  glm::dvec3 l(srgbDecode(c.r), srgbDecode(c.g), srgbDecode(c.b));
-  // Linear sRGB -> XYZ (D65), IEC 61966-2-1.
-  const cmsCIEXYZ xyz{0.4124564 * l.r + 0.3575761 * l.g + 0.1804375 * l.b,
-                      0.2126729 * l.r + 0.7151522 * l.g + 0.0721750 * l.b,
-                      0.0193339 * l.r + 0.1191920 * l.g + 0.9503041 * l.b};
-  static const cmsCIEXYZ kD65{0.95047, 1.0, 1.08883};
+glm::dvec3 xyzToLab(glm::dvec3 x) {
+  static const cmsCIEXYZ kWhite{kD65White[0], kD65White[1], kD65White[2]};
+  const cmsCIEXYZ xyz{x.x, x.y, x.z};
   cmsCIELab lab;
-  cmsXYZ2Lab(&kD65, &lab, &xyz);
+  cmsXYZ2Lab(&kWhite, &lab, &xyz);
   return {lab.L, lab.a, lab.b};
+}
+
+glm::dvec3 srgbToLab(glm::dvec3 c) {
+  return xyzToLab(linearSrgbToXyz(glm::dvec3(srgbDecode(c.r), srgbDecode(c.g), srgbDecode(c.b))));
 }
 
 // lcms2's CIEDE2000 agrees with Sharma et al.'s formula as written out to

@@ -25,6 +25,14 @@
 
 namespace xval {
 
+// The steps of srgbToLab, each written once (image/flip.h reuses them):
+// the sRGB decoding of one code value (IEC 61966-2-1), linear sRGB ->
+// XYZ (D65) and its inverse, and XYZ -> CIELAB with the D65 white.
+double srgbDecode(double code);
+glm::dvec3 linearSrgbToXyz(glm::dvec3 linear);
+glm::dvec3 xyzToLinearSrgb(glm::dvec3 xyz);
+glm::dvec3 xyzToLab(glm::dvec3 xyz);
+inline constexpr double kD65White[3] = {0.95047, 1.0, 1.08883};  // XYZ of the reference white
 glm::dvec3 srgbToLab(glm::dvec3 srgb);
 double ciede2000(glm::dvec3 lab1, glm::dvec3 lab2);
 double yiqDelta(glm::dvec3 rgb1, glm::dvec3 rgb2);

@@ -13,6 +13,7 @@
 #include "geometry/scene_meshes.h"
 #include "image/compare.h"
 #include "image/pair_failure.h"
+#include "image/metric_table.h"
 #include "image/perceptual.h"
 #include "render/renderer.h"
 #include "renderers/job_export.h"
@@ -97,10 +98,11 @@ int crosscheck(const CrosscheckRequest& request) {
   renderers::RenderInfo info;
   Image ext = renderer.render(scene, render_request, &info);
   writeImage(ext, dir / (request.renderer + ".exr"));
-  CompareMetrics m = compareImages(ref, ext, tol, {renderers::precisionOf(reference), renderers::precisionOf(renderer)});
+  const PairMeasures measures =
+      measurePair(ref, ext, tol, {renderers::precisionOf(reference), renderers::precisionOf(renderer)});
+  const CompareMetrics& m = measures.compare;
   writeImage(differenceImage(ref, ext), dir / "diff.exr", kDifferenceExrCompression);
-  PerceptualMetrics pm = perceptualMetrics(ref, ext);
-  nlohmann::json j = nlohmann::json::parse(toJson(m, tol, &pm));
+  nlohmann::json j = pairJson(measures, tol);
   const std::vector<PairFailure> failed = failedCriteria(m, tol);
   j["failed"] = failedJson(failed);
   j["scene"] = scene.name;

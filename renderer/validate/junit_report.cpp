@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "image/metric_table.h"
 #include "image/pair_failure.h"
 #include "validate/validation/case_verdict.h"
 #include "validate/common/number_text.h"
@@ -63,6 +64,25 @@ std::string describeMetrics(const J& m) {
       !m["tolerance_reason"].get<std::string>().empty())
     s += "; declared tolerance: " + m["tolerance_reason"].get<std::string>();
   return s;
+}
+
+// A compared pair's metric values (results.json metrics.values: the metric
+// table, image/metric_table.h) as testcase properties "metric.ID", in
+// table order; "" when it has none (a results.json from before the table).
+// A null value (not finite) is "not finite".
+std::string metricProperties(const J& jp) {
+  if (!jp.contains("metrics") || !jp["metrics"].is_object() || !jp["metrics"].contains("values") ||
+      !jp["metrics"]["values"].is_object())
+    return "";
+  const J& values = jp["metrics"]["values"];
+  std::string s = "      <properties>\n";
+  for (const MetricInfo& m : metricTable()) {
+    if (!values.contains(m.id)) continue;
+    const J& v = values[m.id];
+    s += "        <property name=\"metric." + xmlEscape(m.id) + "\" value=\"" +
+         (v.is_number() ? num(v.get<double>()) : std::string("not finite")) + "\"/>\n";
+  }
+  return s + "      </properties>\n";
 }
 
 // "covered 19553, 0 hit/object disagreements off silhouettes (3 on them),
@@ -133,10 +153,11 @@ std::string junitXml(const J& results, const std::string& suite_name) {
         body += ">\n      <error message=\"" + xmlEscape(e) + "\" type=\"error\">" +
                 xmlEscape(renderErrors(renders)) + "</error>\n    </testcase>\n";
       } else if (jp.contains("pass") && jp["pass"] == true) {
-        body += "/>\n";
+        const std::string props = metricProperties(jp);
+        body += props.empty() ? "/>\n" : ">\n" + props + "    </testcase>\n";
       } else if (jp.contains("pass") && jp["pass"] == false && jp.contains("metrics")) {
         ++n.failures;
-        body += ">\n      <failure message=\"" +
+        body += ">\n" + metricProperties(jp) + "      <failure message=\"" +
                 xmlEscape("outside the tolerance: " + failedText(failedFromJson(field(jp, "failed", pw), pw + ".failed")) +
                           "; " + describeMetrics(jp["metrics"])) +
                 "\" type=\"outside_tolerance\"/>\n    </testcase>\n";

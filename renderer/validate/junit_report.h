@@ -3,7 +3,7 @@
 //
 // One <testsuite> per run (name = the run's name), one <testcase> per scene
 // and pair: classname = the scene's name, name = the pair ("reference-povray").
-//   passed            an empty <testcase/>
+//   passed            an empty <testcase/> (but for its properties)
 //   outside tolerance <failure message="..."> with the pair's metrics and
 //                     tolerance (p99.9, max, fraction within, mask
 //                     disagreements off silhouettes, the tolerance and, when
@@ -11,6 +11,10 @@
 //   error             <error message="..."> (a render failed, a job has no
 //                     usable record, ...), the renderers' errors in the text
 //   not expressible   <skipped message="..."> with the renderer's reason
+// A compared pair (passed or outside tolerance) whose metrics carry the
+// metric table's values (metrics.values, image/metric_table.h) has them as
+// <properties>, before its outcome: <property name="metric.ID"
+// value="%.6g">, in table order ("not finite" for null).
 // Then one <testcase> per geometry check of the case (results.json
 // cases[].geometry_checks, validate/validation/geometry_checks.h), name =
 // "reference-blender-import (geometry)": pass empty, fail <failure> with

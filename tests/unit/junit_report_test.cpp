@@ -82,6 +82,29 @@ TEST(JunitReport, ValidAgainstTheSchema) {
   EXPECT_TRUE(r.ok()) << r.describe() << "\n" << tailOfFile(r.log);
 }
 
+// A compared pair's metric-table values (metrics.values) are its testcase's
+// properties, in table order, before the outcome; a null one is "not
+// finite"; a pair without values has none (results.json from before the
+// table). Valid against the schema.
+TEST(JunitReport, PairMetricValuesAreTestcaseProperties) {
+  J r = results();
+  r["cases"][0]["pairs"][0]["metrics"]["values"] = {{"flip", 0.0125}, {"psnr", nullptr}, {"rmse", 3.5}};
+  r["cases"][1]["pairs"][0]["metrics"]["values"] = {{"flip", 0.5}};
+  const std::string x = junitXml(r, "reference set");
+  EXPECT_NE(x.find("name=\"reference-povray\" time=\"1.750\">\n      <properties>\n"
+                   "        <property name=\"metric.rmse\" value=\"3.5\"/>\n"
+                   "        <property name=\"metric.psnr\" value=\"not finite\"/>\n"
+                   "        <property name=\"metric.flip\" value=\"0.0125\"/>\n      </properties>\n    </testcase>"),
+            std::string::npos)
+      << x;
+  EXPECT_NE(x.find("<property name=\"metric.flip\" value=\"0.5\"/>\n      </properties>\n      <failure "),
+            std::string::npos)
+      << x;
+  EXPECT_EQ(junitXml(results(), "reference set").find("<properties>"), std::string::npos);
+  ProcessResult v = xmllint(x, "properties.xml");
+  EXPECT_TRUE(v.ok()) << v.describe() << "\n" << tailOfFile(v.log);
+}
+
 TEST(JunitReport, TheSchemaCheckCanFail) {
   // A testcase without classname, a count that is not a number.
   ProcessResult r = xmllint(

@@ -223,3 +223,28 @@ TEST(ParetoFront, ErrorTolerance) {
   EXPECT_EQ(paretoFront(p, 1e9), (std::vector<size_t>{0}));
   EXPECT_THROW(paretoFront(p, -1.0), std::runtime_error);
 }
+
+// The axes are the metric table's errors (image/metric_table.h): FLIP is
+// one, measured over the same pixels as the others; a metric whose better
+// direction is higher is no axis.
+TEST(Tradeoff, AxesAreTheMetricTablesErrors) {
+  Image ref(16, 16, false), img(16, 16, false);
+  for (size_t i = 0; i < ref.rgba.size(); i += 4) {
+    ref.rgba[i] = ref.rgba[i + 1] = ref.rgba[i + 2] = 0.5f, ref.rgba[i + 3] = 1.0f;
+    img.rgba[i] = 0.6f, img.rgba[i + 1] = img.rgba[i + 2] = 0.5f, img.rgba[i + 3] = 1.0f;
+  }
+  const TradeoffError e = tradeoffError(img, ref);
+  for (const std::string& id : metricIds(true)) EXPECT_TRUE(e.metrics.count(id)) << id;
+  EXPECT_GT(errorMetric(e, "flip"), 0.0);
+  EXPECT_EQ(errorMetric(e, "flip"), e.metrics.at("flip"));
+  EXPECT_EQ(errorMetric(e, "rmse"), e.rmse_16bit);
+  EXPECT_EQ(tradeoffError(ref, ref).metrics.at("flip"), 0.0);
+  EXPECT_STREQ(tradeoffAxis("flip").id, "flip");
+  EXPECT_THROW(tradeoffAxis("ssim"), std::runtime_error);  // higher is better: not an error
+  try {
+    tradeoffAxis("nope");
+    FAIL() << "expected an error";
+  } catch (const std::runtime_error& x) {
+    EXPECT_NE(std::string(x.what()).find("flip"), std::string::npos) << x.what();  // lists the choices
+  }
+}

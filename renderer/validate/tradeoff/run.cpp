@@ -44,10 +44,15 @@ std::string segmentsOf(const Scene& s) {
   return "-";
 }
 
+// The named fields, and "metrics": the metric table's values by id (a
+// value that is not finite as null).
 J errorJson(const TradeoffError& e) {
+  J metrics = J::object();
+  for (const auto& [id, v] : e.metrics) metrics[id] = std::isfinite(v) ? J(v) : J(nullptr);
   return {{"pixels", e.pixels},           {"max_16bit", e.max_16bit},
           {"p999_16bit", e.p999_16bit},   {"rmse_16bit", e.rmse_16bit},
-          {"ciede2000_mean", e.ciede2000_mean}, {"ciede2000_max", e.ciede2000_max}};
+          {"ciede2000_mean", e.ciede2000_mean}, {"ciede2000_max", e.ciede2000_max},
+          {"metrics", metrics}};
 }
 
 TradeoffError errorFromJson(const J& j) {
@@ -58,6 +63,8 @@ TradeoffError errorFromJson(const J& j) {
   e.rmse_16bit = j.at("rmse_16bit").get<double>();
   e.ciede2000_mean = j.at("ciede2000_mean").get<double>();
   e.ciede2000_max = j.at("ciede2000_max").get<double>();
+  const J metrics = j.value("metrics", J::object());  // a local: items() refers to it
+  for (const auto& [id, v] : metrics.items()) e.metrics[id] = v.is_number() ? v.get<double>() : std::nan("");
   return e;
 }
 
@@ -75,14 +82,6 @@ std::string fileSafe(const std::string& id) {
   std::string s;
   for (char ch : id) s += std::isalnum(static_cast<unsigned char>(ch)) || ch == '-' || ch == '.' ? ch : '_';
   return s;
-}
-
-const char* metricLabel(const std::string& metric) {
-  if (metric == "rmse") return "RMSE (1/65535)";
-  if (metric == "p999") return "p99.9 error (1/65535)";
-  if (metric == "max") return "max error (1/65535)";
-  if (metric == "ciede2000") return "mean CIEDE2000";
-  throw std::runtime_error("error metric '" + metric + "': expected rmse, p999, max or ciede2000");
 }
 
 // One configuration's row: timing and error of its last frame.
@@ -252,7 +251,8 @@ J header(const TradeoffRun& a, const Scene& scene, const SweepSettings& settings
   out["error_definition"] =
       "against the converged reference, over the pixels either image covers, on the final colour "
       "(premultiplied by coverage, over black); a pixel's error is its largest RGB channel difference; "
-      "max, p99.9 (nearest rank) and RMSE in 1/65535; CIEDE2000 of the colours taken as sRGB-coded";
+      "max, p99.9 (nearest rank) and RMSE in 1/65535; CIEDE2000 of the colours taken as sRGB-coded; "
+      "metrics: every entry of the metric table (image/metric_table.h) over the same pixels";
   out["pareto_metric"] = a.metric;
   return out;
 }
@@ -270,7 +270,7 @@ fs::path makeOutputFolder(const std::string& out) {
 }  // namespace
 
 void runTradeoff(const TradeoffRun& a) {
-  const char* metric_label = metricLabel(a.metric);
+  const std::string metric_label = labelWithUnit(tradeoffAxis(a.metric));
   Scene scene = loadScene(a.scene_file, a.budget);
   if (a.width) scene.camera.width = a.width;
   if (a.height) scene.camera.height = a.height;

@@ -18,8 +18,9 @@
 //   reference_tessellation = 0  its segments factor (0: 4, or 2 with quick)
 //   width, height = 0           override the camera's resolution (0: the
 //                               scene's; the field of view is kept)
-//   metric = "rmse"             the error on the Pareto plot and front:
-//                               rmse, p999, max or ciede2000 (the mean)
+//   metric = "rmse"             the error on the Pareto plot and front: an
+//                               error of the metric table (sweep.h:
+//                               tradeoffAxis; e.g. rmse, ciede2000, flip)
 //   images = false              also write DIR/images/<id>.exr
 //
 // Each configuration is prepared once (PreparedScene: tessellation,

@@ -46,11 +46,13 @@
 // error below them does not mean anything.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "image/image.h"
+#include "image/metric_table.h"
 #include "scene/scene.h"
 #include "scene/scene_budget.h"
 
@@ -98,9 +100,12 @@ Scene applyConfig(const Scene& scene, const TradeoffConfig& c, const Budget& bud
 // Error of `img` against `reference` over the pixels either image covers
 // (alpha > 0; the colour is premultiplied by coverage, over black, so a
 // pixel covered by one image only counts with its whole difference). A
-// pixel's error is its largest RGB channel difference. max, p99.9 and
-// RMSE are image/compare.h's "either covered" metrics (one comparison,
-// one nearest-rank percentile); CIEDE2000 is taken over the same pixels.
+// pixel's error is its largest RGB channel difference. The pair is
+// measured once over those pixels (image/metric_table.h: measurePair of
+// eitherCovered), and `metrics` holds every entry of the metric table by
+// id; the named fields are the table's max, p999, rmse, ciede2000 and
+// ciede2000_max, kept as the JSON fields of tradeoff.json that the tables
+// and the report read.
 struct TradeoffError {
   long long pixels = 0;         // covered by either image
   double max_16bit = 0.0;       // largest pixel error, in 1/65535
@@ -108,13 +113,19 @@ struct TradeoffError {
   double rmse_16bit = 0.0;      // over the pixels and the 3 channels, in 1/65535
   double ciede2000_mean = 0.0;  // CIEDE2000 (image/perceptual.h: colours as sRGB-coded), mean over the pixels
   double ciede2000_max = 0.0;
+  std::map<std::string, double> metrics;  // the metric table's values, by id (image/metric_table.h)
 };
 // Throws std::runtime_error when the sizes differ.
 TradeoffError tradeoffError(const Image& img, const Image& reference);
 
-// The error metric on the Pareto plot's axis: "rmse" (default), "p999",
-// "max" or "ciede2000" (the mean).
+// The error on the Pareto plot's axis: an entry of the metric table whose
+// better direction is lower (image/metric_table.h: metricIds(true); the
+// default "rmse"). Throws std::runtime_error naming the metric and the
+// choices, or when `e` has no value for it (a tradeoff.json written before
+// the metric table had only max, p999, rmse and ciede2000).
 double errorMetric(const TradeoffError& e, const std::string& metric);
+// Throws unless `metric` is an error of the metric table (as above).
+const MetricInfo& tradeoffAxis(const std::string& metric);
 
 // A point to minimise in both coordinates.
 struct ParetoPoint {

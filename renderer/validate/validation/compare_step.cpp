@@ -20,6 +20,7 @@
 #include "files/output_folder.h"
 #include "image/compare.h"
 #include "image/heat_map.h"
+#include "image/metric_table.h"
 #include "image/image.h"
 #include "image/pair_failure.h"
 #include "image/perceptual.h"
@@ -51,10 +52,10 @@ struct Render {
   JobRecord rec;
   Image image;
   std::string error;
-  std::optional<PerceptualImage> perceptual;  // of image, once its first pair needs it
-  const PerceptualImage& perceptualOnce() {
-    if (!perceptual) perceptual = perceptualImage(image);
-    return *perceptual;
+  std::optional<MeasuredImage> measured;  // of image, once its first pair needs it
+  const MeasuredImage& measuredOnce() {
+    if (!measured) measured = measuredImage(image);
+    return *measured;
   }
 };
 using Renders = std::map<std::string, Render>;  // by renderer id
@@ -185,8 +186,9 @@ J comparePair(const CompareContext& cx, const Scene& scene, const renderers::Ren
 std::vector<PairFailure> comparedPair(const CompareContext& cx, const Scene& scene, const std::string& key,
                                       const Tolerance& tol, const PairPrecision& precision, const std::string& reason,
                                       Render& A, Render& B, Renders& renders, J& jp) {
-  CompareMetrics m = compareImages(A.image, B.image, tol, precision);
-  PerceptualMetrics pm = perceptualMetrics(A.image, A.perceptualOnce(), B.image, B.perceptualOnce());
+  const PairMeasures measures =
+      measurePair(A.image, B.image, tol, precision, &A.measuredOnce(), &B.measuredOnce());
+  const CompareMetrics& m = measures.compare;
   const Image diff = differenceImage(A.image, B.image);
   writeImage(diff, cx.plan.dir / scene.name / ("diff_" + key + ".exr"), kDifferenceExrCompression);
   jp["heat_map"] = writeHeatMapPng(diff, cx.plan.dir, scene.name, key);  // the report only shows it
@@ -199,7 +201,7 @@ std::vector<PairFailure> comparedPair(const CompareContext& cx, const Scene& sce
     if (!renderers::registry().at(id).geometry_passes)
       images[id] = rr.error.empty() && !notExpressible(rr) ? &rr.image : nullptr;
   jp["crops"] = writePairCrops(A.image, B.image, images, heatMap(diff), m, cx.plan.dir, scene.name, key);
-  J jm = J::parse(toJson(m, tol, &pm));
+  J jm = pairJson(measures, tol);
   jm["tolerance_reason"] = reason;
   jm["precision"] = {{"a", precisionJson(precision.a)}, {"b", precisionJson(precision.b)}};
   jp["metrics"] = jm;
