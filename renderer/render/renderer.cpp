@@ -368,6 +368,7 @@ template <class T> struct Accumulation {
   const CameraRays& cam;  // the frame's camera (triangle_edge)
   std::vector<PixelTriangles>* triangles = nullptr;  // per pixel, with diagnostics
   int n = 1;  // samples per pixel side (the probes' 2x2 quads of samples)
+  bool probes = true;  // with diag: the precision probes (RenderOptions::precision_probes)
 
   // Adds one sample's hit (dir: its ray direction, at: its image point,
   // both read with diagnostics).
@@ -391,9 +392,11 @@ template <class T> struct Accumulation {
     px.final_sum += models::saturate(c);
     if (diag) {
       px.raw_sum += c;
-      const SampleProbes<T> probes = probeSample(sh, h, step, models::saturate(c), back, at, n);
-      px.position += probes.position, px.uv += probes.uv, px.normal += probes.normal;
-      px.flipped_sum += back ? probes.flipped : models::saturate(c);
+      if (probes) {
+        const SampleProbes<T> p = probeSample(sh, h, step, models::saturate(c), back, at, n);
+        px.position += p.position, px.uv += p.uv, px.normal += p.normal;
+        px.flipped_sum += back ? p.flipped : models::saturate(c);
+      }
     }
     ++px.hits;
   }
@@ -415,7 +418,7 @@ template <class T> struct Accumulation {
       img.precision_position[at] = float(s.position * double(inv));
       img.precision_uv[at] = float(s.uv * double(inv));
       img.precision_normal[at] = float(s.normal * double(inv));
-      img.backfacing_flip[at] = s.backfacing ? float(largestChannelDifference(s.flipped_sum, s.final_sum) * inv) : 0.0f;
+      img.backfacing_flip[at] = s.backfacing && probes ? float(largestChannelDifference(s.flipped_sum, s.final_sum) * inv) : 0.0f;
       (*triangles)[at] = s.triangles;
     }
   }
@@ -942,7 +945,8 @@ void PreparedScene::Impl::renderRasterised(const Shading<float>& sh, const Rende
   const int n = samplesPerSide(opt);
   const bool diag = opt.diagnostics && !img.raw.empty();
   std::vector<PixelTriangles> triangles(diag ? size_t(img.width) * img.height : 0);
-  const Accumulation<float> acc{sh, img, diag, 1.0f / float(n * n), 1.0 / n, cam, &triangles, n};
+  const Accumulation<float> acc{sh, img, diag, 1.0f / float(n * n), 1.0 / n, cam, &triangles, n,
+                                opt.precision_probes};
   stats.visibility = "rasterised";
   const Rasteriser raster(meshes, cam, kBand, opt.cull_back_faces ? back_faces_hidden : std::vector<bool>{},
                           threadCount(opt));
@@ -959,7 +963,7 @@ void PreparedScene::Impl::renderRasterised(const Shading<float>& sh, const Rende
     }
   };
   runOnThreads(std::min(threadCount(opt), raster.bands()), worker);
-  if (diag) {
+  if (diag && opt.precision_probes) {
     const auto t0 = Clock::now();
     edgeFractionPass(meshes, cam, n, triangles, img, threadCount(opt));
     stats.edge_fraction_seconds = secondsSince(t0);
@@ -976,7 +980,7 @@ void PreparedScene::Impl::renderTraced(const Shading<T>& sh, const RenderOptions
   const int n = samplesPerSide(opt), W = img.width, H = img.height;
   const bool diag = opt.diagnostics && !img.raw.empty();
   std::vector<PixelTriangles> triangles(diag ? size_t(W) * H : 0);
-  const Accumulation<T> acc{sh, img, diag, T(1) / T(n * n), 1.0 / n, cam, &triangles, n};
+  const Accumulation<T> acc{sh, img, diag, T(1) / T(n * n), 1.0 / n, cam, &triangles, n, opt.precision_probes};
   stats.visibility = std::is_same_v<T, float> ? "Embree 16-ray packets (float)"
                                               : "Embree 16-ray packets, double-precision watertight test";
   stats.culled_triangles = bvh_culled;
@@ -1001,7 +1005,7 @@ void PreparedScene::Impl::renderTraced(const Shading<T>& sh, const RenderOptions
     }
   };
   runOnThreads(std::min(threadCount(opt), tiles), worker);
-  if (diag) {
+  if (diag && opt.precision_probes) {
     const auto t0 = Clock::now();
     edgeFractionPass(meshes, cam, n, triangles, img, threadCount(opt));
     stats.edge_fraction_seconds = secondsSince(t0);
