@@ -661,8 +661,32 @@ struct OpenPixelTriangles {
   std::vector<std::vector<std::pair<uint32_t, uint32_t>>> triangles;  // per open pixel
   bool complete = true;
 };
-OpenPixelTriangles openPixelTriangles(const std::vector<TriangleMesh>& meshes, const CameraRays& cam,
-                                      const Image& img) {
+// Every triangle of every mesh projected once per frame (projectTriangle),
+// per mesh, per triangle: the binning and every pixel's candidates read
+// these instead of projecting a triangle again for each pixel around it
+// (the same numbers: projectTriangle is a pure function of the corners).
+using ProjectedMeshes = std::vector<std::vector<ProjectedTriangle>>;
+ProjectedMeshes projectAll(const std::vector<TriangleMesh>& meshes, const CameraRays& cam, int threads) {
+  ProjectedMeshes out(meshes.size());
+  for (size_t mi = 0; mi < meshes.size(); ++mi) out[mi].resize(meshes[mi].triangles.size());
+  constexpr size_t kChunk = 4096;  // triangles per job
+  std::vector<std::pair<size_t, size_t>> jobs;  // (mesh, first triangle)
+  for (size_t mi = 0; mi < meshes.size(); ++mi)
+    for (size_t t = 0; t < meshes[mi].triangles.size(); t += kChunk) jobs.emplace_back(mi, t);
+  runJobPool(jobs.size(), threads, [&](size_t k) {
+    const auto [mi, first] = jobs[k];
+    const TriangleMesh& m = meshes[mi];
+    for (size_t ti = first; ti < std::min(first + kChunk, m.triangles.size()); ++ti) {
+      const glm::u32vec3& tri = m.triangles[ti];
+      const glm::dvec3 P[3] = {m.positions[tri[0]], m.positions[tri[1]], m.positions[tri[2]]};
+      out[mi][ti] = projectTriangle(cam, P);
+    }
+  });
+  return out;
+}
+
+OpenPixelTriangles openPixelTriangles(const std::vector<TriangleMesh>& meshes, const ProjectedMeshes& projected,
+                                      const CameraRays& cam, const Image& img) {
   const int W = img.width, H = img.height;
   OpenPixelTriangles out;
   out.index.assign(size_t(W) * H, -1);
@@ -679,9 +703,7 @@ OpenPixelTriangles openPixelTriangles(const std::vector<TriangleMesh>& meshes, c
   for (size_t mi = 0; mi < meshes.size(); ++mi) {
     const TriangleMesh& m = meshes[mi];
     for (size_t ti = 0; ti < m.triangles.size(); ++ti) {
-      const glm::u32vec3& tri = m.triangles[ti];
-      const glm::dvec3 P[3] = {m.positions[tri[0]], m.positions[tri[1]], m.positions[tri[2]]};
-      const ProjectedTriangle pt = projectTriangle(cam, P);
+      const ProjectedTriangle& pt = projected[mi][ti];
       if (!pt.in_front) continue;
       // The image points whose sample could lie within `within` of it.
       double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
@@ -714,7 +736,8 @@ void edgeFractionPass(const std::vector<TriangleMesh>& meshes, const CameraRays&
                       const std::vector<PixelTriangles>& triangles, Image& img, int threads) {
   const int W = img.width, H = img.height;
   const double within = kTriangleEdgePixels;
-  const OpenPixelTriangles binned = openPixelTriangles(meshes, cam, img);
+  const ProjectedMeshes projected = projectAll(meshes, cam, threads);
+  const OpenPixelTriangles binned = openPixelTriangles(meshes, projected, cam, img);
   std::atomic<int> next_row{0};
   auto worker = [&]() {
     std::vector<std::pair<uint32_t, uint32_t>> seen, hit;
@@ -742,10 +765,7 @@ void edgeFractionPass(const std::vector<TriangleMesh>& meshes, const CameraRays&
         std::sort(seen.begin(), seen.end());
         seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
         for (const std::pair<uint32_t, uint32_t>& key : seen) {
-          const TriangleMesh& m = meshes[key.first];
-          const glm::u32vec3& tri = m.triangles[key.second];
-          const glm::dvec3 P[3] = {m.positions[tri[0]], m.positions[tri[1]], m.positions[tri[2]]};
-          const ProjectedTriangle pt = projectTriangle(cam, P);
+          const ProjectedTriangle& pt = projected[key.first][key.second];
           const glm::dvec2 tlo = glm::min(pt.c[0], glm::min(pt.c[1], pt.c[2]));
           const glm::dvec2 thi = glm::max(pt.c[0], glm::max(pt.c[1], pt.c[2]));
           if (pt.in_front && (thi.x < lo.x || thi.y < lo.y || tlo.x > hi.x || tlo.y > hi.y)) continue;
