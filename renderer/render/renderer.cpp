@@ -199,9 +199,36 @@ glm::vec<3, T> hitColour(const Shading<T>& sh, const Hit& h, glm::vec<2, T> uv, 
   return colour.at(uv, std::clamp(lambda + dlambda, 0.0, double(colour.mips->maxLevel())));
 }
 
-// The unsaturated colour c of one hit: the model at the hit's point p =
-// sum b_k P_k, normal (Phong: normalize(sum b_k N_k), zero stays zero, or
-// with normalize_normal off the sum itself; flat: the face normal), texture
+// What shadeHit computes from a (non-Gouraud) hit before the model runs:
+// the point p = sum b_k P_k, the shading normal (Phong: normalize(sum b_k
+// N_k), zero stays zero, or with normalize_normal off the sum itself; flat:
+// the face normal), the eye vector v and the wrapped uv.
+template <class T> struct HitSurface {
+  glm::vec<3, T> p, nrm, v;
+  glm::vec<2, T> uv;
+};
+template <class T> HitSurface<T> hitSurface(const Shading<T>& sh, const Hit& h) {
+  using V = glm::vec<3, T>;
+  const ShadedMesh<T>& m = sh.meshes[h.mesh];
+  const auto& tri = m.src->triangles[h.triangle];
+  const T b1 = T(h.b1), b2 = T(h.b2), b0 = T(1) - b1 - b2;
+  HitSurface<T> s;
+  s.p = b0 * m.p[tri[0]] + b1 * m.p[tri[1]] + b2 * m.p[tri[2]];
+  if (sh.mode == ShadingMode::Flat) {
+    s.nrm = m.face_n[h.triangle];
+  } else {
+    s.nrm = b0 * m.n[tri[0]] + b1 * m.n[tri[1]] + b2 * m.n[tri[2]];
+    if (sh.normalize_normal) {
+      T len = glm::length(s.nrm);
+      s.nrm = len > T(0) ? s.nrm / len : V(0);  // zero-length normals stay 0
+    }
+  }
+  s.uv = interpolateUv(m.uv, tri, b1, b2);
+  s.v = glm::normalize(sh.eye - s.p);
+  return s;
+}
+
+// The unsaturated colour c of one hit: the model at its HitSurface, texture
 // colour at the wrapped uv (hitColour, per `step` pixels); Gouraud: sum b_k
 // of the vertex colours. backfacing: the shading normal faces away from the
 // eye, N . (eye - p) < 0 (always false for Gouraud). nudge: a probe's
@@ -210,33 +237,20 @@ glm::vec<3, T> hitColour(const Shading<T>& sh, const Hit& h, glm::vec<2, T> uv, 
 template <class T>
 __attribute__((flatten)) glm::vec<3, T> shadeHit(const Shading<T>& sh, const Hit& h, double step, bool& backfacing,
                                                  const ShadingNudge<T>* nudge = nullptr) {
-  using V = glm::vec<3, T>;
   const ShadedMesh<T>& m = sh.meshes[h.mesh];
-  const auto& tri = m.src->triangles[h.triangle];
-  const T b1 = T(h.b1), b2 = T(h.b2), b0 = T(1) - b1 - b2;
   if (sh.mode == ShadingMode::Gouraud) {
+    const auto& tri = m.src->triangles[h.triangle];
+    const T b1 = T(h.b1), b2 = T(h.b2), b0 = T(1) - b1 - b2;
     backfacing = false;
     return b0 * m.vertex_colour[tri[0]] + b1 * m.vertex_colour[tri[1]] + b2 * m.vertex_colour[tri[2]];
   }
-  V p = b0 * m.p[tri[0]] + b1 * m.p[tri[1]] + b2 * m.p[tri[2]];
-  V nrm;
-  if (sh.mode == ShadingMode::Flat) {
-    nrm = m.face_n[h.triangle];
-  } else {
-    nrm = b0 * m.n[tri[0]] + b1 * m.n[tri[1]] + b2 * m.n[tri[2]];
-    if (sh.normalize_normal) {
-      T len = glm::length(nrm);
-      nrm = len > T(0) ? nrm / len : V(0);  // zero-length normals stay 0
-    }
-  }
-  glm::vec<2, T> uv = interpolateUv(m.uv, tri, b1, b2);
-  V v = glm::normalize(sh.eye - p);
-  backfacing = glm::dot(nrm, v) < T(0);
-  if (!nudge) return sh.shaders[m.object].shade(p, nrm, v, hitColour(sh, h, uv, step));
-  if (nudge->flip) nrm = -nrm;
-  if (nudge->turn) nrm = nudge->turn_cos * nrm + nudge->turn_sin * glm::cross(nudge->turn_axis, nrm);
-  uv += nudge->duv;
-  return sh.shaders[m.object].shade(p, nrm, v, hitColour(sh, h, uv, step, nudge->dlambda));
+  HitSurface<T> s = hitSurface(sh, h);
+  backfacing = glm::dot(s.nrm, s.v) < T(0);
+  if (!nudge) return sh.shaders[m.object].shade(s.p, s.nrm, s.v, hitColour(sh, h, s.uv, step));
+  if (nudge->flip) s.nrm = -s.nrm;
+  if (nudge->turn) s.nrm = nudge->turn_cos * s.nrm + nudge->turn_sin * glm::cross(nudge->turn_axis, s.nrm);
+  s.uv += nudge->duv;
+  return sh.shaders[m.object].shade(s.p, s.nrm, s.v, hitColour(sh, h, s.uv, step, nudge->dlambda));
 }
 
 // The precision probes of one sample (render/precision_probe.h): the
@@ -267,22 +281,24 @@ SampleProbes<T> probeSample(const Shading<T>& sh, const Hit& h, double step, glm
     if (std::isfinite(moved.b1) && std::isfinite(moved.b2)) out.position = std::max(out.position, change(moved, nullptr));
   }
   if (sh.mode == ShadingMode::Gouraud) return out;  // the model ran at the vertices: no uv, N or flip here
-  if (backfacing) {
-    ShadingNudge<T> flip;
-    flip.flip = true;
-    out.flipped = models::saturate(shadeHit(sh, h, step, back, &flip));
-  }
+  // The probes below change N, uv or the level at the hit itself: its
+  // surface, and the colour where uv and level stay, are computed once and
+  // shaded as shadeHit with the nudge would (the same operations).
+  const HitSurface<T> s = hitSurface(sh, h);
+  const Shader<T>& shader = sh.shaders[m.object];
+  const V C = hitColour(sh, h, s.uv, step);
+  auto changeAt = [&](const V& nrm, const V& colour) {
+    return double(largestChannelDifference(models::saturate(shader.shade(s.p, nrm, s.v, colour)), c));
+  };
+  if (backfacing) out.flipped = models::saturate(shader.shade(s.p, -s.nrm, s.v, C));
   // uv: one 1/256 texel of level 0 along u and v; a trilinear level by its
   // quad estimate's difference.
   const SurfaceColour<T>& colour = sh.colours[m.object];
   if (colour.texture) {
     const T du = T(kUvStepTexels / colour.texture->width), dv = T(kUvStepTexels / colour.texture->height);
     for (const glm::vec<2, T> duv : {glm::vec<2, T>(du, 0), glm::vec<2, T>(-du, 0), glm::vec<2, T>(0, dv),
-                                     glm::vec<2, T>(0, -dv)}) {
-      ShadingNudge<T> nudge;
-      nudge.duv = duv;
-      out.uv = std::max(out.uv, change(h, &nudge));
-    }
+                                     glm::vec<2, T>(0, -dv)})
+      out.uv = std::max(out.uv, changeAt(s.nrm, hitColour(sh, h, s.uv + duv, step)));
     if (colour.usesFootprint()) {
       const glm::dvec2 uv[3] = {m.src->uvs[tri[0]], m.src->uvs[tri[1]], m.src->uvs[tri[2]]};
       const double exact = hitLambda(sh, h, step);
@@ -290,11 +306,7 @@ SampleProbes<T> probeSample(const Shading<T>& sh, const Hit& h, double step, glm
       for (const auto& q : quadUvDerivativeChoices(sh.cam, P, uv, at.x, at.y, n))
         far = std::max(far, std::abs(colour.mips->lambda(q[0], q[1]) - exact));
       const double dl = kLodStep + far;
-      for (const double s : {dl, -dl}) {
-        ShadingNudge<T> nudge;
-        nudge.dlambda = s;
-        out.uv = std::max(out.uv, change(h, &nudge));
-      }
+      for (const double sd : {dl, -dl}) out.uv = std::max(out.uv, changeAt(s.nrm, hitColour(sh, h, s.uv, step, sd)));
     }
   }
   // Normal: turned about two axes perpendicular to it, both ways. The
@@ -309,12 +321,9 @@ SampleProbes<T> probeSample(const Shading<T>& sh, const Hit& h, double step, glm
   }
   if (glm::dot(nrm, nrm) > T(0)) {
     for (const V& axis : turnAxes(nrm))
-      for (const double s : {kNormalStepRadians, -kNormalStepRadians}) {
-        ShadingNudge<T> nudge;
-        nudge.turn = true;
-        nudge.turn_axis = axis;
-        nudge.turn_cos = T(std::cos(s)), nudge.turn_sin = T(std::sin(s));
-        out.normal = std::max(out.normal, change(h, &nudge));
+      for (const double a : {kNormalStepRadians, -kNormalStepRadians}) {
+        const T turn_cos = T(std::cos(a)), turn_sin = T(std::sin(a));
+        out.normal = std::max(out.normal, changeAt(turn_cos * s.nrm + turn_sin * glm::cross(axis, s.nrm), C));
       }
   }
   return out;
