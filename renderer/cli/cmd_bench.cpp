@@ -26,7 +26,10 @@ void addBenchCommand(CLI::App& app, std::function<int()>& run) {
       "Frame times of one scene with the reference renderer (float fast path and double "
       "reference path) and, in the same run, POV-Ray and Blender; prints medians, spread "
       "(min..max) and ratios. Reference frames exclude the one-time setup (tessellation, "
-      "texture, BVH), which is printed apart, and diagnostics.");
+      "texture, BVH), which is printed apart, and diagnostics; validate-style frames (every diagnostic "
+      "channel) are printed apart, with and without the precision probes, and so are the whole process of "
+      "`xval render` (default outputs, --no-diagnostics, start-up alone) and its stages, and the "
+      "performance targets (docs/performance.md) with the measured figures.");
   cmd->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
   const renderers::Registry& registry = renderers::registry();
   for (const std::string& id : registry.everySceneIds()) args->renderers += (args->renderers.empty() ? "" : ",") + id;

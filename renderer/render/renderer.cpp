@@ -199,9 +199,36 @@ glm::vec<3, T> hitColour(const Shading<T>& sh, const Hit& h, glm::vec<2, T> uv, 
   return colour.at(uv, std::clamp(lambda + dlambda, 0.0, double(colour.mips->maxLevel())));
 }
 
-// The unsaturated colour c of one hit: the model at the hit's point p =
-// sum b_k P_k, normal (Phong: normalize(sum b_k N_k), zero stays zero, or
-// with normalize_normal off the sum itself; flat: the face normal), texture
+// What shadeHit computes from a (non-Gouraud) hit before the model runs:
+// the point p = sum b_k P_k, the shading normal (Phong: normalize(sum b_k
+// N_k), zero stays zero, or with normalize_normal off the sum itself; flat:
+// the face normal), the eye vector v and the wrapped uv.
+template <class T> struct HitSurface {
+  glm::vec<3, T> p, nrm, v;
+  glm::vec<2, T> uv;
+};
+template <class T> HitSurface<T> hitSurface(const Shading<T>& sh, const Hit& h) {
+  using V = glm::vec<3, T>;
+  const ShadedMesh<T>& m = sh.meshes[h.mesh];
+  const auto& tri = m.src->triangles[h.triangle];
+  const T b1 = T(h.b1), b2 = T(h.b2), b0 = T(1) - b1 - b2;
+  HitSurface<T> s;
+  s.p = b0 * m.p[tri[0]] + b1 * m.p[tri[1]] + b2 * m.p[tri[2]];
+  if (sh.mode == ShadingMode::Flat) {
+    s.nrm = m.face_n[h.triangle];
+  } else {
+    s.nrm = b0 * m.n[tri[0]] + b1 * m.n[tri[1]] + b2 * m.n[tri[2]];
+    if (sh.normalize_normal) {
+      T len = glm::length(s.nrm);
+      s.nrm = len > T(0) ? s.nrm / len : V(0);  // zero-length normals stay 0
+    }
+  }
+  s.uv = interpolateUv(m.uv, tri, b1, b2);
+  s.v = glm::normalize(sh.eye - s.p);
+  return s;
+}
+
+// The unsaturated colour c of one hit: the model at its HitSurface, texture
 // colour at the wrapped uv (hitColour, per `step` pixels); Gouraud: sum b_k
 // of the vertex colours. backfacing: the shading normal faces away from the
 // eye, N . (eye - p) < 0 (always false for Gouraud). nudge: a probe's
@@ -210,33 +237,20 @@ glm::vec<3, T> hitColour(const Shading<T>& sh, const Hit& h, glm::vec<2, T> uv, 
 template <class T>
 __attribute__((flatten)) glm::vec<3, T> shadeHit(const Shading<T>& sh, const Hit& h, double step, bool& backfacing,
                                                  const ShadingNudge<T>* nudge = nullptr) {
-  using V = glm::vec<3, T>;
   const ShadedMesh<T>& m = sh.meshes[h.mesh];
-  const auto& tri = m.src->triangles[h.triangle];
-  const T b1 = T(h.b1), b2 = T(h.b2), b0 = T(1) - b1 - b2;
   if (sh.mode == ShadingMode::Gouraud) {
+    const auto& tri = m.src->triangles[h.triangle];
+    const T b1 = T(h.b1), b2 = T(h.b2), b0 = T(1) - b1 - b2;
     backfacing = false;
     return b0 * m.vertex_colour[tri[0]] + b1 * m.vertex_colour[tri[1]] + b2 * m.vertex_colour[tri[2]];
   }
-  V p = b0 * m.p[tri[0]] + b1 * m.p[tri[1]] + b2 * m.p[tri[2]];
-  V nrm;
-  if (sh.mode == ShadingMode::Flat) {
-    nrm = m.face_n[h.triangle];
-  } else {
-    nrm = b0 * m.n[tri[0]] + b1 * m.n[tri[1]] + b2 * m.n[tri[2]];
-    if (sh.normalize_normal) {
-      T len = glm::length(nrm);
-      nrm = len > T(0) ? nrm / len : V(0);  // zero-length normals stay 0
-    }
-  }
-  glm::vec<2, T> uv = interpolateUv(m.uv, tri, b1, b2);
-  V v = glm::normalize(sh.eye - p);
-  backfacing = glm::dot(nrm, v) < T(0);
-  if (!nudge) return sh.shaders[m.object].shade(p, nrm, v, hitColour(sh, h, uv, step));
-  if (nudge->flip) nrm = -nrm;
-  if (nudge->turn) nrm = nudge->turn_cos * nrm + nudge->turn_sin * glm::cross(nudge->turn_axis, nrm);
-  uv += nudge->duv;
-  return sh.shaders[m.object].shade(p, nrm, v, hitColour(sh, h, uv, step, nudge->dlambda));
+  HitSurface<T> s = hitSurface(sh, h);
+  backfacing = glm::dot(s.nrm, s.v) < T(0);
+  if (!nudge) return sh.shaders[m.object].shade(s.p, s.nrm, s.v, hitColour(sh, h, s.uv, step));
+  if (nudge->flip) s.nrm = -s.nrm;
+  if (nudge->turn) s.nrm = nudge->turn_cos * s.nrm + nudge->turn_sin * glm::cross(nudge->turn_axis, s.nrm);
+  s.uv += nudge->duv;
+  return sh.shaders[m.object].shade(s.p, s.nrm, s.v, hitColour(sh, h, s.uv, step, nudge->dlambda));
 }
 
 // The precision probes of one sample (render/precision_probe.h): the
@@ -267,22 +281,24 @@ SampleProbes<T> probeSample(const Shading<T>& sh, const Hit& h, double step, glm
     if (std::isfinite(moved.b1) && std::isfinite(moved.b2)) out.position = std::max(out.position, change(moved, nullptr));
   }
   if (sh.mode == ShadingMode::Gouraud) return out;  // the model ran at the vertices: no uv, N or flip here
-  if (backfacing) {
-    ShadingNudge<T> flip;
-    flip.flip = true;
-    out.flipped = models::saturate(shadeHit(sh, h, step, back, &flip));
-  }
+  // The probes below change N, uv or the level at the hit itself: its
+  // surface, and the colour where uv and level stay, are computed once and
+  // shaded as shadeHit with the nudge would (the same operations).
+  const HitSurface<T> s = hitSurface(sh, h);
+  const Shader<T>& shader = sh.shaders[m.object];
+  const V C = hitColour(sh, h, s.uv, step);
+  auto changeAt = [&](const V& nrm, const V& colour) {
+    return double(largestChannelDifference(models::saturate(shader.shade(s.p, nrm, s.v, colour)), c));
+  };
+  if (backfacing) out.flipped = models::saturate(shader.shade(s.p, -s.nrm, s.v, C));
   // uv: one 1/256 texel of level 0 along u and v; a trilinear level by its
   // quad estimate's difference.
   const SurfaceColour<T>& colour = sh.colours[m.object];
   if (colour.texture) {
     const T du = T(kUvStepTexels / colour.texture->width), dv = T(kUvStepTexels / colour.texture->height);
     for (const glm::vec<2, T> duv : {glm::vec<2, T>(du, 0), glm::vec<2, T>(-du, 0), glm::vec<2, T>(0, dv),
-                                     glm::vec<2, T>(0, -dv)}) {
-      ShadingNudge<T> nudge;
-      nudge.duv = duv;
-      out.uv = std::max(out.uv, change(h, &nudge));
-    }
+                                     glm::vec<2, T>(0, -dv)})
+      out.uv = std::max(out.uv, changeAt(s.nrm, hitColour(sh, h, s.uv + duv, step)));
     if (colour.usesFootprint()) {
       const glm::dvec2 uv[3] = {m.src->uvs[tri[0]], m.src->uvs[tri[1]], m.src->uvs[tri[2]]};
       const double exact = hitLambda(sh, h, step);
@@ -290,11 +306,7 @@ SampleProbes<T> probeSample(const Shading<T>& sh, const Hit& h, double step, glm
       for (const auto& q : quadUvDerivativeChoices(sh.cam, P, uv, at.x, at.y, n))
         far = std::max(far, std::abs(colour.mips->lambda(q[0], q[1]) - exact));
       const double dl = kLodStep + far;
-      for (const double s : {dl, -dl}) {
-        ShadingNudge<T> nudge;
-        nudge.dlambda = s;
-        out.uv = std::max(out.uv, change(h, &nudge));
-      }
+      for (const double sd : {dl, -dl}) out.uv = std::max(out.uv, changeAt(s.nrm, hitColour(sh, h, s.uv, step, sd)));
     }
   }
   // Normal: turned about two axes perpendicular to it, both ways. The
@@ -309,12 +321,9 @@ SampleProbes<T> probeSample(const Shading<T>& sh, const Hit& h, double step, glm
   }
   if (glm::dot(nrm, nrm) > T(0)) {
     for (const V& axis : turnAxes(nrm))
-      for (const double s : {kNormalStepRadians, -kNormalStepRadians}) {
-        ShadingNudge<T> nudge;
-        nudge.turn = true;
-        nudge.turn_axis = axis;
-        nudge.turn_cos = T(std::cos(s)), nudge.turn_sin = T(std::sin(s));
-        out.normal = std::max(out.normal, change(h, &nudge));
+      for (const double a : {kNormalStepRadians, -kNormalStepRadians}) {
+        const T turn_cos = T(std::cos(a)), turn_sin = T(std::sin(a));
+        out.normal = std::max(out.normal, changeAt(turn_cos * s.nrm + turn_sin * glm::cross(axis, s.nrm), C));
       }
   }
   return out;
@@ -368,6 +377,7 @@ template <class T> struct Accumulation {
   const CameraRays& cam;  // the frame's camera (triangle_edge)
   std::vector<PixelTriangles>* triangles = nullptr;  // per pixel, with diagnostics
   int n = 1;  // samples per pixel side (the probes' 2x2 quads of samples)
+  bool probes = true;  // with diag: the precision probes (RenderOptions::precision_probes)
 
   // Adds one sample's hit (dir: its ray direction, at: its image point,
   // both read with diagnostics).
@@ -391,9 +401,11 @@ template <class T> struct Accumulation {
     px.final_sum += models::saturate(c);
     if (diag) {
       px.raw_sum += c;
-      const SampleProbes<T> probes = probeSample(sh, h, step, models::saturate(c), back, at, n);
-      px.position += probes.position, px.uv += probes.uv, px.normal += probes.normal;
-      px.flipped_sum += back ? probes.flipped : models::saturate(c);
+      if (probes) {
+        const SampleProbes<T> p = probeSample(sh, h, step, models::saturate(c), back, at, n);
+        px.position += p.position, px.uv += p.uv, px.normal += p.normal;
+        px.flipped_sum += back ? p.flipped : models::saturate(c);
+      }
     }
     ++px.hits;
   }
@@ -415,7 +427,7 @@ template <class T> struct Accumulation {
       img.precision_position[at] = float(s.position * double(inv));
       img.precision_uv[at] = float(s.uv * double(inv));
       img.precision_normal[at] = float(s.normal * double(inv));
-      img.backfacing_flip[at] = s.backfacing ? float(largestChannelDifference(s.flipped_sum, s.final_sum) * inv) : 0.0f;
+      img.backfacing_flip[at] = s.backfacing && probes ? float(largestChannelDifference(s.flipped_sum, s.final_sum) * inv) : 0.0f;
       (*triangles)[at] = s.triangles;
     }
   }
@@ -658,8 +670,32 @@ struct OpenPixelTriangles {
   std::vector<std::vector<std::pair<uint32_t, uint32_t>>> triangles;  // per open pixel
   bool complete = true;
 };
-OpenPixelTriangles openPixelTriangles(const std::vector<TriangleMesh>& meshes, const CameraRays& cam,
-                                      const Image& img) {
+// Every triangle of every mesh projected once per frame (projectTriangle),
+// per mesh, per triangle: the binning and every pixel's candidates read
+// these instead of projecting a triangle again for each pixel around it
+// (the same numbers: projectTriangle is a pure function of the corners).
+using ProjectedMeshes = std::vector<std::vector<ProjectedTriangle>>;
+ProjectedMeshes projectAll(const std::vector<TriangleMesh>& meshes, const CameraRays& cam, int threads) {
+  ProjectedMeshes out(meshes.size());
+  for (size_t mi = 0; mi < meshes.size(); ++mi) out[mi].resize(meshes[mi].triangles.size());
+  constexpr size_t kChunk = 4096;  // triangles per job
+  std::vector<std::pair<size_t, size_t>> jobs;  // (mesh, first triangle)
+  for (size_t mi = 0; mi < meshes.size(); ++mi)
+    for (size_t t = 0; t < meshes[mi].triangles.size(); t += kChunk) jobs.emplace_back(mi, t);
+  runJobPool(jobs.size(), threads, [&](size_t k) {
+    const auto [mi, first] = jobs[k];
+    const TriangleMesh& m = meshes[mi];
+    for (size_t ti = first; ti < std::min(first + kChunk, m.triangles.size()); ++ti) {
+      const glm::u32vec3& tri = m.triangles[ti];
+      const glm::dvec3 P[3] = {m.positions[tri[0]], m.positions[tri[1]], m.positions[tri[2]]};
+      out[mi][ti] = projectTriangle(cam, P);
+    }
+  });
+  return out;
+}
+
+OpenPixelTriangles openPixelTriangles(const std::vector<TriangleMesh>& meshes, const ProjectedMeshes& projected,
+                                      const CameraRays& cam, const Image& img) {
   const int W = img.width, H = img.height;
   OpenPixelTriangles out;
   out.index.assign(size_t(W) * H, -1);
@@ -676,9 +712,7 @@ OpenPixelTriangles openPixelTriangles(const std::vector<TriangleMesh>& meshes, c
   for (size_t mi = 0; mi < meshes.size(); ++mi) {
     const TriangleMesh& m = meshes[mi];
     for (size_t ti = 0; ti < m.triangles.size(); ++ti) {
-      const glm::u32vec3& tri = m.triangles[ti];
-      const glm::dvec3 P[3] = {m.positions[tri[0]], m.positions[tri[1]], m.positions[tri[2]]};
-      const ProjectedTriangle pt = projectTriangle(cam, P);
+      const ProjectedTriangle& pt = projected[mi][ti];
       if (!pt.in_front) continue;
       // The image points whose sample could lie within `within` of it.
       double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
@@ -711,7 +745,8 @@ void edgeFractionPass(const std::vector<TriangleMesh>& meshes, const CameraRays&
                       const std::vector<PixelTriangles>& triangles, Image& img, int threads) {
   const int W = img.width, H = img.height;
   const double within = kTriangleEdgePixels;
-  const OpenPixelTriangles binned = openPixelTriangles(meshes, cam, img);
+  const ProjectedMeshes projected = projectAll(meshes, cam, threads);
+  const OpenPixelTriangles binned = openPixelTriangles(meshes, projected, cam, img);
   std::atomic<int> next_row{0};
   auto worker = [&]() {
     std::vector<std::pair<uint32_t, uint32_t>> seen, hit;
@@ -739,10 +774,7 @@ void edgeFractionPass(const std::vector<TriangleMesh>& meshes, const CameraRays&
         std::sort(seen.begin(), seen.end());
         seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
         for (const std::pair<uint32_t, uint32_t>& key : seen) {
-          const TriangleMesh& m = meshes[key.first];
-          const glm::u32vec3& tri = m.triangles[key.second];
-          const glm::dvec3 P[3] = {m.positions[tri[0]], m.positions[tri[1]], m.positions[tri[2]]};
-          const ProjectedTriangle pt = projectTriangle(cam, P);
+          const ProjectedTriangle& pt = projected[key.first][key.second];
           const glm::dvec2 tlo = glm::min(pt.c[0], glm::min(pt.c[1], pt.c[2]));
           const glm::dvec2 thi = glm::max(pt.c[0], glm::max(pt.c[1], pt.c[2]));
           if (pt.in_front && (thi.x < lo.x || thi.y < lo.y || tlo.x > hi.x || tlo.y > hi.y)) continue;
@@ -942,7 +974,8 @@ void PreparedScene::Impl::renderRasterised(const Shading<float>& sh, const Rende
   const int n = samplesPerSide(opt);
   const bool diag = opt.diagnostics && !img.raw.empty();
   std::vector<PixelTriangles> triangles(diag ? size_t(img.width) * img.height : 0);
-  const Accumulation<float> acc{sh, img, diag, 1.0f / float(n * n), 1.0 / n, cam, &triangles, n};
+  const Accumulation<float> acc{sh, img, diag, 1.0f / float(n * n), 1.0 / n, cam, &triangles, n,
+                                opt.precision_probes};
   stats.visibility = "rasterised";
   const Rasteriser raster(meshes, cam, kBand, opt.cull_back_faces ? back_faces_hidden : std::vector<bool>{},
                           threadCount(opt));
@@ -959,7 +992,7 @@ void PreparedScene::Impl::renderRasterised(const Shading<float>& sh, const Rende
     }
   };
   runOnThreads(std::min(threadCount(opt), raster.bands()), worker);
-  if (diag) {
+  if (diag && opt.precision_probes) {
     const auto t0 = Clock::now();
     edgeFractionPass(meshes, cam, n, triangles, img, threadCount(opt));
     stats.edge_fraction_seconds = secondsSince(t0);
@@ -976,7 +1009,7 @@ void PreparedScene::Impl::renderTraced(const Shading<T>& sh, const RenderOptions
   const int n = samplesPerSide(opt), W = img.width, H = img.height;
   const bool diag = opt.diagnostics && !img.raw.empty();
   std::vector<PixelTriangles> triangles(diag ? size_t(W) * H : 0);
-  const Accumulation<T> acc{sh, img, diag, T(1) / T(n * n), 1.0 / n, cam, &triangles, n};
+  const Accumulation<T> acc{sh, img, diag, T(1) / T(n * n), 1.0 / n, cam, &triangles, n, opt.precision_probes};
   stats.visibility = std::is_same_v<T, float> ? "Embree 16-ray packets (float)"
                                               : "Embree 16-ray packets, double-precision watertight test";
   stats.culled_triangles = bvh_culled;
@@ -1001,7 +1034,7 @@ void PreparedScene::Impl::renderTraced(const Shading<T>& sh, const RenderOptions
     }
   };
   runOnThreads(std::min(threadCount(opt), tiles), worker);
-  if (diag) {
+  if (diag && opt.precision_probes) {
     const auto t0 = Clock::now();
     edgeFractionPass(meshes, cam, n, triangles, img, threadCount(opt));
     stats.edge_fraction_seconds = secondsSince(t0);

@@ -48,6 +48,11 @@ struct RenderOptions {
   // albedo, texel_edge, triangle_edge, kProbeChannels) when the image has them allocated (Image(w, h, true)).
   // renderScene allocates them only when this is set.
   bool diagnostics = true;
+  // With diagnostics: also run the precision probes (render/precision_probe.h:
+  // edge_fraction, backfacing_flip, precision.*). False leaves those channels
+  // 0, which no comparison may read as bounds: for timing what the probes
+  // cost (`xval bench`), never for an image that is compared.
+  bool precision_probes = true;
   // Float path only: rasterise visibility when applicable (false: always
   // trace Embree packets; tests compare the two).
   bool rasterise = true;

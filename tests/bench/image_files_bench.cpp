@@ -93,9 +93,14 @@ void pngWrite(benchmark::State& state, int level, int filter) {
 }
 
 void BM_RenderExrWrite_zip6(benchmark::State& s) { exrWrite(s, inputs().render, "zip", "r.exr"); }
-void BM_RenderExrWrite_zip1(benchmark::State& s) { exrWrite(s, inputs().render, kRenderExrCompression, "r.exr"); }
+void BM_RenderExrWrite_zip1(benchmark::State& s) { exrWrite(s, inputs().render, "zip:1", "r.exr"); }
+void BM_RenderExrWrite_none(benchmark::State& s) { exrWrite(s, inputs().render, "none", "r.exr"); }
+void BM_RenderExrWrite_rle(benchmark::State& s) { exrWrite(s, inputs().render, kRenderExrCompression, "r.exr"); }
+void BM_RenderExrWrite_piz(benchmark::State& s) { exrWrite(s, inputs().render, "piz", "r.exr"); }
+void BM_RenderExrRead_none(benchmark::State& s) { exrRead(s, inputs().render, "none", "r.exr"); }
 void BM_RenderExrRead_zip6(benchmark::State& s) { exrRead(s, inputs().render, "zip", "r.exr"); }
-void BM_RenderExrRead_zip1(benchmark::State& s) { exrRead(s, inputs().render, kRenderExrCompression, "r.exr"); }
+void BM_RenderExrRead_zip1(benchmark::State& s) { exrRead(s, inputs().render, "zip:1", "r.exr"); }
+void BM_RenderExrRead_rle(benchmark::State& s) { exrRead(s, inputs().render, kRenderExrCompression, "r.exr"); }
 void BM_DiffExrWrite_zip6(benchmark::State& s) { exrWrite(s, inputs().diff, "zip", "d.exr"); }
 void BM_DiffExrWrite_piz(benchmark::State& s) { exrWrite(s, inputs().diff, kDifferenceExrCompression, "d.exr"); }
 void BM_HeatPngWrite_level6_allFilters(benchmark::State& s) { pngWrite(s, 6, 0); }
@@ -106,8 +111,13 @@ void BM_HeatPngWrite_level1_noFilter(benchmark::State& s) { pngWrite(s, kPngZlib
 
 BENCHMARK(BM_RenderExrWrite_zip6)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 BENCHMARK(BM_RenderExrWrite_zip1)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+BENCHMARK(BM_RenderExrWrite_none)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+BENCHMARK(BM_RenderExrWrite_rle)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+BENCHMARK(BM_RenderExrWrite_piz)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+BENCHMARK(BM_RenderExrRead_none)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 BENCHMARK(BM_RenderExrRead_zip6)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 BENCHMARK(BM_RenderExrRead_zip1)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+BENCHMARK(BM_RenderExrRead_rle)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 BENCHMARK(BM_DiffExrWrite_zip6)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 BENCHMARK(BM_DiffExrWrite_piz)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 BENCHMARK(BM_HeatPngWrite_level6_allFilters)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();

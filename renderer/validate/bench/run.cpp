@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -13,6 +14,8 @@
 
 #include "files/atomic_write.h"
 #include "files/scratch_folder.h"
+#include "image/image.h"
+#include "process/run_process.h"
 #include "render/renderer.h"
 #include "renderers/registry.h"
 #include "scene/scene_loader.h"
@@ -27,6 +30,48 @@ std::string ms(const Spread& s) {
   std::snprintf(buf, sizeof buf, "%9.2f ms  (%.2f..%.2f, n=%zu)", s.median * 1e3, s.min * 1e3,
                 s.max * 1e3, s.n);
   return buf;
+}
+
+// The targets of issue #35 (docs/performance.md, "Targets"): one line
+// each, the target and the measured figure, or why it was not measured.
+struct Target {
+  const char* what;
+  std::string measured;  // empty: not measured
+  bool met = false;
+  std::string why_not;   // when not measured
+};
+void printTargets(const std::vector<Target>& targets, nlohmann::ordered_json& out) {
+  std::printf("  targets:\n");
+  for (const Target& t : targets) {
+    const std::string verdict = t.measured.empty() ? "not measured: " + t.why_not : t.met ? "met" : "not met";
+    std::printf("    %-62s %s%s%s\n", t.what, t.measured.c_str(), t.measured.empty() ? "" : "  ", verdict.c_str());
+    out["targets"].push_back({{"target", t.what}, {"measured", t.measured}, {"met", !t.measured.empty() && t.met},
+                              {"measured_at_all", !t.measured.empty()}});
+  }
+}
+
+std::string fmt(const char* f, double a, double b = 0) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, f, a, b);
+  return buf;
+}
+
+// Runs `argv` `runs` times (no shell; xval itself), each with its own
+// time-out; the wall times. Throws naming the command and its log when a
+// run fails: a failed run is an error, never a figure.
+std::vector<double> timeProcess(const std::vector<std::string>& argv, const std::filesystem::path& dir, int runs,
+                                double timeout_seconds) {
+  std::vector<double> wall;
+  for (int k = 0; k < runs; ++k) {
+    const ProcessResult r = runProcess(argv, dir, dir / "process.log", timeout_seconds);
+    if (!r.ok()) {
+      std::string cmd;
+      for (const std::string& a : argv) cmd += (cmd.empty() ? "" : " ") + a;
+      throw std::runtime_error("xval bench: " + cmd + ": " + r.describe() + " (log " + r.log.string() + ")");
+    }
+    wall.push_back(r.seconds);
+  }
+  return wall;
 }
 
 }  // namespace
@@ -46,7 +91,7 @@ int runBench(const BenchRequest& request) {
   out["hardware_threads"] = std::thread::hardware_concurrency();
   std::printf("xval bench %s (%dx%d), %u hardware threads\n", scene.name.c_str(),
               scene.camera.width, scene.camera.height, std::thread::hardware_concurrency());
-  std::map<std::string, double> medians;
+  std::map<std::string, double> medians, cpu_medians;
   const std::string reference_id = registry.reference().id;
   if (wants(reference_id)) {
     RenderOptions o = defaultOptions(scene);
@@ -76,7 +121,81 @@ int runBench(const BenchRequest& request) {
                   {"cpu_median_s", sc.median}, {"visibility", stats.visibility},
                   {"culled_triangles", stats.culled_triangles},
                   {"frames", s.n}, {"setup_s", prepared.setupSeconds()}, {"spp", o.spp}};
+      // Validate-style: the frame a validate run renders (every diagnostic
+      // channel), with the precision probes and without them (their cost).
+      Image diag_img(scene.camera.width, scene.camera.height, true);
+      RenderOptions od = o;
+      od.diagnostics = true;
+      for (const bool probes : {true, false}) {
+        od.precision_probes = probes;
+        RenderStats ds;
+        prepared.render(od, diag_img, &ds);  // warm-up
+        const FrameTimes dt = timeFrames([&] { prepared.render(od, diag_img, &ds); }, FrameBudget{request.frames},
+                                         WarmUp::AlreadyDone);
+        const Spread dw = spread(dt.wall_s), dc = spread(dt.cpu_s);
+        const std::string dk = key + (probes ? "_diagnostics" : "_diagnostics_no_probes");
+        medians[dk] = dw.median;
+        cpu_medians[dk] = dc.median;
+        std::printf("  %-18s frame %s   CPU time %s\n", dk.c_str(), ms(dw).c_str(), ms(dc).c_str());
+        out[dk] = {{"frame_median_s", dw.median}, {"frame_min_s", dw.min}, {"frame_max_s", dw.max},
+                   {"cpu_median_s", dc.median}, {"frames", dw.n}};
+        if (probes) {
+          std::printf("  %-18s of which the edge-fraction pass %.2f ms (last frame)\n", "",
+                      ds.edge_fraction_seconds * 1e3);
+          out[dk]["edge_fraction_s"] = ds.edge_fraction_seconds;
+        }
+      }
+      cpu_medians[key] = sc.median;
     }
+    // The whole process of `xval render` with its default outputs (the
+    // scene's precision, every diagnostic channel, the EXR), and without
+    // diagnostics; the process start-up alone (`xval --version`); and, in
+    // this process, the stages of that render: scene load, set-up, frame,
+    // EXR write (with its read-back).
+    const ScratchFolder scratch("bench-process");
+    const std::filesystem::path dir = scratch.dir();
+    const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
+    const std::string scene_path = std::filesystem::absolute(request.scene_file).string();
+    const std::string out_exr = (dir / "render.exr").string();
+    std::vector<std::string> render_argv = {self, "render", scene_path, "-o", out_exr, "-q", "--allow-large"};
+    if (request.threads) render_argv.insert(render_argv.end(), {"--threads", std::to_string(request.threads)});
+    std::vector<std::string> plain_argv = render_argv;
+    plain_argv.push_back("--no-diagnostics");
+    const Spread whole = spread(timeProcess(render_argv, dir, request.runs, request.timeout_seconds));
+    const Spread plain = spread(timeProcess(plain_argv, dir, request.runs, request.timeout_seconds));
+    const Spread start = spread(timeProcess({self, "--version"}, dir, request.runs, request.timeout_seconds));
+    medians["xval_render_process"] = whole.median;
+    std::printf("  %-18s whole process %s   (default outputs, %s)\n", "xval_render", ms(whole).c_str(),
+                toString(scene.render.precision));
+    std::printf("  %-18s whole process %s   (--no-diagnostics)\n", "", ms(plain).c_str());
+    std::printf("  %-18s whole process %s   (xval --version: start-up and exit)\n", "", ms(start).c_str());
+    // The stages, once each, in this process (wall; start-up excluded).
+    using Clock = std::chrono::steady_clock;
+    auto since = [](Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); };
+    auto t0 = Clock::now();
+    const Scene loaded = loadScene(request.scene_file, unlimitedBudget());
+    const double load_s = since(t0);
+    RenderOptions po = defaultOptions(loaded);
+    po.threads = request.threads;
+    t0 = Clock::now();
+    PreparedScene prepared(loaded, po.precision);
+    const double setup_s = since(t0);
+    Image img(loaded.camera.width, loaded.camera.height, true);
+    t0 = Clock::now();
+    prepared.render(po, img);
+    const double frame_s = since(t0);
+    t0 = Clock::now();
+    writeImage(img, dir / "stage.exr");
+    const double write_s = since(t0);
+    std::printf("  %-18s stages: scene load %.1f ms, set-up %.1f ms, frame with diagnostics %.1f ms, "
+                "EXR write and read-back %.1f ms (%.1f MB)\n",
+                "", load_s * 1e3, setup_s * 1e3, frame_s * 1e3, write_s * 1e3,
+                double(std::filesystem::file_size(dir / "stage.exr")) / 1e6);
+    out["xval_render"] = {{"process_median_s", whole.median}, {"process_min_s", whole.min},
+                          {"process_max_s", whole.max}, {"no_diagnostics_process_median_s", plain.median},
+                          {"startup_process_median_s", start.median}, {"runs", whole.n},
+                          {"stages", {{"load_s", load_s}, {"setup_s", setup_s}, {"frame_s", frame_s},
+                                      {"exr_write_s", write_s}}}};
   }
   for (const renderers::Renderer& renderer : registry.all()) {
     if (renderer.reference || !wants(renderer.id) || !renderer.prepare_frames) continue;
@@ -127,6 +246,42 @@ int runBench(const BenchRequest& request) {
       out["ratios_to_reference_float"][k] = v / base;
     }
   }
+  // The targets (issue #35).
+  std::vector<Target> targets;
+  {
+    Target t{"reference float frame <= 3 ms (wall median, 1 spp as asked)", "", false, ""};
+    if (medians.count(base_key)) {
+      t.measured = fmt("%.2f ms", medians[base_key] * 1e3);
+      t.met = medians[base_key] <= 3e-3;
+    } else
+      t.why_not = "the float path was not timed (--precision, --renderers)";
+    targets.push_back(t);
+  }
+  {
+    Target t{"xval render whole process >= 5x faster than POV-Ray's", "", false, ""};
+    if (medians.count("xval_render_process") && medians.count("povray_process")) {
+      const double x = medians["povray_process"] / medians["xval_render_process"];
+      t.measured = fmt("%.1fx (%.0f ms", x, medians["xval_render_process"] * 1e3) +
+                   fmt(" vs %.0f ms)", medians["povray_process"] * 1e3);
+      t.met = x >= 5.0;
+    } else
+      t.why_not = "needs reference and povray in --renderers";
+    targets.push_back(t);
+  }
+  for (const char* p : {"float", "double"}) {
+    const std::string with = reference_id + "_" + p + "_diagnostics", without = with + "_no_probes";
+    Target t{p[0] == 'f' ? "precision probes <= 10% of the validate-style float frame"
+                         : "precision probes <= 10% of the validate-style double frame",
+             "", false, ""};
+    if (cpu_medians.count(with) && cpu_medians.count(without) && cpu_medians[with] > 0) {
+      const double share = (cpu_medians[with] - cpu_medians[without]) / cpu_medians[with];
+      t.measured = fmt("%.0f%% of its CPU time", share * 100.0);
+      t.met = share <= 0.10;
+    } else
+      t.why_not = "this path was not timed (--precision, --renderers)";
+    targets.push_back(t);
+  }
+  printTargets(targets, out);
   if (!request.json.empty()) writeFileAtomically(request.json, out.dump(2) + "\n");
   return 0;
 }

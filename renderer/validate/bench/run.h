@@ -17,6 +17,17 @@
 // diagnostics (what an interactive renderer redoes every frame; the paper's
 // Table 2 counts the same). Frame figures are wall-clock and the process's
 // CPU time (all threads); on a busy machine only the CPU time means much.
+// With the reference renderer also, per precision, the validate-style
+// frame (diagnostics on: every channel a validate run's render has) with
+// the precision probes and without them (RenderOptions::precision_probes:
+// what they cost); then the whole process of `xval render SCENE -o X.exr`
+// (the scene's precision, default outputs), the same with
+// --no-diagnostics, and `xval --version` (start-up and exit), each `runs`
+// times, run as child processes of this xval (/proc/self/exe); and that
+// render's stages timed once in this process (scene load, set-up, frame,
+// EXR write with its read-back). Last, one line per target of
+// docs/performance.md ("Targets"): the target, the measured figure, met or
+// not, or why it was not measured.
 // Every figure is the median over the repetitions with its spread
 // (min..max); ratios are of medians, against the reference float frame.
 //

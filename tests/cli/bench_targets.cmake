@@ -1,0 +1,36 @@
+# xval bench prints, beside the frames, the validate-style frames (with and
+# without the precision probes), the whole process of `xval render` with
+# its stages, and one line per performance target (docs/performance.md,
+# "Targets") with the measured figure; --json holds the same.
+# Arguments: XVAL, SCENE (a small scene file), WORK.
+foreach(_v XVAL SCENE WORK)
+  if(NOT DEFINED ${_v})
+    message(FATAL_ERROR "bench_targets.cmake: -D${_v}=... is required")
+  endif()
+endforeach()
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+include(${CMAKE_CURRENT_LIST_DIR}/xval_run.cmake)
+run_xval(0 _o bench ${SCENE} --renderers reference --frames 1 --runs 1 --json ${WORK}/bench.json)
+foreach(_p float double)
+  expect("${_o}" "reference_${_p}_diagnostics +frame +[0-9.]+ ms" "the ${_p} validate-style frame")
+  expect("${_o}" "reference_${_p}_diagnostics_no_probes +frame +[0-9.]+ ms" "the ${_p} frame without probes")
+  expect("${_o}" "precision probes <= 10% of the validate-style ${_p} frame +[0-9]+% of its CPU time +(met|not met)"
+         "the ${_p} probes target")
+endforeach()
+expect("${_o}" "xval_render +whole process +[0-9.]+ ms" "the whole process of xval render")
+expect("${_o}" "stages: scene load [0-9.]+ ms, set-up [0-9.]+ ms, frame with diagnostics [0-9.]+ ms, EXR write"
+       "the render's stages")
+expect("${_o}" "reference float frame <= 3 ms \\(wall median, 1 spp as asked\\) +[0-9.]+ ms +(met|not met)"
+       "the float frame target")
+# POV-Ray was not asked for: the process target says why it has no figure.
+expect("${_o}" "5x faster than POV-Ray's +not measured: needs reference and povray" "the process target")
+file(READ ${WORK}/bench.json _j)
+string(JSON _n LENGTH "${_j}" targets)
+if(NOT _n EQUAL 4)
+  message(FATAL_ERROR "bench.json: ${_n} targets, expected 4:\n${_j}")
+endif()
+string(JSON _s GET "${_j}" xval_render process_median_s)
+if(NOT _s GREATER 0)
+  message(FATAL_ERROR "bench.json: xval_render.process_median_s is ${_s}, expected > 0")
+endif()
