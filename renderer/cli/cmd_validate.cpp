@@ -66,75 +66,80 @@
 // default $XDG_CACHE_HOME/xval/exports or ~/.cache/xval/exports;
 // --no-export-cache exports every scene.
 //
+// This file parses the arguments into a ValidateRequest; the run itself,
+// which step and in what order, is validation::run
+// (validate/validation/validate_run.h).
+//
 // Scenes into a folder that holds an earlier run: those cases are updated
 // and the folder's other cases kept (compared again from their renders,
 // not rendered again), or dropped with the reason on stderr when their
 // scene file is gone or changed (validate/validation/plan_update.h).
-#include <algorithm>
 #include <cstdio>
 #include <functional>
 #include <memory>
-#include <optional>
-#include <thread>
+#include <stdexcept>
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/renderer_file_option.h"
-#include "files/atomic_write.h"
-#include "process/job_pool.h"
-#include "renderers/export_cache.h"
-#include "renderers/registry.h"
-#include "scene/json_reader.h"
-#include "scene/scene_loader.h"
-#include "validate/junit_report.h"
-#include "validate/results_shape.h"
 #include "common/export_common.h"
+#include "process/job_pool.h"
+#include "renderers/registry.h"
+#include "validate/report.h"
 #include "validate/tolerances.h"
-#include "validate/validation/compare_step.h"
 #include "validate/validation/plan.h"
-#include "validate/validation/plan_update.h"
-#include "validate/validation/run_job.h"
+#include "validate/validation/validate_run.h"
 
 namespace xval::cli {
 
 namespace {
 namespace v = xval::validation;
 
-// After the compare step: the JUnit XML of its results.json, when asked
-// for. The compare step's exit status stands; a JUnit file that cannot be
-// written is an error (2).
-int withJunit(const v::Plan& plan, int status, const std::string& junit) {
-  if (junit.empty()) return status;
-  const std::filesystem::path results = plan.dir / "results.json";
-  const auto r = parseOrderedJsonText(readJsonFile(results, "results file"), results.string());
-  checkResultsShape(r, results.string());  // as the report reads it (validate/results_shape.h)
-  writeFileAtomically(junit, junitXml(nlohmann::json(r), plan.dir.lexically_normal().filename().empty() ? std::string("xval validate") : plan.dir.lexically_normal().filename().string()));
-  std::fprintf(stderr, "xval validate: wrote %s\n", junit.c_str());
-  return status;
+// validate's arguments as parsed.
+struct Args {
+  std::vector<std::string> inputs, renderers;
+  std::string dir, tolerances, plan, extremes, tradeoff, junit;
+  int jobs = 0;
+  size_t batch = 0;
+  std::string schedule = "load";
+  long run_job = -1;
+  std::string run_jobs;
+  bool resume = false, plan_only = false, compare_only = false, no_export_cache = false;
+  std::string export_cache;
+  double timeout = kDefaultToolTimeoutSeconds;
+  BudgetOptions budget;
+};
+
+// The request the parsed arguments make (validate/validation/validate_run.h).
+v::ValidateRequest requestOf(const Args& a, const std::vector<std::string>& renderer_files) {
+  v::ValidateRequest r;
+  r.inputs = a.inputs;
+  r.output = a.dir;
+  r.tolerances = a.tolerances;
+  r.renderers = a.renderers;
+  r.timeout_seconds = a.timeout;
+  r.budget = a.budget.get();
+  r.resume = a.resume;
+  r.plan_only = a.plan_only;
+  r.plan = a.plan;
+  if (a.run_job >= 0) r.run_job = size_t(a.run_job);
+  r.run_jobs = a.run_jobs;
+  r.compare_only = a.compare_only;
+  r.settings.workers = a.jobs > 0 ? a.jobs : defaultWorkers();
+  r.settings.batch = a.batch;
+  r.settings.by_load = a.schedule == "load";
+  if (!a.extremes.empty()) r.sections.extremes = a.extremes;
+  if (!a.tradeoff.empty()) r.sections.tradeoff = a.tradeoff;
+  r.junit = a.junit;
+  r.renderer_files = renderer_files;
+  r.export_cache = !a.no_export_cache;
+  r.export_cache_dir = a.export_cache;
+  return r;
 }
 }  // namespace
 
 void addValidateCommand(CLI::App& app, std::function<int()>& run) {
-  struct Args {
-    std::vector<std::string> inputs, renderers;
-    std::string dir, tolerances, plan, extremes, tradeoff, junit;
-    int jobs = 0;
-    size_t batch = 0;
-    std::string schedule = "load";
-    long run_job = -1;
-    std::string run_jobs;
-    bool resume = false, plan_only = false, compare_only = false, no_export_cache = false;
-    std::string export_cache;
-    double timeout = kDefaultToolTimeoutSeconds;
-    BudgetOptions budget;
-  };
   auto args = std::make_shared<Args>();
-  auto sections = [](const Args& a) {
-    ReportSections s;
-    if (!a.extremes.empty()) s.extremes = a.extremes;
-    if (!a.tradeoff.empty()) s.tradeoff = a.tradeoff;
-    return s;
-  };
   CLI::App* cmd = app.add_subcommand(
       "validate",
       "Render scenes with every renderer validate runs (default: " +
@@ -231,7 +236,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
   run_jobs->excludes(compare_only)->excludes(run_job);
   plan->excludes(plan_only)->excludes(resume);
   auto renderer_files = addRendererFileOption(cmd);
-  cmd->callback([args, &run, cmd, sections, renderer_files]() {
+  cmd->callback([args, &run, cmd, renderer_files]() {
     // Scheduling: for a plain run and --run-jobs.
     const bool schedule_given = cmd->count("--jobs") + cmd->count("--batch") + cmd->count("--schedule") > 0;
     // --compare-only takes --jobs (cases compared at once), not the others.
@@ -239,112 +244,20 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
     const bool local_options_given = cmd->count("--renderers") + cmd->count("--timeout") + cmd->count("--max-triangles") +
                                          cmd->count("--max-samples") + cmd->count("--max-memory-mb") +
                                          cmd->count("--allow-large") > 0;
-    run = [args, schedule_given, only_jobs_given, local_options_given, sections, renderer_files]() -> int {
-      auto settingsOf = [](const Args& a) {
-        v::RunSettings settings;
-        settings.workers = a.jobs > 0 ? a.jobs : defaultWorkers();
-        settings.batch = a.batch;
-        settings.by_load = a.schedule == "load";
-        return settings;
-      };
+    // With --plan, what a new run takes comes from the plan: given again,
+    // it is an error, not ignored.
+    const bool plan_step_options_wrong =
+        !args->plan.empty() &&
+        (!args->inputs.empty() || !args->dir.empty() || !args->tolerances.empty() || local_options_given ||
+         (schedule_given && args->run_jobs.empty() && !(args->compare_only && only_jobs_given)));
+    v::ValidateRequest r = requestOf(*args, *renderer_files);
+    run = [r, plan_step_options_wrong]() -> int {
       try {
-        if (!args->plan.empty() && !renderer_files->empty())
-          throw std::runtime_error("--plan " + args->plan +
-                                   ": the renderer files come from the plan (recorded with their SHA-256 when it "
-                                   "was made); give no --renderer-file");
-        renderers::registerRendererFiles(*renderer_files);
-        if (!args->no_export_cache)
-          renderers::setExportCache({args->export_cache.empty() ? renderers::defaultExportCacheFolder()
-                                                                : std::filesystem::path(args->export_cache),
-                                     renderers::kDefaultExportCacheBytes});
-        if (!args->plan.empty()) {
-          if (args->run_job < 0 && args->run_jobs.empty() && !args->compare_only)
-            throw std::runtime_error("--plan " + args->plan +
-                                     ": say what to do: --run-job K, --run-jobs LIST or --compare-only");
-          if (!args->inputs.empty() || !args->dir.empty() || !args->tolerances.empty() ||
-              local_options_given ||
-              (schedule_given && args->run_jobs.empty() && !(args->compare_only && only_jobs_given)))
-            throw std::runtime_error("--plan " + args->plan +
-                                     ": scenes, -o, --renderers, --tolerances, --timeout and the budget options come from the plan "
-                                     "(and --jobs, --batch and --schedule are for a plain run or --run-jobs, --jobs also for --compare-only); give none of them");
-          const v::Plan plan = v::readPlan(args->plan);
-          // Jobs of one plan run side by side (a cluster array): they share
-          // the folder; a plain run, --plan-only or --compare-only excludes
-          // every other writer.
-          const FolderLock folder_lock(plan.dir,
-                                       args->compare_only ? FolderLock::Mode::Exclusive : FolderLock::Mode::Shared,
-                                       "xval validate");
-          if (args->compare_only)
-            return withJunit(plan, v::compareAndReport(plan, sections(*args), settingsOf(*args).workers), args->junit);
-          if (!args->extremes.empty() || !args->tradeoff.empty())
-            throw std::runtime_error("--extremes and --tradeoff are for the compare step (a plain run or "
-                                     "--compare-only), not --run-job");
-          if (!args->run_jobs.empty()) {
-            const std::vector<size_t> list = v::parseJobList(args->run_jobs, plan.jobs.size());
-            const std::vector<v::JobRecord> recs = v::runJobs(plan, list, settingsOf(*args));
-            const size_t failed = size_t(std::count_if(recs.begin(), recs.end(),
-                                                       [](const v::JobRecord& r) { return !r.error.empty(); }));
-            std::fprintf(stderr, "xval validate: jobs %s: %zu of %zu ok, %zu failed (errors in their records)\n",
-                         args->run_jobs.c_str(), list.size() - failed, list.size(), failed);
-            return failed == 0 ? 0 : 2;
-          }
-          if (size_t(args->run_job) >= plan.jobs.size())
-            throw std::runtime_error("--run-job " + std::to_string(args->run_job) + ": " + args->plan +
-                                     " has jobs 0 to " + std::to_string(plan.jobs.size() - 1));
-          const v::RenderJob& job = plan.jobs[size_t(args->run_job)];
-          v::JobRecord rec = v::runJob(plan, job);
-          std::fprintf(stderr, "xval validate: job %zu %s %s: %s in %.2f s; wrote %s\n", job.index,
-                       job.scene.c_str(), job.renderer.c_str(),
-                       !rec.error.empty() ? "ERROR" : !rec.not_expressible.empty() ? "not expressible" : "ok",
-                       rec.seconds, (plan.dir / job.record()).c_str());
-          if (!rec.error.empty()) std::fprintf(stderr, "  %s\n", rec.error.c_str());
-          if (!rec.not_expressible.empty()) std::fprintf(stderr, "  %s\n", rec.not_expressible.c_str());
-          for (const std::string& n : rec.notes) std::fprintf(stderr, "  note: %s\n", n.c_str());
-          return rec.error.empty() ? 0 : 2;
-        }
-        if (args->dir.empty()) throw std::runtime_error("-o OUTPUT is required (or --plan with --run-job / --compare-only)");
-        if (args->plan_only && (!args->extremes.empty() || !args->tradeoff.empty()))
-          throw std::runtime_error("--extremes and --tradeoff are for the compare step (a plain run or "
-                                   "--compare-only), not --plan-only");
-        sectionsJson(sections(*args), args->dir);  // a folder with no results fails before any render
-        std::vector<std::string> inputs = args->inputs;
-        if (inputs.empty()) inputs.push_back(toolkitSceneSet().string());
-        v::Plan plan = v::makePlan(inputs, args->tolerances, args->dir, args->timeout, args->budget.get(),
-                                   v::runRenderers(args->renderers));
-        std::filesystem::create_directories(plan.dir);
-        const FolderLock folder_lock(plan.dir, FolderLock::Mode::Exclusive, "xval validate");
-        // The folder's other cases are kept (validate/validation/plan_update.h).
-        if (const std::optional<v::Plan> earlier = v::earlierPlan(plan)) {
-          const v::PlanUpdate update = v::keepEarlierScenes(plan, *earlier);
-          for (const std::string& d : update.dropped) std::fprintf(stderr, "xval validate: earlier case %s\n", d.c_str());
-          if (update.kept)
-            std::fprintf(stderr, "xval validate: keeping %zu earlier cases of %s (compared again, not rendered)\n",
-                         update.kept, plan.dir.c_str());
-        }
-        // A new run: the old verdict must not pass for this run's, even if
-        // this run is killed before it writes its own.
-        v::removeVerdict(plan);
-        v::writePlan(plan);
-        const std::vector<size_t> todo = v::withoutKept(plan, v::jobsToRun(plan, args->resume));
-        if (args->plan_only) {
-          for (size_t k : todo) std::printf("%zu\n", k);
-          std::fprintf(stderr, "xval validate: wrote %s: %zu jobs (%zu scenes, renderers %s), %zu to run\n",
-                       v::planFile(plan.dir).c_str(), plan.jobs.size(), plan.scenes.size(),
-                       renderers::joinNames(plan.renderers).c_str(), todo.size());
-          return 0;
-        }
-        if (args->resume && todo.size() < plan.jobs.size())
-          std::fprintf(stderr, "xval validate: --resume: %zu of %zu jobs done before, %zu to run\n",
-                       plan.jobs.size() - todo.size(), plan.jobs.size(), todo.size());
-        // Each case is compared as soon as its jobs are done, in the same
-        // pool as the renders (run_job.h AfterCase); the verdict is written
-        // once every case is compared (compare_step.h CaseComparer).
-        // The jobs hand their images to the compares (image_handoff.h).
-        v::ImageHandoff images;
-        v::CaseComparer comparer(plan, sections(*args), &images);
-        const v::AfterCase compare_case{[&comparer](size_t k) { comparer.compare(k); }, 1.0, &images};
-        v::runJobs(plan, todo, settingsOf(*args), &compare_case);
-        return withJunit(plan, comparer.finish(), args->junit);
+        if (plan_step_options_wrong)
+          throw std::runtime_error("--plan " + r.plan +
+                                   ": scenes, -o, --renderers, --tolerances, --timeout and the budget options come from the plan "
+                                   "(and --jobs, --batch and --schedule are for a plain run or --run-jobs, --jobs also for --compare-only); give none of them");
+        return v::run(r);
       } catch (const std::exception& e) {
         std::fprintf(stderr, "xval validate: error: %s\n", e.what());
         return 2;

@@ -22,6 +22,7 @@
 #include "renderers/renderer.h"
 #include "scene/json_reader.h"
 #include "scene/scene_loader.h"
+#include "scene/scene_set.h"
 #include "validate/common/provenance.h"
 #include "validate/tolerances.h"
 
@@ -181,10 +182,14 @@ std::vector<SetFile> setFiles(const fs::path& set) {
   const fs::path scenes = root.lexical / "scenes";
   if (!fs::is_directory(scenes))
     throw PackError(set.string() + ": has no scenes/ folder (expected a scene set: SET/scenes/*.json)");
+  // The scenes folder's files as validate finds them (scene/scene_set.h);
+  // each is checked to lie in the set before it is read.
   std::vector<fs::path> jsons;
-  for (const auto& e : fs::directory_iterator(scenes))
-    if (e.path().extension() == ".json") jsons.push_back(e.path());
-  std::sort(jsons.begin(), jsons.end());
+  try {
+    jsons = jsonFilesOf({scenes.string()});
+  } catch (const std::runtime_error& e) {
+    throw PackError(e.what());
+  }
   if (jsons.empty()) throw PackError(scenes.string() + ": no *.json files");
 
   FileList out;

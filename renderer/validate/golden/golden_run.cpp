@@ -15,6 +15,7 @@
 #include "render/renderer.h"
 #include "renderers/registry.h"
 #include "scene/scene_loader.h"
+#include "scene/scene_set.h"
 #include "validate/common/provenance.h"
 #include "validate/tolerances.h"
 
@@ -57,29 +58,9 @@ Render renderForGolden(const renderers::Renderer& r, const Scene& scene, const f
 
 }  // namespace
 
-std::vector<fs::path> goldenSceneFiles(const std::vector<std::string>& inputs) {
-  std::vector<fs::path> out;
-  for (const std::string& in : inputs) {
-    const fs::path p(in);
-    if (fs::is_directory(p)) {
-      std::vector<fs::path> files;
-      for (const auto& e : fs::directory_iterator(p))
-        if (e.path().extension() == ".json" && e.is_regular_file()) files.push_back(e.path());
-      std::sort(files.begin(), files.end());
-      out.insert(out.end(), files.begin(), files.end());
-    } else if (fs::is_regular_file(p)) {
-      out.push_back(p);
-    } else {
-      throw std::runtime_error(in + ": no such scene file or folder");
-    }
-  }
-  if (out.empty()) throw std::runtime_error("no scene files found in " + renderers::joinNames(inputs));
-  return out;
-}
-
 int goldenUpdate(const GoldenRequest& request) {
   const renderers::Renderer& r = sourceRenderer(request.renderer);
-  const std::vector<fs::path> files = goldenSceneFiles(request.inputs);
+  const std::vector<fs::path> files = sceneFiles(request.inputs, "xval golden");
   const renderers::Availability a = renderers::registry().availability(r.id);
   if (!a.available) throw std::runtime_error(r.display_name + " is not available: " + a.reason);
   const ScratchFolder scratch("golden");
@@ -126,7 +107,7 @@ int goldenCheck(const GoldenRequest& request) {
   const Precision precision = request.precision == "float" ? Precision::Float : Precision::Double;
   if (precision == Precision::Float && !r.reference)
     throw std::runtime_error("--precision float: applies to the reference renderer only");
-  const std::vector<fs::path> files = goldenSceneFiles(request.inputs);
+  const std::vector<fs::path> files = sceneFiles(request.inputs, "xval golden");
   const renderers::Availability a = renderers::registry().availability(r.id);
   if (!a.available) throw std::runtime_error(r.display_name + " is not available: " + a.reason);
   const ToleranceFile tf = findToleranceFile(request.tolerances, files);

@@ -27,7 +27,7 @@
 namespace xval::validation {
 
 struct GoldenRequest {
-  std::vector<std::string> inputs;  // scene files or folders (each folder's *.json, sorted)
+  std::vector<std::string> inputs;  // scene files or folders (scene/scene_set.h)
   std::string renderer;             // a registry id; not a golden set itself
   std::string tolerances;           // check only; empty: found by the one rule
   // check only, the reference renderer only: "float" renders the fast path
@@ -37,11 +37,6 @@ struct GoldenRequest {
   double timeout_seconds = kDefaultToolTimeoutSeconds;
   Budget budget;
 };
-
-// The scene files of `inputs` (folders expanded to their *.json, sorted);
-// throws naming an input that is neither a file nor a folder, or when none
-// is found.
-std::vector<std::filesystem::path> goldenSceneFiles(const std::vector<std::string>& inputs);
 
 // Returns 0. Throws on the first error (nothing half-stored: each image and
 // the manifest are written atomically, the manifest after the images).

@@ -21,6 +21,7 @@
 #include "renderers/registry.h"
 #include "scene/json_reader.h"
 #include "scene/scene_lint.h"
+#include "scene/scene_set.h"
 #include "validate/tolerances.h"
 #include "validate/validation/file_fields.h"
 #include "validate/validation/job_record.h"
@@ -42,31 +43,6 @@ struct Fnv {
   }
   std::string hex() const { return fmt::format("{:016x}", h); }
 };
-
-std::vector<fs::path> collectScenes(const std::vector<std::string>& inputs) {
-  std::vector<fs::path> out;
-  for (const auto& in : inputs) {
-    fs::path p(in);
-    if (fs::is_directory(p)) {
-      std::vector<fs::path> files;
-      for (const auto& e : fs::directory_iterator(p))
-        if (e.path().extension() == ".json") {
-          if (const std::string why = nonSceneReason(e.path()); !why.empty())
-            std::fprintf(stderr, "xval validate: skipping %s: %s\n", e.path().c_str(), why.c_str());
-          else
-            files.push_back(e.path());
-        }
-      std::sort(files.begin(), files.end());
-      out.insert(out.end(), files.begin(), files.end());
-    } else if (fs::is_regular_file(p)) {
-      out.push_back(p);
-    } else {
-      throw std::runtime_error(in + ": no such scene file or folder");
-    }
-  }
-  if (out.empty()) throw std::runtime_error("no scene files found");
-  return out;
-}
 
 // The scene's name names its case folder OUT/<name>/: the one scene-name
 // rule for a case folder (sceneNameProblem).
@@ -360,7 +336,7 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
   plan.dir = fs::absolute(dir).lexically_normal();
   if (!plan.dir.has_filename()) plan.dir = plan.dir.parent_path();  // "out/" -> "out"
   checkToolPath(plan.dir);
-  const std::vector<fs::path> scene_files = collectScenes(inputs);
+  const std::vector<fs::path> scene_files = sceneFiles(inputs, "xval validate");  // the rule: scene/scene_set.h
   const ToleranceFile tol_file = findToleranceFile(tolerances, scene_files);  // the rule: tolerances.h
   plan.tolerances = tolerances.empty() ? tol_file.shown() : tolerances;
   plan.tolerances_path = tol_file.path;

@@ -140,7 +140,8 @@ inline constexpr const auto& kOwnFiles = kReservedSceneNames;
 // new compare step, starts with no verdict; the new ones are written last).
 void removeVerdict(const Plan& plan);
 
-// Scene files from files and folders (a folder: its *.json, sorted), loaded
+// Scene files from files and folders (scene/scene_set.h: a folder's *.json,
+// sorted, less those that are not scenes, each said on stderr), loaded
 // and checked (scene names unique and usable as folder names), one job per
 // renderer of `renderers` (runRenderers) the scene is meant for; the others
 // are its left_out, each said on stderr. Throws std::runtime_error /
