@@ -269,7 +269,8 @@ void main() {
 // const int MODEL_<NAME> = <id>; for every model of the registry.
 std::string modelIdConstants() {
   std::string s;
-  for (size_t id = 0; id < kModelCount; ++id) s += "const int " + glslModelConstant(ModelId(id)) + " = " + std::to_string(id) + ";\n";
+  for (size_t id = 0; id < kModelCount; ++id)
+    s += "const int " + glslModelConstant(ModelId(id)) + " = " + std::to_string(id) + ";\n";
   return s;
 }
 

@@ -47,7 +47,9 @@ void materialNumbers(const Visit& f, const std::string& prefix, const Material& 
   std::visit(
       [&]<class M>(const M& mm) {
         model::forEachParam(mm, model::Overloaded{
-                                    [&](const model::NumberParam<M>& p, double v) { f(m + "." + p.name, v, Kind::Number); },
+                                    [&](const model::NumberParam<M>& p, double v) {
+                                      f(m + "." + p.name, v, Kind::Number);
+                                    },
                                     [&](const model::ColourParam<M>& p, const glm::dvec3& v) {
                                       vec(f, m + "." + p.name, v, Kind::Number);
                                     },
