@@ -98,7 +98,7 @@ TEST(LightingModels, EveryModelRoundTripsThroughTheLoaderAndTheWriter) {
 
 TEST(LightingModels, AnUnknownTypeIsRefusedListingEveryModel) {
   try {
-    sceneWith({{"type", "minnaert"}});
+    sceneWith({{"type", "no_such_model"}});
     ADD_FAILURE() << "an unknown model loaded";
   } catch (const SceneError& e) {
     const std::string what = e.what();
