@@ -315,6 +315,19 @@ class LightTerm:
         return value if self.w is None else self.g.mul(self.w, value)
 
 
+# The models this harness builds, by their `model` name in the extras (the
+# registry's names, renderer/shading/model/registry.h); any other name is an
+# error, never another model's graph. tests/unit/lighting_models_test.cpp
+# checks these lists against the registry.
+PHONG_MODELS = ("classic_phong", "yiq_luma")
+FORSYTH_MODELS = ("lambert", "wrap_around", "hemispherical", "bidirectional", "trilight")
+
+
+def unknown_model(t):
+    fail("lighting model %r: this harness builds no node graph for it (it knows %s)"
+         % (t, ", ".join(PHONG_MODELS + FORSYTH_MODELS)))
+
+
 def forsyth(g, k, x):
     t = k["model"]
     if t == "lambert":
@@ -323,6 +336,8 @@ def forsyth(g, k, x):
         return g.scale(k["c0"], g.math("DIVIDE", g.clamp0(g.add(x, k["factor"])), k["wrap_divisor"]))
     if t == "hemispherical":
         return g.vadd(k["c2"], g.scale(k["c0_minus_c2"], g.mul(g.add(x, 1.0), 0.5)))
+    if t not in ("bidirectional", "trilight"):
+        unknown_model(t)
     neg = g.clamp0(g.mul(x, -1.0))
     out = g.vadd(g.scale(k["c0"], g.clamp0(x)), g.scale(k["c2"], neg))
     if t == "trilight":
@@ -338,6 +353,8 @@ def model_colour(g, k, P, N, V, C):
         for lt in lights:
             lt.unit_r_of = N
     t = k["model"]
+    if t not in PHONG_MODELS + FORSYTH_MODELS:
+        unknown_model(t)
     if t == "classic_phong":
         ka, kd, ks, n = k["ka"], k["kd"], k["ks"], k["shininess"]
         if k["course"]:

@@ -86,16 +86,20 @@ Pigment slopeMap(const Light& l, const std::vector<std::pair<double, dvec3>>& po
 
 // The Forsyth models and the diffuse part of classic Phong, per unit light
 // colour, as (N.L, value) breakpoints: piecewise linear in between.
+// One overload per model (a model without one does not compile): a model
+// POV-Ray cannot express throws ExportError here.
 std::vector<std::pair<double, dvec3>> diffuseBreakpoints(const LightingModel& model) {
   using P = std::vector<std::pair<double, dvec3>>;
-  if (auto* m = std::get_if<ClassicPhong>(&model)) return P{{-1, dvec3(0)}, {0, dvec3(0)}, {1, dvec3(m->kd)}};
-  if (auto* m = std::get_if<Lambert>(&model)) return P{{-1, dvec3(0)}, {0, dvec3(0)}, {1, m->c0}};
-  if (auto* m = std::get_if<WrapAround>(&model))
-    return P{{-1, dvec3(0)}, {-m->factor, dvec3(0)}, {1, m->c0}};
-  if (auto* m = std::get_if<Hemispherical>(&model)) return P{{-1, m->c2}, {1, m->c0}};
-  if (auto* m = std::get_if<BiDirectional>(&model)) return P{{-1, m->c2}, {0, dvec3(0)}, {1, m->c0}};
-  if (auto* m = std::get_if<Trilight>(&model)) return P{{-1, m->c2}, {0, m->c1}, {1, m->c0}};
-  return {};
+  return std::visit(
+      model::Overloaded{
+          [](const ClassicPhong& m) { return P{{-1, dvec3(0)}, {0, dvec3(0)}, {1, dvec3(m.kd)}}; },
+          [](const YiqLuma&) { return P{}; },  // its emission is emissionYiq's
+          [](const Lambert& m) { return P{{-1, dvec3(0)}, {0, dvec3(0)}, {1, m.c0}}; },
+          [](const WrapAround& m) { return P{{-1, dvec3(0)}, {-m.factor, dvec3(0)}, {1, m.c0}}; },
+          [](const Hemispherical& m) { return P{{-1, m.c2}, {1, m.c0}}; },
+          [](const BiDirectional& m) { return P{{-1, m.c2}, {0, dvec3(0)}, {1, m.c0}}; },
+          [](const Trilight& m) { return P{{-1, m.c2}, {0, m.c1}, {1, m.c0}}; }},
+      model);
 }
 
 dvec3 ambientSum(const Scene& s) {

@@ -100,31 +100,28 @@ struct ModelUniforms {
   glm::vec3 c0{1}, c1{0}, c2{0};
 };
 
+// u_model is the registry's id (glsl_models.cpp's MODEL_<NAME> constants).
 ModelUniforms modelUniforms(const LightingModel& m) {
   ModelUniforms u;
-  std::visit(
-      [&u](const auto& mm) {
-        using M = std::decay_t<decltype(mm)>;
-        if constexpr (std::is_same_v<M, ClassicPhong>) {
-          u.model = 0, u.course = mm.variant == ClassicPhong::Variant::Course;
-          u.ka = float(mm.ka), u.kd = float(mm.kd), u.ks = float(mm.ks), u.n = float(mm.shininess);
-          u.specular = mm.ks != 0.0;
-        } else if constexpr (std::is_same_v<M, YiqLuma>) {
-          u.model = 1, u.kd = float(mm.kd), u.ks = float(mm.ks), u.n = float(mm.shininess);
-          u.offset = float(mm.luma_offset), u.specular = mm.ks != 0.0;
-        } else if constexpr (std::is_same_v<M, Lambert>) {
-          u.model = 2, u.c0 = glm::vec3(mm.c0);
-        } else if constexpr (std::is_same_v<M, WrapAround>) {
-          u.model = 3, u.c0 = glm::vec3(mm.c0), u.factor = float(mm.factor);
-        } else if constexpr (std::is_same_v<M, Hemispherical>) {
-          u.model = 4, u.c0 = glm::vec3(mm.c0), u.c2 = glm::vec3(mm.c2);
-        } else if constexpr (std::is_same_v<M, BiDirectional>) {
-          u.model = 5, u.c0 = glm::vec3(mm.c0), u.c2 = glm::vec3(mm.c2);
-        } else {
-          u.model = 6, u.c0 = glm::vec3(mm.c0), u.c1 = glm::vec3(mm.c1), u.c2 = glm::vec3(mm.c2);
-        }
-      },
-      m);
+  u.model = int(modelId(m));
+  std::visit(model::Overloaded{
+                 [&u](const ClassicPhong& mm) {
+                   u.course = mm.variant == ClassicPhong::Variant::Course;
+                   u.ka = float(mm.ka), u.kd = float(mm.kd), u.ks = float(mm.ks), u.n = float(mm.shininess);
+                   u.specular = mm.ks != 0.0;
+                 },
+                 [&u](const YiqLuma& mm) {
+                   u.kd = float(mm.kd), u.ks = float(mm.ks), u.n = float(mm.shininess);
+                   u.offset = float(mm.luma_offset), u.specular = mm.ks != 0.0;
+                 },
+                 [&u](const Lambert& mm) { u.c0 = glm::vec3(mm.c0); },
+                 [&u](const WrapAround& mm) { u.c0 = glm::vec3(mm.c0), u.factor = float(mm.factor); },
+                 [&u](const Hemispherical& mm) { u.c0 = glm::vec3(mm.c0), u.c2 = glm::vec3(mm.c2); },
+                 [&u](const BiDirectional& mm) { u.c0 = glm::vec3(mm.c0), u.c2 = glm::vec3(mm.c2); },
+                 [&u](const Trilight& mm) {
+                   u.c0 = glm::vec3(mm.c0), u.c1 = glm::vec3(mm.c1), u.c2 = glm::vec3(mm.c2);
+                 }},
+             m);
   return u;
 }
 

@@ -1,5 +1,6 @@
 #include "gl/glsl_models.h"
 
+#include <cctype>
 #include <string>
 
 namespace xval::gl {
@@ -8,12 +9,14 @@ namespace {
 
 // What both stages share: the inputs' uniforms, the lights, the texture
 // lookups and the models. Kinds: shading 0 flat, 1 gouraud, 2 phong;
-// model 0 classic_phong, 1 yiq_luma, 2 lambert, 3 wrap_around,
-// 4 hemispherical, 5 bidirectional, 6 trilight; light 0 point,
+// model: MODEL_<NAME>, the registry's id (shading/model/registry.h,
+// written by modelIdConstants); light 0 point,
 // 1 directional, 2 spot; texture 0 none (u_base), 1 nearest, 2 bilinear,
 // 3 trilinear (the sampler's LINEAR_MIPMAP_LINEAR on the GL mip chain).
-const char* kCommon = R"GLSL(
+const char* kVersion = R"GLSL(
 #version 450 core
+)GLSL";
+const char* kCommon = R"GLSL(
 
 uniform mat3 u_view;       // rows: right, up', forward (camera/camera.h)
 uniform vec2 u_scale;      // 1 / (tan(fov/2) aspect), 1 / tan(fov/2)
@@ -110,17 +113,18 @@ vec3 yiqToRgb(vec3 yiq) {  // without the listing's saturate: the frame saturate
 
 // ---- Forsyth's family, per unit light colour ---------------------------
 vec3 forsyth(float x) {
-  if (u_model == 2) return u_c0 * clamp0(x);
-  if (u_model == 3) return u_c0 * (clamp0(x + u_factor) / (1.0 + u_factor));
-  if (u_model == 4) return u_c2 + (u_c0 - u_c2) * ((x + 1.0) * 0.5);
-  if (u_model == 5) return u_c0 * clamp0(x) + u_c2 * clamp0(-x);
-  return u_c0 * clamp0(x) + u_c1 * (1.0 - abs(x)) + u_c2 * clamp0(-x);
+  if (u_model == MODEL_LAMBERT) return u_c0 * clamp0(x);
+  if (u_model == MODEL_WRAP_AROUND) return u_c0 * (clamp0(x + u_factor) / (1.0 + u_factor));
+  if (u_model == MODEL_HEMISPHERICAL) return u_c2 + (u_c0 - u_c2) * ((x + 1.0) * 0.5);
+  if (u_model == MODEL_BIDIRECTIONAL) return u_c0 * clamp0(x) + u_c2 * clamp0(-x);
+  if (u_model == MODEL_TRILIGHT) return u_c0 * clamp0(x) + u_c1 * (1.0 - abs(x)) + u_c2 * clamp0(-x);
+  return vec3(0.0);  // not of Forsyth's family: shade() does not call this
 }
 
 // ---- the model at one point (shading/shader.h), unsaturated -------------
 // p: relative to the eye, n: unit normal, v: unit towards the eye, c: C.
 vec3 shade(vec3 p, vec3 n, vec3 v, vec3 c) {
-  if (u_model == 0) {
+  if (u_model == MODEL_CLASSIC_PHONG) {
     if (u_course) {
       vec3 acc = u_ka * u_ambient;
       for (int i = 0; i < u_light_count; ++i) {
@@ -149,7 +153,7 @@ vec3 shade(vec3 p, vec3 n, vec3 v, vec3 c) {
     }
     return c * (u_ka * u_ambient + u_kd * diff) + u_ks * spec;
   }
-  if (u_model == 1) {
+  if (u_model == MODEL_YIQ_LUMA) {
     // Diffuse = saturate(A_Y + kd sum att Y(Lc) saturate(N.L)),
     // Specular = ks sum att Y(Lc) pow(saturate(R.V), n).
     float dsum = 0.0, ssum = 0.0;
@@ -262,15 +266,29 @@ void main() {
 }
 )GLSL";
 
+// const int MODEL_<NAME> = <id>; for every model of the registry.
+std::string modelIdConstants() {
+  std::string s;
+  for (size_t id = 0; id < kModelCount; ++id)
+    s += "const int " + glslModelConstant(ModelId(id)) + " = " + std::to_string(id) + ";\n";
+  return s;
+}
+
 }  // namespace
 
+std::string glslModelConstant(ModelId id) {
+  std::string s = "MODEL_";
+  for (char c : kModelNames[size_t(id)]) s += char(std::toupper((unsigned char)c));
+  return s;
+}
+
 const char* vertexShaderSource() {
-  static const std::string s = std::string(kCommon) + kVertex;
+  static const std::string s = std::string(kVersion) + modelIdConstants() + kCommon + kVertex;
   return s.c_str();
 }
 
 const char* fragmentShaderSource() {
-  static const std::string s = std::string(kCommon) + kFragment;
+  static const std::string s = std::string(kVersion) + modelIdConstants() + kCommon + kFragment;
   return s.c_str();
 }
 

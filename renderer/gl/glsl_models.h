@@ -19,6 +19,10 @@
 // chain, its level of detail), the one lookup not written out here.
 #pragma once
 
+#include <string>
+
+#include "shading/model/registry.h"
+
 namespace xval::gl {
 
 // The shaders' inputs, fixed here once (gl_frame.cpp binds them).
@@ -28,6 +32,12 @@ inline constexpr int kAttribUv = 2;          // vec2: frac(uv0) + (uv_k - uv0) o
 inline constexpr int kAttribFaceNormal = 3;  // vec3: flat shading's normal (shading/flat_normals.h)
 inline constexpr int kLightsBinding = 0;     // the lights' shader storage block
 inline constexpr int kTextureUnit = 0;       // the RGBA32F texture
+
+// The GLSL name of a model's id constant ("MODEL_LAMBERT"): both shaders
+// declare one per model of the registry (shading/model/registry.h), equal
+// to its ModelId, and the shaders' code tests u_model against those names;
+// gl_frame.cpp sets u_model to the scene's ModelId.
+std::string glslModelConstant(ModelId id);
 
 const char* vertexShaderSource();
 const char* fragmentShaderSource();

@@ -389,7 +389,7 @@ std::string JsonReader::requireString(std::string_view key) {
   return string(key, "");
 }
 
-static std::string listChoices(std::initializer_list<std::string_view> allowed) {
+static std::string listChoices(std::span<const std::string_view> allowed) {
   std::string s = "one of";
   bool first = true;
   for (auto a : allowed) {
@@ -403,6 +403,11 @@ static std::string listChoices(std::initializer_list<std::string_view> allowed) 
 
 std::string JsonReader::choice(std::string_view key, std::string fallback,
                                std::initializer_list<std::string_view> allowed) {
+  return choice(key, std::move(fallback), std::span<const std::string_view>(allowed.begin(), allowed.size()));
+}
+
+std::string JsonReader::choice(std::string_view key, std::string fallback,
+                               std::span<const std::string_view> allowed) {
   const json* v = find(key);
   if (!v) return fallback;
   if (v->is_string()) {
@@ -415,6 +420,10 @@ std::string JsonReader::choice(std::string_view key, std::string fallback,
 
 std::string JsonReader::requireChoice(std::string_view key,
                                       std::initializer_list<std::string_view> allowed) {
+  return requireChoice(key, std::span<const std::string_view>(allowed.begin(), allowed.size()));
+}
+
+std::string JsonReader::requireChoice(std::string_view key, std::span<const std::string_view> allowed) {
   if (!has(key)) {
     find(key);
     fail(key, "required field is missing (expected " + listChoices(allowed) + ")");

@@ -12,6 +12,7 @@
 #include <optional>
 #include <set>
 #include <stdexcept>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -60,6 +61,8 @@ class JsonReader {
                      std::initializer_list<std::string_view> allowed);
   std::string requireChoice(std::string_view key,
                             std::initializer_list<std::string_view> allowed);
+  std::string choice(std::string_view key, std::string fallback, std::span<const std::string_view> allowed);
+  std::string requireChoice(std::string_view key, std::span<const std::string_view> allowed);
   bool boolean(std::string_view key, bool fallback);
   std::vector<std::string> stringArray(std::string_view key, bool required);
   std::optional<JsonReader> object(std::string_view key);

@@ -44,23 +44,15 @@ void attenuation(const Visit& f, const std::string& at, const Attenuation& a) {
 void materialNumbers(const Visit& f, const std::string& prefix, const Material& mat) {
   const std::string m = prefix + ".model";
   std::visit(
-      [&](const auto& mm) {
-        using M = std::decay_t<decltype(mm)>;
-        if constexpr (std::is_same_v<M, ClassicPhong>) {
-          f(m + ".ka", mm.ka, Kind::Number), f(m + ".kd", mm.kd, Kind::Number), f(m + ".ks", mm.ks, Kind::Number);
-          f(m + ".shininess", mm.shininess, Kind::Number);
-        } else if constexpr (std::is_same_v<M, YiqLuma>) {
-          f(m + ".kd", mm.kd, Kind::Number), f(m + ".ks", mm.ks, Kind::Number);
-          f(m + ".shininess", mm.shininess, Kind::Number), f(m + ".luma_offset", mm.luma_offset, Kind::Number);
-        } else if constexpr (std::is_same_v<M, Lambert>) {
-          vec(f, m + ".c0", mm.c0, Kind::Number);
-        } else if constexpr (std::is_same_v<M, WrapAround>) {
-          vec(f, m + ".c0", mm.c0, Kind::Number), f(m + ".factor", mm.factor, Kind::Number);
-        } else if constexpr (std::is_same_v<M, Trilight>) {
-          vec(f, m + ".c0", mm.c0, Kind::Number), vec(f, m + ".c1", mm.c1, Kind::Number), vec(f, m + ".c2", mm.c2, Kind::Number);
-        } else {  // hemispherical, bidirectional
-          vec(f, m + ".c0", mm.c0, Kind::Number), vec(f, m + ".c2", mm.c2, Kind::Number);
-        }
+      [&]<class M>(const M& mm) {
+        model::forEachParam(mm, model::Overloaded{
+                                    [&](const model::NumberParam<M>& p, double v) {
+                                      f(m + "." + p.name, v, Kind::Number);
+                                    },
+                                    [&](const model::ColourParam<M>& p, const glm::dvec3& v) {
+                                      vec(f, m + "." + p.name, v, Kind::Number);
+                                    },
+                                    [](const auto&, const auto&) {}});  // a choice: no number
       },
       mat.model);
   if (!mat.texture || mat.texture->source == TextureSpec::Source::Model)
@@ -157,37 +149,29 @@ Bound shadingFactors(const Scene& s, const Material& mat, const std::string& pre
     b.C = {maxChannel(mat.base_color), prefix + ".base_color"};
   }
   const std::string m = prefix + ".model";
+  // K: the sum of the |coefficients| (shading/model/params.h Role), named
+  // by the largest (the first of equals); F: the sum of the |colours|,
+  // named by the one of the largest channel.
   std::visit(
-      [&](const auto& mm) {
-        using M = std::decay_t<decltype(mm)>;
-        auto largest = [&](std::initializer_list<std::pair<const char*, double>> terms, double sum) {
-          const auto* top = terms.begin();
-          for (const auto* t = terms.begin(); t != terms.end(); ++t)
-            if (std::abs(t->second) > std::abs(top->second)) top = t;
-          if (sum > 1.0) b.K = {sum, m + "." + top->first};
-        };
-        if constexpr (std::is_same_v<M, ClassicPhong>) {
-          largest({{"ka", mm.ka}, {"kd", mm.kd}, {"ks", mm.ks}}, mm.ka + mm.kd + mm.ks);
-        } else if constexpr (std::is_same_v<M, YiqLuma>) {
-          largest({{"kd", mm.kd}, {"ks", mm.ks}, {"luma_offset", mm.luma_offset}},
-                  mm.kd + mm.ks + std::abs(mm.luma_offset));
-        } else {  // Forsyth's family
-          glm::dvec3 sum(0.0);
-          const char* top = "c0";
-          double top_v = 0.0;
-          auto add = [&](const char* name, const glm::dvec3& c) {
-            sum += glm::abs(c);
-            if (maxChannel(c) > top_v) top = name, top_v = maxChannel(c);
-          };
-          if constexpr (std::is_same_v<M, Lambert> || std::is_same_v<M, WrapAround>) {
-            add("c0", mm.c0);
-          } else if constexpr (std::is_same_v<M, Trilight>) {
-            add("c0", mm.c0), add("c1", mm.c1), add("c2", mm.c2);
-          } else {
-            add("c0", mm.c0), add("c2", mm.c2);
-          }
-          if (maxChannel(sum) > 1.0) b.F = {maxChannel(sum), m + "." + top};
-        }
+      [&]<class M>(const M& mm) {
+        double k_sum = 0.0, k_top = 0.0;
+        const char* k_field = nullptr;
+        glm::dvec3 f_sum(0.0);
+        double f_top = 0.0;
+        const char* f_field = "c0";
+        model::forEachParam(mm, model::Overloaded{
+                                    [&](const model::NumberParam<M>& p, double v) {
+                                      if (p.role == model::Role::None) return;
+                                      k_sum += std::abs(v);
+                                      if (!k_field || std::abs(v) > k_top) k_field = p.name, k_top = std::abs(v);
+                                    },
+                                    [&](const model::ColourParam<M>& p, const glm::dvec3& c) {
+                                      f_sum += glm::abs(c);
+                                      if (maxChannel(c) > f_top) f_field = p.name, f_top = maxChannel(c);
+                                    },
+                                    [](const auto&, const auto&) {}});  // a choice: no number
+        if (k_sum > 1.0) b.K = {k_sum, m + "." + k_field};
+        if (maxChannel(f_sum) > 1.0) b.F = {maxChannel(f_sum), m + "." + f_field};
       },
       mat.model);
   double top = -1.0;
@@ -233,10 +217,18 @@ Bound shadingFactors(const Scene& s) {
   return worst;
 }
 
+// The specular coefficient (Role::Specular), 0 for a model without one.
 double ksOf(const Material& m) {
-  if (const auto* c = std::get_if<ClassicPhong>(&m.model)) return c->ks;
-  if (const auto* y = std::get_if<YiqLuma>(&m.model)) return y->ks;
-  return 0.0;
+  double ks = 0.0;
+  std::visit(
+      [&]<class M>(const M& mm) {
+        model::forEachParam(mm, model::Overloaded{[&](const model::NumberParam<M>& p, double v) {
+                                                    if (p.role == model::Role::Specular) ks = v;
+                                                  },
+                                                  [](const auto&, const auto&) {}});
+      },
+      m.model);
+  return ks;
 }
 
 // The field of the largest ks ("objects[1].material.model.ks").

@@ -11,6 +11,8 @@
 
 #include <glm/glm.hpp>
 
+#include "shading/model/registry.h"
+
 #include <array>
 #include <concepts>
 #include <cstdint>
@@ -125,35 +127,9 @@ struct TextureSpec {
   std::shared_ptr<const std::vector<std::uint8_t>> embedded;
 };
 
-// --- lighting models (docs/models.md) -----------------------------------
-// Classic Phong. variant Paper (paper eq. 3, seed 003):
-//   F = C (x) (ka A + kd sum att Lc D) + ks sum att Lc S
-// variant Course (seed 004, specular tinted, per-light ambient):
-//   F = C (x) (ka A + sum att Lc (ka + cone (kd D + ks S)))
-struct ClassicPhong {
-  enum class Variant { Paper, Course };
-  Variant variant = Variant::Paper;
-  double ka = 1.0, kd = 1.0, ks = 1.0;
-  double shininess = 55.0;
-};
-
-// The paper's YIQ luma model (Table 1 listing), generalised to several
-// lights by summing before the listing's outer saturate.
-struct YiqLuma {
-  double kd = 1.0, ks = 1.0;
-  double shininess = 55.0;
-  double luma_offset = 0.1;  // the listing's literal "- 0.1"
-};
-
-// Forsyth's family; x = N.L per light; colours multiply the light colour.
-struct Lambert { dvec3 c0{1.0}; };
-struct WrapAround { dvec3 c0{1.0}; double factor = 0.5; };
-struct Hemispherical { dvec3 c0{1.0}; dvec3 c2{0.0}; };
-struct BiDirectional { dvec3 c0{1.0}; dvec3 c2{0.0}; };
-struct Trilight { dvec3 c0{1.0}; dvec3 c1{0.0}; dvec3 c2{0.0}; };
-
-using LightingModel = std::variant<ClassicPhong, YiqLuma, Lambert, WrapAround,
-                                   Hemispherical, BiDirectional, Trilight>;
+// --- lighting models ----------------------------------------------------
+// LightingModel: one alternative per model, each in its own file
+// shading/model/<name>.h, listed once in shading/model/registry.h.
 
 struct Material {
   LightingModel model = ClassicPhong{};
@@ -255,6 +231,5 @@ inline bool hasObjectMaterials(const Scene& s) {
 const char* toString(ShadingMode m);
 const char* toString(Precision p);
 const char* toString(TextureFilter f);
-const char* modelName(const LightingModel& m);
 
 }  // namespace xval

@@ -134,43 +134,28 @@ Light readLight(JsonReader r) {
   return out;
 }
 
+// A model's parameters in its own order (shading/model/params.h), each at
+// its default when the field is absent.
+template <class M> void readParams(JsonReader& r, M& m) {
+  auto range = [](const model::ParamRange& p) { return Range{p.lo, p.hi, p.lo_open, p.hi_open}; };
+  model::forEachParam(m, model::Overloaded{
+                             [&](const model::NumberParam<M>& p, double& v) { v = r.number(p.name, v, range(p.range)); },
+                             [&](const model::ColourParam<M>& p, dvec3& v) { v = r.vec3(p.name, v, range(p.range)); },
+                             [&]<class E, size_t N>(const model::ChoiceParam<M, E, N>& p, E& v) {
+                               std::array<std::string_view, N> names;
+                               for (size_t k = 0; k < N; ++k) names[k] = p.options[k].first;
+                               const std::string s = r.choice(p.name, p.nameOf(v), names);
+                               for (const auto& [n, e] : p.options)
+                                 if (s == n) v = e;
+                             }});
+}
+
 LightingModel readModel(JsonReader r) {
-  std::string type = r.requireChoice(
-      "type", {"classic_phong", "yiq_luma", "lambert", "wrap_around", "hemispherical",
-               "bidirectional", "trilight"});
-  const Range colour = Range::nonNegative();
+  const std::string type = r.requireChoice("type", kModelNames);
   LightingModel out;
-  if (type == "classic_phong") {
-    ClassicPhong m;
-    std::string v = r.choice("variant", "paper", {"paper", "course"});
-    m.variant = v == "paper" ? ClassicPhong::Variant::Paper : ClassicPhong::Variant::Course;
-    m.ka = r.number("ka", m.ka, Range::nonNegative());
-    m.kd = r.number("kd", m.kd, Range::nonNegative());
-    m.ks = r.number("ks", m.ks, Range::nonNegative());
-    m.shininess = r.number("shininess", m.shininess, Range::nonNegative());
-    out = m;
-  } else if (type == "yiq_luma") {
-    YiqLuma m;
-    m.kd = r.number("kd", m.kd, Range::nonNegative());
-    m.ks = r.number("ks", m.ks, Range::nonNegative());
-    m.shininess = r.number("shininess", m.shininess, Range::nonNegative());
-    m.luma_offset = r.number("luma_offset", m.luma_offset);
-    out = m;
-  } else if (type == "lambert") {
-    out = Lambert{r.vec3("c0", dvec3(1.0), colour)};
-  } else if (type == "wrap_around") {
-    WrapAround m;
-    m.c0 = r.vec3("c0", m.c0, colour);
-    m.factor = r.number("factor", m.factor, Range::closed(0.0, 1.0));
-    out = m;
-  } else if (type == "hemispherical") {
-    out = Hemispherical{r.vec3("c0", dvec3(1.0), colour), r.vec3("c2", dvec3(0.0), colour)};
-  } else if (type == "bidirectional") {
-    out = BiDirectional{r.vec3("c0", dvec3(1.0), colour), r.vec3("c2", dvec3(0.0), colour)};
-  } else {
-    out = Trilight{r.vec3("c0", dvec3(1.0), colour), r.vec3("c1", dvec3(0.0), colour),
-                   r.vec3("c2", dvec3(0.0), colour)};
-  }
+  for (size_t id = 0; id < kModelCount; ++id)
+    if (type == kModelNames[id]) out = defaultModel(ModelId(id));
+  std::visit([&](auto& m) { readParams(r, m); }, out);
   r.finish();
   return out;
 }
@@ -543,20 +528,6 @@ const char* toString(TextureFilter f) {
     case TextureFilter::Trilinear: return "trilinear";
   }
   return "?";
-}
-const char* modelName(const LightingModel& m) {
-  // One overload per alternative: the name does not depend on the
-  // variant's order.
-  struct Name {
-    const char* operator()(const ClassicPhong&) const { return "classic_phong"; }
-    const char* operator()(const YiqLuma&) const { return "yiq_luma"; }
-    const char* operator()(const Lambert&) const { return "lambert"; }
-    const char* operator()(const WrapAround&) const { return "wrap_around"; }
-    const char* operator()(const Hemispherical&) const { return "hemispherical"; }
-    const char* operator()(const BiDirectional&) const { return "bidirectional"; }
-    const char* operator()(const Trilight&) const { return "trilight"; }
-  };
-  return std::visit(Name{}, m);
 }
 
 }  // namespace xval

@@ -35,23 +35,21 @@ J shape(const Shape& s) {
           {"uv_repeat", v2(p.uv_repeat)}};
 }
 
+// The model's type and its parameters, in the loader's order
+// (shading/model/params.h).
 J model(const LightingModel& m) {
-  if (auto* p = std::get_if<ClassicPhong>(&m))
-    return {{"type", "classic_phong"},
-            {"variant", p->variant == ClassicPhong::Variant::Paper ? "paper" : "course"},
-            {"ka", p->ka}, {"kd", p->kd}, {"ks", p->ks}, {"shininess", p->shininess}};
-  if (auto* y = std::get_if<YiqLuma>(&m))
-    return {{"type", "yiq_luma"}, {"kd", y->kd}, {"ks", y->ks}, {"shininess", y->shininess},
-            {"luma_offset", y->luma_offset}};
-  if (auto* l = std::get_if<Lambert>(&m)) return {{"type", "lambert"}, {"c0", v3(l->c0)}};
-  if (auto* w = std::get_if<WrapAround>(&m))
-    return {{"type", "wrap_around"}, {"c0", v3(w->c0)}, {"factor", w->factor}};
-  if (auto* h = std::get_if<Hemispherical>(&m))
-    return {{"type", "hemispherical"}, {"c0", v3(h->c0)}, {"c2", v3(h->c2)}};
-  if (auto* b = std::get_if<BiDirectional>(&m))
-    return {{"type", "bidirectional"}, {"c0", v3(b->c0)}, {"c2", v3(b->c2)}};
-  const auto& t = std::get<Trilight>(m);
-  return {{"type", "trilight"}, {"c0", v3(t.c0)}, {"c1", v3(t.c1)}, {"c2", v3(t.c2)}};
+  J j = {{"type", modelName(m)}};
+  std::visit(
+      [&]<class M>(const M& mm) {
+        model::forEachParam(mm, model::Overloaded{
+                                    [&](const model::NumberParam<M>& p, double v) { j[p.name] = v; },
+                                    [&](const model::ColourParam<M>& p, const dvec3& v) { j[p.name] = v3(v); },
+                                    [&]<class E, size_t N>(const model::ChoiceParam<M, E, N>& p, E v) {
+                                      j[p.name] = p.nameOf(v);
+                                    }});
+      },
+      m);
+  return j;
 }
 
 J material(const Material& m, const std::string* texture_path) {

@@ -289,18 +289,29 @@ std::optional<BatchShading> batchShading(const Scene& scene, const Texture* text
   if (scene.material.texture && scene.material.texture->filter == TextureFilter::Trilinear) return std::nullopt;
   if (!scene.normalize_normal) return std::nullopt;  // the listing's normalize(R) is the scalar path's
   BatchShading s;
-  if (const auto* y = std::get_if<YiqLuma>(&scene.material.model)) {
-    s.model = BatchShading::Model::YiqLuma;
-    s.kd = float(y->kd), s.ks = float(y->ks), s.shininess = float(y->shininess);
-    s.luma_offset = float(y->luma_offset);
-    s.specular = y->ks != 0.0;
-  } else if (const auto* c = std::get_if<ClassicPhong>(&scene.material.model);
-             c && c->variant == ClassicPhong::Variant::Paper) {
-    s.model = BatchShading::Model::ClassicPhong;
-    s.ka = float(c->ka), s.kd = float(c->kd), s.ks = float(c->ks), s.shininess = float(c->shininess);
-    s.specular = c->ks != 0.0;
-  } else {
-    return std::nullopt;
+  // The kernel's models; the others are shaded one hit at a time.
+  switch (modelId(scene.material.model)) {
+    case ModelId::YiqLuma: {
+      const auto& y = std::get<YiqLuma>(scene.material.model);
+      s.model = BatchShading::Model::YiqLuma;
+      s.kd = float(y.kd), s.ks = float(y.ks), s.shininess = float(y.shininess);
+      s.luma_offset = float(y.luma_offset);
+      s.specular = y.ks != 0.0;
+      break;
+    }
+    case ModelId::ClassicPhong: {
+      const auto& c = std::get<ClassicPhong>(scene.material.model);
+      if (c.variant != ClassicPhong::Variant::Paper) return std::nullopt;
+      s.model = BatchShading::Model::ClassicPhong;
+      s.ka = float(c.ka), s.kd = float(c.kd), s.ks = float(c.ks), s.shininess = float(c.shininess);
+      s.specular = c.ks != 0.0;
+      break;
+    }
+    case ModelId::Lambert:
+    case ModelId::WrapAround:
+    case ModelId::Hemispherical:
+    case ModelId::BiDirectional:
+    case ModelId::Trilight: return std::nullopt;
   }
   prepareLights<float>(scene.lights, s.ambient, s.lights, eye);
   s.ambient_luma = models::lightLuma(s.ambient);

@@ -72,7 +72,7 @@ template <class T> class Shader {
   V shade(V p, V n, V v, V c) const {
     using namespace models;
     switch (kind_) {
-      case Kind::ClassicPhong: {
+      case ModelId::ClassicPhong: {
         if (course_) {
           V acc = ka_ * ambient_;
           for (const auto& l : lights_) {
@@ -99,7 +99,7 @@ template <class T> class Shader {
         }
         return c * (ka_ * ambient_ + kd_ * diff) + ks_ * spec;
       }
-      case Kind::YiqLuma: {
+      case ModelId::YiqLuma: {
         T dsum = 0, ssum = 0;
         for (const auto& l : lights_) {
           LightSample<T> s = sampleLight(l, p);
@@ -114,7 +114,11 @@ template <class T> class Shader {
         T dl = saturate(ambient_luma_ + kd_ * dsum);
         return yiqLuma(c, dl, ks_ * ssum, offset_);
       }
-      default: {
+      case ModelId::Lambert:
+      case ModelId::WrapAround:
+      case ModelId::Hemispherical:
+      case ModelId::BiDirectional:
+      case ModelId::Trilight: {
         V acc = ambient_;
         for (const auto& l : lights_) {
           LightSample<T> s = sampleLight(l, p);
@@ -124,12 +128,10 @@ template <class T> class Shader {
         return c * acc;
       }
     }
+    return V(0);  // unreachable: the switch covers every ModelId
   }
 
  private:
-  enum class Kind { ClassicPhong, YiqLuma, Lambert, WrapAround, Hemispherical, BiDirectional,
-                    Trilight };
-
   V mirror(V n, V L, T x) const {
     const V r = models::reflect(n, L, x);
     if (!unit_reflection_) return r;
@@ -140,33 +142,36 @@ template <class T> class Shader {
   V forsyth(T x) const {
     using namespace models;
     switch (kind_) {
-      case Kind::Lambert: return c0_ * lambert(x);
-      case Kind::WrapAround: return c0_ * wrapAround(x, factor_);
-      case Kind::Hemispherical: return hemispherical(x, c0_, c2_);
-      case Kind::BiDirectional: return biDirectional(x, c0_, c2_);
-      default: return trilight(x, c0_, c1_, c2_);
+      case ModelId::Lambert: return c0_ * lambert(x);
+      case ModelId::WrapAround: return c0_ * wrapAround(x, factor_);
+      case ModelId::Hemispherical: return hemispherical(x, c0_, c2_);
+      case ModelId::BiDirectional: return biDirectional(x, c0_, c2_);
+      case ModelId::Trilight: return trilight(x, c0_, c1_, c2_);
+      case ModelId::ClassicPhong:
+      case ModelId::YiqLuma: break;  // not of Forsyth's family: shade() does not call this
     }
+    return V(0);
   }
 
-  // Each sets kind_ for its own alternative (not from the variant's order).
+  // One overload per model (a model without one does not compile).
   void setParams(const ClassicPhong& m) {
-    kind_ = Kind::ClassicPhong;
+    kind_ = ModelId::ClassicPhong;
     course_ = m.variant == ClassicPhong::Variant::Course;
     ka_ = T(m.ka), kd_ = T(m.kd), ks_ = T(m.ks), n_ = T(m.shininess);
     specular_ = m.ks != 0.0;
   }
   void setParams(const YiqLuma& m) {
-    kind_ = Kind::YiqLuma;
+    kind_ = ModelId::YiqLuma;
     kd_ = T(m.kd), ks_ = T(m.ks), n_ = T(m.shininess), offset_ = T(m.luma_offset);
     specular_ = m.ks != 0.0;
   }
-  void setParams(const Lambert& m) { kind_ = Kind::Lambert, c0_ = V(m.c0); }
-  void setParams(const WrapAround& m) { kind_ = Kind::WrapAround, c0_ = V(m.c0), factor_ = T(m.factor); }
-  void setParams(const Hemispherical& m) { kind_ = Kind::Hemispherical, c0_ = V(m.c0), c2_ = V(m.c2); }
-  void setParams(const BiDirectional& m) { kind_ = Kind::BiDirectional, c0_ = V(m.c0), c2_ = V(m.c2); }
-  void setParams(const Trilight& m) { kind_ = Kind::Trilight, c0_ = V(m.c0), c1_ = V(m.c1), c2_ = V(m.c2); }
+  void setParams(const Lambert& m) { kind_ = ModelId::Lambert, c0_ = V(m.c0); }
+  void setParams(const WrapAround& m) { kind_ = ModelId::WrapAround, c0_ = V(m.c0), factor_ = T(m.factor); }
+  void setParams(const Hemispherical& m) { kind_ = ModelId::Hemispherical, c0_ = V(m.c0), c2_ = V(m.c2); }
+  void setParams(const BiDirectional& m) { kind_ = ModelId::BiDirectional, c0_ = V(m.c0), c2_ = V(m.c2); }
+  void setParams(const Trilight& m) { kind_ = ModelId::Trilight, c0_ = V(m.c0), c1_ = V(m.c1), c2_ = V(m.c2); }
 
-  Kind kind_ = Kind::ClassicPhong;
+  ModelId kind_ = ModelId::ClassicPhong;
   glm::dvec3 origin_{0};
   std::vector<PreparedLight<T>> lights_;
   V ambient_{0};

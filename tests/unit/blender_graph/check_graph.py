@@ -90,6 +90,20 @@ def check_case(script, case, failures):
     return worst, len(case["samples"])
 
 
+def unknown_model_refused(script, case, failures):
+    """A model the harness does not know stops it with an error (fail():
+    SystemExit 3), never falls through to another model's graph."""
+    k = json.loads(script.GltfData(case["gltf"]).doc["scenes"][0]["extras"]["xval_shading"])
+    k["model"] = "no_such_model"
+    try:
+        script.build_model_material(bpy.NodeTree(), k, object() if k["texture_filter"] is not None else None)
+    except SystemExit as e:
+        if e.code != 3:
+            failures.append("unknown model: exit %s, expected 3" % e.code)
+        return
+    failures.append("unknown model: a node graph was built for model \"no_such_model\"")
+
+
 def main():
     if len(sys.argv) != 3:
         print("usage: check_graph.py RENDER_GLTF_PY CASES_JSON", file=sys.stderr)
@@ -110,6 +124,7 @@ def main():
         boundary += case["boundary_samples"]
     print("%d cases, %d samples (%d exactly on a spot cone); largest relative error by shading: %s"
           % (len(cases), samples, boundary, ", ".join("%s %.3g" % kv for kv in sorted(worst.items()))))
+    unknown_model_refused(script, cases[0], failures)
     if failures:
         print("%d samples disagree with the reference shader:" % len(failures))
         for msg in failures[:40]:
