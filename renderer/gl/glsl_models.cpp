@@ -1,7 +1,12 @@
 #include "gl/glsl_models.h"
 
 #include <cctype>
+#include <cmath>
 #include <string>
+
+#include <fmt/format.h>
+
+#include "colour/yiq.h"
 
 namespace xval::gl {
 
@@ -99,18 +104,8 @@ float listingSpecular(vec3 N, vec3 L, float x, vec3 V) {
   return rv > 0.0 ? pow(rv, u_n) : 0.0;
 }
 
-// ---- YIQ (the listing's RGBtoYIQ / YIQtoRGB, coefficients verbatim) ----
-vec3 rgbToYiq(vec3 c) {
-  return vec3(0.29889531 * c.r + 0.58662247 * c.g + 0.11448223 * c.b,
-              0.59597799 * c.r + -0.27417610 * c.g + -0.32180189 * c.b,
-              0.21147017 * c.r + -0.52261711 * c.g + 0.31114694 * c.b);
-}
-vec3 yiqToRgb(vec3 yiq) {  // without the listing's saturate: the frame saturates once
-  return vec3(yiq.x + 0.95608445 * yiq.y + 0.62088850 * yiq.z,
-              yiq.x - 0.27137664 * yiq.y - 0.64860590 * yiq.z,
-              yiq.x - 1.10561724 * yiq.y + 1.70250126 * yiq.z);
-}
-
+)GLSL";
+const char* kCommonModels = R"GLSL(
 // ---- Forsyth's family, per unit light colour ---------------------------
 vec3 forsyth(float x) {
   if (u_model == MODEL_LAMBERT) return u_c0 * clamp0(x);
@@ -266,6 +261,29 @@ void main() {
 }
 )GLSL";
 
+// The listing's RGBtoYIQ / YIQtoRGB in GLSL, from colour/yiq.h's matrices
+// (8 decimals, as the listing prints them): each row a sum left to right,
+// the first column of YIQ -> RGB (exactly 1) as yiq.x itself.
+std::string yiqFunctions() {
+  const auto& f = colour::kRgbToYiq;
+  const auto& b = colour::kYiqToRgb;
+  static_assert(colour::kYiqToRgb[0][0] == 1.0 && colour::kYiqToRgb[1][0] == 1.0 && colour::kYiqToRgb[2][0] == 1.0,
+                "yiqToRgb writes the first column as yiq.x");
+  auto term = [](double v, const char* x) {  // " + 0.95608445 * yiq.y" or " - 0.27137664 * yiq.y"
+    return fmt::format(" {} {:.8f} * {}", v < 0 ? '-' : '+', std::abs(v), x);
+  };
+  std::string s = "// ---- YIQ (the listing's RGBtoYIQ / YIQtoRGB, coefficients verbatim) ----\n";
+  s += "vec3 rgbToYiq(vec3 c) {\n  return vec3(";
+  for (int r = 0; r < 3; ++r)
+    s += fmt::format("{}{:.8f} * c.r + {:.8f} * c.g + {:.8f} * c.b{}", r ? "              " : "", f[r][0], f[r][1],
+                     f[r][2], r < 2 ? ",\n" : ");\n}\n");
+  s += "vec3 yiqToRgb(vec3 yiq) {  // without the listing's saturate: the frame saturates once\n  return vec3(";
+  for (int r = 0; r < 3; ++r)
+    s += std::string(r ? "              " : "") + "yiq.x" + term(b[r][1], "yiq.y") + term(b[r][2], "yiq.z") +
+         (r < 2 ? ",\n" : ");\n}\n\n");
+  return s;
+}
+
 // const int MODEL_<NAME> = <id>; for every model of the registry.
 std::string modelIdConstants() {
   std::string s;
@@ -283,12 +301,12 @@ std::string glslModelConstant(ModelId id) {
 }
 
 const char* vertexShaderSource() {
-  static const std::string s = std::string(kVersion) + modelIdConstants() + kCommon + kVertex;
+  static const std::string s = std::string(kVersion) + modelIdConstants() + kCommon + yiqFunctions() + kCommonModels + kVertex;
   return s.c_str();
 }
 
 const char* fragmentShaderSource() {
-  static const std::string s = std::string(kVersion) + modelIdConstants() + kCommon + kFragment;
+  static const std::string s = std::string(kVersion) + modelIdConstants() + kCommon + yiqFunctions() + kCommonModels + kFragment;
   return s.c_str();
 }
 

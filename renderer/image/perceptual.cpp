@@ -7,7 +7,7 @@
 
 #include <lcms2.h>
 
-#include "shading/models.h"
+#include "colour/yiq.h"
 
 namespace xval {
 
@@ -53,7 +53,7 @@ double ciede2000(glm::dvec3 lab1, glm::dvec3 lab2) {
 }
 
 double yiqDelta(glm::dvec3 a, glm::dvec3 b) {
-  glm::dvec3 d = models::rgbToYiq(a) - models::rgbToYiq(b);
+  glm::dvec3 d = colour::rgbToYiq(a) - colour::rgbToYiq(b);
   return std::sqrt(0.5053 * d.x * d.x + 0.299 * d.y * d.y + 0.1957 * d.z * d.z);
 }
 
@@ -66,7 +66,7 @@ PerceptualImage perceptualImage(const Image& img) {
   for (size_t i = 0; i < n; ++i) {
     const float* px = &img.rgba[i * 4];
     const glm::dvec3 c(px[0], px[1], px[2]);
-    p.luma[i] = models::luma(c);
+    p.luma[i] = colour::luma(c);
     if (px[3] > 0) p.lab[i] = srgbToLab(c);
   }
   return p;

@@ -10,6 +10,8 @@
 
 #include <cmath>
 
+#include "colour/yiq.h"
+
 namespace xval::models {
 
 template <class T> using vec3 = glm::vec<3, T>;
@@ -80,38 +82,18 @@ template <class T> vec3<T> trilight(T x, vec3<T> c0, vec3<T> c1, vec3<T> c2) {
 }
 
 // ---- YIQ (paper eq. 4-5 and the Table 1 listing) ------------------------
-// The listing's coefficients, verbatim. The rows of kRgbToYiq give Y, I, Q.
-inline constexpr double kRgbToYiq[3][3] = {
-    {0.29889531, 0.58662247, 0.11448223},
-    {0.59597799, -0.27417610, -0.32180189},
-    {0.21147017, -0.52261711, 0.31114694}};
-inline constexpr double kYiqToRgb[3][3] = {
-    {1.0, 0.95608445, 0.62088850},
-    {1.0, -0.27137664, -0.64860590},
-    {1.0, -1.10561724, 1.70250126}};
-
-template <class T> T luma(vec3<T> c) {
-  return T(kRgbToYiq[0][0]) * c.x + T(kRgbToYiq[0][1]) * c.y + T(kRgbToYiq[0][2]) * c.z;
-}
+// The matrices and conversions are colour/yiq.h's.
+using colour::kRgbToYiq;
+using colour::kYiqToRgb;
+using colour::luma;
+using colour::rgbToYiq;
+using colour::yiqToRgb;
 // A light's intensity for the YIQ model: its luma, normalised so that white
 // (1,1,1) is exactly 1 (the listing's luma row sums to 1.00000001).
 template <class T> T lightLuma(vec3<T> c) {
   constexpr double white = kRgbToYiq[0][0] + kRgbToYiq[0][1] + kRgbToYiq[0][2];
   return T(kRgbToYiq[0][0] / white) * c.x + T(kRgbToYiq[0][1] / white) * c.y +
          T(kRgbToYiq[0][2] / white) * c.z;
-}
-template <class T> vec3<T> rgbToYiq(vec3<T> c) {
-  vec3<T> o;
-  for (int r = 0; r < 3; ++r)
-    o[r] = T(kRgbToYiq[r][0]) * c.x + T(kRgbToYiq[r][1]) * c.y + T(kRgbToYiq[r][2]) * c.z;
-  return o;
-}
-// Without the listing's saturate (applied by the caller, once).
-template <class T> vec3<T> yiqToRgb(vec3<T> yiq) {
-  vec3<T> o;
-  for (int r = 0; r < 3; ++r)
-    o[r] = T(kYiqToRgb[r][0]) * yiq.x + T(kYiqToRgb[r][1]) * yiq.y + T(kYiqToRgb[r][2]) * yiq.z;
-  return o;
 }
 
 // The listing's LumaPhongDiffuse, literally: RGB -> YIQ, Y' = Y Dl + S - off,

@@ -221,3 +221,23 @@ TEST(LightingModels, TheSceneFormatDocumentsEveryParameter) {
 }
 
 }  // namespace
+
+// The shaders' YIQ functions are generated from colour/yiq.h's matrices:
+// they print the listing's coefficients as the listing does (the text the
+// gl renderer compiled before they were generated, so its images are
+// unchanged), in both stages.
+TEST(LightingModels, TheShadersYiqFunctionsAreTheListingsMatrices) {
+  const std::string expected =
+      "vec3 rgbToYiq(vec3 c) {\n"
+      "  return vec3(0.29889531 * c.r + 0.58662247 * c.g + 0.11448223 * c.b,\n"
+      "              0.59597799 * c.r + -0.27417610 * c.g + -0.32180189 * c.b,\n"
+      "              0.21147017 * c.r + -0.52261711 * c.g + 0.31114694 * c.b);\n"
+      "}\n"
+      "vec3 yiqToRgb(vec3 yiq) {  // without the listing's saturate: the frame saturates once\n"
+      "  return vec3(yiq.x + 0.95608445 * yiq.y + 0.62088850 * yiq.z,\n"
+      "              yiq.x - 0.27137664 * yiq.y - 0.64860590 * yiq.z,\n"
+      "              yiq.x - 1.10561724 * yiq.y + 1.70250126 * yiq.z);\n"
+      "}\n";
+  EXPECT_NE(std::string(gl::vertexShaderSource()).find(expected), std::string::npos) << gl::vertexShaderSource();
+  EXPECT_NE(std::string(gl::fragmentShaderSource()).find(expected), std::string::npos);
+}
