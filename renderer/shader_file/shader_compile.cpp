@@ -21,10 +21,15 @@ void runTool(const ShaderDefinition& d, const std::vector<std::string>& argv, co
   const ProcessResult r = runProcess(argv, dir, log, d.timeout_s);
   std::string command;
   for (const std::string& w : argv) command += (command.empty() ? "" : " ") + w;
-  if (!r.ok() || !fs::is_regular_file(output) || fs::file_size(output) == 0)
+  if (!r.ok() || !fs::is_regular_file(output) || fs::file_size(output) == 0) {
+    // The messages name the prepared copy: name the user's file (same lines).
+    std::string tail = tailOfFile(log);
+    const std::string copy = (dir / d.source.filename()).string();
+    for (size_t at = tail.find(copy); at != std::string::npos; at = tail.find(copy, at + d.source.string().size()))
+      tail.replace(at, copy.size(), d.source.string());
     throw ExternalToolError(d.name + ": `" + command + "` (compiling " + d.source.string() + ") " +
-                            (r.ok() ? "wrote no " + output.filename().string() : r.describe()) + ":\n" +
-                            tailOfFile(log));
+                            (r.ok() ? "wrote no " + output.filename().string() : r.describe()) + ":\n" + tail);
+  }
 }
 
 std::string readGlsl(const ShaderDefinition& d, const fs::path& p) {
