@@ -6,12 +6,15 @@
 // spirv-cross (shader_file/shader_compile.h, once per process), drawn on
 // the gl renderer's context (gl/shader_frame.h).
 //
-// The draw runs in a forked child (process/run_process.h runForked) with
-// the render's time-out: a shader that never finishes (an infinite loop;
-// llvmpipe has no watchdog) is killed and the render fails "timed out",
-// as does an outside tool; a crash in the driver costs that render only.
-// bench: one such forked render first (so a frame is known to end), then
-// frames in this process.
+// The draw runs in a process of its own, xval-shader-draw beside the xval
+// executable (shader_file/shader_draw_main.cpp), with the render's
+// time-out (process/run_process.h): a shader that does not finish is
+// killed and the render fails "timed out", as an outside tool would; a
+// crash in the driver costs that render only. (Not a fork of this process:
+// an EGL display this process made for gl does not work in a forked child,
+// which then hangs.) Its files go to the render's work folder: the scene,
+// the GLSL, the log. bench: one such render first (so a frame is known to
+// end), then frames in this process.
 //
 // Scenes the shader cannot express (shaderCannotExpress: not one point
 // light, another model or hard-coded parameter, a texture filter the
@@ -19,6 +22,8 @@
 // runs. Version: glslangValidator's. Precision: gl's (float32 on the same
 // driver).
 #include <chrono>
+#include <fstream>
+#include <sstream>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -26,13 +31,16 @@
 #include <optional>
 
 #include "common/export_common.h"
+#include "files/atomic_write.h"
 #include "files/scratch_folder.h"
 #include "gl/egl_context.h"
 #include "gl/shader_frame.h"
 #include "process/run_process.h"
 #include "renderers/renderer.h"
 #include "renderers/renderer_file.h"
+#include "scene/scene_writer.h"
 #include "shader_file/shader_compile.h"
+#include "shader_file/shader_image_bytes.h"
 
 namespace xval::renderers {
 
@@ -40,6 +48,8 @@ namespace {
 
 using shaderfile::ShaderDefinition;
 using shaderfile::ShaderProgramText;
+
+inline constexpr const char* kDrawHelper = "xval-shader-draw";
 
 // The compiled program, made once per process for a definition.
 struct CompiledOnce {
@@ -62,51 +72,48 @@ const ShaderProgramText& compiled(const ShaderDefinition& d, CompiledOnce& once)
   return *once.program;
 }
 
-// An image as bytes and back (the forked draw's result).
-std::string imageBytes(const Image& img) {
-  std::string out(2 * sizeof(int), '\0');
-  std::memcpy(&out[0], &img.width, sizeof(int));
-  std::memcpy(&out[sizeof(int)], &img.height, sizeof(int));
-  out.append(reinterpret_cast<const char*>(img.rgba.data()), img.rgba.size() * sizeof(float));
-  out.append(reinterpret_cast<const char*>(img.raw.data()), img.raw.size() * sizeof(float));
-  return out;
+// The helper beside the running executable (xval's build or install folder).
+std::filesystem::path drawHelper() {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return ec ? std::filesystem::path(kDrawHelper) : self.parent_path() / kDrawHelper;
 }
 
-Image imageFromBytes(const std::string& bytes, int w, int h) {
-  const size_t pixels = size_t(w) * h, expected = 2 * sizeof(int) + pixels * 7 * sizeof(float);
-  int got_w = 0, got_h = 0;
-  if (bytes.size() == expected) {
-    std::memcpy(&got_w, &bytes[0], sizeof(int));
-    std::memcpy(&got_h, &bytes[sizeof(int)], sizeof(int));
+// One frame drawn by xval-shader-draw in `dir`, with the time-out.
+Image renderInHelper(const ShaderDefinition& d, const ShaderProgramText& program, const Scene& scene,
+                     double timeout_seconds, const std::filesystem::path& dir) {
+  namespace fs = std::filesystem;
+  const fs::path helper = drawHelper();
+  if (!fs::is_regular_file(helper))
+    throw ExternalToolError(d.name + ": " + helper.string() + " is missing (xval-shader-draw is built beside xval)");
+  // The scene as xval resolved it; tolerances and renderers are the caller's business.
+  auto json = sceneToJson(scene);
+  json.erase("tolerances");
+  json.erase("renderers");
+  const std::string token = attemptToken();
+  const fs::path scene_file = dir / ("scene-" + token + ".json"), vert = dir / "vert.glsl",
+                 frag = dir / "frag.glsl", out = dir / ("frame-" + token + ".bin"), log = dir / (d.name + ".log");
+  writeFileAtomically(scene_file, json.dump(1) + "\n");
+  writeFileAtomically(vert, program.vertex);
+  writeFileAtomically(frag, program.fragment);
+  const ProcessResult r = runProcess({helper.string(), d.file.string(), scene_file.string(), vert.string(),
+                                      frag.string(), out.string()},
+                                     dir, log, timeout_seconds);
+  if (!r.ok())
+    throw ExternalToolError(d.name + ": the draw (" + d.source.string() + " on OpenGL) " + r.describe() +
+                            (r.timed_out ? " (a shader that does not finish is killed at the render's time-out, "
+                                           "--timeout; llvmpipe ends each loop after 65535 turns but has no "
+                                           "watchdog)"
+                                         : "") +
+                            ":\n" + tailOfFile(log));
+  std::ifstream in(out, std::ios::binary);
+  std::stringstream bytes;
+  bytes << in.rdbuf();
+  try {
+    return shaderfile::imageFromBytes(bytes.str(), scene.camera.width, scene.camera.height);
+  } catch (const std::runtime_error& e) {
+    throw ExternalToolError(d.name + ": " + e.what());
   }
-  if (got_w != w || got_h != h)
-    throw ExternalToolError("the forked draw returned " + std::to_string(bytes.size()) + " bytes, expected a " +
-                            std::to_string(w) + " x " + std::to_string(h) + " image (" + std::to_string(expected) + ")");
-  Image img(w, h, true);
-  std::memcpy(img.rgba.data(), &bytes[2 * sizeof(int)], pixels * 4 * sizeof(float));
-  std::memcpy(img.raw.data(), &bytes[2 * sizeof(int) + pixels * 4 * sizeof(float)], pixels * 3 * sizeof(float));
-  return img;
-}
-
-Image renderForked(const ShaderDefinition& d, const ShaderProgramText& program, const Scene& scene,
-                   double timeout_seconds) {
-  const int w = scene.camera.width, h = scene.camera.height;
-  const ForkedResult f = runForked(
-      [&] {
-        try {
-          return imageBytes(gl::renderWithShader(scene, d, program));
-        } catch (const gl::GlUnavailable& e) {
-          throw std::runtime_error(std::string("gl: unavailable: ") + e.what());
-        }
-      },
-      timeout_seconds, 2 * sizeof(int) + size_t(w) * h * 7 * sizeof(float) + 1);
-  if (!f.process.ok())
-    throw ExternalToolError(d.name + ": the draw (" + d.source.string() + " on OpenGL) " + f.process.describe() +
-                            (f.process.timed_out ? " (a shader that does not finish: llvmpipe has no watchdog, xval "
-                                                   "kills the draw at the render's time-out, --timeout)"
-                                                 : "") +
-                            (f.summary().empty() ? "" : ": " + f.summary()));
-  return imageFromBytes(f.output, w, h);
 }
 
 }  // namespace
@@ -131,14 +138,22 @@ Renderer shaderFileRenderer(const std::filesystem::path& file, const nlohmann::j
   r.render = [def, once](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
     if (const std::string why = shaderfile::shaderCannotExpress(*def, scene); !why.empty()) throw ExportError(why);
     const auto t0 = std::chrono::steady_clock::now();
-    Image img = renderForked(*def, compiled(*def, *once), scene, request.timeout_seconds);
+    const ShaderProgramText& program = compiled(*def, *once);
+    std::optional<ScratchFolder> scratch;
+    if (request.work_dir.empty()) scratch.emplace("shader-draw");
+    const std::filesystem::path dir = scratch ? scratch->dir() : request.work_dir;
+    std::filesystem::create_directories(dir);
+    Image img = renderInHelper(*def, program, scene, request.timeout_seconds, dir);
     if (info) info->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return img;
   };
   r.prepare_frames = [def, once](const Scene& scene) {
     if (const std::string why = shaderfile::shaderCannotExpress(*def, scene); !why.empty()) throw ExportError(why);
     const ShaderProgramText& program = compiled(*def, *once);
-    renderForked(*def, program, scene, kDefaultToolTimeoutSeconds);  // a frame ends before one is timed here
+    {  // a frame ends (within the default time-out) before frames are timed in this process
+      const ScratchFolder scratch("shader-draw");
+      renderInHelper(*def, program, scene, kDefaultToolTimeoutSeconds, scratch.dir());
+    }
     std::shared_ptr<gl::ShaderScene> prepared;
     try {
       prepared = std::make_shared<gl::ShaderScene>(scene, *def, program);

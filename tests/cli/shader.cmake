@@ -11,6 +11,8 @@
 #                             made costly enough (64 sin a turn, 18 s here) to outlast --timeout 4
 #   two_lights_not_expressible a second point light: NOT EXPRESSIBLE with the reason
 #   source_outside_refused    "source": "../..." : an error naming the field (exit 2)
+#   bench_beside_gl           bench times gl and the listing in one process (gl's EGL display made
+#                             first must not reach the shader's draw: a forked draw hung on it)
 # Each broken copy is made from the listing by string(REPLACE) here, and the
 # script fails if the text to replace is not found (the mutation must bite).
 # Arguments: XVAL, LISTING (the .fx), DEFINITION (its .json), SCENE (a small
@@ -86,6 +88,10 @@ elseif(CASE STREQUAL "source_outside_refused")
   run(2 ${XVAL} crosscheck ${SCENE} --renderer paper-listing --renderer-file ${WORK}/shader/inner/outside.json -o ${WORK}/out)
   expect_in("${err}" "source")
   expect_in("${err}" "'..' is refused")
+elseif(CASE STREQUAL "bench_beside_gl")
+  broken("float4x4 World " "float4x4 World ")
+  run(0 ${XVAL} bench ${SCENE} --renderers gl,paper-listing --renderer-file ${def} --frames 2 --runs 1)
+  expect_in("${out}${err}" "paper-listing      frame")
 else()
   message(FATAL_ERROR "unknown CASE ${CASE}")
 endif()
