@@ -102,7 +102,7 @@ Image renderInHelper(const ShaderDefinition& d, const ShaderProgramText& program
   if (!r.ok())
     throw ExternalToolError(d.name + ": the draw (" + d.source.string() + " on OpenGL) " + r.describe() +
                             (r.timed_out ? " (a shader that does not finish is killed at the render's time-out, "
-                                           "--timeout; llvmpipe ends each loop after 65535 turns but has no "
+                                           "--timeout; llvmpipe ends each loop after 65536 turns but has no "
                                            "watchdog)"
                                          : "") +
                             ":\n" + tailOfFile(log));

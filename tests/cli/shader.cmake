@@ -6,8 +6,8 @@
 #   unbound_uniform_error     no "uniforms" mapping for AmbientValue: an error naming it (exit 2)
 #   compile_error             a call glslang refuses: an error naming the file's line (exit 2)
 #   infinite_loop_times_out   a loop that never ends: killed at --timeout, an error (exit 2).
-#                             llvmpipe ends any loop after 65535 iterations (measured: an endless
-#                             loop counting its iterations returned 65536), so the loop's body is
+#                             llvmpipe ends any loop after 65536 turns (measured: an endless
+#                             loop counting its turns returned 65536), so the loop's body is
 #                             made costly enough (64 sin a turn, 18 s here) to outlast --timeout 4
 #   two_lights_not_expressible a second point light: NOT EXPRESSIBLE with the reason
 #   source_outside_refused    "source": "../..." : an error naming the field (exit 2)
