@@ -19,6 +19,7 @@
 #include "geometry/model_textures.h"
 #include "geometry/scene_meshes.h"
 #include "gl/egl_context.h"
+#include "gl/gl_common.h"
 #include "shading/lights.h"
 #include "shading/models.h"
 #include "texture/texture.h"
@@ -28,27 +29,6 @@ namespace xval::gl {
 namespace {
 
 using shaderfile::QuantityType;
-
-void check(const char* what) {
-  if (const GLenum e = glGetError(); e != GL_NO_ERROR)
-    throw std::runtime_error(std::string("OpenGL: ") + what + " failed (GL error " + std::to_string(e) + ")");
-}
-
-GLuint compileStage(GLenum stage, const std::string& source, const char* name) {
-  const GLuint s = glCreateShader(stage);
-  const char* text = source.c_str();
-  glShaderSource(s, 1, &text, nullptr);
-  glCompileShader(s);
-  GLint ok = 0;
-  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[4096] = {};
-    glGetShaderInfoLog(s, sizeof log, nullptr, log);
-    glDeleteShader(s);
-    throw std::runtime_error(std::string("OpenGL: the compiled ") + name + " stage (GLSL 4.50) does not compile: " + log);
-  }
-  return s;
-}
 
 struct Vertex {
   float position[3], normal[3], uv[2];
@@ -88,7 +68,8 @@ struct Block {
 struct ShaderScene::Impl {
   Scene scene;  // the draws' materials point into it
   std::optional<EglContext> context;
-  GLuint program = 0, vao = 0, vbo = 0, fbo = 0, colour_rb = 0, depth_rb = 0;
+  GLuint program = 0, vao = 0, vbo = 0;
+  FrameTargets targets;
   std::vector<GLuint> textures, samplers;
   std::vector<Block> blocks;
   std::vector<UniformSlot> uniforms;
@@ -108,9 +89,7 @@ struct ShaderScene::Impl {
 
   ~Impl() {
     if (!context) return;
-    glDeleteFramebuffers(1, &fbo);
-    glDeleteRenderbuffers(1, &colour_rb);
-    glDeleteRenderbuffers(1, &depth_rb);
+    deleteFrameTargets(targets);
     if (!textures.empty()) glDeleteTextures(GLsizei(textures.size()), textures.data());
     if (!samplers.empty()) glDeleteSamplers(GLsizei(samplers.size()), samplers.data());
     for (Block& b : blocks) glDeleteBuffers(1, &b.buffer);
@@ -206,27 +185,6 @@ const char* typeName(QuantityType q) {
   return "?";
 }
 
-GLuint uploadTexture(const TextureSpec& spec) {
-  const Texture tex = loadTexture(spec);
-  std::vector<float> rgba(size_t(tex.width) * tex.height * 4, 1.0f);
-  for (int y = 0; y < tex.height; ++y)
-    for (int x = 0; x < tex.width; ++x) {
-      const glm::vec3 c = tex.texel(x, y);
-      float* o = &rgba[(size_t(y) * tex.width + x) * 4];
-      o[0] = c.x, o[1] = c.y, o[2] = c.z;
-    }
-  GLsizei levels = 1;
-  while (std::max(tex.width, tex.height) >> levels) ++levels;
-  GLuint t = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &t);
-  glTextureStorage2D(t, levels, GL_RGBA32F, tex.width, tex.height);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureSubImage2D(t, 0, 0, 0, tex.width, tex.height, GL_RGBA, GL_FLOAT, rgba.data());
-  glGenerateTextureMipmap(t);
-  check("uploading a texture");
-  return t;
-}
-
 }  // namespace
 
 ShaderScene::ShaderScene(const Scene& input, const shaderfile::ShaderDefinition& def, const ShaderProgramText& text)
@@ -240,60 +198,39 @@ ShaderScene::ShaderScene(const Scene& input, const shaderfile::ShaderDefinition&
   d.context.emplace();
 
   // The program.
-  const GLuint vs = compileStage(GL_VERTEX_SHADER, text.vertex, "vertex");
+  const GLuint vs = compileStage(GL_VERTEX_SHADER, text.vertex.c_str(), "compiled vertex stage (GLSL 4.50)");
   GLuint fs = 0;
   try {
-    fs = compileStage(GL_FRAGMENT_SHADER, text.fragment, "fragment");
+    fs = compileStage(GL_FRAGMENT_SHADER, text.fragment.c_str(), "compiled fragment stage (GLSL 4.50)");
+    d.program = linkProgram(vs, fs);
   } catch (...) {
     glDeleteShader(vs);
+    if (fs) glDeleteShader(fs);
     throw;
   }
-  d.program = glCreateProgram();
-  glAttachShader(d.program, vs);
-  glAttachShader(d.program, fs);
-  glLinkProgram(d.program);
   glDeleteShader(vs);
   glDeleteShader(fs);
-  GLint linked = 0;
-  glGetProgramiv(d.program, GL_LINK_STATUS, &linked);
-  if (!linked) {
-    char log[4096] = {};
-    glGetProgramInfoLog(d.program, sizeof log, nullptr, log);
-    throw std::runtime_error(std::string("OpenGL: the compiled stages do not link: ") + log);
-  }
 
   // Geometry, world space, one draw per run of meshes of one material.
   const CameraRays cam(scene.camera);
   std::vector<Vertex> vertices;
-  double min_depth = std::numeric_limits<double>::infinity(), max_depth = 0.0;
   const SceneMeshes sm = sceneMeshes(scene);
   const MaterialSlots slots = materialSlots(scene);
-  std::vector<size_t> draw_slot;
-  for (size_t mi = 0; mi < sm.meshes.size(); ++mi) {
-    const TriangleMesh& m = sm.meshes[mi];
-    const size_t slot = slots.object_slot[sm.object[mi]];
-    if (d.draws.empty() || draw_slot.back() != slot) {
-      d.draws.push_back({GLint(vertices.size()), 0, slots.materials[slot], 0});
-      draw_slot.push_back(slot);
-    }
-    for (size_t t = 0; t < m.triangles.size(); ++t) {
-      const glm::dvec2 uv0 = m.uvs[m.triangles[t][0]];
-      for (int k = 0; k < 3; ++k) {
-        const uint32_t i = m.triangles[t][k];
+  const SceneDraws geometry =
+      walkSceneTriangles(sm, slots, cam, [&](size_t mi, size_t, uint32_t i, glm::dvec2 uv) {
+        const TriangleMesh& m = sm.meshes[mi];
         Vertex v{};
         for (int c = 0; c < 3; ++c) v.position[c] = float(m.positions[i][c]), v.normal[c] = float(m.normals[i][c]);
-        const glm::dvec2 uv = (uv0 - glm::floor(uv0)) + (m.uvs[i] - uv0);
         v.uv[0] = float(uv.x), v.uv[1] = float(uv.y);
         vertices.push_back(v);
-        const double z = glm::dot(m.positions[i] - cam.origin, cam.forward);
-        min_depth = std::min(min_depth, z);
-        max_depth = std::max(max_depth, z);
-      }
-    }
-    d.draws.back().count = GLsizei(vertices.size()) - d.draws.back().first;
+      });
+  std::vector<size_t> draw_slot;
+  for (const DrawRun& run : geometry.runs) {
+    d.draws.push_back({run.first, run.count, slots.materials[run.slot], 0});
+    draw_slot.push_back(run.slot);
   }
-  const double near = !(min_depth > 0.0) ? std::max(max_depth, 1.0) * 1e-6 : 0.5 * min_depth;
-  const double far = std::max(2.0 * max_depth, 4.0 * near);
+  const double near = geometry.near;
+  const double far = std::max(2.0 * geometry.max_depth, 4.0 * near);
 
   glCreateVertexArrays(1, &d.vao);
   glCreateBuffers(1, &d.vbo);
@@ -318,7 +255,7 @@ ShaderScene::ShaderScene(const Scene& input, const shaderfile::ShaderDefinition&
     glVertexArrayAttribFormat(d.vao, GLuint(location), it->second == "uv" ? 2 : 3, GL_FLOAT, GL_FALSE, GLuint(offset));
     glVertexArrayAttribBinding(d.vao, GLuint(location), 0);
   }
-  check("uploading the vertices");
+  checkGl("uploading the vertices");
 
   // Scene-wide quantities.
   d.eye = cam.origin;
@@ -378,13 +315,13 @@ ShaderScene::ShaderScene(const Scene& input, const shaderfile::ShaderDefinition&
                                typeName(quantity->type) + ", but its compiled type is GL type " + std::to_string(v[0]));
     d.uniforms.push_back({name, q->second, v[1], v[2], v[3], v[5], v[4] != 0});
   }
-  check("introspecting the uniforms");
+  checkGl("introspecting the uniforms");
 
   // Textures (one per material slot that has one) and one sampler object per unit.
   std::vector<GLuint> slot_texture(slots.materials.size(), 0);
   for (size_t k = 0; k < slots.materials.size(); ++k)
     if (slots.used[k] && slots.materials[k]->texture && !d.sampler_filters.empty()) {
-      slot_texture[k] = uploadTexture(*slots.materials[k]->texture);
+      slot_texture[k] = uploadTextureRgba32f(*slots.materials[k]->texture, true);
       d.textures.push_back(slot_texture[k]);
     }
   for (size_t i = 0; i < d.draws.size(); ++i) d.draws[i].texture = slot_texture[draw_slot[i]];
@@ -397,16 +334,7 @@ ShaderScene::ShaderScene(const Scene& input, const shaderfile::ShaderDefinition&
     glSamplerParameterf(s, GL_TEXTURE_MAX_ANISOTROPY, 1.0f);
   }
 
-  // Targets.
-  glCreateRenderbuffers(1, &d.colour_rb);
-  glNamedRenderbufferStorage(d.colour_rb, GL_RGBA32F, d.width, d.height);
-  glCreateRenderbuffers(1, &d.depth_rb);
-  glNamedRenderbufferStorage(d.depth_rb, GL_DEPTH_COMPONENT32F, d.width, d.height);
-  glCreateFramebuffers(1, &d.fbo);
-  glNamedFramebufferRenderbuffer(d.fbo, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, d.colour_rb);
-  glNamedFramebufferRenderbuffer(d.fbo, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, d.depth_rb);
-  if (glCheckNamedFramebufferStatus(d.fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-    throw std::runtime_error("OpenGL: the RGBA32F + DEPTH32F framebuffer is incomplete");
+  d.targets = makeFrameTargets(d.width, d.height);
 
   glUseProgram(d.program);
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
@@ -418,9 +346,9 @@ ShaderScene::ShaderScene(const Scene& input, const shaderfile::ShaderDefinition&
   glDisable(GL_MULTISAMPLE);
   glDisable(GL_DITHER);
   glViewport(0, 0, d.width, d.height);
-  glBindFramebuffer(GL_FRAMEBUFFER, d.fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, d.targets.fbo);
   glBindVertexArray(d.vao);
-  check("setting the state");
+  checkGl("setting the state");
   d.setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
@@ -430,8 +358,8 @@ void ShaderScene::draw() {
   Impl& d = *impl_;
   const float clear_colour[4] = {0, 0, 0, 0};
   const float clear_depth = 1.0f;
-  glClearNamedFramebufferfv(d.fbo, GL_COLOR, 0, clear_colour);
-  glClearNamedFramebufferfv(d.fbo, GL_DEPTH, 0, &clear_depth);
+  glClearNamedFramebufferfv(d.targets.fbo, GL_COLOR, 0, clear_colour);
+  glClearNamedFramebufferfv(d.targets.fbo, GL_DEPTH, 0, &clear_depth);
   for (const Impl::Draw& dr : d.draws) {
     if (dr.count == 0) continue;
     d.setUniforms(*dr.material);
@@ -448,27 +376,19 @@ void ShaderScene::draw() {
     glDrawArrays(GL_TRIANGLES, dr.first, dr.count);
   }
   glFinish();
-  check("drawing the frame");
+  checkGl("drawing the frame");
 }
 
 Image ShaderScene::drawAndRead() {
   draw();
   const Impl& d = *impl_;
-  const size_t n = size_t(d.width) * d.height;
-  std::vector<float> rows(n * 4), depth(n);
-  glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glNamedFramebufferReadBuffer(d.fbo, GL_COLOR_ATTACHMENT0);
-  glReadPixels(0, 0, d.width, d.height, GL_RGBA, GL_FLOAT, rows.data());
-  glReadPixels(0, 0, d.width, d.height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
-  check("reading the frame back");
-  Image img(d.width, d.height, false);
-  for (int y = 0; y < d.height; ++y)  // GL's row 0 is the bottom
-    for (int x = 0; x < d.width; ++x) {
-      const size_t from = size_t(d.height - 1 - y) * d.width + x, to = size_t(y) * d.width + x;
-      const bool hit = depth[from] < 1.0f;
-      for (int c = 0; c < 3; ++c) img.rgba[to * 4 + c] = hit ? rows[from * 4 + c] : 0.0f;
-      img.rgba[to * 4 + 3] = hit ? 1.0f : 0.0f;
-    }
+  Image img = readColourTopDown(d.targets, d.width, d.height);
+  const std::vector<float> depth = readDepthTopDown(d.targets, d.width, d.height);
+  for (size_t i = 0; i < depth.size(); ++i) {  // the hit mask: a depth was written
+    const bool hit = depth[i] < 1.0f;
+    for (int c = 0; c < 3; ++c) img.rgba[i * 4 + c] = hit ? img.rgba[i * 4 + c] : 0.0f;
+    img.rgba[i * 4 + 3] = hit ? 1.0f : 0.0f;
+  }
   return img;
 }
 
@@ -478,12 +398,7 @@ double ShaderScene::setupSeconds() const { return impl_->setup_seconds; }
 Image renderWithShader(const Scene& scene, const shaderfile::ShaderDefinition& def, const ShaderProgramText& program) {
   const SubpixelGrid g = subpixelGrid(scene);
   ShaderScene s(scene, def, program);
-  Image fine = s.drawAndRead();
-  requireFinite(def.name, fine);
-  fine.raw.resize(size_t(fine.width) * fine.height * 3);
-  for (size_t i = 0; i < size_t(fine.width) * fine.height; ++i)
-    for (int c = 0; c < 3; ++c) fine.raw[i * 3 + c] = fine.rgba[i * 4 + c];
-  return boxFilter(fine, g.n);
+  return finishFrame(s.drawAndRead(), g.n, def.name);
 }
 
 }  // namespace xval::gl
