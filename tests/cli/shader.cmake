@@ -11,14 +11,17 @@
 #                             made costly enough (64 sin a turn, 18 s here) to outlast --timeout 4
 #   two_lights_not_expressible a second point light: NOT EXPRESSIBLE with the reason
 #   source_outside_refused    "source": "../..." : an error naming the field (exit 2)
+#   phong_example_passes      docs/examples/shaders/phong.json (a user's effect with its own uniform
+#                             names mapped) against the reference on a classic-Phong scene: PASS
 #   bench_beside_gl           bench times gl and the listing in one process (gl's EGL display made
 #                             first must not reach the shader's draw: a forked draw hung on it)
 # Each broken copy is made from the listing by string(REPLACE) here, and the
 # script fails if the text to replace is not found (the mutation must bite).
 # Arguments: XVAL, LISTING (the .fx), DEFINITION (its .json), SCENE (a small
-# scene the listing can express), CASE, WORK.
+# scene the listing can express), PHONG (docs/examples/shaders/phong.json),
+# CASE, WORK.
 include(${CMAKE_CURRENT_LIST_DIR}/cli_run.cmake)
-require_defined(shader.cmake XVAL LISTING DEFINITION SCENE CASE WORK)
+require_defined(shader.cmake XVAL LISTING DEFINITION SCENE PHONG CASE WORK)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK}/shader)
 file(READ ${LISTING} listing)
@@ -88,6 +91,16 @@ elseif(CASE STREQUAL "source_outside_refused")
   run(2 ${XVAL} crosscheck ${SCENE} --renderer paper-listing --renderer-file ${WORK}/shader/inner/outside.json -o ${WORK}/out)
   expect_in("${err}" "source")
   expect_in("${err}" "'..' is refused")
+elseif(CASE STREQUAL "phong_example_passes")
+  file(READ ${SCENE} _scene)
+  string(REPLACE "\"type\": \"yiq_luma\"" "\"type\": \"classic_phong\", \"variant\": \"paper\"" _phong "${_scene}")
+  string(REPLACE "\"normalize_normal\": false" "\"normalize_normal\": true" _phong "${_phong}")
+  if(_phong STREQUAL _scene)
+    message(FATAL_ERROR "the scene's model was not found to replace")
+  endif()
+  file(WRITE ${WORK}/phong.json "${_phong}")
+  run(0 ${XVAL} crosscheck ${WORK}/phong.json --renderer phong-fx --renderer-file ${PHONG} -o ${WORK}/out)
+  expect_in("${out}${err}" "vs phong-fx: PASS")
 elseif(CASE STREQUAL "bench_beside_gl")
   broken("float4x4 World " "float4x4 World ")
   run(0 ${XVAL} bench ${SCENE} --renderers gl,paper-listing --renderer-file ${def} --frames 2 --runs 1)
