@@ -128,7 +128,8 @@ Renderer shaderFileRenderer(const std::filesystem::path& file, const nlohmann::j
   for (const shaderfile::SourceEdit& e : def->effect.edits)
     edits += (edits.empty() ? "" : "; ") + std::string("line ") + std::to_string(e.line) + ": " + e.what;
   r.summary = (def->description.empty() ? "" : def->description + "; ") + "the " + def->language + " shader " +
-              def->source.string() + " (defined by " + def->file.string() + ") on OpenGL" +
+              (def->vertex_source.empty() ? "" : def->vertex_source.string() + " and ") + def->source.string() +
+              " (defined by " + def->file.string() + ") on OpenGL" +
               (edits.empty() ? "" : "; the tool's edits: " + edits);
   r.version_command = {shaderfile::kGlslangTool, "--version"};
   r.version_marker = "Glslang Version";

@@ -55,6 +55,25 @@ std::string compilersMissing() {
 
 ShaderProgramText compileShader(const ShaderDefinition& d, const fs::path& dir) {
   if (const std::string m = compilersMissing(); !m.empty()) throw ExternalToolError(d.name + ": " + m);
+  if (d.language == "glsl") {
+    // Checked by glslang (messages naming the user's files and lines), then
+    // compiled as written by the OpenGL context.
+    ShaderProgramText out;
+    for (const bool vertex : {true, false}) {
+      const fs::path& src = vertex ? d.vertex_source : d.source;
+      const std::string stage = vertex ? "vert" : "frag";
+      const fs::path log = dir / ("glslang-" + stage + ".log");
+      const ProcessResult r = runProcess({kGlslangTool, "-S", stage, src.string()}, dir, log, d.timeout_s);
+      if (!r.ok())
+        throw ExternalToolError(d.name + ": `" + std::string(kGlslangTool) + " -S " + stage + " " + src.string() +
+                                "` " + r.describe() + ":\n" + tailOfFile(log));
+      std::ifstream in(src, std::ios::binary);
+      std::stringstream ss;
+      ss << in.rdbuf();
+      (vertex ? out.vertex : out.fragment) = ss.str();
+    }
+    return out;
+  }
   // The prepared text under the user's file name: the messages name it.
   const fs::path source = dir / d.source.filename();
   writeFileAtomically(source, d.effect.text);

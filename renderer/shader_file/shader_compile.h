@@ -5,6 +5,10 @@
 //   glslangValidator -D -V --hlsl-dx9-compatible -S frag -e FRAGMENT_ENTRY -o frag.spv SOURCE
 //   spirv-cross --version 450 --no-es vert.spv --output vert.glsl   (and frag)
 //
+// A GLSL definition: each stage checked by `glslangValidator -S vert|frag
+// FILE` (its messages name the user's file and line), then compiled as
+// written by the OpenGL context.
+//
 // SOURCE is the prepared effect (shader_file/effect_source.h: the user's
 // file with the tool's edits, same lines) written under the user's file
 // name, so the compiler's messages name the user's file and line. A tool

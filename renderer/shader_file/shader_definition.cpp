@@ -125,9 +125,27 @@ ShaderDefinition loadShaderDefinition(const fs::path& file, const nlohmann::json
   d.name = r.requireString("name");
   if (r.has("description")) d.description = r.requireString("description");
   const std::string source = r.requireString("source");
-  d.language = r.requireChoice("language", {"hlsl"});
+  d.language = r.requireChoice("language", {"hlsl", "glsl"});
+  const bool glsl = d.language == "glsl";
   d.vertex_entry = r.requireString("vertex_entry");
   d.fragment_entry = r.requireString("fragment_entry");
+  if (glsl)
+    for (const char* key : {"vertex_entry", "fragment_entry"})
+      if (r.requireString(key) != "main") r.failValue(key, "\"main\" (a GLSL stage's entry point)");
+  // GLSL: the fragment stage is "source", the vertex stage "vertex_source";
+  // the vertex inputs are mapped by name (GLSL has no semantics).
+  std::string vertex_source;
+  if (glsl) vertex_source = r.requireString("vertex_source");
+  if (glsl) {
+    r.requireObject("attributes");
+    for (const auto& [k, v] : doc["attributes"].items()) {
+      const std::string what = v.is_string() ? v.get<std::string>() : "";
+      if (what != "position" && what != "normal" && what != "uv")
+        throw SceneError(file.string() + ": attributes." + k + ": " + describeJson(v) +
+                         ": expected \"position\", \"normal\" or \"uv\"");
+      d.attribute_input[k] = what;
+    }
+  }
   if (r.has("timeout_s")) d.timeout_s = r.requireNumber("timeout_s", Range::openClosed(0.0, 3600.0));
   const std::string texture_filter = r.choice("texture_filter", "effect", {"effect", "scene"});
   {
@@ -149,6 +167,15 @@ ShaderDefinition loadShaderDefinition(const fs::path& file, const nlohmann::json
   }
   r.finish();
   d.source = confinedSource(r, d.file, source);
+  if (glsl) {
+    d.vertex_source = confinedSource(r, d.file, vertex_source);
+    // Each uniform is bound by "uniforms" (checked against the compiled
+    // program's); a sampler mapped to diffuse_texture reads the material's
+    // texture with the scene's filter (GLSL has no sampler state).
+    for (const auto& [u, q] : d.uniform_quantity)
+      if (findQuantity(q)->type == QuantityType::Sampler) d.samplers.push_back({u, "scene"});
+    return d;
+  }
 
   const std::string where = d.source.string();
   try {

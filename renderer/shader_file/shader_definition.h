@@ -13,6 +13,13 @@
 //    "texture_filter": "scene",               // optional: "effect" (default) or "scene"
 //    "timeout_s": 60}                         // optional: each compiler run's time-out
 //
+// "language": "glsl" (any #version the OpenGL 4.5 core context compiles):
+// "source" is the fragment stage and "vertex_source" the vertex stage,
+// both entries "main", every uniform bound by "uniforms" (a sampler by
+// "diffuse_texture", read with the scene's filter) and the vertex inputs
+// by "attributes": {"a_position": "position", "a_normal": "normal",
+// "a_uv": "uv"}.
+//
 // A uniform is bound by its semantic (kSemantics below, case-insensitive,
 // as FX Composer binds them) or by "uniforms"; one bound by neither is an
 // error naming it and its line, never a silent zero. "model" is the
@@ -103,12 +110,13 @@ struct SamplerBinding {
 struct ShaderDefinition {
   std::string name, description;
   std::filesystem::path file;    // the definition, absolute
-  std::filesystem::path source;  // the shader source, absolute (inside file's folder)
-  std::string language;          // "hlsl"
+  std::filesystem::path source;  // the shader source (GLSL: the fragment stage), absolute, inside file's folder
+  std::filesystem::path vertex_source;  // GLSL: the vertex stage (HLSL: empty, `source` holds both)
+  std::string language;          // "hlsl" or "glsl"
   std::string vertex_entry, fragment_entry;
   nlohmann::json model;  // {"type": ..., hard-coded parameters}
   double timeout_s = kDefaultCompileTimeoutSeconds;
-  PreparedEffect effect;
+  PreparedEffect effect;  // HLSL only
   PipelineState pipeline;
   std::map<std::string, std::string> uniform_quantity;    // uniform -> quantity
   std::map<std::string, std::string> attribute_input;     // GLSL vertex input -> position|normal|uv
