@@ -65,11 +65,22 @@ GlName compileStage(unsigned int stage, const char* source, const std::string& n
   return s;
 }
 
-GlName linkProgram(GlName vs, GlName fs) {
+GlName buildProgram(const char* vertex, const std::string& vertex_name, const char* fragment,
+                    const std::string& fragment_name) {
+  const GLuint vs = compileStage(GL_VERTEX_SHADER, vertex, vertex_name);
+  GLuint fs = 0;
+  try {
+    fs = compileStage(GL_FRAGMENT_SHADER, fragment, fragment_name);
+  } catch (...) {
+    glDeleteShader(vs);
+    throw;
+  }
   const GLuint p = glCreateProgram();
   glAttachShader(p, vs);
   glAttachShader(p, fs);
   glLinkProgram(p);
+  glDeleteShader(vs);
+  glDeleteShader(fs);
   GLint ok = 0;
   glGetProgramiv(p, GL_LINK_STATUS, &ok);
   if (!ok) {
@@ -133,6 +144,20 @@ void deleteFrameTargets(FrameTargets& t) {
   glDeleteRenderbuffers(1, &t.colour);
   glDeleteRenderbuffers(1, &t.depth);
   t = {};
+}
+
+void setDrawState(unsigned int depth_func, const FrameTargets& t, int width, int height, GlName vao) {
+  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(depth_func);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  glDisable(GL_MULTISAMPLE);
+  glDisable(GL_DITHER);
+  glViewport(0, 0, width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, t.fbo);
+  glBindVertexArray(vao);
 }
 
 Image readColourTopDown(const FrameTargets& t, int width, int height) {

@@ -46,8 +46,12 @@ void checkGl(const char* what);
 // A compiled stage (`stage`: GL_VERTEX_SHADER, GL_FRAGMENT_SHADER); on
 // failure the message is "OpenGL: the <name> does not compile: <log>".
 GlName compileStage(unsigned int stage, const char* source, const std::string& name);
-// The linked program of two stages (the stages are left to the caller).
-GlName linkProgram(GlName vertex, GlName fragment);
+// The linked program of a vertex and a fragment stage's source, each
+// compiled with compileStage (named `vertex_name`, `fragment_name`); on
+// failure "OpenGL: the shader program does not link: <log>". The stages
+// are deleted either way.
+GlName buildProgram(const char* vertex, const std::string& vertex_name, const char* fragment,
+                    const std::string& fragment_name);
 
 // `spec`'s texture as RGBA32F (alpha 1), `levels` mip levels (1: the image
 // only; more: filled by glGenerateTextureMipmap). Throws when it exceeds
@@ -60,6 +64,12 @@ struct FrameTargets {
 };
 FrameTargets makeFrameTargets(int width, int height);
 void deleteFrameTargets(FrameTargets& t);
+
+// The fixed state both renderers draw with: clip depth 0..1
+// (GL_ZERO_TO_ONE), the depth test with `depth_func` (GL_GREATER, GL_LESS,
+// GL_LEQUAL) and depth writes, no culling, blending, multisampling or
+// dithering, the whole w x h frame of `t`, the vertex array `vao` bound.
+void setDrawState(unsigned int depth_func, const FrameTargets& t, int width, int height, GlName vao);
 
 // The colour attachment, row 0 the top: rgba as drawn (alpha as drawn).
 Image readColourTopDown(const FrameTargets& t, int width, int height);

@@ -200,18 +200,7 @@ GlScene::GlScene(const Scene& input) : impl_(new Impl) {
   }
   const double near = geometry.near;
 
-  const GLuint vs = compileStage(GL_VERTEX_SHADER, vertexShaderSource(), "vertex shader");
-  GLuint fs = 0;
-  try {
-    fs = compileStage(GL_FRAGMENT_SHADER, fragmentShaderSource(), "fragment shader");
-    d.program = linkProgram(vs, fs);
-  } catch (...) {
-    glDeleteShader(vs);
-    if (fs) glDeleteShader(fs);
-    throw;
-  }
-  glDeleteShader(vs);
-  glDeleteShader(fs);
+  d.program = buildProgram(vertexShaderSource(), "vertex shader", fragmentShaderSource(), "fragment shader");
 
   glCreateVertexArrays(1, &d.vao);
   glCreateBuffers(1, &d.vbo);
@@ -279,16 +268,7 @@ GlScene::GlScene(const Scene& input) : impl_(new Impl) {
   checkGl("setting the uniforms");
 
   // Fixed state: reversed Z, the whole frame, no culling or blending.
-  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_GREATER);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
-  glDisable(GL_MULTISAMPLE);
-  glDisable(GL_DITHER);
-  glViewport(0, 0, d.width, d.height);
-  glBindFramebuffer(GL_FRAMEBUFFER, d.targets.fbo);
-  glBindVertexArray(d.vao);
+  setDrawState(GL_GREATER, d.targets, d.width, d.height, d.vao);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightsBinding, d.ssbo);
   checkGl("setting the state");
   d.setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -198,18 +198,7 @@ ShaderScene::ShaderScene(const Scene& input, const shaderfile::ShaderDefinition&
   d.context.emplace();
 
   // The program.
-  const GLuint vs = compileStage(GL_VERTEX_SHADER, text.vertex.c_str(), "compiled vertex stage (GLSL 4.50)");
-  GLuint fs = 0;
-  try {
-    fs = compileStage(GL_FRAGMENT_SHADER, text.fragment.c_str(), "compiled fragment stage (GLSL 4.50)");
-    d.program = linkProgram(vs, fs);
-  } catch (...) {
-    glDeleteShader(vs);
-    if (fs) glDeleteShader(fs);
-    throw;
-  }
-  glDeleteShader(vs);
-  glDeleteShader(fs);
+  d.program = buildProgram(text.vertex.c_str(), "compiled vertex stage (GLSL 4.50)", text.fragment.c_str(), "compiled fragment stage (GLSL 4.50)");
 
   // Geometry, world space, one draw per run of meshes of one material.
   const CameraRays cam(scene.camera);
@@ -337,17 +326,7 @@ ShaderScene::ShaderScene(const Scene& input, const shaderfile::ShaderDefinition&
   d.targets = makeFrameTargets(d.width, d.height);
 
   glUseProgram(d.program);
-  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(def.pipeline.depth_less_equal ? GL_LEQUAL : GL_LESS);
-  glDepthMask(GL_TRUE);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
-  glDisable(GL_MULTISAMPLE);
-  glDisable(GL_DITHER);
-  glViewport(0, 0, d.width, d.height);
-  glBindFramebuffer(GL_FRAMEBUFFER, d.targets.fbo);
-  glBindVertexArray(d.vao);
+  setDrawState(def.pipeline.depth_less_equal ? GL_LEQUAL : GL_LESS, d.targets, d.width, d.height, d.vao);
   checkGl("setting the state");
   d.setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
