@@ -107,10 +107,17 @@ const Quantity* findQuantity(const std::string& name) {
   return nullptr;
 }
 
-double modelParameter(const Material& material, const std::string& key) {
+namespace {
+// The material's model as the scene file writes it (scene/scene_writer.h).
+nlohmann::json modelJson(const Material& material) {
   Scene one;
   one.material = material;
-  const auto model = sceneToJson(one)["material"]["model"];
+  return nlohmann::json::parse(sceneToJson(one)["material"]["model"].dump());
+}
+}  // namespace
+
+double modelParameter(const Material& material, const std::string& key) {
+  const nlohmann::json model = modelJson(material);
   if (!model.contains(key) || !model[key].is_number())
     throw std::runtime_error("the " + model.value("type", std::string("?")) + " model has no parameter \"" + key +
                              "\"");
@@ -189,7 +196,9 @@ ShaderDefinition loadShaderDefinition(const fs::path& file, const nlohmann::json
     throw SceneError(where + ": line " + std::to_string(d.effect.passes[1].line) + ": " +
                      std::to_string(d.effect.passes.size()) + " passes; xval draws one");
   for (const EffectPass& p : d.effect.passes)
-    for (const auto& [key, value] : p.states) {
+    for (const auto& state : p.states) {
+      const std::string& key = state.first;
+      const std::string& value = state.second;
       const std::string k = upper(key), v = upper(value);
       auto refuse = [&](const std::string& why) {
         throw SceneError(where + ": line " + std::to_string(p.line) + ": pass " + p.pass + ": " + key + " = " +
@@ -286,9 +295,7 @@ std::string shaderCannotExpress(const ShaderDefinition& d, const Scene& scene) {
   for (const SceneObject& o : scene.objects)
     if (o.material) materials.push_back(&*o.material);
   for (const Material* m : materials) {
-    Scene one;
-    one.material = *m;
-    const auto model = sceneToJson(one)["material"]["model"];
+    const nlohmann::json model = modelJson(*m);
     if (model["type"] != d.model["type"])
       return d.name + " implements the " + d.model["type"].get<std::string>() + " model: the scene's material is " +
              model["type"].get<std::string>();
