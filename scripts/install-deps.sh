@@ -17,6 +17,8 @@ packages=(
   liblcms2-dev libssl-dev
   # xval pack's .tar.gz archives
   libarchive-dev
+  # the shader renderer: HLSL -> SPIR-V -> GLSL 4.50 (docs/shaders.md)
+  glslang-tools spirv-cross
   # Assimp's test corpus: the model loader's robustness test (tests/corpus)
   assimp-testmodels
   # external renderers and what Blender's glTF add-on needs

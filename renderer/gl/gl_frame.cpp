@@ -21,6 +21,7 @@
 #include "geometry/model_textures.h"
 #include "geometry/scene_meshes.h"
 #include "gl/egl_context.h"
+#include "gl/gl_common.h"
 #include "gl/glsl_models.h"
 #include "shading/flat_normals.h"
 #include "shading/lights.h"
@@ -30,46 +31,6 @@
 namespace xval::gl {
 
 namespace {
-
-void checkGl(const char* what) {
-  const GLenum e = glGetError();
-  if (e != GL_NO_ERROR) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "0x%04x", unsigned(e));
-    throw std::runtime_error(std::string("OpenGL: ") + what + " failed (GL error " + buf + ")");
-  }
-}
-
-GLuint compile(GLenum stage, const char* source, const char* name) {
-  const GLuint s = glCreateShader(stage);
-  glShaderSource(s, 1, &source, nullptr);
-  glCompileShader(s);
-  GLint ok = 0;
-  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[4096] = {};
-    glGetShaderInfoLog(s, sizeof log, nullptr, log);
-    glDeleteShader(s);
-    throw std::runtime_error(std::string("OpenGL: the ") + name + " shader does not compile: " + log);
-  }
-  return s;
-}
-
-GLuint link(GLuint vs, GLuint fs) {
-  const GLuint p = glCreateProgram();
-  glAttachShader(p, vs);
-  glAttachShader(p, fs);
-  glLinkProgram(p);
-  GLint ok = 0;
-  glGetProgramiv(p, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[4096] = {};
-    glGetProgramInfoLog(p, sizeof log, nullptr, log);
-    glDeleteProgram(p);
-    throw std::runtime_error(std::string("OpenGL: the shader program does not link: ") + log);
-  }
-  return p;
-}
 
 // One vertex of the unindexed triangle list (glsl_models.h's attributes).
 struct Vertex {
@@ -129,31 +90,11 @@ ModelUniforms modelUniforms(const LightingModel& m) {
 // which deletes it); returns it and the shaders' u_texture mode (1 nearest, 3 trilinear,
 // 2 bilinear).
 std::pair<GLuint, int> uploadTexture(const TextureSpec& spec, std::vector<GLuint>& owned) {
-  const Texture tex = loadTexture(spec);
-  std::vector<float> rgba(size_t(tex.width) * tex.height * 4, 1.0f);
-  for (int y = 0; y < tex.height; ++y)
-    for (int x = 0; x < tex.width; ++x) {
-      const glm::vec3 c = tex.texel(x, y);
-      float* o = &rgba[(size_t(y) * tex.width + x) * 4];
-      o[0] = c.x, o[1] = c.y, o[2] = c.z;
-    }
-  GLint max_tex = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_tex);
-  if (tex.width > max_tex || tex.height > max_tex)
-    throw std::runtime_error("OpenGL: a " + std::to_string(tex.width) + " x " + std::to_string(tex.height) +
-                             " texture exceeds GL_MAX_TEXTURE_SIZE " + std::to_string(max_tex));
   // Trilinear: every level down to 1 x 1, made by the driver.
   const bool trilinear = spec.filter == TextureFilter::Trilinear;
-  GLsizei levels = 1;
-  while (trilinear && std::max(tex.width, tex.height) >> levels) ++levels;  // floor(log2(max)) + 1
-  GLuint t = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &t);
+  const GLuint t = uploadTextureRgba32f(spec, trilinear);
   owned.push_back(t);
-  glTextureStorage2D(t, levels, GL_RGBA32F, tex.width, tex.height);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureSubImage2D(t, 0, 0, 0, tex.width, tex.height, GL_RGBA, GL_FLOAT, rgba.data());
   if (trilinear) {
-    glGenerateTextureMipmap(t);
     glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTextureParameteri(t, GL_TEXTURE_WRAP_S, GL_REPEAT);
@@ -201,7 +142,8 @@ void setMaterialUniforms(GLuint p, const Draw& d) {
 
 struct GlScene::Impl {
   std::optional<EglContext> context;
-  GLuint program = 0, vao = 0, vbo = 0, ssbo = 0, fbo = 0, colour_rb = 0, depth_rb = 0;
+  GLuint program = 0, vao = 0, vbo = 0, ssbo = 0;
+  FrameTargets targets;
   std::vector<GLuint> textures;
   std::vector<Draw> draws;
   int width = 0, height = 0;
@@ -209,9 +151,7 @@ struct GlScene::Impl {
 
   ~Impl() {
     if (!context) return;
-    glDeleteFramebuffers(1, &fbo);
-    glDeleteRenderbuffers(1, &colour_rb);
-    glDeleteRenderbuffers(1, &depth_rb);
+    deleteFrameTargets(targets);
     if (!textures.empty()) glDeleteTextures(GLsizei(textures.size()), textures.data());
     glDeleteBuffers(1, &ssbo);
     glDeleteBuffers(1, &vbo);
@@ -230,63 +170,34 @@ GlScene::GlScene(const Scene& input) : impl_(new Impl) {
   d.width = grid.width, d.height = grid.height;
   d.context.emplace();
 
-  GLint max_rb = 0;
-  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_rb);
-  if (d.width > max_rb || d.height > max_rb)
-    throw std::runtime_error("OpenGL: a " + std::to_string(d.width) + " x " + std::to_string(d.height) +
-                             " frame exceeds GL_MAX_RENDERBUFFER_SIZE " + std::to_string(max_rb));
-
   // Geometry: camera-relative, unindexed.
   const CameraRays cam(scene.camera);
   std::vector<Vertex> vertices;
-  double min_depth = std::numeric_limits<double>::infinity(), max_depth = 0.0;
   // The meshes in order, one draw per run of meshes of one material slot.
   const SceneMeshes sm = sceneMeshes(scene);
   const MaterialSlots slots = materialSlots(scene);
-  std::vector<size_t> draw_slot;
-  for (size_t mi = 0; mi < sm.meshes.size(); ++mi) {
-    const TriangleMesh& m = sm.meshes[mi];
-    const size_t slot = slots.object_slot[sm.object[mi]];
-    if (d.draws.empty() || draw_slot.back() != slot) {
-      d.draws.push_back(Draw{});
-      d.draws.back().first = GLint(vertices.size());
-      draw_slot.push_back(slot);
-    }
-    const std::vector<glm::dvec3> faces =
-        scene.shading == ShadingMode::Flat ? flatNormals(m) : std::vector<glm::dvec3>(m.triangles.size());
-    for (size_t t = 0; t < m.triangles.size(); ++t) {
-      const glm::dvec2 uv0 = m.uvs[m.triangles[t][0]];
-      for (int k = 0; k < 3; ++k) {
-        const uint32_t i = m.triangles[t][k];
+  std::vector<std::vector<glm::dvec3>> faces(sm.meshes.size());  // flat shading's, per mesh
+  if (scene.shading == ShadingMode::Flat)
+    for (size_t mi = 0; mi < sm.meshes.size(); ++mi) faces[mi] = flatNormals(sm.meshes[mi]);
+  const SceneDraws geometry =
+      walkSceneTriangles(sm, slots, cam, [&](size_t mi, size_t t, uint32_t i, glm::dvec2 uv) {
+        const TriangleMesh& m = sm.meshes[mi];
         Vertex v{};
-        const glm::dvec3 p = m.positions[i] - cam.origin;
-        put(v.position, p);
+        put(v.position, m.positions[i] - cam.origin);
         put(v.normal, m.normals[i]);
-        const glm::dvec2 uv = (uv0 - glm::floor(uv0)) + (m.uvs[i] - uv0);
         v.uv[0] = float(uv.x), v.uv[1] = float(uv.y);
-        put(v.face_normal, faces[t]);
+        if (!faces[mi].empty()) put(v.face_normal, faces[mi][t]);
         vertices.push_back(v);
-        const double z = glm::dot(p, cam.forward);
-        min_depth = std::min(min_depth, z);
-        max_depth = std::max(max_depth, z);
-      }
-    }
-    d.draws.back().count = GLsizei(vertices.size()) - d.draws.back().first;
+      });
+  std::vector<size_t> draw_slot;
+  for (const DrawRun& run : geometry.runs) {
+    d.draws.push_back(Draw{});
+    d.draws.back().first = run.first, d.draws.back().count = run.count;
+    draw_slot.push_back(run.slot);
   }
-  const double near = !(min_depth > 0.0) ? std::max(max_depth, 1.0) * 1e-6 : 0.5 * min_depth;
+  const double near = geometry.near;
 
-  const GLuint vs = compile(GL_VERTEX_SHADER, vertexShaderSource(), "vertex");
-  GLuint fs = 0;
-  try {
-    fs = compile(GL_FRAGMENT_SHADER, fragmentShaderSource(), "fragment");
-    d.program = link(vs, fs);
-  } catch (...) {
-    glDeleteShader(vs);
-    if (fs) glDeleteShader(fs);
-    throw;
-  }
-  glDeleteShader(vs);
-  glDeleteShader(fs);
+  d.program = buildProgram(vertexShaderSource(), "vertex shader", fragmentShaderSource(), "fragment shader");
 
   glCreateVertexArrays(1, &d.vao);
   glCreateBuffers(1, &d.vbo);
@@ -334,18 +245,7 @@ GlScene::GlScene(const Scene& input) : impl_(new Impl) {
   }
 
   // Targets.
-  glCreateRenderbuffers(1, &d.colour_rb);
-  glNamedRenderbufferStorage(d.colour_rb, GL_RGBA32F, d.width, d.height);
-  glCreateRenderbuffers(1, &d.depth_rb);
-  glNamedRenderbufferStorage(d.depth_rb, GL_DEPTH_COMPONENT32F, d.width, d.height);
-  glCreateFramebuffers(1, &d.fbo);
-  glNamedFramebufferRenderbuffer(d.fbo, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, d.colour_rb);
-  glNamedFramebufferRenderbuffer(d.fbo, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, d.depth_rb);
-  const GLenum status = glCheckNamedFramebufferStatus(d.fbo, GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE)
-    throw std::runtime_error("OpenGL: the RGBA32F + DEPTH32F framebuffer is incomplete (status " +
-                             std::to_string(status) + ")");
-  checkGl("making the framebuffer");
+  d.targets = makeFrameTargets(d.width, d.height);
 
   // Uniforms.
   const GLuint p = d.program;
@@ -365,16 +265,7 @@ GlScene::GlScene(const Scene& input) : impl_(new Impl) {
   checkGl("setting the uniforms");
 
   // Fixed state: reversed Z, the whole frame, no culling or blending.
-  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_GREATER);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
-  glDisable(GL_MULTISAMPLE);
-  glDisable(GL_DITHER);
-  glViewport(0, 0, d.width, d.height);
-  glBindFramebuffer(GL_FRAMEBUFFER, d.fbo);
-  glBindVertexArray(d.vao);
+  setDrawState(GL_GREATER, d.targets, d.width, d.height, d.vao);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightsBinding, d.ssbo);
   checkGl("setting the state");
   d.setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -386,8 +277,8 @@ void GlScene::draw() {
   const Impl& d = *impl_;
   const float clear_colour[4] = {0, 0, 0, 0};
   const float clear_depth = 0.0f;  // reversed Z: 0 is infinitely far
-  glClearNamedFramebufferfv(d.fbo, GL_COLOR, 0, clear_colour);
-  glClearNamedFramebufferfv(d.fbo, GL_DEPTH, 0, &clear_depth);
+  glClearNamedFramebufferfv(d.targets.fbo, GL_COLOR, 0, clear_colour);
+  glClearNamedFramebufferfv(d.targets.fbo, GL_DEPTH, 0, &clear_depth);
   for (const Draw& dr : d.draws) {
     if (dr.count == 0) continue;
     setMaterialUniforms(d.program, dr);
@@ -400,17 +291,7 @@ void GlScene::draw() {
 
 Image GlScene::drawAndRead() {
   draw();
-  const Impl& d = *impl_;
-  std::vector<float> rows(size_t(d.width) * d.height * 4);
-  glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glNamedFramebufferReadBuffer(d.fbo, GL_COLOR_ATTACHMENT0);
-  glReadPixels(0, 0, d.width, d.height, GL_RGBA, GL_FLOAT, rows.data());
-  checkGl("reading the frame back");
-  Image img(d.width, d.height, false);
-  const size_t row = size_t(d.width) * 4;
-  for (int y = 0; y < d.height; ++y)  // GL's row 0 is the bottom
-    std::copy_n(&rows[size_t(d.height - 1 - y) * row], row, &img.rgba[size_t(y) * row]);
-  return img;
+  return readColourTopDown(impl_->targets, impl_->width, impl_->height);
 }
 
 std::string GlScene::device() const { return impl_->context->describe(); }
@@ -420,12 +301,7 @@ Image renderWithGl(const Scene& scene, std::string* device) {
   const SubpixelGrid g = subpixelGrid(scene);
   GlScene gl(scene);
   if (device) *device = gl.device();
-  Image fine = gl.drawAndRead();
-  requireFinite("gl", fine);
-  fine.raw.resize(size_t(fine.width) * fine.height * 3);
-  for (size_t i = 0; i < size_t(fine.width) * fine.height; ++i)
-    for (int c = 0; c < 3; ++c) fine.raw[i * 3 + c] = fine.rgba[i * 4 + c];
-  return boxFilter(fine, g.n);
+  return finishFrame(gl.drawAndRead(), g.n, "gl");
 }
 
 }  // namespace xval::gl

@@ -17,6 +17,7 @@
 #include "scene/json_reader.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_writer.h"
+#include "shader_file/shader_definition.h"
 
 namespace xval::renderers {
 
@@ -144,8 +145,10 @@ Image renderDefined(const Definition& d, const Scene& scene, const RenderRequest
 Renderer loadRendererFile(const fs::path& file) {
   const nlohmann::json doc = parseJsonText(readJsonFile(file, "renderer file"), file.string());
   JsonReader r(doc, "", file.string());
-  if (r.requireString("format") != kRendererFileFormat)
-    r.failValue("format", std::string("\"") + kRendererFileFormat + "\"");
+  const std::string format = r.requireString("format");
+  if (format != kRendererFileFormat && format != shaderfile::kShaderFileFormat)
+    r.failValue("format", std::string("\"") + kRendererFileFormat + "\" (a program) or \"" +
+                              shaderfile::kShaderFileFormat + "\" (a shader, docs/shaders.md)");
   Definition d;
   d.file = fs::absolute(file).lexically_normal();
   d.name = r.requireString("name");
@@ -158,6 +161,7 @@ Renderer loadRendererFile(const fs::path& file) {
   if (const Renderer* built_in = registry().find(d.name); built_in && built_in->definition_file.empty())
     r.fail("name", "\"" + d.name + "\": the id of a renderer built into xval (" + built_in->display_name +
                        "); choose another name");
+  if (format == shaderfile::kShaderFileFormat) return shaderFileRenderer(file, doc);
   d.input = r.requireChoice("input", {"scene", "gltf", "pov"});
   d.command = r.stringArray("command", true);
   std::vector<std::string> version = r.stringArray("version_command", true);

@@ -28,6 +28,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "renderers/renderer.h"
 
 namespace xval::renderers {
@@ -39,6 +41,11 @@ inline constexpr size_t kMaxRendererDescriptionBytes = 300;
 // Reads and checks a definition file. Throws SceneError naming the file,
 // the field and the value.
 Renderer loadRendererFile(const std::filesystem::path& file);
+
+// A user's shader (format "xval-shader/1", docs/shaders.md,
+// renderers/shader.cpp): loadRendererFile hands such a file here after
+// checking its name as any renderer file's.
+Renderer shaderFileRenderer(const std::filesystem::path& file, const nlohmann::json& doc);
 
 // Adds each file's renderer (and its golden set, golden-<name>) to the
 // process's registry, by name (not in the order given: the registry's order

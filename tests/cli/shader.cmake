@@ -1,0 +1,137 @@
+# The shader renderer (docs/shaders.md) on the paper's listing as printed
+# (reference/shaders) and on broken copies of it, one CASE per test:
+#   listing_passes            the listing, crosscheck against the reference: PASS
+#   missing_saturate_fails    Diffuse without its inner saturate: FAIL (exit 1)
+#   reflection_sign_fails     R = -normalize(...): FAIL (exit 1)
+#   unbound_uniform_error     no "uniforms" mapping for AmbientValue: an error naming it (exit 2)
+#   compile_error             a call glslang refuses: an error naming the file's line (exit 2)
+#   infinite_loop_times_out   a loop that never ends: killed at --timeout, an error (exit 2).
+#                             llvmpipe ends any loop after 65536 turns (measured: an endless
+#                             loop counting its turns returned 65536), so the loop's body is
+#                             made costly enough (64 sin a turn, 18 s here) to outlast --timeout 4
+#   two_lights_not_expressible a second point light: NOT EXPRESSIBLE with the reason
+#   source_outside_refused    "source": "../..." : an error naming the field (exit 2)
+#   phong_example_passes      docs/examples/shaders/phong.json (a user's effect with its own uniform
+#                             names mapped) against the reference on a classic-Phong scene: PASS
+#   glsl_example_passes       docs/examples/shaders/phong330.json (GLSL 3.30, names mapped) likewise: PASS
+#   glsl_unmapped_uniform_error that definition without u_ka's mapping: an error naming u_ka (exit 2)
+#   bench_beside_gl           bench times gl and the listing in one process (gl's EGL display made
+#                             first must not reach the shader's draw: a forked draw hung on it)
+# Each broken copy is made from the listing by string(REPLACE) here, and the
+# script fails if the text to replace is not found (the mutation must bite).
+# Arguments: XVAL, LISTING (the .fx), DEFINITION (its .json), SCENE (a small
+# scene the listing can express), PHONG (docs/examples/shaders/phong.json),
+# CASE, WORK.
+include(${CMAKE_CURRENT_LIST_DIR}/cli_run.cmake)
+require_defined(shader.cmake XVAL LISTING DEFINITION SCENE PHONG CASE WORK)
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK}/shader)
+file(READ ${LISTING} listing)
+file(READ ${DEFINITION} definition)
+
+# WORK/shader/broken.fx: the listing with FROM replaced by TO; broken.json its definition.
+function(broken from to)
+  string(FIND "${listing}" "${from}" _at)
+  if(_at EQUAL -1)
+    message(FATAL_ERROR "the listing has no \"${from}\" to replace")
+  endif()
+  string(REPLACE "${from}" "${to}" _text "${listing}")
+  file(WRITE ${WORK}/shader/broken.fx "${_text}")
+  string(REPLACE "kotsarenko2012_table1.fx" "broken.fx" _def "${definition}")
+  file(WRITE ${WORK}/shader/broken.json "${_def}")
+endfunction()
+
+# WORK/phong.json: SCENE with the classic Phong model (paper variant) and
+# the re-normalised normal the Phong examples compute.
+function(phong_scene)
+  file(READ ${SCENE} _scene)
+  string(REPLACE "\"type\": \"yiq_luma\"" "\"type\": \"classic_phong\", \"variant\": \"paper\"" _phong "${_scene}")
+  string(REPLACE "\"normalize_normal\": false" "\"normalize_normal\": true" _phong "${_phong}")
+  if(NOT _phong MATCHES "classic_phong" OR NOT _phong MATCHES "\"normalize_normal\": true")
+    message(FATAL_ERROR "the scene's model or normalize_normal was not found to replace")
+  endif()
+  file(WRITE ${WORK}/phong.json "${_phong}")
+endfunction()
+
+set(def ${WORK}/shader/broken.json)
+set(crosscheck ${XVAL} crosscheck ${SCENE} --renderer paper-listing --renderer-file ${def} -o ${WORK}/out)
+
+if(CASE STREQUAL "listing_passes")
+  broken("float4x4 World " "float4x4 World ")  # the listing unchanged
+  run(0 ${crosscheck})
+  expect_in("${out}${err}" "vs paper-listing: PASS")
+elseif(CASE STREQUAL "missing_saturate_fails")
+  broken("saturate(saturate(dot(LightVector, \nNormalWorld)) +" "saturate(dot(LightVector, \nNormalWorld) +")
+  run(1 ${crosscheck})
+  expect_in("${out}${err}" "vs paper-listing: FAIL")
+elseif(CASE STREQUAL "reflection_sign_fails")
+  broken("float3 Reflection = normalize(" "float3 Reflection = -normalize(")
+  run(1 ${crosscheck})
+  expect_in("${out}${err}" "vs paper-listing: FAIL")
+elseif(CASE STREQUAL "unbound_uniform_error")
+  broken("float4x4 World " "float4x4 World ")
+  string(REPLACE "\"uniforms\": {\"AmbientValue\": \"ambient_luma\"}," "" _def "${definition}")
+  string(REPLACE "kotsarenko2012_table1.fx" "broken.fx" _def "${_def}")
+  file(WRITE ${def} "${_def}")
+  run(2 ${crosscheck})
+  expect_in("${err}" "the uniform \"AmbientValue\" has no semantic")
+  expect_in("${err}" "nothing binds it")
+elseif(CASE STREQUAL "compile_error")
+  broken("float3 WorkCol = RGBtoYIQ(TexCol);" "float3 WorkCol = RGBtoYIQ(TexCol, TexAt);")
+  run(2 ${crosscheck})
+  expect_in("${err}" "glslangValidator")
+  expect_in("${err}" "${WORK}/shader/broken.fx:106:")  # the user's file and line, not a temporary copy's
+elseif(CASE STREQUAL "infinite_loop_times_out")
+  broken("float3 WorkCol = RGBtoYIQ(TexCol);"
+         "float k = TexCol.g; for (;;) { for (int j = 0; j < 64; ++j) k = sin(k * 1.0001f + 0.5f); if (TexCol.r < -1.0f) break; }\n  TexCol.g = k; float3 WorkCol = RGBtoYIQ(TexCol);")
+  run(2 ${crosscheck} --timeout 4)
+  expect_in("${err}" "timed out")
+elseif(CASE STREQUAL "two_lights_not_expressible")
+  broken("float4x4 World " "float4x4 World ")
+  file(READ ${SCENE} _scene)
+  string(REPLACE "{\n      \"type\": \"ambient\"" "{\"type\": \"point\", \"position\": [1, 1, 3]},\n    {\n      \"type\": \"ambient\"" _two "${_scene}")
+  if(_two STREQUAL _scene)
+    message(FATAL_ERROR "the scene's ambient light was not found to add a point light before")
+  endif()
+  file(WRITE ${WORK}/two_lights.json "${_two}")
+  run(0 ${XVAL} crosscheck ${WORK}/two_lights.json --renderer paper-listing --renderer-file ${def} -o ${WORK}/out)
+  expect_in("${out}${err}" "NOT EXPRESSIBLE")
+  expect_in("${out}${err}" "one point light: the scene has 2")
+elseif(CASE STREQUAL "source_outside_refused")
+  broken("float4x4 World " "float4x4 World ")
+  file(MAKE_DIRECTORY ${WORK}/shader/inner)
+  string(REPLACE "kotsarenko2012_table1.fx" "../broken.fx" _def "${definition}")
+  file(WRITE ${WORK}/shader/inner/outside.json "${_def}")
+  run(2 ${XVAL} crosscheck ${SCENE} --renderer paper-listing --renderer-file ${WORK}/shader/inner/outside.json -o ${WORK}/out)
+  expect_in("${err}" "source")
+  expect_in("${err}" "'..' is refused")
+elseif(CASE STREQUAL "phong_example_passes")
+  phong_scene()
+  run(0 ${XVAL} crosscheck ${WORK}/phong.json --renderer phong-fx --renderer-file ${PHONG} -o ${WORK}/out)
+  expect_in("${out}${err}" "vs phong-fx: PASS")
+elseif(CASE STREQUAL "glsl_example_passes" OR CASE STREQUAL "glsl_unmapped_uniform_error")
+  phong_scene()
+  get_filename_component(_examples ${PHONG} DIRECTORY)
+  foreach(_f phong330.frag phong330.vert phong330.json)
+    file(COPY ${_examples}/${_f} DESTINATION ${WORK}/glsl)
+  endforeach()
+  if(CASE STREQUAL "glsl_unmapped_uniform_error")
+    file(READ ${WORK}/glsl/phong330.json _def)
+    string(REPLACE "\"u_ka\": \"ka\"," "" _unmapped "${_def}")
+    if(_unmapped STREQUAL _def)
+      message(FATAL_ERROR "phong330.json has no u_ka mapping to remove")
+    endif()
+    file(WRITE ${WORK}/glsl/phong330.json "${_unmapped}")
+    run(2 ${XVAL} crosscheck ${WORK}/phong.json --renderer phong-glsl --renderer-file ${WORK}/glsl/phong330.json -o ${WORK}/out)
+    expect_in("${err}" "uniform \"u_ka\" is bound by nothing")
+  else()
+    run(0 ${XVAL} crosscheck ${WORK}/phong.json --renderer phong-glsl --renderer-file ${WORK}/glsl/phong330.json -o ${WORK}/out)
+    expect_in("${out}${err}" "vs phong-glsl: PASS")
+  endif()
+elseif(CASE STREQUAL "bench_beside_gl")
+  broken("float4x4 World " "float4x4 World ")
+  run(0 ${XVAL} bench ${SCENE} --renderers gl,paper-listing --renderer-file ${def} --frames 2 --runs 1)
+  expect_in("${out}${err}" "paper-listing      frame")
+else()
+  message(FATAL_ERROR "unknown CASE ${CASE}")
+endif()
