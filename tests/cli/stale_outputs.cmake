@@ -20,14 +20,9 @@ include(${CMAKE_CURRENT_LIST_DIR}/cli_run.cmake)
 require_defined(stale_outputs.cmake XVAL SCENE WORK)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK}/bin ${WORK}/scenes ${WORK}/wrong ${WORK}/outside)
-file(READ ${SCENE} _tiny)
-foreach(_s a b c)
-  string(REPLACE "\"name\": \"tiny\"" "\"name\": \"${_s}\"" _text "${_tiny}")
-  file(WRITE ${WORK}/scenes/${_s}.json "${_text}")
-  run(0 ${XVAL} render ${WORK}/scenes/${_s}.json -o ${WORK}/ref_${_s}.exr --precision double -q)
-endforeach()
+write_renamed_scenes(a b c)
 # a lit from the other side, for the wrong POV-Ray image.
-string(REPLACE "\"name\": \"tiny\"" "\"name\": \"a\"" _text "${_tiny}")
+file(READ ${WORK}/scenes/a.json _text)
 string(REGEX REPLACE "-0\\.3,[ \n]*-0\\.4" "0.3, 0.4" _wrong "${_text}")
 if(_wrong STREQUAL _text)
   message(FATAL_ERROR "stale_outputs.cmake: could not turn ${SCENE}'s light")
@@ -40,13 +35,8 @@ write_povray_stand_in(${WORK}/bin
   "s=$(/bin/echo \"$PWD\" | /bin/sed -n 's|.*/out/\\([^/]*\\)/.*|\\1|p')\n/bin/cp \"${WORK}/povray_$s.exr\" \"$out\"")
 
 function(validate expect_rc)
-  execute_process(COMMAND ${CMAKE_COMMAND} -E env "PATH=${WORK}/bin:/usr/bin:/bin"
-                          ${XVAL} validate ${ARGN} -o ${WORK}/out --renderers reference,povray --jobs 2 --timeout 60
-                  RESULT_VARIABLE rc ERROR_VARIABLE err TIMEOUT 300)
-  message("xval validate ${ARGN}: exit ${rc}\n${err}")
-  if(NOT rc EQUAL expect_rc)
-    message(FATAL_ERROR "xval validate exited ${rc}, expected ${expect_rc}")
-  endif()
+  validate_with_stand_ins(${expect_rc} ${WORK}/bin ${ARGN} -o ${WORK}/out --renderers reference,povray --jobs 2
+                          --timeout 60)
   set(err "${err}" PARENT_SCOPE)
 endfunction()
 # The names of a folder's entries, sorted.
