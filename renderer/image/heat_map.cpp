@@ -84,9 +84,8 @@ void writeHeatScalePng(const std::filesystem::path& png) {
   writePreviewPng(s, png, W);
 }
 
-std::string writeHeatMapPng(const Image& diff, const std::filesystem::path& results_dir, const std::string& scene,
-                            const std::string& pair, int max_side) {
-  const std::string rel = scene + "/heat_" + pair + ".png";
+std::string writeHeatMapPng(const Image& diff, const std::filesystem::path& results_dir, const std::string& rel,
+                            int max_side) {
   writePreviewPng(heatMap(maxDownscaled(diff, max_side)), results_dir / rel, max_side);
   return rel;
 }

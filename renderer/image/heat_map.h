@@ -34,14 +34,14 @@ void writeHeatScalePng(const std::filesystem::path& png);
 // The heat map of one pair (heatMap above) at full resolution up to
 // max_side px a side (larger: reduced by the block maximum, so a single bad
 // pixel stays visible)
-// as results_dir/<scene>/heat_<pair>.png; returns that path relative to
-// results_dir, for the pair's `heat_map` in results.json.
+// as results_dir/rel (validate names it: validate/compare_outputs.h);
+// returns rel, for the pair's `heat_map` in results.json.
 inline constexpr int kHeatMapSide = 1024;
 // A pair's precision bound map (`bound_map`): smaller, since it is looked
 // at beside the heat map, not searched pixel by pixel (the block maximum
 // keeps each block's largest bound).
 inline constexpr int kBoundMapSide = 128;
-std::string writeHeatMapPng(const Image& diff, const std::filesystem::path& results_dir,
-                            const std::string& scene, const std::string& pair, int max_side = kHeatMapSide);
+std::string writeHeatMapPng(const Image& diff, const std::filesystem::path& results_dir, const std::string& rel,
+                            int max_side = kHeatMapSide);
 
 }  // namespace xval

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "image/pixel_classes.h"
+#include "validate/compare_outputs.h"
 
 namespace xval {
 
@@ -42,19 +43,19 @@ nlohmann::ordered_json writePairCrops(const Image& a, const Image& b, const std:
                               m.worst_explained_class}}) {
     if (s.x < 0 || s.y < 0 || s.x >= heat.width || s.y >= heat.height) continue;  // none
     const CropWindow w = cropWindow(s.x, s.y, heat.width, heat.height);
-    const std::string stem = scene + "/crop_" + pair + "_" + s.key + "_";
+    const auto file = [&](const std::string& of) { return scene + "/" + cropName(pair, s.key, of); };
     J j;
     j["pixel"] = {s.x, s.y};
     j["error_16bit"] = std::isfinite(s.error) ? J(s.error * 65535.0) : J(nullptr);
     j["class"] = pixelClassInfo(s.cls).key;
     j["window"] = {w.x0, w.y0, w.width, w.height};
-    j["heat_map"] = stem + "heat.png";
-    writePreviewPng(cropImage(heat, w), results_dir / (stem + "heat.png"), kCropSide);
+    j["heat_map"] = file("heat");
+    writePreviewPng(cropImage(heat, w), results_dir / file("heat"), kCropSide);
     J jr = J::object();
     for (const auto& [id, img] : renders) {
       if (!img || img->width != heat.width || img->height != heat.height) continue;  // a failed render
-      jr[id] = stem + id + ".png";
-      writePreviewPng(cropImage(*img, w), results_dir / (stem + id + ".png"), kCropSide);
+      jr[id] = file(id);
+      writePreviewPng(cropImage(*img, w), results_dir / file(id), kCropSide);
     }
     j["renders"] = jr;
     out[s.key] = j;

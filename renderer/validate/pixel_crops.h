@@ -32,7 +32,8 @@ Image cropImage(const Image& img, const CropWindow& w);
 // a, b: the pair's images (with the diagnostics they were compared with);
 // renders: every render of the case by renderer id; heat: the pair's heat
 // map at full resolution (image/heat_map.h). Writes
-// results_dir/<scene>/crop_<pair>_<which>_<renderer or heat>.png and
+// results_dir/<scene>/crop_<pair>_<which>_<renderer or heat>.png
+// (validate/compare_outputs.h) and
 // returns, per pixel shown (key worst_unexplained, worst_explained; absent
 // when the pair has no such pixel): {pixel [x, y], error_16bit, class,
 // window [x0, y0, width, height], heat_map, renders {id: png}}, the paths

@@ -42,6 +42,31 @@ function(run expect_rc)
   set(out "${out}" PARENT_SCOPE)
 endfunction()
 
+# `xval validate ARGN` with the stand-in tools of folder `bin` first on PATH
+# (write_povray_stand_in): its exit status must be expect_rc; its stderr
+# into err.
+function(validate_with_stand_ins expect_rc bin)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env "PATH=${bin}:/usr/bin:/bin" ${XVAL} validate ${ARGN}
+                  RESULT_VARIABLE rc ERROR_VARIABLE err TIMEOUT 300)
+  message("xval validate ${ARGN}: exit ${rc}\n${err}")
+  if(NOT rc EQUAL expect_rc)
+    message(FATAL_ERROR "xval validate exited ${rc}, expected ${expect_rc}")
+  endif()
+  set(err "${err}" PARENT_SCOPE)
+endfunction()
+
+# For each name of ARGN: ${WORK}/scenes/<name>.json, the scene file SCENE
+# (named "tiny") renamed <name>, and its reference render
+# ${WORK}/ref_<name>.exr, for a stand-in renderer to copy.
+function(write_renamed_scenes)
+  file(READ ${SCENE} _tiny)
+  foreach(_s ${ARGN})
+    string(REPLACE "\"name\": \"tiny\"" "\"name\": \"${_s}\"" _text "${_tiny}")
+    file(WRITE ${WORK}/scenes/${_s}.json "${_text}")
+    run(0 ${XVAL} render ${WORK}/scenes/${_s}.json -o ${WORK}/ref_${_s}.exr --precision double -q)
+  endforeach()
+endfunction()
+
 function(expect_in text what)
   string(FIND "${text}" "${what}" _at)
   if(_at EQUAL -1)

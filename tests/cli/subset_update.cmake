@@ -11,24 +11,13 @@ include(${CMAKE_CURRENT_LIST_DIR}/cli_run.cmake)
 require_defined(subset_update.cmake XVAL SCENE WORK)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK}/bin ${WORK}/scenes)
-file(READ ${SCENE} _tiny)
-foreach(_s a b c)
-  string(REPLACE "\"name\": \"tiny\"" "\"name\": \"${_s}\"" _text "${_tiny}")
-  file(WRITE ${WORK}/scenes/${_s}.json "${_text}")
-  run(0 ${XVAL} render ${WORK}/scenes/${_s}.json -o ${WORK}/ref_${_s}.exr --precision double -q)
-endforeach()
+write_renamed_scenes(a b c)
 # The stand-in finds its case by the component after out/ in its work folder.
 write_povray_stand_in(${WORK}/bin
   "s=$(/bin/echo \"$PWD\" | /bin/sed -n 's|.*/out/\\([^/]*\\)/.*|\\1|p')\n/bin/cp \"${WORK}/ref_$s.exr\" \"$out\"")
 
 function(validate expect_rc)
-  execute_process(COMMAND ${CMAKE_COMMAND} -E env "PATH=${WORK}/bin:/usr/bin:/bin"
-                          ${XVAL} validate ${ARGN} -o ${WORK}/out --jobs 2 --timeout 60
-                  RESULT_VARIABLE rc ERROR_VARIABLE err TIMEOUT 300)
-  message("xval validate ${ARGN}: exit ${rc}\n${err}")
-  if(NOT rc EQUAL expect_rc)
-    message(FATAL_ERROR "xval validate exited ${rc}, expected ${expect_rc}")
-  endif()
+  validate_with_stand_ins(${expect_rc} ${WORK}/bin ${ARGN} -o ${WORK}/out --jobs 2 --timeout 60)
   set(err "${err}" PARENT_SCOPE)
 endfunction()
 function(cases var)

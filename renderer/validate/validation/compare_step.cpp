@@ -6,6 +6,7 @@
 #include <chrono>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <cstdio>
 #include <exception>
 #include <map>
@@ -29,6 +30,7 @@
 #include "scene/scene_lint.h"
 #include "scene/scene_loader.h"
 #include "validate/colour_stats.h"
+#include "validate/compare_outputs.h"
 #include "validate/pixel_crops.h"
 #include "validate/tolerances.h"
 #include "render/geometry_passes.h"
@@ -190,11 +192,12 @@ std::vector<PairFailure> comparedPair(const CompareContext& cx, const Scene& sce
       measurePair(A.image, B.image, tol, precision, &A.measuredOnce(), &B.measuredOnce());
   const CompareMetrics& m = measures.compare;
   const Image diff = differenceImage(A.image, B.image);
-  writeImage(diff, cx.plan.dir / scene.name / ("diff_" + key + ".exr"), kDifferenceExrCompression);
-  jp["heat_map"] = writeHeatMapPng(diff, cx.plan.dir, scene.name, key);  // the report only shows it
+  writeImage(diff, cx.plan.dir / scene.name / diffExrName(key), kDifferenceExrCompression);
+  // The heat map: the report shows it, not the EXR.
+  jp["heat_map"] = writeHeatMapPng(diff, cx.plan.dir, scene.name + "/" + heatMapName(key));
   // The pair's precision bound on the same scale, beside it.
   if (const Image bound = precisionBoundImage(A.image, B.image, precision); bound.width > 0)
-    jp["bound_map"] = writeHeatMapPng(bound, cx.plan.dir, scene.name, "bound_" + key, kBoundMapSide);
+    jp["bound_map"] = writeHeatMapPng(bound, cx.plan.dir, scene.name + "/" + boundMapName(key), kBoundMapSide);
   std::map<std::string, const Image*> images;
   // The renders of the scene (a geometry check's passes are no render of it).
   for (const auto& [id, rr] : renders)
@@ -273,8 +276,31 @@ J geometryCheck(const Plan& plan, const RenderJob& job, const Render& r) {
   }
 }
 
+// The names (no folder) of the comparison outputs (compare_outputs.h) a
+// case's pairs name: each compared pair's difference EXR (a pair with
+// metrics was compared; results.json names its heat map, not the EXR), its
+// heat and bound maps and its crops.
+std::set<std::string> namedOutputs(const J& pairs) {
+  std::set<std::string> named;
+  const auto add = [&named](const J& rel) { named.insert(fs::path(rel.get<std::string>()).filename().string()); };
+  for (const J& jp : pairs) {
+    if (jp.contains("metrics")) named.insert(diffExrName(jp["pair"].get<std::string>()));
+    for (const char* key : {"heat_map", "bound_map"})
+      if (jp.contains(key)) add(jp[key]);
+    if (!jp.contains("crops")) continue;
+    for (const auto& [pixel, crop] : jp["crops"].items()) {
+      add(crop["heat_map"]);
+      for (const auto& [id, png] : crop["renders"].items()) add(png);
+    }
+  }
+  return named;
+}
+
 // The case of plan.scenes[k]: its renders, every pair of them, who deviates.
-J compareCase(const CompareContext& cx, size_t k) {
+// Then the comparison outputs of its folder that its pairs do not name (an
+// earlier run's: a pair that no longer fails or no longer exists) are
+// removed, their names into `removed`.
+J compareCase(const CompareContext& cx, size_t k, std::vector<std::string>& removed) {
   const Plan& plan = cx.plan;
   const PlannedScene& ps = plan.scenes[k];
   const Scene scene = loadScene(ps.path, plan.budget);
@@ -314,6 +340,7 @@ J compareCase(const CompareContext& cx, size_t k) {
     if (verdict[p] == kCompareError) ++compare_errors, verdict[p] = kRenderError;
   }
   jc["pairs"] = jpairs;
+  removed = removeStaleCompareOutputs(plan.dir / ps.name, namedOutputs(jpairs));
   const auto ref = renders.find(renderers::registry().reference().id);
   if (ref != renders.end() && ref->second.error.empty() && !notExpressible(ref->second))
     jc["colour_stats"] = colourStatsJson(ref->second.image);
@@ -422,8 +449,9 @@ void CaseComparer::compare(size_t k) {
   // The cases are independent (each reads its own renders and writes into
   // its own folder); each result goes to its own slot.
   std::string verdict;
+  std::vector<std::string> removed;
   try {
-    st.compared.at(k) = compareCase(st.cx, k);
+    st.compared.at(k) = compareCase(st.cx, k, removed);
     verdict = progressWord(parseCaseVerdict(st.compared[k]["verdict"].get<std::string>(), "verdict"));
   } catch (...) {
     st.failed.at(k) = std::current_exception();
@@ -434,6 +462,11 @@ void CaseComparer::compare(size_t k) {
   std::fprintf(stderr, "[compared %zu/%zu] %-32s %-12s %6.2f s   elapsed %.0f s\n", ++st.done, st.plan.scenes.size(),
                st.plan.scenes[k].name.c_str(), verdict.c_str(), std::chrono::duration<double>(t1 - t0).count(),
                std::chrono::duration<double>(t1 - st.t0).count());
+  if (!removed.empty())
+    std::fprintf(stderr,
+                 "xval validate: %s: removed %zu stale comparison outputs (diff_*.exr, heat_*.png, crop_*.png) "
+                 "of an earlier run that this run's results do not name\n",
+                 (st.plan.dir / st.plan.scenes[k].name).c_str(), removed.size());
 }
 
 int CaseComparer::finish() {

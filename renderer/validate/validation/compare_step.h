@@ -8,7 +8,9 @@
 // reason), every unordered pair of the renderers it has jobs for, in
 // registry order (renderers::unorderedPairs), compared with the tolerance
 // declared for that scene and pair (validate/tolerances.h), each pair's
-// difference EXR and heat map PNG written into the case folder, and who
+// difference EXR and heat map PNG written into the case folder (the files of
+// the kinds validate/compare_outputs.h names that the case's results do not
+// name, an earlier run's, are removed from it, and their count said), and who
 // deviates (renderers::attribute, among the renderers that can express
 // it). A pair with a failed render is an error ("error"); a pair with a
 // renderer that cannot express the scene is not compared and not an error
