@@ -106,9 +106,8 @@ namespace v = xval::validation;
 int withJunit(const v::Plan& plan, int status, const std::string& junit) {
   if (junit.empty()) return status;
   const std::filesystem::path results = plan.dir / "results.json";
-  const auto r = parseOrderedJsonText(readJsonFile(results, "results file"), results.string());
-  checkResultsShape(r, results.string());  // as the report reads it (validate/results_shape.h)
-  writeFileAtomically(junit, junitXml(nlohmann::json(r), plan.dir.lexically_normal().filename().empty() ? std::string("xval validate") : plan.dir.lexically_normal().filename().string()));
+  // As the report reads it (validate/results/results.h).
+  writeFileAtomically(junit, junitXml(xval::results::readResults(results), plan.dir.lexically_normal().filename().empty() ? std::string("xval validate") : plan.dir.lexically_normal().filename().string()));
   std::fprintf(stderr, "xval validate: wrote %s\n", junit.c_str());
   return status;
 }

@@ -127,7 +127,18 @@ int crosscheck(const CrosscheckRequest& request) {
   return pass ? 0 : 1;
 }
 
-nlohmann::json crosscheckAsResults(const CrosscheckRequest& request, const std::string& error) {
+namespace {
+
+// The one case as the results types (results/results.h): every field read
+// with an error naming metrics.json when it is not what a results.json has.
+results::Results asResults(const nlohmann::json& c, const std::filesystem::path& metrics_file) {
+  return results::resultsFromJson(results::Json{{"cases", results::Json::array({results::Json::parse(c.dump())})}},
+                                  metrics_file.string());
+}
+
+}  // namespace
+
+results::Results crosscheckAsResults(const CrosscheckRequest& request, const std::string& error) {
   using J = nlohmann::json;
   const std::string reference = renderers::registry().reference().id;
   const std::string pair = reference + "-" + request.renderer;
@@ -161,7 +172,8 @@ nlohmann::json crosscheckAsResults(const CrosscheckRequest& request, const std::
   }
   if (!problem.empty()) {
     p = {{"pair", pair}, {"error", problem}};
-    c["renders"][request.renderer] = {{"error", problem}};
+    // Not timed: the run stopped before its record (JUnit's time 0).
+    c["renders"][request.renderer] = {{"seconds", 0.0}, {"error", problem}};
   }
   const renderers::Renderer* r = renderers::registry().find(request.renderer);
   if (r && r->geometry_passes) {
@@ -184,10 +196,10 @@ nlohmann::json crosscheckAsResults(const CrosscheckRequest& request, const std::
     }
     c["pairs"] = J::array();
     c["geometry_checks"] = J::array({g});
-    return {{"cases", J::array({c})}};
+    return asResults(c, metrics_file);
   }
   c["pairs"] = J::array({p});
-  return {{"cases", J::array({c})}};
+  return asResults(c, metrics_file);
 }
 
 }  // namespace xval::validation

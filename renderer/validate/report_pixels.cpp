@@ -1,5 +1,6 @@
 #include "validate/report_pixels.h"
 
+#include <algorithm>
 #include <sstream>
 
 #include "image/pixel_classes.h"
@@ -56,16 +57,18 @@ std::string cropRow(const J& shown, const char* title, const std::string& pair) 
 
 }  // namespace
 
-bool renderHasImage(const J& render, const fs::path& dir) {
-  if (render.contains("error") || !render.contains("image") || !render["image"].is_string()) return false;
-  return fs::is_regular_file(dir / render["image"].get<std::string>());
+bool renderHasImage(const results::Render& render, const fs::path& dir) {
+  if (render.error || !render.image) return false;
+  return fs::is_regular_file(dir / *render.image);
 }
 
-std::string pairVerdict(const J& p) {
-  if (p.contains("error")) return "error";
-  if (p.contains("not_expressible")) return "not expressible";
-  return p.value("pass", false) ? "pass" : "fail";
+std::string verdictWords(results::PairVerdict v) {
+  std::string word = results::pairVerdictName(v);
+  std::replace(word.begin(), word.end(), '_', ' ');
+  return word;
 }
+
+std::string pairVerdict(const results::Pair& p) { return verdictWords(p.verdict); }
 
 std::string pixelClassLegend(const std::string& doc_href) {
   std::ostringstream h;
@@ -77,29 +80,28 @@ std::string pixelClassLegend(const std::string& doc_href) {
   return h.str();
 }
 
-std::string casePixels(const J& c, const fs::path& dir) {
+std::string casePixels(const results::Case& c, const fs::path& dir) {
   std::ostringstream h;
-  int width = 0, height = 0;  // the scene's, from any pair's metrics
-  for (const auto& p : c["pairs"])
-    if (p.contains("metrics")) width = p["metrics"]["width"].get<int>(), height = p["metrics"]["height"].get<int>();
+  long long width = 0, height = 0;  // the scene's, from any pair's metrics
+  for (const results::Pair& p : c.pairs)
+    if (p.metrics) width = p.metrics->width, height = p.metrics->height;
   // The viewer: one image, a button per render and per heat map.
   std::ostringstream buttons;
   std::string first;
-  for (auto it = c["renders"].begin(); it != c["renders"].end(); ++it) {
+  for (const auto& [id, render] : c.renders) {
     // Only renders with an image: not a failed or a not-expressible one.
-    if (!renderHasImage(it.value(), dir)) continue;
-    const std::string src = it.value()["image"].get<std::string>();
+    if (!renderHasImage(render, dir)) continue;
+    const std::string& src = *render.image;
     if (first.empty()) first = src;
-    buttons << "<button type=\"button\" data-src=\"" << htmlEscape(src) << "\">" << htmlEscape(it.key())
-            << "</button>";
+    buttons << "<button type=\"button\" data-src=\"" << htmlEscape(src) << "\">" << htmlEscape(id) << "</button>";
   }
-  for (const auto& p : c["pairs"]) {
-    if (p.contains("heat_map"))
-      buttons << "<button type=\"button\" data-src=\"" << htmlEscape(p["heat_map"].get<std::string>()) << "\">|"
-              << htmlEscape(p["pair"].get<std::string>()) << "|</button>";
-    if (p.contains("bound_map"))
-      buttons << "<button type=\"button\" data-src=\"" << htmlEscape(p["bound_map"].get<std::string>())
-              << "\">bound " << htmlEscape(p["pair"].get<std::string>()) << "</button>";
+  for (const results::Pair& p : c.pairs) {
+    if (p.heat_map)
+      buttons << "<button type=\"button\" data-src=\"" << htmlEscape(*p.heat_map) << "\">|" << htmlEscape(p.pair)
+              << "|</button>";
+    if (p.bound_map)
+      buttons << "<button type=\"button\" data-src=\"" << htmlEscape(*p.bound_map) << "\">bound "
+              << htmlEscape(p.pair) << "</button>";
   }
   if (!first.empty() && width > 0)
     h << "<div class=\"viewer\" data-viewer><div class=\"swapbar\">show: " << buttons.str()
@@ -107,17 +109,18 @@ std::string casePixels(const J& c, const fs::path& dir) {
       << "px\"></div>\n";
   // The heat maps, full resolution, with the two pixels marked.
   h << "<div class=\"imgs\">";
-  for (const auto& p : c["pairs"]) {
-    if (!p.contains("heat_map")) continue;
-    const std::string pair = p["pair"].get<std::string>();
-    const std::string heat = p["heat_map"].get<std::string>();
+  for (const results::Pair& p : c.pairs) {
+    if (!p.heat_map) continue;
+    const std::string& pair = p.pair;
+    const std::string& heat = *p.heat_map;
     if (!fs::is_regular_file(dir / heat)) {
       h << "<p class=\"err\">heat map " << htmlEscape(heat) << " (named in results.json) is missing</p>";
       continue;
     }
     h << "<figure><div class=\"marked\" style=\"width:" << width << "px\"><img class=\"heat\" src=\""
       << htmlEscape(heat) << "\" alt=\"heat map " << htmlEscape(pair) << "\">";
-    const J crops = p.value("crops", J::object());
+    // The crops are kept as written (results/results.h).
+    const J crops = p.crops.is_object() ? p.crops : J::object();
     for (const char* which : {"worst_unexplained", "worst_explained"})
       if (crops.contains(which))
         h << "<span class=\"mark " << which << "\" title=\"" << which << " " << pixelText(crops[which])
@@ -130,8 +133,8 @@ std::string casePixels(const J& c, const fs::path& dir) {
     h << "</figcaption></figure>";
     // The precision bound on the same scale: where |a - b| is brighter than
     // it, only an edge, a backfacing normal or nothing explains the pixel.
-    if (p.contains("bound_map")) {
-      const std::string bound = p["bound_map"].get<std::string>();
+    if (p.bound_map) {
+      const std::string& bound = *p.bound_map;
       if (!fs::is_regular_file(dir / bound))
         h << "<p class=\"err\">bound map " << htmlEscape(bound) << " (named in results.json) is missing</p>";
       else
@@ -141,10 +144,10 @@ std::string casePixels(const J& c, const fs::path& dir) {
     }
   }
   h << "</div>\n";
-  for (const auto& p : c["pairs"]) {
-    if (!p.contains("crops")) continue;
+  for (const results::Pair& p : c.pairs) {
+    if (!p.crops.is_object()) continue;
     for (const char* which : {"worst_unexplained", "worst_explained"})
-      if (p["crops"].contains(which)) h << cropRow(p["crops"][which], which, p["pair"].get<std::string>());
+      if (p.crops.contains(which)) h << cropRow(p.crops[which], which, p.pair);
   }
   return h.str();
 }

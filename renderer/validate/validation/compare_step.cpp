@@ -33,6 +33,7 @@
 #include "validate/tolerances.h"
 #include "render/geometry_passes.h"
 #include "validate/geometry_check.h"
+#include "validate/results/results.h"
 #include "validate/validation/case_verdict.h"
 #include "validate/validation/geometry_checks.h"
 #include "validate/validation/job_record.h"
@@ -115,6 +116,17 @@ J renderJson(const RenderJob& job, const Render& r) {
 constexpr int kPass = renderers::kPairPasses, kFail = renderers::kPairFails,
               kFailOnlyFraction = renderers::kPairFailsOnlyOnFraction, kRenderError = -1, kNotExpressible = -2,
               kCompareError = -3;
+
+// The pair's verdict results.json stores (results/results.h), once.
+results::PairVerdict pairVerdict(int verdict) {
+  switch (verdict) {
+    case kPass: return results::PairVerdict::Pass;
+    case kFail:
+    case kFailOnlyFraction: return results::PairVerdict::Fail;
+    case kNotExpressible: return results::PairVerdict::NotExpressible;
+    default: return results::PairVerdict::Error;  // kRenderError, kCompareError
+  }
+}
 
 std::vector<PairFailure> comparedPair(const CompareContext& cx, const Scene& scene, const std::string& key,
                                       const Tolerance& tol, const PairPrecision& precision, const std::string& reason,
@@ -312,6 +324,7 @@ J compareCase(const CompareContext& cx, size_t k) {
   for (size_t p = 0; p < pairs.size(); ++p) {
     jpairs.push_back(comparePair(cx, scene, *rs[pairs[p].a], *rs[pairs[p].b], renders, verdict[p]));
     if (verdict[p] == kCompareError) ++compare_errors, verdict[p] = kRenderError;
+    jpairs.back()["verdict"] = results::pairVerdictName(pairVerdict(verdict[p]));
   }
   jc["pairs"] = jpairs;
   const auto ref = renders.find(renderers::registry().reference().id);
@@ -472,13 +485,12 @@ int CaseComparer::finish() {
     ++cases[verdicts.back()];
     jcases.push_back(std::move(jc));
   }
-  // Errors quote tools' logs and files' names, which are bytes: any that
-  // are not UTF-8 are written as U+FFFD (files/utf8_text.h), never a
-  // results.json that cannot be written.
-  writeFileAtomically(dir / "results.json",
-                      resultsJson(plan, jcases, setting_files, st.jsections)
-                              .dump(2, ' ', false, nlohmann::json::error_handler_t::replace) +
-                          "\n");
+  // Written through the results types' one writer (results/results.h),
+  // which writes bytes that are no UTF-8 (tools' logs, files' names) as
+  // U+FFFD: never a results.json that cannot be written.
+  results::writeResults(dir / "results.json",
+                        results::resultsFromJson(resultsJson(plan, jcases, setting_files, st.jsections),
+                                                 (dir / "results.json").string()));
   writeReport(dir / "results.json", dir / "report.html");
   printNextSteps(plan, jcases);
   // "3 scenes, all pass", else the worst verdict and every verdict's count:
