@@ -74,7 +74,9 @@ TEST(Results, TheVerdictsAreTheStoredOnes) {
   for (const results::Case& c : r.cases) {
     ASSERT_TRUE(c.verdict.has_value()) << c.scene;
     for (const results::Pair& p : c.pairs)
-      if (p.error) EXPECT_EQ(p.verdict, results::PairVerdict::Error) << p.pair;
+      if (p.error) {
+        EXPECT_EQ(p.verdict, results::PairVerdict::Error) << p.pair;
+      }
   }
 }
 
