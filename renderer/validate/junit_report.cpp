@@ -66,17 +66,13 @@ std::string metricProperties(const results::Pair& p) {
 
 // "covered 19553, 0 hit/object disagreements off silhouettes (3 on them),
 // max depth rel. error 3.3e-06 (bound 2e-05), max uv error 0.84 (bound
-// 0.0001), 0 edge pixels over". The check's metrics and bounds are kept as
-// written (results/results.h); a number missing reads 0.
-std::string describeGeometry(const results::Json& m, const results::Json& b) {
-  auto get = [](const results::Json& j, const char* k) {
-    return j.is_object() && j.contains(k) && j[k].is_number() ? j[k].get<double>() : 0.0;
-  };
-  return "covered " + num(get(m, "covered")) + ", " + num(get(m, "mask_disagree") - get(m, "mask_disagree_silhouette")) +
-         " hit/object disagreements off silhouettes (" + num(get(m, "mask_disagree_silhouette")) +
-         " on them), max depth rel. error " + num(get(m, "max_depth_rel")) + " (bound " + num(get(b, "max_depth_rel")) +
-         "), max uv error " + num(get(m, "max_uv")) + " (bound " + num(get(b, "max_uv")) + "), " +
-         num(get(m, "edge_over")) + " edge pixels over";
+// 0.0001), 0 edge pixels over"
+std::string describeGeometry(const results::GeometryCheckMetrics& m, const results::GeometryCheckBounds& b) {
+  return "covered " + num(double(m.covered)) + ", " + num(double(m.mask_disagree - m.mask_disagree_silhouette)) +
+         " hit/object disagreements off silhouettes (" + num(double(m.mask_disagree_silhouette)) +
+         " on them), max depth rel. error " + num(m.max_depth_rel) + " (bound " + num(b.max_depth_rel) +
+         "), max uv error " + num(m.max_uv) + " (bound " + num(b.max_uv) + "), " + num(double(m.edge_over)) +
+         " edge pixels over";
 }
 
 double seconds(const results::Case& c, const std::string& id) {
@@ -151,10 +147,10 @@ std::string junitXml(const results::Results& results, const std::string& suite_n
           body += ">\n      <error message=\"" + xmlEscape(reason) + "\" type=\"error\">" + xmlEscape(renderErrors(c)) +
                   "</error>\n    </testcase>\n";
           break;
-        case PairVerdict::Fail:
+        case PairVerdict::Fail:  // a compared check: the reader requires its metrics and bounds
           ++n.failures;
           body += ">\n      <failure message=\"" +
-                  xmlEscape("geometry outside its bounds: " + reason + "; " + describeGeometry(g.metrics, g.bounds)) +
+                  xmlEscape("geometry outside its bounds: " + reason + "; " + describeGeometry(*g.metrics, *g.bounds)) +
                   "\" type=\"outside_tolerance\"/>\n    </testcase>\n";
           break;
       }

@@ -142,10 +142,7 @@ const results::GeometryCheck* findCheck(const results::Case& c, const std::strin
 }
 
 // A small number in two significant digits ("3.3e-06", "0.84").
-std::string twoDigits(const J& v) {
-  if (!v.is_number()) return "n/a";
-  return fmt::format("{:.2g}", v.get<double>());
-}
+std::string twoDigits(double v) { return fmt::format("{:.2g}", v); }
 
 // The p99.9 error of every pair of every case, as a gnuplot bar chart.
 void writePlot(const Cases& cases, const std::vector<std::string>& pairs, const std::filesystem::path& dir) {
@@ -308,25 +305,22 @@ std::string geometryChecksTable(const results::Case& c) {
        "<th>edge pixels over (bound)</th></tr>\n";
   for (const results::GeometryCheck& g : c.geometry_checks) {
     h << "<tr><td class=\"l\">" << htmlEscape(checkName(g)) << "</td>";
-    if (g.metrics.is_null()) {
+    if (!g.metrics) {
       const bool nx = g.verdict == results::PairVerdict::NotExpressible;
       h << "<td class=\"" << (nx ? "nexp" : "err") << "\" colspan=\"8\">" << (nx ? "not expressible: " : "error: ")
         << htmlEscape(g.reason.value_or("")) << "</td></tr>\n";
       continue;
     }
-    // A check's metrics and bounds are kept as written (results/results.h).
-    const J& m = g.metrics;
-    const J& b = g.bounds;
-    const double covered = double(m["covered"].get<long long>());
-    const long long off = m["mask_disagree"].get<long long>() - m["mask_disagree_silhouette"].get<long long>();
-    h << "<td " << verdictCell(checkVerdict(g)) << "</td><td>" << m["covered"].get<long long>() << "</td><td>" << off
-      << " (0)</td><td>" << m["mask_disagree_silhouette"].get<long long>() << " ("
-      << static_cast<long long>(std::floor(b["max_silhouette_fraction"].get<double>() * covered)) << ")</td><td>"
-      << twoDigits(m["max_depth_rel"]) << " (" << twoDigits(b["max_depth_rel"]) << "; "
-      << twoDigits(m["max_depth_rel_all"]) << ")</td><td>" << m["uv_compared"].get<long long>() << "</td><td>"
-      << twoDigits(m["max_uv"]) << " (" << twoDigits(b["max_uv"]) << "; " << twoDigits(m["max_uv_all"])
-      << ")</td><td>" << m["edge_over"].get<long long>() << " ("
-      << static_cast<long long>(std::floor(b["max_edge_fraction"].get<double>() * covered)) << ")</td></tr>\n";
+    const results::GeometryCheckMetrics& m = *g.metrics;  // a compared check has both (results/results.h)
+    const results::GeometryCheckBounds& b = *g.bounds;
+    const double covered = double(m.covered);
+    const long long off = m.mask_disagree - m.mask_disagree_silhouette;
+    h << "<td " << verdictCell(checkVerdict(g)) << "</td><td>" << m.covered << "</td><td>" << off << " (0)</td><td>"
+      << m.mask_disagree_silhouette << " (" << static_cast<long long>(std::floor(b.max_silhouette_fraction * covered))
+      << ")</td><td>" << twoDigits(m.max_depth_rel) << " (" << twoDigits(b.max_depth_rel) << "; "
+      << twoDigits(m.max_depth_rel_all) << ")</td><td>" << m.uv_compared << "</td><td>" << twoDigits(m.max_uv) << " ("
+      << twoDigits(b.max_uv) << "; " << twoDigits(m.max_uv_all) << ")</td><td>" << m.edge_over << " ("
+      << static_cast<long long>(std::floor(b.max_edge_fraction * covered)) << ")</td></tr>\n";
     if (g.reason)
       h << "<tr><td class=\"l\"></td><td class=\"l fail\" colspan=\"8\">" << htmlEscape(*g.reason)
         << "</td></tr>\n";

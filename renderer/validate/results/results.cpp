@@ -81,6 +81,12 @@ class Fields {
   Json rest_;
 };
 
+// An object modelled whole: a member the types do not name is refused,
+// never dropped.
+void refuseRest(const Fields& f) {
+  if (!f.rest().empty()) throw std::runtime_error(f.at(f.rest().begin().key().c_str()) + ": not a field here");
+}
+
 const Json& asArray(const Json& v, const std::string& where) {
   if (!v.is_array()) throw std::runtime_error(where + ": expected an array");
   return v;
@@ -128,7 +134,7 @@ PairMetrics readMetrics(const Json& j, const std::string& where) {
   m.tolerance.fraction = t.num("fraction");
   m.tolerance.exclude_backfacing = t.boolean("exclude_backfacing");
   m.tolerance.max_unexplained_16bit = t.num("max_unexplained_16bit");
-  if (!t.rest().empty()) throw std::runtime_error(t.at(t.rest().begin().key().c_str()) + ": not a field here");
+  refuseRest(t);
   m.tolerance_reason = f.has("tolerance_reason") ? f.str("tolerance_reason") : std::string();
   if (const Json* values = f.takeOptional("values"))
     m.values = named<std::optional<double>>(*values, f.at("values"), [](const Json& v, const std::string& w) {
@@ -181,11 +187,33 @@ GeometryCheck readCheck(const Json& j, const std::string& where) {
   g.against = f.str("against");
   g.verdict = parsePairVerdict(f.str("verdict"), f.at("verdict"));
   g.reason = f.optStr("reason");
-  g.metrics = f.json("metrics");
-  g.bounds = f.json("bounds");
+  if (const Json* mj = f.takeOptional("metrics")) {
+    Fields m(*mj, f.at("metrics"));
+    GeometryCheckMetrics gm;
+    gm.covered = m.integer("covered");
+    gm.mask_disagree = m.integer("mask_disagree");
+    gm.mask_disagree_silhouette = m.integer("mask_disagree_silhouette");
+    gm.compared = m.integer("compared");
+    gm.max_depth_rel = m.num("max_depth_rel");
+    gm.max_depth_rel_all = m.num("max_depth_rel_all");
+    gm.uv_compared = m.integer("uv_compared");
+    gm.max_uv = m.num("max_uv");
+    gm.max_uv_all = m.num("max_uv_all");
+    gm.depth_edges = m.integer("depth_edges");
+    gm.edge_over = m.integer("edge_over");
+    refuseRest(m);
+    g.metrics = gm;
+  }
+  if (const Json* bj = f.takeOptional("bounds")) {
+    Fields b(*bj, f.at("bounds"));
+    g.bounds = GeometryCheckBounds{b.num("max_silhouette_fraction"), b.num("max_depth_rel"), b.num("max_uv"),
+                                   b.num("max_edge_fraction"), b.str("reason")};
+    refuseRest(b);
+  }
   const bool compared = g.verdict == PairVerdict::Pass || g.verdict == PairVerdict::Fail;
-  if (compared && (!g.metrics.is_object() || !g.bounds.is_object()))
-    throw std::runtime_error(where + ": a compared check needs \"metrics\" and \"bounds\" objects");
+  if (compared != (g.metrics && g.bounds))
+    throw std::runtime_error(where + ": a " + (compared ? "compared" : "not compared") + " check " +
+                             (compared ? "needs" : "has no") + " \"metrics\" and \"bounds\"");
   g.rest = f.rest();
   return g;
 }
@@ -292,8 +320,24 @@ Json checkJson(const GeometryCheck& g) {
   j["against"] = g.against;
   j["verdict"] = pairVerdictName(g.verdict);
   if (g.reason) j["reason"] = *g.reason;
-  if (!g.metrics.is_null()) j["metrics"] = g.metrics;
-  if (!g.bounds.is_null()) j["bounds"] = g.bounds;
+  if (const auto& m = g.metrics)
+    j["metrics"] = {{"covered", m->covered},
+                    {"mask_disagree", m->mask_disagree},
+                    {"mask_disagree_silhouette", m->mask_disagree_silhouette},
+                    {"compared", m->compared},
+                    {"max_depth_rel", m->max_depth_rel},
+                    {"max_depth_rel_all", m->max_depth_rel_all},
+                    {"uv_compared", m->uv_compared},
+                    {"max_uv", m->max_uv},
+                    {"max_uv_all", m->max_uv_all},
+                    {"depth_edges", m->depth_edges},
+                    {"edge_over", m->edge_over}};
+  if (const auto& b = g.bounds)
+    j["bounds"] = {{"max_silhouette_fraction", b->max_silhouette_fraction},
+                   {"max_depth_rel", b->max_depth_rel},
+                   {"max_uv", b->max_uv},
+                   {"max_edge_fraction", b->max_edge_fraction},
+                   {"reason", b->reason}};
   j.update(g.rest);
   return j;
 }
@@ -373,7 +417,7 @@ Results resultsFromJson(const Json& j, const std::string& where) {
     Fields sf(*s, f.at("sections"));
     r.extremes_section = sf.optStr("extremes");
     r.tradeoff_section = sf.optStr("tradeoff");
-    if (!sf.rest().empty()) throw std::runtime_error(sf.at(sf.rest().begin().key().c_str()) + ": not a field here");
+    refuseRest(sf);
   }
   r.rest = f.rest();
   return r;

@@ -8,13 +8,13 @@
 // renderers, warnings, attribution, deviating renderers, reproduce
 // command, verdict, pass, geometry checks), each render, each pair (its
 // verdict, error or refusal, heat and bound maps, pass, failed criteria,
-// metrics) and the pair metrics the report and JUnit show (sizes, errors,
+// metrics), each geometry check (its metrics and bounds) and the pair metrics the report and JUnit show (sizes, errors,
 // mask disagreements, tolerance, tolerance reason, the metric table's
 // values). What is kept as JSON, read and written back unchanged (never
 // dropped): the parts no reader here interprets field by field — a pair's
 // crops and classification, the rest of its metrics (histogram, worst
-// pixels, per-class counts, precision models, ...), a geometry check's
-// metrics and bounds, a case's colour statistics, the paper's claims — and,
+// pixels, per-class counts, precision models, ...), a case's colour
+// statistics, the paper's claims — and,
 // in every modelled object, any member the types do not name (`rest`:
 // none in a file the schema accepts but for those, members of a
 // crosscheck's metrics.json).
@@ -103,11 +103,31 @@ struct Pair {
   bool operator==(const Pair&) const = default;
 };
 
+// A compared geometry check's counts and maxima, and the bounds it is held
+// to (validate/geometry_check.h; docs/results-schema.json
+// definitions.geometry_check).
+struct GeometryCheckMetrics {
+  long long covered = 0, mask_disagree = 0, mask_disagree_silhouette = 0, compared = 0;
+  double max_depth_rel = 0, max_depth_rel_all = 0;
+  long long uv_compared = 0;
+  double max_uv = 0, max_uv_all = 0;
+  long long depth_edges = 0, edge_over = 0;
+  bool operator==(const GeometryCheckMetrics&) const = default;
+};
+
+struct GeometryCheckBounds {
+  double max_silhouette_fraction = 0, max_depth_rel = 0, max_uv = 0, max_edge_fraction = 0;
+  std::string reason;
+  bool operator==(const GeometryCheckBounds&) const = default;
+};
+
 struct GeometryCheck {
   std::string renderer, against;
   PairVerdict verdict = PairVerdict::Error;
   std::optional<std::string> reason;
-  Json metrics, bounds;  // null for a check not compared
+  // A compared check (pass, fail) has both; one not compared neither.
+  std::optional<GeometryCheckMetrics> metrics;
+  std::optional<GeometryCheckBounds> bounds;
   Json rest = Json::object();
   bool operator==(const GeometryCheck&) const = default;
 };
