@@ -329,9 +329,9 @@ std::string geometryChecksTable(const results::Case& c) {
   return h.str();
 }
 
-const J* findCase(const Cases& cases, const std::string& name) {
+const results::ColourStats* findColourStats(const Cases& cases, const std::string& name) {
   for (const results::Case* c : cases)
-    if (c->scene == name && !c->colour_stats.is_null()) return &c->colour_stats;
+    if (c->scene == name && c->colour_stats) return &*c->colour_stats;
   return nullptr;
 }
 
@@ -339,8 +339,8 @@ const J* findCase(const Cases& cases, const std::string& name) {
 // judged by the compare step: validate/paper_claims.h), with the colour
 // statistics of the scenes they are judged on.
 std::string paperClaimsSection(const results::Results& results, const Cases& cases) {
-  if (results.paper_claims.is_null()) return "";  // not in this run
-  const J& pc = results.paper_claims;  // kept as written (results/results.h)
+  if (!results.paper_claims) return "";  // not in this run
+  const results::PaperClaims& pc = *results.paper_claims;
   std::ostringstream h;
   h << "<h2>The paper's Figure 1 claims, measured</h2>\n<p>On the reference renders of the "
        "Figure 1 scenes, over lit pixels (luma &gt; 0.02), colours as sRGB-coded CIELAB: mean "
@@ -348,24 +348,22 @@ std::string paperClaimsSection(const results::Results& results, const Cases& cas
        "texture colour at the same pixel (where both have C* &ge; 5). See docs/paper-claims.md.</p>\n"
        "<table><tr><th class=\"l\">scene</th><th>lit pixels</th><th>mean C*</th><th>texture mean C*</th>"
        "<th>grey share</th><th>hue error (deg)</th></tr>\n";
-  for (const auto& name : pc["scenes"]) {
-    const J* st = findCase(cases, name.get<std::string>());
-    h << "<tr><td class=\"l\">" << htmlEscape(name.get<std::string>()) << "</td>";
+  for (const std::string& name : pc.scenes) {
+    const results::ColourStats* st = findColourStats(cases, name);
+    h << "<tr><td class=\"l\">" << htmlEscape(name) << "</td>";
     if (!st) {
       h << "<td class=\"err\" colspan=\"5\">no colour statistics in results.json</td></tr>\n";
       continue;
     }
-    h << "<td>" << (*st)["lit_pixels"].get<long long>() << "</td><td>" << fixed((*st)["mean_chroma"], 2)
-      << "</td><td>" << fixed((*st)["mean_albedo_chroma"], 2) << "</td><td>"
-      << fixed(100 * (*st)["grey_fraction"].get<double>(), 1) << "%</td><td>" << fixed((*st)["hue_error_deg"], 2)
-      << "</td></tr>\n";
+    h << "<td>" << st->lit_pixels << "</td><td>" << fixed(st->mean_chroma, 2) << "</td><td>"
+      << fixed(st->mean_albedo_chroma, 2) << "</td><td>" << fixed(100 * st->grey_fraction, 1) << "%</td><td>"
+      << fixed(st->hue_error_deg, 2) << "</td></tr>\n";
   }
   h << "</table>\n<table><tr><th class=\"l\">claim (paper, section 4)</th><th class=\"l\">condition</th>"
        "<th>measured</th><th>verdict</th></tr>\n";
-  for (const auto& c : pc["claims"])
-    h << "<tr><td class=\"l\">" << htmlEscape(c["claim"].get<std::string>()) << "</td><td class=\"l\">"
-      << htmlEscape(c["condition"].get<std::string>()) << "</td><td>" << htmlEscape(c["measured"].get<std::string>())
-      << "</td><td class=\"" << (c["holds"].get<bool>() ? "pass\">holds" : "fail\">does not hold")
+  for (const results::PaperClaim& c : pc.claims)
+    h << "<tr><td class=\"l\">" << htmlEscape(c.claim) << "</td><td class=\"l\">" << htmlEscape(c.condition)
+      << "</td><td>" << htmlEscape(c.measured) << "</td><td class=\"" << (c.holds ? "pass\">holds" : "fail\">does not hold")
       << "</td></tr>\n";
   h << "</table>\n";
   return h.str();

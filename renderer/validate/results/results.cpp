@@ -38,15 +38,7 @@ class Fields {
 
   std::string str(const char* key) { return asString(take(key), at(key)); }
   double num(const char* key) { return asNumber(take(key), at(key)); }
-  long long integer(const char* key) {
-    const Json& v = take(key);
-    if (v.is_number_integer()) return v.get<long long>();
-    // A float that is a whole number in range (the schema's "integer").
-    const double d = v.is_number_float() ? v.get<double>() : 0.5;
-    if (!(std::fabs(d) < 9.0e18) || std::trunc(d) != d)
-      throw std::runtime_error(at(key) + ": " + v.dump() + ": expected an integer");
-    return static_cast<long long>(d);
-  }
+  long long integer(const char* key) { return asInteger(take(key), at(key)); }
   bool boolean(const char* key) {
     const Json& v = take(key);
     if (!v.is_boolean()) throw std::runtime_error(at(key) + ": " + v.dump() + ": expected true or false");
@@ -68,6 +60,14 @@ class Fields {
   static std::string asString(const Json& v, const std::string& where) {
     if (!v.is_string()) throw std::runtime_error(where + ": " + v.dump(-1, ' ', false, Json::error_handler_t::replace) + ": expected a string");
     return v.get<std::string>();
+  }
+  static long long asInteger(const Json& v, const std::string& where) {
+    if (v.is_number_integer()) return v.get<long long>();
+    // A float that is a whole number in range (the schema's "integer").
+    const double d = v.is_number_float() ? v.get<double>() : 0.5;
+    if (!(std::fabs(d) < 9.0e18) || std::trunc(d) != d)
+      throw std::runtime_error(where + ": " + v.dump(-1, ' ', false, Json::error_handler_t::replace) + ": expected an integer");
+    return static_cast<long long>(d);
   }
   static double asNumber(const Json& v, const std::string& where) {
     if (!v.is_number()) throw std::runtime_error(where + ": " + v.dump(-1, ' ', false, Json::error_handler_t::replace) + ": expected a number");
@@ -144,6 +144,37 @@ PairMetrics readMetrics(const Json& j, const std::string& where) {
   return m;
 }
 
+std::vector<std::string> strings(const Json& v, const std::string& where) {
+  asArray(v, where);
+  std::vector<std::string> out;
+  for (size_t i = 0; i < v.size(); ++i) out.push_back(Fields::asString(v[i], index(where, i)));
+  return out;
+}
+
+// Two or four integers (a pixel, a window).
+std::vector<long long> integers(const Json& v, size_t n, const std::string& where) {
+  if (!v.is_array() || v.size() != n)
+    throw std::runtime_error(where + ": expected " + std::to_string(n) + " integers");
+  std::vector<long long> out;
+  for (size_t i = 0; i < n; ++i) out.push_back(Fields::asInteger(v[i], index(where, i)));
+  return out;
+}
+
+ShownPixel readShown(const Json& j, const std::string& where) {
+  Fields f(j, where);
+  ShownPixel s;
+  const std::vector<long long> xy = integers(f.take("pixel"), 2, f.at("pixel"));
+  s.x = xy[0], s.y = xy[1];
+  s.error_16bit = f.numOrNull("error_16bit");
+  s.pixel_class = f.str("class");
+  const std::vector<long long> w = integers(f.take("window"), 4, f.at("window"));
+  s.window_x = w[0], s.window_y = w[1], s.window_width = w[2], s.window_height = w[3];
+  s.heat_map = f.str("heat_map");
+  s.renders = named<std::string>(f.take("renders"), f.at("renders"), Fields::asString);
+  refuseRest(f);
+  return s;
+}
+
 // The verdict a pair's fields imply: what a file without a stored one means.
 PairVerdict impliedVerdict(const Pair& p) {
   if (p.error) return PairVerdict::Error;
@@ -160,7 +191,14 @@ Pair readPair(const Json& j, const std::string& where) {
   p.not_expressible = f.optStr("not_expressible");
   p.heat_map = f.optStr("heat_map");
   p.bound_map = f.optStr("bound_map");
-  p.crops = f.json("crops");
+  if (const Json* crops = f.takeOptional("crops")) {
+    Fields cf(*crops, f.at("crops"));
+    PairCrops pc;
+    if (const Json* s = cf.takeOptional("worst_unexplained")) pc.worst_unexplained = readShown(*s, cf.at("worst_unexplained"));
+    if (const Json* s = cf.takeOptional("worst_explained")) pc.worst_explained = readShown(*s, cf.at("worst_explained"));
+    refuseRest(cf);
+    p.crops = pc;
+  }
   if (const Json* m = f.takeOptional("metrics")) p.metrics = readMetrics(*m, f.at("metrics"));
   if (f.has("pass")) p.pass = f.boolean("pass");
   if (const Json* failed = f.takeOptional("failed")) p.failed = failedFromJson(*failed, f.at("failed"));
@@ -237,17 +275,19 @@ Case readCase(const Json& j, const std::string& where) {
     }
   }
   for (size_t i = 0; i < pairs.size(); ++i) c.pairs.push_back(readPair(pairs[i], index(f.at("pairs"), i)));
-  c.colour_stats = f.json("colour_stats");
+  if (const Json* cs = f.takeOptional("colour_stats")) {
+    Fields s(*cs, f.at("colour_stats"));
+    c.colour_stats = ColourStats{s.integer("lit_pixels"), s.num("mean_chroma"), s.num("mean_albedo_chroma"),
+                                 s.num("grey_fraction"), s.num("hue_error_deg")};
+    refuseRest(s);
+  }
   if (const Json* gs = f.takeOptional("geometry_checks")) {
     asArray(*gs, f.at("geometry_checks"));
     for (size_t i = 0; i < gs->size(); ++i)
       c.geometry_checks.push_back(readCheck((*gs)[i], index(f.at("geometry_checks"), i)));
   }
   c.attribution = f.has("attribution") ? f.str("attribution") : std::string();
-  if (const Json* d = f.takeOptional("deviating")) {
-    asArray(*d, f.at("deviating"));
-    for (size_t i = 0; i < d->size(); ++i) c.deviating.push_back(Fields::asString((*d)[i], index(f.at("deviating"), i)));
-  }
+  if (const Json* d = f.takeOptional("deviating")) c.deviating = strings(*d, f.at("deviating"));
   if (f.has("verdict")) c.verdict = validation::parseCaseVerdict(f.str("verdict"), f.at("verdict"));
   c.pass = f.has("pass") ? f.boolean("pass") : false;
   if (c.verdict && c.pass != (*c.verdict == validation::CaseVerdict::Pass))
@@ -297,6 +337,18 @@ Json metricsJson(const PairMetrics& m) {
   return j;
 }
 
+Json shownJson(const ShownPixel& s) {
+  Json j;
+  j["pixel"] = {s.x, s.y};
+  j["error_16bit"] = numberOrNull(s.error_16bit);
+  j["class"] = s.pixel_class;
+  j["window"] = {s.window_x, s.window_y, s.window_width, s.window_height};
+  j["heat_map"] = s.heat_map;
+  j["renders"] = Json::object();
+  for (const auto& [id, crop] : s.renders) j["renders"][id] = crop;
+  return j;
+}
+
 Json pairJson(const Pair& p) {
   Json j;
   j["pair"] = p.pair;
@@ -305,7 +357,11 @@ Json pairJson(const Pair& p) {
   if (p.not_expressible) j["not_expressible"] = *p.not_expressible;
   if (p.heat_map) j["heat_map"] = *p.heat_map;
   if (p.bound_map) j["bound_map"] = *p.bound_map;
-  if (!p.crops.is_null()) j["crops"] = p.crops;
+  if (p.crops) {
+    j["crops"] = Json::object();
+    if (p.crops->worst_unexplained) j["crops"]["worst_unexplained"] = shownJson(*p.crops->worst_unexplained);
+    if (p.crops->worst_explained) j["crops"]["worst_explained"] = shownJson(*p.crops->worst_explained);
+  }
   if (p.metrics) j["metrics"] = metricsJson(*p.metrics);
   if (p.pass) j["pass"] = *p.pass;
   if (p.pass || !p.failed.empty()) j["failed"] = Json::parse(failedJson(p.failed).dump());
@@ -357,7 +413,12 @@ Json caseJson(const Case& c) {
     j["warnings"].push_back({{"code", w.code}, {"subject", w.subject}, {"message", w.message}});
   j["pairs"] = Json::array();
   for (const Pair& p : c.pairs) j["pairs"].push_back(pairJson(p));
-  if (!c.colour_stats.is_null()) j["colour_stats"] = c.colour_stats;
+  if (const auto& s = c.colour_stats)
+    j["colour_stats"] = {{"lit_pixels", s->lit_pixels},
+                         {"mean_chroma", s->mean_chroma},
+                         {"mean_albedo_chroma", s->mean_albedo_chroma},
+                         {"grey_fraction", s->grey_fraction},
+                         {"hue_error_deg", s->hue_error_deg}};
   for (const GeometryCheck& g : c.geometry_checks) j["geometry_checks"].push_back(checkJson(g));
   j["attribution"] = c.attribution;
   if (!c.deviating.empty()) j["deviating"] = c.deviating;
@@ -408,11 +469,20 @@ Results resultsFromJson(const Json& j, const std::string& where) {
   if (const Json* p = f.takeOptional("provenance"))
     r.provenance = named<std::string>(*p, f.at("provenance"), Fields::asString);
   r.wall_seconds = f.has("wall_seconds") ? f.num("wall_seconds") : 0.0;
-  if (const Json* rs = f.takeOptional("renderers")) {
-    asArray(*rs, f.at("renderers"));
-    for (size_t i = 0; i < rs->size(); ++i) r.renderers.push_back(Fields::asString((*rs)[i], index(f.at("renderers"), i)));
+  if (const Json* rs = f.takeOptional("renderers")) r.renderers = strings(*rs, f.at("renderers"));
+  if (const Json* pc = f.takeOptional("paper_claims")) {
+    Fields pf(*pc, f.at("paper_claims"));
+    PaperClaims claims;
+    claims.scenes = strings(pf.take("scenes"), pf.at("scenes"));
+    const Json& list = asArray(pf.take("claims"), pf.at("claims"));
+    for (size_t i = 0; i < list.size(); ++i) {
+      Fields cf(list[i], index(pf.at("claims"), i));
+      claims.claims.push_back({cf.str("claim"), cf.str("condition"), cf.str("measured"), cf.boolean("holds")});
+      refuseRest(cf);
+    }
+    refuseRest(pf);
+    r.paper_claims = claims;
   }
-  r.paper_claims = f.json("paper_claims");
   if (const Json* s = f.takeOptional("sections")) {
     Fields sf(*s, f.at("sections"));
     r.extremes_section = sf.optStr("extremes");
@@ -440,7 +510,12 @@ Json toJson(const Results& r) {
   if (!r.renderers.empty()) j["renderers"] = r.renderers;
   j["cases"] = Json::array();
   for (const Case& c : r.cases) j["cases"].push_back(caseJson(c));
-  if (!r.paper_claims.is_null()) j["paper_claims"] = r.paper_claims;
+  if (r.paper_claims) {
+    j["paper_claims"] = {{"scenes", r.paper_claims->scenes}, {"claims", Json::array()}};
+    for (const PaperClaim& c : r.paper_claims->claims)
+      j["paper_claims"]["claims"].push_back(
+          {{"claim", c.claim}, {"condition", c.condition}, {"measured", c.measured}, {"holds", c.holds}});
+  }
   if (r.extremes_section || r.tradeoff_section) {
     j["sections"] = Json::object();
     if (r.extremes_section) j["sections"]["extremes"] = *r.extremes_section;

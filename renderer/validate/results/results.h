@@ -8,16 +8,15 @@
 // renderers, warnings, attribution, deviating renderers, reproduce
 // command, verdict, pass, geometry checks), each render, each pair (its
 // verdict, error or refusal, heat and bound maps, pass, failed criteria,
-// metrics), each geometry check (its metrics and bounds) and the pair metrics the report and JUnit show (sizes, errors,
-// mask disagreements, tolerance, tolerance reason, the metric table's
-// values). What is kept as JSON, read and written back unchanged (never
-// dropped): the parts no reader here interprets field by field — a pair's
-// crops and classification, the rest of its metrics (histogram, worst
-// pixels, per-class counts, precision models, ...), a case's colour
-// statistics, the paper's claims — and,
-// in every modelled object, any member the types do not name (`rest`:
-// none in a file the schema accepts but for those, members of a
-// crosscheck's metrics.json).
+// metrics, crops), each geometry check (its metrics and bounds), the
+// colour statistics, the paper's claims, and of the pair metrics those the
+// report and JUnit show (sizes, errors, mask disagreements, tolerance,
+// tolerance reason, the metric table's values). What is kept as JSON, read
+// and written back unchanged (never dropped): a pair's classification, the
+// rest of its metrics (histogram, worst pixels, per-class counts,
+// precision models, ...), and in every modelled object any member the
+// types do not name (`rest`: in a file the schema accepts, only those
+// metrics; in a crosscheck's metrics.json, its own fields too).
 //
 // Verdicts are stored, never derived by a reader: a case's (CaseVerdict,
 // validation/case_verdict.h) and a pair's (PairVerdict below), both decided
@@ -90,6 +89,23 @@ struct PairMetrics {
   bool operator==(const PairMetrics&) const = default;
 };
 
+// A pixel the report shows with crops around it (validate/pixel_crops.h);
+// paths relative to results.json.
+struct ShownPixel {
+  long long x = 0, y = 0;
+  std::optional<double> error_16bit;  // none: infinite
+  std::string pixel_class;            // "class": a key of image/pixel_classes.h
+  long long window_x = 0, window_y = 0, window_width = 0, window_height = 0;
+  std::string heat_map;
+  Named<std::string> renders;         // renderer -> crop
+  bool operator==(const ShownPixel&) const = default;
+};
+
+struct PairCrops {
+  std::optional<ShownPixel> worst_unexplained, worst_explained;
+  bool operator==(const PairCrops&) const = default;
+};
+
 struct Pair {
   std::string pair;  // "<a>-<b>"
   PairVerdict verdict = PairVerdict::Error;
@@ -97,7 +113,7 @@ struct Pair {
   std::optional<bool> pass;            // compared pairs only
   std::vector<PairFailure> failed;     // the criteria it fails (compared pairs)
   std::optional<PairMetrics> metrics;  // compared pairs only
-  Json crops;                          // null: none
+  std::optional<PairCrops> crops;
   Json classification;                 // null: none
   Json rest = Json::object();
   bool operator==(const Pair&) const = default;
@@ -137,6 +153,26 @@ struct Warning {
   bool operator==(const Warning&) const = default;
 };
 
+// The reference image's colour statistics (validate/colour_stats.h).
+struct ColourStats {
+  long long lit_pixels = 0;
+  double mean_chroma = 0, mean_albedo_chroma = 0, grey_fraction = 0, hue_error_deg = 0;
+  bool operator==(const ColourStats&) const = default;
+};
+
+// The paper's Figure 1 claims as judged (validate/paper_claims.h).
+struct PaperClaim {
+  std::string claim, condition, measured;
+  bool holds = false;
+  bool operator==(const PaperClaim&) const = default;
+};
+
+struct PaperClaims {
+  std::vector<std::string> scenes;
+  std::vector<PaperClaim> claims;
+  bool operator==(const PaperClaims&) const = default;
+};
+
 struct Case {
   std::string scene, file;
   std::optional<std::string> reproduce;
@@ -144,7 +180,7 @@ struct Case {
   Named<std::string> left_out;  // renderer -> why
   std::vector<Warning> warnings;
   std::vector<Pair> pairs;
-  Json colour_stats;            // null: none
+  std::optional<ColourStats> colour_stats;
   std::vector<GeometryCheck> geometry_checks;
   std::string attribution;
   std::vector<std::string> deviating;
@@ -165,7 +201,7 @@ struct Results {
   double wall_seconds = 0;
   std::vector<std::string> renderers;
   std::vector<Case> cases;
-  Json paper_claims;  // null: none
+  std::optional<PaperClaims> paper_claims;
   std::optional<std::string> extremes_section, tradeoff_section;  // `sections`
   Json rest = Json::object();
   bool operator==(const Results&) const = default;
