@@ -203,6 +203,15 @@ void writePlot(const Cases& cases, const std::vector<std::string>& pairs, const 
   });
 }
 
+// A pixel class's entry (its key, image/pixel_classes.h) of a pair's
+// per-class counts or maxima; null when the file has none for it.
+template <class T>
+const T* ofClass(const results::Named<T>& per_class, const std::string& key) {
+  for (const auto& [k, v] : per_class)
+    if (k == key) return &v;
+  return nullptr;
+}
+
 // A verdict's table cell, from its class attribute on: "class="l pass">PASS".
 std::string verdictCell(const std::string& v) {
   const char* cls = v == "pass" ? "pass" : v == "fail" ? "fail" : v == "error" ? "err" : "nexp";
@@ -604,10 +613,6 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
         continue;
       }
       const results::PairMetrics& m = *p.metrics;
-      // The per-class counts and maxima are kept as written (results/results.h).
-      const J none = J::object();
-      const J& o = m.rest.contains("over_tolerance") ? m.rest["over_tolerance"] : none;
-      const J& omax = m.rest.contains("over_tolerance_max_16bit") ? m.rest["over_tolerance_max_16bit"] : none;
       h << "<td " << verdictCell(pairVerdict(p)) << "</td><td>" << fixed(m.max_unexplained_16bit, 2) << " ("
         << fixed(m.tolerance.max_unexplained_16bit, 0) << ")</td><td>" << fixed(m.max_abs_16bit, 2) << "</td><td>"
         << fixed(m.p999_abs_16bit, 2) << "</td><td>" << fixed(m.rmse_16bit, 3) << "</td><td>"
@@ -615,8 +620,10 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
         << "%</td><td>" << significant(m.tolerance.max_abs_16bit) << " on " << significant(100.0 * m.tolerance.fraction)
         << "%</td><td>" << m.mask_disagree << " (" << m.mask_disagree_explained << ")</td>";
       for (const PixelClassInfo& k : kPixelClasses) {
-        h << "<td>" << (o.contains(k.key) ? std::to_string(o[k.key].get<long long>()) : std::string("n/a"));
-        if (omax.contains(k.key) && o.value(k.key, 0LL) > 0) h << " (" << fixed(omax[k.key], 1) << ")";
+        const long long* count = ofClass(m.over_tolerance, k.key);
+        const std::optional<double>* max = ofClass(m.over_tolerance_max_16bit, k.key);
+        h << "<td>" << (count ? std::to_string(*count) : std::string("n/a"));
+        if (max && count && *count > 0) h << " (" << fixed(*max, 1) << ")";
         h << "</td>";
       }
       h << "</tr>\n";

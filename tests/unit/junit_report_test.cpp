@@ -26,6 +26,8 @@ J sample() {
                     {"mask_disagree", 3},
                     {"mask_disagree_explained", 1},
                     {"max_unexplained_16bit", 12.0},
+                    {"over_tolerance", {{"total", 5}, {"precision", 0}, {"edge", 2}, {"backfacing_normal", 0}, {"unexplained", 3}}},
+                    {"over_tolerance_max_16bit", {{"precision", 0.0}, {"edge", 9.0}, {"backfacing_normal", 0.0}, {"unexplained", 12.0}}},
                     {"tolerance",
                      {{"max_abs_16bit", 2.0}, {"fraction", 0.999}, {"exclude_backfacing", false}, {"max_unexplained_16bit", 128.0}}},
                     {"tolerance_reason", ""}};

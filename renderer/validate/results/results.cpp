@@ -102,6 +102,11 @@ Named<T> named(const Json& v, const std::string& where, Read read) {
 
 std::string index(const std::string& where, size_t i) { return where + "[" + std::to_string(i) + "]"; }
 
+// A number, or null for none.
+std::optional<double> numberOrNone(const Json& v, const std::string& where) {
+  return v.is_null() ? std::nullopt : std::optional<double>(Fields::asNumber(v, where));
+}
+
 Render readRender(const Json& j, const std::string& where) {
   Fields f(j, where);
   Render r;
@@ -129,6 +134,9 @@ PairMetrics readMetrics(const Json& j, const std::string& where) {
   m.mask_disagree = f.integer("mask_disagree");
   m.mask_disagree_explained = f.integer("mask_disagree_explained");
   m.max_unexplained_16bit = f.numOrNull("max_unexplained_16bit");
+  m.over_tolerance = named<long long>(f.take("over_tolerance"), f.at("over_tolerance"), Fields::asInteger);
+  m.over_tolerance_max_16bit =
+      named<std::optional<double>>(f.take("over_tolerance_max_16bit"), f.at("over_tolerance_max_16bit"), numberOrNone);
   Fields t(f.take("tolerance"), f.at("tolerance"));
   m.tolerance.max_abs_16bit = t.num("max_abs_16bit");
   m.tolerance.fraction = t.num("fraction");
@@ -137,9 +145,7 @@ PairMetrics readMetrics(const Json& j, const std::string& where) {
   refuseRest(t);
   m.tolerance_reason = f.has("tolerance_reason") ? f.str("tolerance_reason") : std::string();
   if (const Json* values = f.takeOptional("values"))
-    m.values = named<std::optional<double>>(*values, f.at("values"), [](const Json& v, const std::string& w) {
-      return v.is_null() ? std::nullopt : std::optional<double>(Fields::asNumber(v, w));
-    });
+    m.values = named<std::optional<double>>(*values, f.at("values"), numberOrNone);
   m.rest = f.rest();
   return m;
 }
@@ -324,6 +330,10 @@ Json metricsJson(const PairMetrics& m) {
   j["mask_disagree"] = m.mask_disagree;
   j["mask_disagree_explained"] = m.mask_disagree_explained;
   j["max_unexplained_16bit"] = numberOrNull(m.max_unexplained_16bit);
+  j["over_tolerance"] = Json::object();
+  for (const auto& [k, n] : m.over_tolerance) j["over_tolerance"][k] = n;
+  j["over_tolerance_max_16bit"] = Json::object();
+  for (const auto& [k, v] : m.over_tolerance_max_16bit) j["over_tolerance_max_16bit"][k] = numberOrNull(v);
   j["tolerance"] = {{"max_abs_16bit", m.tolerance.max_abs_16bit},
                     {"fraction", m.tolerance.fraction},
                     {"exclude_backfacing", m.tolerance.exclude_backfacing},

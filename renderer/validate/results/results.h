@@ -13,8 +13,7 @@
 // report and JUnit show (sizes, errors, mask disagreements, tolerance,
 // tolerance reason, the metric table's values). What is kept as JSON, read
 // and written back unchanged (never dropped): a pair's classification, the
-// rest of its metrics (histogram, worst pixels, per-class counts,
-// precision models, ...), and in every modelled object any member the
+// rest of its metrics (histogram, worst pixels, precision models, ...), and in every modelled object any member the
 // types do not name (`rest`: in a file the schema accepts, only those
 // metrics; in a crosscheck's metrics.json, its own fields too).
 //
@@ -80,6 +79,11 @@ struct PairMetrics {
   std::optional<double> psnr_db;                // none: the images are equal (infinite)
   long long mask_disagree = 0, mask_disagree_explained = 0;
   std::optional<double> max_unexplained_16bit;  // none: infinite
+  // Over-tolerance pixels: "total", then a count per pixel class by its key
+  // (image/pixel_classes.h), in file order; and per class the largest error
+  // among them (none: infinite; 0: no such pixel).
+  Named<long long> over_tolerance;
+  Named<std::optional<double>> over_tolerance_max_16bit;
   PairTolerance tolerance;
   std::string tolerance_reason;                 // empty: the default tolerance
   // The metric table's values by id (image/metric_table.h), in file order;
