@@ -377,13 +377,6 @@ std::string progressWord(CaseVerdict v) {
   return word;
 }
 
-// How many of the case's renders (or pairs) have `key` ("error", "not_expressible").
-int entriesWith(const J& entries, const char* key) {
-  int n = 0;
-  for (const auto& [id, e] : entries.items()) n += e.contains(key);
-  return n;
-}
-
 // The case of plan.scenes[k] when comparing it threw: an error, saying why.
 J failedCase(const Plan& plan, size_t k, const std::exception_ptr& failure) {
   std::string why;
@@ -458,39 +451,40 @@ int CaseComparer::finish() {
   // that names the file: the other cases are still reported.
   for (size_t k = 0; k < plan.scenes.size(); ++k)
     if (st.failed[k]) st.compared[k] = failedCase(plan, k, st.failed[k]);
-  std::map<CaseVerdict, int> cases;  // by verdict
-  std::vector<CaseVerdict> verdicts;
-  int not_expressible = 0, not_compared = 0;  // image renders, and their pairs
-  int checks_pass = 0, checks_fail = 0, checks_error = 0, checks_nexp = 0;  // geometry checks
   J jcases = J::array();
   std::vector<fs::path> setting_files{plan.tolerances_path};
   for (size_t k = 0; k < plan.scenes.size(); ++k) {
     if (st.compared[k].is_null())
       throw std::logic_error("the compare step: case " + plan.scenes[k].name + " was not compared");
     setting_files.push_back(plan.scenes[k].path);
-    J jc = std::move(st.compared[k]);
-    not_expressible += entriesWith(jc["renders"], "not_expressible");
-    not_compared += entriesWith(jc["pairs"], "not_expressible");
-    if (jc.contains("geometry_checks")) {
-      const J& checks = jc["geometry_checks"];
-      // A check's not-expressible render is the check's verdict, counted
-      // with the checks, not with the image renders.
-      not_expressible -= geometryChecksWith(checks, "not_expressible");
-      checks_pass += geometryChecksWith(checks, "pass");
-      checks_fail += geometryChecksWith(checks, "fail");
-      checks_error += geometryChecksWith(checks, "error");
-      checks_nexp += geometryChecksWith(checks, "not_expressible");
-    }
-    verdicts.push_back(parseCaseVerdict(jc["verdict"].get<std::string>(), plan.scenes[k].name + ": verdict"));
-    ++cases[verdicts.back()];
-    jcases.push_back(std::move(jc));
+    jcases.push_back(std::move(st.compared[k]));
   }
-  // Written through the results types' one writer (results/results.h),
-  // which writes bytes that are no UTF-8 (tools' logs, files' names) as
-  // U+FFFD: never a results.json that cannot be written.
-  results::writeResults(dir / "results.json",
-                        results::resultsFromJson(resultsJson(plan, jcases, setting_files, st.jsections),
-                                                 (dir / "results.json").string()));
+  // The results as their types (results/results.h): the summary below reads
+  // the verdicts stored there, and the one writer writes them, with bytes
+  // that are no UTF-8 (tools' logs, files' names) as U+FFFD: never a
+  // results.json that cannot be written.
+  const fs::path results_file = dir / "results.json";
+  const results::Results res =
+      results::resultsFromJson(resultsJson(plan, jcases, setting_files, st.jsections), results_file.string());
+  std::map<CaseVerdict, int> cases;  // by verdict
+  std::vector<CaseVerdict> verdicts;
+  int not_expressible = 0, not_compared = 0;  // image renders, and their pairs
+  std::map<results::PairVerdict, int> checks;  // geometry checks by verdict
+  for (const results::Case& c : res.cases) {
+    for (const auto& [id, r] : c.renders) not_expressible += r.not_expressible.has_value();
+    for (const results::Pair& p : c.pairs) not_compared += p.verdict == results::PairVerdict::NotExpressible;
+    // A check's not-expressible render is the check's verdict, counted
+    // with the checks, not with the image renders.
+    for (const results::GeometryCheck& g : c.geometry_checks)
+      not_expressible -= g.verdict == results::PairVerdict::NotExpressible, ++checks[g.verdict];
+    if (!c.verdict) throw std::logic_error("the compare step: case " + c.scene + " has no verdict");
+    verdicts.push_back(*c.verdict);
+    ++cases[verdicts.back()];
+  }
+  const int checks_pass = checks[results::PairVerdict::Pass], checks_fail = checks[results::PairVerdict::Fail],
+            checks_error = checks[results::PairVerdict::Error],
+            checks_nexp = checks[results::PairVerdict::NotExpressible];
+  results::writeResults(results_file, res);
   writeReport(dir / "results.json", dir / "report.html");
   printNextSteps(plan, jcases);
   // "3 scenes, all pass", else the worst verdict and every verdict's count:
