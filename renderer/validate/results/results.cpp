@@ -2,6 +2,7 @@
 #include "validate/results/results.h"
 
 #include <cmath>
+#include <set>
 #include <stdexcept>
 
 #include "files/atomic_write.h"
@@ -23,7 +24,6 @@ class Fields {
   // `top`: the file's top level, whose fields read "FILE: cases", not "FILE.cases".
   Fields(const Json& obj, std::string where, bool top = false) : obj_(obj), where_(std::move(where)), sep_(top ? ": " : ".") {
     if (!obj_.is_object()) throw std::runtime_error(where_ + ": expected an object");
-    rest_ = obj_;
   }
 
   std::string at(const char* key) const { return where_ + sep_ + key; }
@@ -31,7 +31,7 @@ class Fields {
 
   const Json& take(const char* key) {
     if (!obj_.contains(key)) throw std::runtime_error(where_ + ": no \"" + key + "\" field");
-    rest_.erase(key);
+    taken_.insert(key);
     return obj_[key];
   }
   const Json* takeOptional(const char* key) { return has(key) ? &take(key) : nullptr; }
@@ -55,7 +55,13 @@ class Fields {
   }
   Json json(const char* key) { return has(key) ? take(key) : Json(); }
 
-  Json rest() const { return rest_; }
+  // The members not taken, in file order.
+  Json rest() const {
+    Json out = Json::object();
+    for (auto it = obj_.begin(); it != obj_.end(); ++it)
+      if (!taken_.count(it.key())) out[it.key()] = it.value();
+    return out;
+  }
 
   static std::string asString(const Json& v, const std::string& where) {
     if (!v.is_string()) throw std::runtime_error(where + ": " + v.dump(-1, ' ', false, Json::error_handler_t::replace) + ": expected a string");
@@ -78,7 +84,7 @@ class Fields {
   const Json& obj_;
   std::string where_;
   const char* sep_;
-  Json rest_;
+  std::set<std::string> taken_;
 };
 
 // An object modelled whole: a member the types do not name is refused,
@@ -278,6 +284,7 @@ Case readCase(const Json& j, const std::string& where) {
     for (size_t i = 0; i < ws->size(); ++i) {
       Fields w((*ws)[i], index(f.at("warnings"), i));
       c.warnings.push_back({w.str("code"), w.str("subject"), w.str("message")});
+      refuseRest(w);
     }
   }
   for (size_t i = 0; i < pairs.size(); ++i) c.pairs.push_back(readPair(pairs[i], index(f.at("pairs"), i)));
