@@ -486,11 +486,11 @@ int CaseComparer::finish() {
             checks_nexp = checks[results::PairVerdict::NotExpressible];
   results::writeResults(results_file, res);
   writeReport(dir / "results.json", dir / "report.html");
-  printNextSteps(plan, jcases);
+  printNextSteps(plan, res.cases);
   // "3 scenes, all pass", else the worst verdict and every verdict's count:
   // "3 scenes, ERRORS: 1 error, 1 fail, 1 not compared".
   const int status = validateExitStatus(verdicts);
-  std::string line = counted(jcases.size(), "scene", "scenes") + ", ";
+  std::string line = counted(res.cases.size(), "scene", "scenes") + ", ";
   if (status == 0) {
     line += "all pass";
   } else {
