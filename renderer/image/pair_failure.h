@@ -28,6 +28,7 @@
 namespace xval {
 
 struct PairFailure {
+  bool operator==(const PairFailure&) const = default;
   std::string key;    // nothing_covered, mask, unexplained_cap or fraction
   std::string text;   // "fraction within tolerance 99.81% < 99.9% (8 of 4769 pixels outside)"
   std::string brief;  // for a table cell: "99.81% < 99.9% within"

@@ -127,7 +127,10 @@ int crosscheck(const CrosscheckRequest& request) {
   return pass ? 0 : 1;
 }
 
-nlohmann::json crosscheckAsResults(const CrosscheckRequest& request, const std::string& error) {
+namespace {
+
+// The run's one case as results.json has it (crosscheckAsResults).
+nlohmann::json crosscheckCase(const CrosscheckRequest& request, const std::string& error) {
   using J = nlohmann::json;
   const std::string reference = renderers::registry().reference().id;
   const std::string pair = reference + "-" + request.renderer;
@@ -161,7 +164,8 @@ nlohmann::json crosscheckAsResults(const CrosscheckRequest& request, const std::
   }
   if (!problem.empty()) {
     p = {{"pair", pair}, {"error", problem}};
-    c["renders"][request.renderer] = {{"error", problem}};
+    // Not timed: the run stopped before its record (JUnit's time 0).
+    c["renders"][request.renderer] = {{"seconds", 0.0}, {"error", problem}};
   }
   const renderers::Renderer* r = renderers::registry().find(request.renderer);
   if (r && r->geometry_passes) {
@@ -184,10 +188,31 @@ nlohmann::json crosscheckAsResults(const CrosscheckRequest& request, const std::
     }
     c["pairs"] = J::array();
     c["geometry_checks"] = J::array({g});
-    return {{"cases", J::array({c})}};
+    return c;
   }
   c["pairs"] = J::array({p});
-  return {{"cases", J::array({c})}};
+  return c;
+}
+
+results::Results asResults(const nlohmann::json& c, const std::filesystem::path& metrics_file) {
+  return results::resultsFromJson(results::Json{{"cases", results::Json::array({results::Json::parse(c.dump())})}},
+                                  metrics_file.string());
+}
+
+}  // namespace
+
+results::Results crosscheckAsResults(const CrosscheckRequest& request, const std::string& error) {
+  const std::filesystem::path metrics_file = std::filesystem::path(request.dir) / "metrics.json";
+  // The case as the results types (results/results.h). A metrics.json the
+  // types cannot read (a field missing or of another type) is the pair's
+  // error, naming the file and the field, as one that cannot be parsed.
+  try {
+    return asResults(crosscheckCase(request, error), metrics_file);
+  } catch (const std::runtime_error& e) {
+    if (!error.empty()) throw;  // the error form is read whole: never here
+    return asResults(crosscheckCase(request, metrics_file.string() + ": no usable metrics (" + e.what() + ")"),
+                     metrics_file);
+  }
 }
 
 }  // namespace xval::validation

@@ -26,6 +26,7 @@
 
 #include "common/export_common.h"
 #include "scene/scene_budget.h"
+#include "validate/results/results.h"
 
 namespace xval::validation {
 
@@ -47,7 +48,8 @@ struct CrosscheckRequest {
 int crosscheck(const CrosscheckRequest& request);
 
 // One crosscheck run in the form of a results.json (one case, one pair
-// "reference-<renderer>"), for the JUnit writer (validate/junit_report.h):
+// "reference-<renderer>") as the results types (validate/results/results.h;
+// the case has no verdict), for the JUnit writer (validate/junit_report.h):
 // with `error` empty, the verdict and metrics of DIR/metrics.json (which
 // crosscheck writes last, so a run that did not finish has none), or its
 // not_expressible (a pair not compared: JUnit <skipped>); else a pair that
@@ -56,6 +58,6 @@ int crosscheck(const CrosscheckRequest& request);
 // geometry passes (blender-import) gives no pair but the case's
 // geometry_checks record, as validate writes it
 // (validate/validation/geometry_checks.h).
-nlohmann::json crosscheckAsResults(const CrosscheckRequest& request, const std::string& error);
+results::Results crosscheckAsResults(const CrosscheckRequest& request, const std::string& error);
 
 }  // namespace xval::validation

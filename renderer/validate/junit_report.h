@@ -36,13 +36,14 @@
 
 #include <string>
 
-#include <nlohmann/json.hpp>
+#include "validate/results/results.h"
 
 namespace xval {
 
-// Throws std::runtime_error naming the field when `results` is not a
-// results.json (no "cases" array, a case without "scene" or "pairs").
-std::string junitXml(const nlohmann::json& results, const std::string& suite_name);
+// From the results' types (validate/results/results.h: its reader has
+// refused what is no results file, naming the field); every verdict is the
+// stored one.
+std::string junitXml(const results::Results& results, const std::string& suite_name);
 
 std::string xmlEscape(const std::string& s);
 

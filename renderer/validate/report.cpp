@@ -30,7 +30,7 @@
 #include "validate/common/number_text.h"
 #include "validate/extremes/report_section.h"
 #include "validate/report_pixels.h"
-#include "validate/results_shape.h"
+#include "validate/results/results.h"
 #include "validate/tolerances.h"
 #include "validate/tradeoff/report_section.h"
 #include "validate/validation/case_verdict.h"
@@ -58,6 +58,9 @@ std::string htmlEscape(const std::string& s) {
 
 namespace {
 
+// The cases as the report lists them (pointers into the results read).
+using Cases = std::vector<const results::Case*>;
+
 // Heat maps: at full resolution up to this size; larger ones reduced by
 // their block maximum (image/heat_map.h maxDownscaled).
 
@@ -75,14 +78,14 @@ std::string gnuplotSafe(const std::string& n) {
 // its first appearance. The summary, the plot and each case's renders
 // follow it, so two runs of the same renderers show them in the same order
 // whatever the order of the command line or of the cases' verdicts.
-std::vector<std::string> runRenderers(const J& results) {
+std::vector<std::string> runRenderers(const results::Results& results) {
   std::vector<std::string> ids;
   auto add = [&ids](const std::string& id) {
     if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
   };
-  for (const auto& id : results.value("renderers", J::array())) add(id.get<std::string>());
-  for (const auto& c : results["cases"])
-    for (auto it = c["renders"].begin(); it != c["renders"].end(); ++it) add(it.key());
+  for (const std::string& id : results.renderers) add(id);
+  for (const results::Case& c : results.cases)
+    for (const auto& [id, render] : c.renders) add(id);
   return ids;
 }
 
@@ -95,10 +98,10 @@ struct RunPairs {
 // In the order of renderers::unorderedPairs over the run's renderers, then
 // any pair no two of them name (a results.json written by hand), in the
 // order of its first appearance.
-RunPairs runPairs(const J& cases, const std::vector<std::string>& renderers) {
+RunPairs runPairs(const Cases& cases, const std::vector<std::string>& renderers) {
   std::vector<std::string> present;
-  for (const auto& c : cases)
-    for (const auto& p : c["pairs"]) present.push_back(p["pair"].get<std::string>());
+  for (const results::Case* c : cases)
+    for (const results::Pair& p : c->pairs) present.push_back(p.pair);
   auto has = [](const std::vector<std::string>& v, const std::string& x) {
     return std::find(v.begin(), v.end(), x) != v.end();
   };
@@ -119,46 +122,30 @@ RunPairs runPairs(const J& cases, const std::vector<std::string>& renderers) {
 
 // A case's geometry checks (validate/validation/geometry_checks.h) as
 // "verdict" with a space for the underscore, as the pairs' verdicts read.
-std::string checkVerdict(const J& g) {
-  std::string v = g["verdict"].get<std::string>();
-  std::replace(v.begin(), v.end(), '_', ' ');
-  return v;
-}
+std::string checkVerdict(const results::GeometryCheck& g) { return verdictWords(g.verdict); }
 
-std::string checkName(const J& g) {
-  return validation::geometryCheckName(g["against"].get<std::string>(), g["renderer"].get<std::string>());
-}
+std::string checkName(const results::GeometryCheck& g) { return validation::geometryCheckName(g.against, g.renderer); }
 
 // The geometry checks of the run, by name, in the order of their first appearance.
-std::vector<std::string> checkIds(const J& cases) {
+std::vector<std::string> checkIds(const Cases& cases) {
   std::vector<std::string> ids;
-  for (const auto& c : cases)
-    for (const auto& g : c.value("geometry_checks", J::array()))
+  for (const results::Case* c : cases)
+    for (const results::GeometryCheck& g : c->geometry_checks)
       if (std::find(ids.begin(), ids.end(), checkName(g)) == ids.end()) ids.push_back(checkName(g));
   return ids;
 }
 
-const J* findCheck(const J& c, const std::string& name) {
-  if (!c.contains("geometry_checks")) return nullptr;
-  for (const auto& g : c["geometry_checks"])
+const results::GeometryCheck* findCheck(const results::Case& c, const std::string& name) {
+  for (const results::GeometryCheck& g : c.geometry_checks)
     if (checkName(g) == name) return &g;
   return nullptr;
 }
 
 // A small number in two significant digits ("3.3e-06", "0.84").
-std::string twoDigits(const J& v) {
-  if (!v.is_number()) return "n/a";
-  return fmt::format("{:.2g}", v.get<double>());
-}
-
-const J* findPair(const J& c, const std::string& id) {
-  for (const auto& p : c["pairs"])
-    if (p["pair"] == id) return &p;
-  return nullptr;
-}
+std::string twoDigits(double v) { return fmt::format("{:.2g}", v); }
 
 // The p99.9 error of every pair of every case, as a gnuplot bar chart.
-void writePlot(const J& cases, const std::vector<std::string>& pairs, const std::filesystem::path& dir) {
+void writePlot(const Cases& cases, const std::vector<std::string>& pairs, const std::filesystem::path& dir) {
   const std::filesystem::path dat = dir / "p999.dat", gp = dir / "p999.gp";
   {
     std::ostringstream d;
@@ -166,11 +153,11 @@ void writePlot(const J& cases, const std::vector<std::string>& pairs, const std:
     for (const auto& id : pairs) d << " " << gnuplotSafe(id);
     d << " (p99.9 error, 1/65535)\n";
     int i = 0;
-    for (const auto& c : cases) {
+    for (const results::Case* c : cases) {
       d << i++;
       for (const auto& id : pairs) {
-        const J* p = findPair(c, id);
-        d << " " << (p && p->contains("metrics") ? std::max(0.01, (*p)["metrics"]["p999_abs_16bit"].get<double>()) : 0.01);
+        const results::Pair* p = c->findPair(id);
+        d << " " << (p && p->metrics ? std::max(0.01, p->metrics->p999_abs_16bit) : 0.01);
       }
       d << "\n";
     }
@@ -184,8 +171,8 @@ void writePlot(const J& cases, const std::vector<std::string>& pairs, const std:
        "set xtics rotate by -45 scale 0\nset grid ytics\n";
   g << "set xtics (";
   int i = 0;
-  for (const auto& c : cases) {
-    g << (i ? ", " : "") << "'" << gnuplotSafe(c["scene"].get<std::string>()) << "' " << i;
+  for (const results::Case* c : cases) {
+    g << (i ? ", " : "") << "'" << gnuplotSafe(c->scene) << "' " << i;
     ++i;
   }
   g << ")\n";
@@ -216,6 +203,15 @@ void writePlot(const J& cases, const std::vector<std::string>& pairs, const std:
   });
 }
 
+// A pixel class's entry (its key, image/pixel_classes.h) of a pair's
+// per-class counts or maxima; null when the file has none for it.
+template <class T>
+const T* ofClass(const results::Named<T>& per_class, const std::string& key) {
+  for (const auto& [k, v] : per_class)
+    if (k == key) return &v;
+  return nullptr;
+}
+
 // A verdict's table cell, from its class attribute on: "class="l pass">PASS".
 std::string verdictCell(const std::string& v) {
   const char* cls = v == "pass" ? "pass" : v == "fail" ? "fail" : v == "error" ? "err" : "nexp";
@@ -226,31 +222,29 @@ std::string verdictCell(const std::string& v) {
 
 // A pair's summary (report.h pairSummary) as a table cell's class attribute
 // on: "class="l fail">FAIL fraction 99.81% &lt; 99.9%".
-std::string pairCell(const J& p) {
-  if (p.contains("not_expressible")) return "class=\"l nexp\">not expressible";
+std::string pairCell(const results::Pair& p) {
+  if (p.verdict == results::PairVerdict::NotExpressible) return "class=\"l nexp\">not expressible";
   const std::string cell = verdictCell(pairVerdict(p));
   return cell.substr(0, cell.find('>') + 1) + htmlEscape(pairSummary(p));
 }
 
 // How bad a pair's verdict is: error, fail, pass, not expressible.
-int severity(const J& p) {
+int severity(const results::Pair& p) {
   const std::string v = pairVerdict(p);
   return v == "error" ? 3 : v == "fail" ? 2 : v == "pass" ? 1 : 0;
 }
 
-double maxUnexplained(const J& p) {
-  if (!p.contains("metrics")) return 0.0;
-  const J& v = p["metrics"].value("max_unexplained_16bit", J());
-  return v.is_number() ? v.get<double>() : 0.0;
+double maxUnexplained(const results::Pair& p) {
+  return p.metrics && p.metrics->max_unexplained_16bit ? *p.metrics->max_unexplained_16bit : 0.0;
 }
 
 // A case's worst pair: the most severe verdict, then the largest max
 // unexplained error, then the first in the run's order; null when the
 // case has no pair.
-const J* worstPair(const J& c, const std::vector<std::string>& pairs) {
-  const J* worst = nullptr;
+const results::Pair* worstPair(const results::Case& c, const std::vector<std::string>& pairs) {
+  const results::Pair* worst = nullptr;
   for (const std::string& id : pairs) {
-    const J* p = findPair(c, id);
+    const results::Pair* p = c.findPair(id);
     if (!p) continue;
     if (!worst || severity(*p) > severity(*worst) ||
         (severity(*p) == severity(*worst) && maxUnexplained(*p) > maxUnexplained(*worst)))
@@ -264,11 +258,11 @@ const J* worstPair(const J& c, const std::vector<std::string>& pairs) {
 // a 1280 px window), the count of each verdict, opening onto the
 // renderers x renderers matrix of the pairs' verdicts (row before column
 // in the run's order; a pair the case does not have is empty).
-std::string pairsCell(const J& c, const RunPairs& run) {
+std::string pairsCell(const results::Case& c, const RunPairs& run) {
   std::map<std::string, int> count;
   int n = 0;
   for (const std::string& id : run.ids)
-    if (const J* p = findPair(c, id)) ++count[pairVerdict(*p)], ++n;
+    if (const results::Pair* p = c.findPair(id)) ++count[pairVerdict(*p)], ++n;
   if (n == 0) return "<td class=\"l\">no pairs</td>";
   std::ostringstream h;
   h << "<td class=\"l\"><details class=\"pairs\"><summary>" << n << (n == 1 ? " pair" : " pairs") << ":";
@@ -283,7 +277,7 @@ std::string pairsCell(const J& c, const RunPairs& run) {
     h << "<tr><th class=\"l\">" << htmlEscape(rs[i]) << "</th>";
     for (size_t j = 1; j < rs.size(); ++j) {
       const std::string key = renderers::pairKey(rs[i], rs[j]);
-      const J* p = j > i ? findPair(c, key) : nullptr;
+      const results::Pair* p = j > i ? c.findPair(key) : nullptr;
       if (!p) {
         h << "<td></td>";
         continue;
@@ -298,9 +292,9 @@ std::string pairsCell(const J& c, const RunPairs& run) {
 
 // Whether a case's render is a geometry check's: a picture of its passes
 // (render/geometry_passes.h passesPreview), not a render.
-bool isGeometryCheck(const J& c, const std::string& renderer) {
-  for (const auto& g : c.value("geometry_checks", J::array()))
-    if (g["renderer"] == renderer) return true;
+bool isGeometryCheck(const results::Case& c, const std::string& renderer) {
+  for (const results::GeometryCheck& g : c.geometry_checks)
+    if (g.renderer == renderer) return true;
   return false;
 }
 
@@ -311,53 +305,51 @@ std::string geometryCheckCaption() {
 
 // A case's geometry checks: per check, each metric beside the bound it is
 // held to (validate/geometry_check.h), the verdict and its reason.
-std::string geometryChecksTable(const J& c) {
-  if (!c.contains("geometry_checks")) return "";
+std::string geometryChecksTable(const results::Case& c) {
+  if (c.geometry_checks.empty()) return "";
   std::ostringstream h;
   h << "<table class=\"geometry\"><tr><th class=\"l\">geometry check</th><th>verdict</th><th>covered</th>"
        "<th>hit/object off the silhouette (bound)</th><th>on the silhouette (bound)</th>"
        "<th>max depth rel. error (bound; all pixels)</th><th>uv pixels</th><th>max uv error (bound; all pixels)</th>"
        "<th>edge pixels over (bound)</th></tr>\n";
-  for (const auto& g : c["geometry_checks"]) {
+  for (const results::GeometryCheck& g : c.geometry_checks) {
     h << "<tr><td class=\"l\">" << htmlEscape(checkName(g)) << "</td>";
-    if (!g.contains("metrics")) {
-      const bool nx = g["verdict"] == "not_expressible";
+    if (!g.metrics) {
+      const bool nx = g.verdict == results::PairVerdict::NotExpressible;
       h << "<td class=\"" << (nx ? "nexp" : "err") << "\" colspan=\"8\">" << (nx ? "not expressible: " : "error: ")
-        << htmlEscape(g.value("reason", "")) << "</td></tr>\n";
+        << htmlEscape(g.reason.value_or("")) << "</td></tr>\n";
       continue;
     }
-    const J& m = g["metrics"];
-    const J& b = g["bounds"];
-    const double covered = double(m["covered"].get<long long>());
-    const long long off = m["mask_disagree"].get<long long>() - m["mask_disagree_silhouette"].get<long long>();
-    h << "<td " << verdictCell(checkVerdict(g)) << "</td><td>" << m["covered"].get<long long>() << "</td><td>" << off
-      << " (0)</td><td>" << m["mask_disagree_silhouette"].get<long long>() << " ("
-      << static_cast<long long>(std::floor(b["max_silhouette_fraction"].get<double>() * covered)) << ")</td><td>"
-      << twoDigits(m["max_depth_rel"]) << " (" << twoDigits(b["max_depth_rel"]) << "; "
-      << twoDigits(m["max_depth_rel_all"]) << ")</td><td>" << m["uv_compared"].get<long long>() << "</td><td>"
-      << twoDigits(m["max_uv"]) << " (" << twoDigits(b["max_uv"]) << "; " << twoDigits(m["max_uv_all"])
-      << ")</td><td>" << m["edge_over"].get<long long>() << " ("
-      << static_cast<long long>(std::floor(b["max_edge_fraction"].get<double>() * covered)) << ")</td></tr>\n";
-    if (g.contains("reason"))
-      h << "<tr><td class=\"l\"></td><td class=\"l fail\" colspan=\"8\">" << htmlEscape(g["reason"].get<std::string>())
+    const results::GeometryCheckMetrics& m = *g.metrics;  // a compared check has both (results/results.h)
+    const results::GeometryCheckBounds& b = *g.bounds;
+    const double covered = double(m.covered);
+    const long long off = m.mask_disagree - m.mask_disagree_silhouette;
+    h << "<td " << verdictCell(checkVerdict(g)) << "</td><td>" << m.covered << "</td><td>" << off << " (0)</td><td>"
+      << m.mask_disagree_silhouette << " (" << static_cast<long long>(std::floor(b.max_silhouette_fraction * covered))
+      << ")</td><td>" << twoDigits(m.max_depth_rel) << " (" << twoDigits(b.max_depth_rel) << "; "
+      << twoDigits(m.max_depth_rel_all) << ")</td><td>" << m.uv_compared << "</td><td>" << twoDigits(m.max_uv) << " ("
+      << twoDigits(b.max_uv) << "; " << twoDigits(m.max_uv_all) << ")</td><td>" << m.edge_over << " ("
+      << static_cast<long long>(std::floor(b.max_edge_fraction * covered)) << ")</td></tr>\n";
+    if (g.reason)
+      h << "<tr><td class=\"l\"></td><td class=\"l fail\" colspan=\"8\">" << htmlEscape(*g.reason)
         << "</td></tr>\n";
   }
   h << "</table>\n";
   return h.str();
 }
 
-const J* findCase(const J& cases, const std::string& name) {
-  for (const auto& c : cases)
-    if (c["scene"] == name && c.contains("colour_stats")) return &c["colour_stats"];
+const results::ColourStats* findColourStats(const Cases& cases, const std::string& name) {
+  for (const results::Case* c : cases)
+    if (c->scene == name && c->colour_stats) return &*c->colour_stats;
   return nullptr;
 }
 
 // The paper's Figure 1 claims as results.json states them (`paper_claims`,
 // judged by the compare step: validate/paper_claims.h), with the colour
 // statistics of the scenes they are judged on.
-std::string paperClaimsSection(const J& results, const J& cases) {
-  if (!results.contains("paper_claims")) return "";  // not in this run
-  const J& pc = results["paper_claims"];
+std::string paperClaimsSection(const results::Results& results, const Cases& cases) {
+  if (!results.paper_claims) return "";  // not in this run
+  const results::PaperClaims& pc = *results.paper_claims;
   std::ostringstream h;
   h << "<h2>The paper's Figure 1 claims, measured</h2>\n<p>On the reference renders of the "
        "Figure 1 scenes, over lit pixels (luma &gt; 0.02), colours as sRGB-coded CIELAB: mean "
@@ -365,24 +357,22 @@ std::string paperClaimsSection(const J& results, const J& cases) {
        "texture colour at the same pixel (where both have C* &ge; 5). See docs/paper-claims.md.</p>\n"
        "<table><tr><th class=\"l\">scene</th><th>lit pixels</th><th>mean C*</th><th>texture mean C*</th>"
        "<th>grey share</th><th>hue error (deg)</th></tr>\n";
-  for (const auto& name : pc["scenes"]) {
-    const J* st = findCase(cases, name.get<std::string>());
-    h << "<tr><td class=\"l\">" << htmlEscape(name.get<std::string>()) << "</td>";
+  for (const std::string& name : pc.scenes) {
+    const results::ColourStats* st = findColourStats(cases, name);
+    h << "<tr><td class=\"l\">" << htmlEscape(name) << "</td>";
     if (!st) {
       h << "<td class=\"err\" colspan=\"5\">no colour statistics in results.json</td></tr>\n";
       continue;
     }
-    h << "<td>" << (*st)["lit_pixels"].get<long long>() << "</td><td>" << fixed((*st)["mean_chroma"], 2)
-      << "</td><td>" << fixed((*st)["mean_albedo_chroma"], 2) << "</td><td>"
-      << fixed(100 * (*st)["grey_fraction"].get<double>(), 1) << "%</td><td>" << fixed((*st)["hue_error_deg"], 2)
-      << "</td></tr>\n";
+    h << "<td>" << st->lit_pixels << "</td><td>" << fixed(st->mean_chroma, 2) << "</td><td>"
+      << fixed(st->mean_albedo_chroma, 2) << "</td><td>" << fixed(100 * st->grey_fraction, 1) << "%</td><td>"
+      << fixed(st->hue_error_deg, 2) << "</td></tr>\n";
   }
   h << "</table>\n<table><tr><th class=\"l\">claim (paper, section 4)</th><th class=\"l\">condition</th>"
        "<th>measured</th><th>verdict</th></tr>\n";
-  for (const auto& c : pc["claims"])
-    h << "<tr><td class=\"l\">" << htmlEscape(c["claim"].get<std::string>()) << "</td><td class=\"l\">"
-      << htmlEscape(c["condition"].get<std::string>()) << "</td><td>" << htmlEscape(c["measured"].get<std::string>())
-      << "</td><td class=\"" << (c["holds"].get<bool>() ? "pass\">holds" : "fail\">does not hold")
+  for (const results::PaperClaim& c : pc.claims)
+    h << "<tr><td class=\"l\">" << htmlEscape(c.claim) << "</td><td class=\"l\">" << htmlEscape(c.condition)
+      << "</td><td>" << htmlEscape(c.measured) << "</td><td class=\"" << (c.holds ? "pass\">holds" : "fail\">does not hold")
       << "</td></tr>\n";
   h << "</table>\n";
   return h.str();
@@ -390,11 +380,10 @@ std::string paperClaimsSection(const J& results, const J& cases) {
 
 // The folder of an extremes or trade-off section: the one given, else the
 // one results.json names (relative to its folder), else none.
-std::optional<fs::path> sectionFolder(const J& results, const char* key, const std::optional<fs::path>& given,
+std::optional<fs::path> sectionFolder(const std::optional<std::string>& named, const std::optional<fs::path>& given,
                                       const fs::path& dir) {
   if (given) return *given;
-  if (results.contains("sections") && results["sections"].contains(key))
-    return dir / results["sections"][key].get<std::string>();
+  if (named) return dir / *named;
   return std::nullopt;
 }
 
@@ -414,13 +403,11 @@ void requireSectionFile(const fs::path& folder, const char* file, const char* wh
 
 }  // namespace
 
-std::string pairSummary(const J& p) {
+std::string pairSummary(const results::Pair& p) {
   std::string text;
   for (char ch : pairVerdict(p)) text += char(std::toupper(static_cast<unsigned char>(ch)));
-  const J none = J::array();
-  const J& failed = p.contains("failed") ? p["failed"] : none;
-  if (!failed.empty()) return text + " " + failed[0]["brief"].get<std::string>();
-  if (p.contains("metrics")) text += " " + fixed(p["metrics"].value("max_unexplained_16bit", J()), 2);
+  if (!p.failed.empty()) return text + " " + p.failed[0].brief;
+  if (p.metrics) text += " " + fixed(p.metrics->max_unexplained_16bit, 2);
   return text;
 }
 
@@ -439,24 +426,24 @@ nlohmann::ordered_json sectionsJson(const ReportSections& sections, const fs::pa
 
 void writeReport(const std::filesystem::path& results_json, const std::filesystem::path& html,
                  const ReportSections& sections) {
-  // Read as scene files are: a key given twice is refused.
-  const J r = parseOrderedJsonText(readJsonFile(results_json, "results file"), results_json.string());
-  // Every field read below is one the schema allows where it is read
-  // (validate/results_shape.h): anything else is an error naming the file
-  // and the field before a line of the report is written.
-  checkResultsShape(r, results_json.string());
+  // The one reader (results/results.h): a key given twice, a field the
+  // schema does not allow where it is, a stored verdict its fields
+  // contradict: an error naming the file and the field before a line of
+  // the report is written.
+  const results::Results r = results::readResults(results_json);
   const std::filesystem::path dir = results_json.parent_path().empty() ? "." : results_json.parent_path();
   const fs::path html_dir = html.parent_path().empty() ? "." : html.parent_path();
-  J cases = r["cases"];
+  Cases in_order;
+  for (const results::Case& c : r.cases) in_order.push_back(&c);
+  Cases cases = in_order;
   // Failures (and errors) first, then by name.
-  std::stable_sort(cases.begin(), cases.end(), [](const J& a, const J& b) {
-    return a["pass"].get<bool>() < b["pass"].get<bool>();
-  });
+  std::stable_sort(cases.begin(), cases.end(),
+                   [](const results::Case* a, const results::Case* b) { return a->pass < b->pass; });
   const std::vector<std::string> run_renderers = runRenderers(r);
-  const RunPairs run_pairs = runPairs(r["cases"], run_renderers);
+  const RunPairs run_pairs = runPairs(in_order, run_renderers);
   const std::vector<std::string>& pairs = run_pairs.ids;
-  const std::optional<fs::path> extremes_dir = sectionFolder(r, "extremes", sections.extremes, dir);
-  const std::optional<fs::path> tradeoff_dir = sectionFolder(r, "tradeoff", sections.tradeoff, dir);
+  const std::optional<fs::path> extremes_dir = sectionFolder(r.extremes_section, sections.extremes, dir);
+  const std::optional<fs::path> tradeoff_dir = sectionFolder(r.tradeoff_section, sections.tradeoff, dir);
   if (extremes_dir) requireSectionFile(*extremes_dir, "extremes.json", "extremes");
   if (tradeoff_dir) requireSectionFile(*tradeoff_dir, "tradeoff.json", "tradeoff");
   writeHeatScalePng(dir / "heat_scale.png");
@@ -464,24 +451,20 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   // only): nothing to plot.
   if (!pairs.empty()) writePlot(cases, pairs, dir);
 
-  // A case: the verdict the compare step decided (validation/
-  // case_verdict.h), as the pairs' verdicts read ("not compared").
-  auto caseVerdict = [&results_json](const J& c) -> std::string {
-    const std::string where = results_json.string() + ": case " + c.value("scene", "") + ": verdict";
-    if (!c.contains("verdict"))
-      throw std::runtime_error(where + ": missing (a results.json written before the case verdict existed: "
-                                       "compare its folder again with xval validate --plan DIR/jobs.json "
-                                       "--compare-only)");
-    std::string v = validation::verdictName(validation::parseCaseVerdict(c.value("verdict", ""), where));
+  // A case: the verdict the compare step decided and stored (validation/
+  // case_verdict.h; the schema requires it of every results.json case), as
+  // the pairs' verdicts read ("not compared").
+  auto caseVerdict = [](const results::Case* c) -> std::string {
+    std::string v = validation::verdictName(*c->verdict);
     std::replace(v.begin(), v.end(), '_', ' ');
     return v;
   };
   int pass = 0, fail = 0, nexp = 0, err = 0, nexp_pairs = 0;
   std::map<std::string, int> checks;  // geometry checks by verdict
   const std::vector<std::string> check_ids = checkIds(cases);
-  for (const auto& c : cases) {
-    for (const auto& p : c["pairs"]) nexp_pairs += p.contains("not_expressible");
-    for (const auto& g : c.value("geometry_checks", J::array())) ++checks[checkVerdict(g)];
+  for (const results::Case* c : cases) {
+    for (const results::Pair& p : c->pairs) nexp_pairs += p.verdict == results::PairVerdict::NotExpressible;
+    for (const results::GeometryCheck& g : c->geometry_checks) ++checks[checkVerdict(g)];
     const std::string v = caseVerdict(c);
     (v == "error" ? err : v == "fail" ? fail : v == "pass" ? pass : nexp)++;
   }
@@ -514,7 +497,7 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   h << "<p>" << cases.size() << " scenes: <span class=\"pass\">" << pass << " pass</span>, "
     << "<span class=\"fail\">" << fail << " fail</span>, <span class=\"err\">" << err
     << " errors</span>, <span class=\"nexp\">" << nexp << " not compared</span> (" << nexp_pairs
-    << " pairs not expressible by a renderer, not compared). Wall time " << fixed(r.value("wall_seconds", 0.0), 1)
+    << " pairs not expressible by a renderer, not compared). Wall time " << fixed(r.wall_seconds, 1)
     << " s. Failures are listed first. Errors are in 1/65535 of the full scale. A pair passes when its "
        "pixels are within the tolerance on the declared fraction and no pixel that no known cause explains "
        "differs by more than the cap on unexplained error (max_unexplained_16bit).</p>\n";
@@ -527,9 +510,8 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
          "object, depth and uv at the pixel centres are compared with the reference renderer's of our loaded "
          "triangles, within the check's own bounds (not the image tolerances). A failing check fails its case.</p>\n";
   h << "<table><tr><th class=\"l\">provenance</th><th class=\"l\"></th></tr>";
-  for (auto it = r["provenance"].begin(); it != r["provenance"].end(); ++it)
-    h << "<tr><td class=\"l\">" << htmlEscape(it.key()) << "</td><td class=\"l\">"
-      << htmlEscape(it.value().is_string() ? it.value().get<std::string>() : it.value().dump()) << "</td></tr>";
+  for (const auto& [key, value] : r.provenance)
+    h << "<tr><td class=\"l\">" << htmlEscape(key) << "</td><td class=\"l\">" << htmlEscape(value) << "</td></tr>";
   h << "</table>\n";
   h << "<h2>Summary</h2>\n<table id=\"summary\"><tr><th class=\"l\">scene</th><th class=\"l\">verdict</th>"
        "<th class=\"l\">who deviates</th>";
@@ -538,23 +520,21 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
       << "; open for the renderers x renderers matrix)</th>";
   for (const auto& g : check_ids) h << "<th>" << htmlEscape(g) << "<br>verdict</th>";
   h << "</tr>\n";
-  for (const auto& c : cases) {
-    const std::string id = htmlEscape(c["scene"].get<std::string>());
+  for (const results::Case* c : cases) {
+    const std::string id = htmlEscape(c->scene);
     h << "<tr><td class=\"l\"><a href=\"#" << id << "\">" << id << "</a></td><td "
-      << verdictCell(caseVerdict(c)) << "</td><td class=\"l deviates\">"
-      << htmlEscape(c["attribution"].get<std::string>()) << "</td>";
+      << verdictCell(caseVerdict(c)) << "</td><td class=\"l deviates\">" << htmlEscape(c->attribution) << "</td>";
     if (!pairs.empty()) {
-      if (const J* w = worstPair(c, pairs))
-        h << "<td " << pairCell(*w) << "<br><span class=\"pairname\">" << htmlEscape((*w)["pair"].get<std::string>())
-          << "</span></td>";
+      if (const results::Pair* w = worstPair(*c, pairs))
+        h << "<td " << pairCell(*w) << "<br><span class=\"pairname\">" << htmlEscape(w->pair) << "</span></td>";
       else
         h << "<td></td>";  // this case has no pair
-      h << pairsCell(c, run_pairs);
+      h << pairsCell(*c, run_pairs);
     }
     for (const auto& id : check_ids) {
-      const J* g = findCheck(c, id);
+      const results::GeometryCheck* g = findCheck(*c, id);
       if (!g) h << "<td></td>";
-      else if ((*g)["verdict"] == "not_expressible") h << "<td class=\"nexp\">not expressible</td>";
+      else if (g->verdict == results::PairVerdict::NotExpressible) h << "<td class=\"nexp\">not expressible</td>";
       else h << "<td " << verdictCell(checkVerdict(*g)) << "</td>";
     }
     h << "</tr>\n";
@@ -571,48 +551,47 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
        "render and the heat map around them, magnified nearest-neighbour. The buttons above each case "
        "swap its renders and heat maps in one place. Over-tolerance pixels are classified by cause:</p>\n"
     << pixelClassLegend(doc_href);
-  for (const auto& c : cases) {
-    const std::string id = htmlEscape(c["scene"].get<std::string>());
+  for (const results::Case* cp : cases) {
+    const results::Case& c = *cp;
+    const std::string id = htmlEscape(c.scene);
     h << "<div class=\"case\" id=\"" << id << "\"><h3>" << id << " &mdash; <span class=\""
-      << verdictCell(caseVerdict(c)).substr(std::string("class=\"l ").size()) << "</span></h3>\n";
+      << verdictCell(caseVerdict(cp)).substr(std::string("class=\"l ").size()) << "</span></h3>\n";
     // The command is the compare step's (validate/validation/next_steps.h
     // reproduceCommand: with the run's renderers, renderer files and
     // tolerance file); results.json files written before it had none: no
     // command rather than one that would not run as the case ran.
-    h << "<p>" << htmlEscape(c["attribution"].get<std::string>()) << ".";
-    if (c.contains("reproduce")) h << " Reproduce: <code>" << htmlEscape(c["reproduce"].get<std::string>()) << "</code>";
+    h << "<p>" << htmlEscape(c.attribution) << ".";
+    if (c.reproduce) h << " Reproduce: <code>" << htmlEscape(*c.reproduce) << "</code>";
     h << "</p>\n";
-    if (c.contains("left_out"))
-      for (auto it = c["left_out"].begin(); it != c["left_out"].end(); ++it)
-        h << "<p class=\"nexp\">" << htmlEscape(it.key()) << " left out: " << htmlEscape(it.value().get<std::string>())
-          << "</p>\n";
-    if (c.contains("warnings"))  // the scene's warnings (scene/scene_lint.h): beside the verdict, not in it
-      for (const auto& w : c["warnings"])
-        h << "<p class=\"warn\">warning: " << htmlEscape(w["subject"].get<std::string>()) << ": "
-          << htmlEscape(w["message"].get<std::string>()) << " [" << htmlEscape(w["code"].get<std::string>())
-          << "]</p>\n";
+    for (const auto& [renderer, why] : c.left_out)
+      h << "<p class=\"nexp\">" << htmlEscape(renderer) << " left out: " << htmlEscape(why) << "</p>\n";
+    // The scene's warnings (scene/scene_lint.h): beside the verdict, not in it.
+    for (const results::Warning& w : c.warnings)
+      h << "<p class=\"warn\">warning: " << htmlEscape(w.subject) << ": " << htmlEscape(w.message) << " ["
+        << htmlEscape(w.code) << "]</p>\n";
     h << "<div class=\"imgs\">";
     for (const std::string& rid : run_renderers) {
-      if (!c["renders"].contains(rid)) continue;
+      const results::Render* found = c.render(rid);
+      if (!found) continue;
+      const results::Render& rr = *found;
       const std::string renderer = htmlEscape(rid);
-      const J& rr = c["renders"][rid];
-      if (rr.contains("not_expressible")) {
+      if (rr.not_expressible) {
         h << "<figure><figcaption>" << renderer << ": <span class=\"nexp\">not expressible: "
-          << htmlEscape(rr["not_expressible"].get<std::string>()) << "</span></figcaption></figure>";
+          << htmlEscape(*rr.not_expressible) << "</span></figcaption></figure>";
         continue;
       }
       // A failed render shows its error where its image would be: no
       // <img> of a file that is not there.
       if (renderHasImage(rr, dir))
-        h << "<figure><img src=\"" << htmlEscape(rr["image"].get<std::string>()) << "\" alt=\"" << renderer << "\">";
+        h << "<figure><img src=\"" << htmlEscape(*rr.image) << "\" alt=\"" << renderer << "\">";
       else
         h << "<figure><div class=\"noimage err\">"
-          << (rr.contains("error") ? "error: " + htmlEscape(rr["error"].get<std::string>())
-                                   : "no image: " + htmlEscape(rr.value("image", std::string("(none named)"))) +
-                                         " (named in results.json) is missing")
+          << (rr.error ? "error: " + htmlEscape(*rr.error)
+                       : "no image: " + htmlEscape(rr.image.value_or("(none named)")) +
+                             " (named in results.json) is missing")
           << "</div>";
-      h << "<figcaption>" << renderer << ", " << fixed(rr["seconds"], 2) << " s";
-      if (rr.contains("render_seconds")) h << " (render " << fixed(rr["render_seconds"], 2) << " s)";
+      h << "<figcaption>" << renderer << ", " << fixed(rr.seconds, 2) << " s";
+      if (rr.render_seconds) h << " (render " << fixed(*rr.render_seconds, 2) << " s)";
       if (isGeometryCheck(c, rid)) h << "<br>" << htmlEscape(geometryCheckCaption());
       h << "</figcaption></figure>";
     }
@@ -621,51 +600,47 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
          "<th>RMSE</th><th>PSNR dB</th><th>within tol.</th><th>tol.</th><th>masks off (silh.)</th>";
     for (const PixelClassInfo& k : kPixelClasses) h << "<th>over tol.: " << k.name << "<br>count (max)</th>";
     h << "</tr>\n";
-    for (const auto& p : c["pairs"]) {
-      h << "<tr><td class=\"l\">" << htmlEscape(p["pair"].get<std::string>()) << "</td>";
-      if (p.contains("not_expressible")) {
+    for (const results::Pair& p : c.pairs) {
+      h << "<tr><td class=\"l\">" << htmlEscape(p.pair) << "</td>";
+      if (p.verdict == results::PairVerdict::NotExpressible) {
         h << "<td class=\"nexp\" colspan=\"" << 9 + kPixelClassCount << "\">not expressible, not compared: "
-          << htmlEscape(p["not_expressible"].get<std::string>()) << "</td></tr>\n";
+          << htmlEscape(p.not_expressible.value_or("")) << "</td></tr>\n";
         continue;
       }
-      if (!p.contains("metrics")) {
-        h << "<td class=\"err\" colspan=\"" << 9 + kPixelClassCount << "\">" << htmlEscape(p.value("error", "error"))
+      if (!p.metrics) {
+        h << "<td class=\"err\" colspan=\"" << 9 + kPixelClassCount << "\">" << htmlEscape(p.error.value_or("error"))
           << "</td></tr>\n";
         continue;
       }
-      const J& m = p["metrics"];
-      const J& o = m["over_tolerance"];
-      h << "<td " << verdictCell(pairVerdict(p)) << "</td><td>" << fixed(m.value("max_unexplained_16bit", J()), 2)
-        << " (" << fixed(m["tolerance"].value("max_unexplained_16bit", J()), 0) << ")</td><td>"
-        << fixed(m["max_abs_16bit"], 2) << "</td><td>" << fixed(m["p999_abs_16bit"], 2) << "</td><td>"
-        << fixed(m["rmse_16bit"], 3) << "</td><td>"
-        << (m["psnr_db"].is_null() ? std::string("inf") : fixed(m["psnr_db"], 1)) << "</td><td>"
-        << fixed(100.0 * m["fraction_within"].get<double>(), 3) << "%</td><td>"
-        << significant(m["tolerance"]["max_abs_16bit"]) << " on " << significant(100.0 * m["tolerance"]["fraction"].get<double>())
-        << "%</td><td>" << m["mask_disagree"].get<long long>() << " (" << m["mask_disagree_explained"].get<long long>()
-        << ")</td>";
+      const results::PairMetrics& m = *p.metrics;
+      h << "<td " << verdictCell(pairVerdict(p)) << "</td><td>" << fixed(m.max_unexplained_16bit, 2) << " ("
+        << fixed(m.tolerance.max_unexplained_16bit, 0) << ")</td><td>" << fixed(m.max_abs_16bit, 2) << "</td><td>"
+        << fixed(m.p999_abs_16bit, 2) << "</td><td>" << fixed(m.rmse_16bit, 3) << "</td><td>"
+        << (m.psnr_db ? fixed(*m.psnr_db, 1) : std::string("inf")) << "</td><td>" << fixed(100.0 * m.fraction_within, 3)
+        << "%</td><td>" << significant(m.tolerance.max_abs_16bit) << " on " << significant(100.0 * m.tolerance.fraction)
+        << "%</td><td>" << m.mask_disagree << " (" << m.mask_disagree_explained << ")</td>";
       for (const PixelClassInfo& k : kPixelClasses) {
-        h << "<td>" << (o.contains(k.key) ? std::to_string(o[k.key].get<long long>()) : std::string("n/a"));
-        if (m.contains("over_tolerance_max_16bit") && o.value(k.key, 0LL) > 0)
-          h << " (" << fixed(m["over_tolerance_max_16bit"][k.key], 1) << ")";
+        const long long* count = ofClass(m.over_tolerance, k.key);
+        const std::optional<double>* max = ofClass(m.over_tolerance_max_16bit, k.key);
+        h << "<td>" << (count ? std::to_string(*count) : std::string("n/a"));
+        if (max && count && *count > 0) h << " (" << fixed(*max, 1) << ")";
         h << "</td>";
       }
       h << "</tr>\n";
     }
     h << "</table>\n";
     // Every metric of the table (image/metric_table.h), a column each.
-    h << pairMetricsTable(c["pairs"]);
+    h << pairMetricsTable(c.pairs);
     h << geometryChecksTable(c);
     // Why each failing pair fails: every criterion, with its numbers.
-    for (const auto& p : c["pairs"]) {
-      if (p.value("failed", J::array()).empty()) continue;
-      h << "<p class=\"reason\"><b>" << htmlEscape(p["pair"].get<std::string>()) << " fails:</b> "
-        << htmlEscape(failedText(failedFromJson(p["failed"], "failed"))) << "</p>\n";
-    }
-    for (const auto& p : c["pairs"])
-      if (p.contains("metrics") && !p["metrics"].value("tolerance_reason", "").empty())
-        h << "<p class=\"reason\"><b>" << htmlEscape(p["pair"].get<std::string>())
-          << " tolerance:</b> " << htmlEscape(p["metrics"]["tolerance_reason"].get<std::string>()) << "</p>\n";
+    for (const results::Pair& p : c.pairs)
+      if (!p.failed.empty())
+        h << "<p class=\"reason\"><b>" << htmlEscape(p.pair) << " fails:</b> " << htmlEscape(failedText(p.failed))
+          << "</p>\n";
+    for (const results::Pair& p : c.pairs)
+      if (p.metrics && !p.metrics->tolerance_reason.empty())
+        h << "<p class=\"reason\"><b>" << htmlEscape(p.pair) << " tolerance:</b> "
+          << htmlEscape(p.metrics->tolerance_reason) << "</p>\n";
     h << "</div>\n";
   }
   // After the cases: the paper's claims, the extremes and the trade-off.

@@ -32,6 +32,7 @@
 #include <string>
 
 #include "image/image.h"
+#include "validate/results/results.h"
 
 namespace xval {
 
@@ -59,6 +60,6 @@ std::string htmlEscape(const std::string& s);
 // criterion it fails ("FAIL fraction 99.81% < 99.9%": results.json
 // "failed", image/pair_failure.h), else its max unexplained error in
 // 1/65535 ("PASS 3.76"); "ERROR" for a pair not compared.
-std::string pairSummary(const nlohmann::ordered_json& pair);
+std::string pairSummary(const results::Pair& pair);
 
 }  // namespace xval

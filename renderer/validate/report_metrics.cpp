@@ -1,6 +1,7 @@
 // The report's metrics table (validate/report_metrics.h).
 #include "validate/report_metrics.h"
 
+#include <algorithm>
 #include <sstream>
 
 #include "image/metric_table.h"
@@ -9,10 +10,10 @@
 
 namespace xval {
 
-std::string pairMetricsTable(const nlohmann::ordered_json& pairs) {
+std::string pairMetricsTable(const std::vector<results::Pair>& pairs) {
   std::ostringstream h;
   bool any = false;
-  for (const auto& p : pairs) any = any || p.contains("metrics");
+  for (const results::Pair& p : pairs) any = any || p.metrics.has_value();
   if (!any) return "";
   h << "<table class=\"metrics\"><tr><th class=\"l\">pair</th>";
   for (const MetricInfo& m : metricTable())
@@ -20,15 +21,17 @@ std::string pairMetricsTable(const nlohmann::ordered_json& pairs) {
       << htmlEscape(m.label) << (*m.unit ? "<br>(" + htmlEscape(m.unit) + ")" : std::string())
       << (m.better == Better::Lower ? " &darr;" : " &uarr;") << "</th>";
   h << "</tr>\n";
-  for (const auto& p : pairs) {
-    if (!p.contains("metrics")) continue;
-    h << "<tr><td class=\"l\">" << htmlEscape(p.value("pair", std::string())) << "</td>";
-    const auto& values = p["metrics"].value("values", nlohmann::ordered_json::object());
+  for (const results::Pair& p : pairs) {
+    if (!p.metrics) continue;
+    h << "<tr><td class=\"l\">" << htmlEscape(p.pair) << "</td>";
+    const results::Named<std::optional<double>> none;
+    const auto& values = p.metrics->values ? *p.metrics->values : none;
     for (const MetricInfo& m : metricTable()) {
+      const auto v = std::find_if(values.begin(), values.end(), [&](const auto& e) { return e.first == m.id; });
       h << "<td>";
-      if (!values.contains(m.id)) h << "n/a";
-      else if (values[m.id].is_null()) h << "not finite";
-      else h << significant(values[m.id]);
+      if (v == values.end()) h << "n/a";
+      else if (!v->second) h << "not finite";
+      else h << significant(*v->second);
       h << "</td>";
     }
     h << "</tr>\n";

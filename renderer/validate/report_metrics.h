@@ -7,12 +7,14 @@
 
 #include <string>
 
-#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "validate/results/results.h"
 
 namespace xval {
 
-// `pairs`: a case's "pairs" array of results.json. "" when no pair was
-// compared.
-std::string pairMetricsTable(const nlohmann::ordered_json& pairs);
+// `pairs`: a case's pairs (validate/results/results.h). "" when no pair
+// was compared.
+std::string pairMetricsTable(const std::vector<results::Pair>& pairs);
 
 }  // namespace xval

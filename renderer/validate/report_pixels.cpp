@@ -1,5 +1,6 @@
 #include "validate/report_pixels.h"
 
+#include <algorithm>
 #include <sstream>
 
 #include "image/pixel_classes.h"
@@ -24,22 +25,20 @@ std::string markStyle(double x, double y, double w, double h, double radius) {
   return s.str();
 }
 
-std::string pixelText(const J& shown) {
-  return "(" + std::to_string(shown["pixel"][0].get<int>()) + ", " + std::to_string(shown["pixel"][1].get<int>()) +
-         ")";
+std::string pixelText(const results::ShownPixel& shown) {
+  return "(" + std::to_string(shown.x) + ", " + std::to_string(shown.y) + ")";
 }
 
 // The crops of one shown pixel: every render and the heat map, magnified.
-std::string cropRow(const J& shown, const char* title, const std::string& pair) {
-  const J& w = shown["window"];
-  const int x0 = w[0].get<int>(), y0 = w[1].get<int>(), cw = w[2].get<int>(), ch = w[3].get<int>();
-  const double px = shown["pixel"][0].get<int>() - x0, py = shown["pixel"][1].get<int>() - y0;
+std::string cropRow(const results::ShownPixel& shown, const char* title, const std::string& pair) {
+  const long long x0 = shown.window_x, y0 = shown.window_y, cw = shown.window_width, ch = shown.window_height;
+  const double px = double(shown.x - x0), py = double(shown.y - y0);
   const std::string mark = markStyle(px, py, cw, ch, 0.5);
   std::ostringstream h;
   h << "<div class=\"crops\" data-pair=\"" << htmlEscape(pair) << "\" data-which=\"" << title << "\"><p>"
     << htmlEscape(pair) << ", " << (std::string(title) == "worst_unexplained" ? "worst unexplained" : "worst explained")
-    << " pixel " << pixelText(shown) << ": " << fixed(shown["error_16bit"], 2) << "/65535 ("
-    << htmlEscape(shown["class"].get<std::string>()) << "), " << cw << " x " << ch << " px around it, magnified "
+    << " pixel " << pixelText(shown) << ": " << fixed(shown.error_16bit, 2) << "/65535 ("
+    << htmlEscape(shown.pixel_class) << "), " << cw << " x " << ch << " px around it, magnified "
     << kCropZoom << "x</p><div class=\"imgs\">";
   auto figure = [&](const std::string& src, const std::string& caption, const char* cls) {
     h << "<figure><div class=\"marked\" style=\"width:" << cw * kCropZoom << "px\"><img class=\"crop " << cls
@@ -47,25 +46,35 @@ std::string cropRow(const J& shown, const char* title, const std::string& pair) 
       << "\" data-y=\"" << py << "\"><span class=\"mark\" style=\"" << mark << "\"></span></div><figcaption>"
       << htmlEscape(caption) << "</figcaption></figure>";
   };
-  for (auto it = shown["renders"].begin(); it != shown["renders"].end(); ++it)
-    figure(it.value().get<std::string>(), it.key(), "render");
-  figure(shown["heat_map"].get<std::string>(), "|" + pair + "|", "heat");
+  for (const auto& [renderer, crop] : shown.renders) figure(crop, renderer, "render");
+  figure(shown.heat_map, "|" + pair + "|", "heat");
   h << "</div></div>\n";
   return h.str();
 }
 
+// A pair's shown pixels, by the name results.json gives each: the worst
+// unexplained, then the worst explained.
+std::vector<std::pair<const char*, const results::ShownPixel*>> shownPixels(const results::PairCrops& crops) {
+  std::vector<std::pair<const char*, const results::ShownPixel*>> out;
+  if (crops.worst_unexplained) out.emplace_back("worst_unexplained", &*crops.worst_unexplained);
+  if (crops.worst_explained) out.emplace_back("worst_explained", &*crops.worst_explained);
+  return out;
+}
+
 }  // namespace
 
-bool renderHasImage(const J& render, const fs::path& dir) {
-  if (render.contains("error") || !render.contains("image") || !render["image"].is_string()) return false;
-  return fs::is_regular_file(dir / render["image"].get<std::string>());
+bool renderHasImage(const results::Render& render, const fs::path& dir) {
+  if (render.error || !render.image) return false;
+  return fs::is_regular_file(dir / *render.image);
 }
 
-std::string pairVerdict(const J& p) {
-  if (p.contains("error")) return "error";
-  if (p.contains("not_expressible")) return "not expressible";
-  return p.value("pass", false) ? "pass" : "fail";
+std::string verdictWords(results::PairVerdict v) {
+  std::string word = results::pairVerdictName(v);
+  std::replace(word.begin(), word.end(), '_', ' ');
+  return word;
 }
+
+std::string pairVerdict(const results::Pair& p) { return verdictWords(p.verdict); }
 
 std::string pixelClassLegend(const std::string& doc_href) {
   std::ostringstream h;
@@ -77,29 +86,28 @@ std::string pixelClassLegend(const std::string& doc_href) {
   return h.str();
 }
 
-std::string casePixels(const J& c, const fs::path& dir) {
+std::string casePixels(const results::Case& c, const fs::path& dir) {
   std::ostringstream h;
-  int width = 0, height = 0;  // the scene's, from any pair's metrics
-  for (const auto& p : c["pairs"])
-    if (p.contains("metrics")) width = p["metrics"]["width"].get<int>(), height = p["metrics"]["height"].get<int>();
+  long long width = 0, height = 0;  // the scene's, from any pair's metrics
+  for (const results::Pair& p : c.pairs)
+    if (p.metrics) width = p.metrics->width, height = p.metrics->height;
   // The viewer: one image, a button per render and per heat map.
   std::ostringstream buttons;
   std::string first;
-  for (auto it = c["renders"].begin(); it != c["renders"].end(); ++it) {
+  for (const auto& [id, render] : c.renders) {
     // Only renders with an image: not a failed or a not-expressible one.
-    if (!renderHasImage(it.value(), dir)) continue;
-    const std::string src = it.value()["image"].get<std::string>();
+    if (!renderHasImage(render, dir)) continue;
+    const std::string& src = *render.image;
     if (first.empty()) first = src;
-    buttons << "<button type=\"button\" data-src=\"" << htmlEscape(src) << "\">" << htmlEscape(it.key())
-            << "</button>";
+    buttons << "<button type=\"button\" data-src=\"" << htmlEscape(src) << "\">" << htmlEscape(id) << "</button>";
   }
-  for (const auto& p : c["pairs"]) {
-    if (p.contains("heat_map"))
-      buttons << "<button type=\"button\" data-src=\"" << htmlEscape(p["heat_map"].get<std::string>()) << "\">|"
-              << htmlEscape(p["pair"].get<std::string>()) << "|</button>";
-    if (p.contains("bound_map"))
-      buttons << "<button type=\"button\" data-src=\"" << htmlEscape(p["bound_map"].get<std::string>())
-              << "\">bound " << htmlEscape(p["pair"].get<std::string>()) << "</button>";
+  for (const results::Pair& p : c.pairs) {
+    if (p.heat_map)
+      buttons << "<button type=\"button\" data-src=\"" << htmlEscape(*p.heat_map) << "\">|" << htmlEscape(p.pair)
+              << "|</button>";
+    if (p.bound_map)
+      buttons << "<button type=\"button\" data-src=\"" << htmlEscape(*p.bound_map) << "\">bound "
+              << htmlEscape(p.pair) << "</button>";
   }
   if (!first.empty() && width > 0)
     h << "<div class=\"viewer\" data-viewer><div class=\"swapbar\">show: " << buttons.str()
@@ -107,31 +115,28 @@ std::string casePixels(const J& c, const fs::path& dir) {
       << "px\"></div>\n";
   // The heat maps, full resolution, with the two pixels marked.
   h << "<div class=\"imgs\">";
-  for (const auto& p : c["pairs"]) {
-    if (!p.contains("heat_map")) continue;
-    const std::string pair = p["pair"].get<std::string>();
-    const std::string heat = p["heat_map"].get<std::string>();
+  for (const results::Pair& p : c.pairs) {
+    if (!p.heat_map) continue;
+    const std::string& pair = p.pair;
+    const std::string& heat = *p.heat_map;
     if (!fs::is_regular_file(dir / heat)) {
       h << "<p class=\"err\">heat map " << htmlEscape(heat) << " (named in results.json) is missing</p>";
       continue;
     }
     h << "<figure><div class=\"marked\" style=\"width:" << width << "px\"><img class=\"heat\" src=\""
       << htmlEscape(heat) << "\" alt=\"heat map " << htmlEscape(pair) << "\">";
-    const J crops = p.value("crops", J::object());
-    for (const char* which : {"worst_unexplained", "worst_explained"})
-      if (crops.contains(which))
-        h << "<span class=\"mark " << which << "\" title=\"" << which << " " << pixelText(crops[which])
-          << "\" style=\""
-          << markStyle(crops[which]["pixel"][0].get<int>(), crops[which]["pixel"][1].get<int>(), width, height, 4)
-          << "\"></span>";
+    const results::PairCrops crops = p.crops.value_or(results::PairCrops{});
+    for (const auto& [which, shown] : shownPixels(crops))
+      h << "<span class=\"mark " << which << "\" title=\"" << which << " " << pixelText(*shown) << "\" style=\""
+        << markStyle(double(shown->x), double(shown->y), double(width), double(height), 4) << "\"></span>";
     h << "</div><figcaption>|" << htmlEscape(pair) << "|";
-    if (crops.contains("worst_unexplained")) h << "; red box: worst unexplained";
-    if (crops.contains("worst_explained")) h << "; blue box: worst explained";
+    if (crops.worst_unexplained) h << "; red box: worst unexplained";
+    if (crops.worst_explained) h << "; blue box: worst explained";
     h << "</figcaption></figure>";
     // The precision bound on the same scale: where |a - b| is brighter than
     // it, only an edge, a backfacing normal or nothing explains the pixel.
-    if (p.contains("bound_map")) {
-      const std::string bound = p["bound_map"].get<std::string>();
+    if (p.bound_map) {
+      const std::string& bound = *p.bound_map;
       if (!fs::is_regular_file(dir / bound))
         h << "<p class=\"err\">bound map " << htmlEscape(bound) << " (named in results.json) is missing</p>";
       else
@@ -141,11 +146,9 @@ std::string casePixels(const J& c, const fs::path& dir) {
     }
   }
   h << "</div>\n";
-  for (const auto& p : c["pairs"]) {
-    if (!p.contains("crops")) continue;
-    for (const char* which : {"worst_unexplained", "worst_explained"})
-      if (p["crops"].contains(which)) h << cropRow(p["crops"][which], which, p["pair"].get<std::string>());
-  }
+  for (const results::Pair& p : c.pairs)
+    if (p.crops)
+      for (const auto& [which, shown] : shownPixels(*p.crops)) h << cropRow(*shown, which, p.pair);
   return h.str();
 }
 

@@ -10,17 +10,20 @@
 #include <filesystem>
 #include <string>
 
-#include <nlohmann/json.hpp>
+#include "validate/results/results.h"
 
 namespace xval {
 
 // Whether a render has an image to show: it names one, did not fail (no
 // `error`) and the file is in `dir`. A render without one is shown by its
 // error text, never by an <img> of a missing file.
-bool renderHasImage(const nlohmann::ordered_json& render, const std::filesystem::path& dir);
+bool renderHasImage(const results::Render& render, const std::filesystem::path& dir);
 
-// A pair's verdict word: "error", "not expressible", "pass" or "fail".
-std::string pairVerdict(const nlohmann::ordered_json& pair);
+// A pair's or a geometry check's stored verdict (validate/results/
+// results.h) as the report words it: "error", "not expressible", "pass" or
+// "fail".
+std::string verdictWords(results::PairVerdict v);
+std::string pairVerdict(const results::Pair& pair);
 
 // The classes of image/pixel_classes.h: name, one-line explanation, a link
 // to its section of the doc (doc_href: the doc relative to the page).
@@ -29,7 +32,7 @@ std::string pixelClassLegend(const std::string& doc_href);
 // One case's viewer, heat maps and crops; `dir`: the folder results.json
 // and the files it names are in (a heat map named there but missing is
 // said so).
-std::string casePixels(const nlohmann::ordered_json& c, const std::filesystem::path& dir);
+std::string casePixels(const results::Case& c, const std::filesystem::path& dir);
 
 // The page's inline script for the viewers' buttons.
 std::string swapScript();

@@ -1,7 +1,7 @@
 // libFuzzer target: the report's reader of results.json (validate/
 // results_shape.h, the check against docs/results-schema.json that every
-// report runs first) and JUnit's (validate/junit_report.h), on arbitrary
-// bytes.
+// report runs first), the typed reader after it (validate/results/
+// results.h) and JUnit (validate/junit_report.h), on arbitrary bytes.
 //
 // Every input that the check accepts is also checked with each of its
 // fields left out in turn (every member of every object, at any depth):
@@ -45,11 +45,16 @@ bool read(const J& r) {
   } catch (const std::exception& e) {
     finding("an unexpected exception from the check", e.what());
   }
+  // The typed reader (validate/results/results.h) on what the check
+  // accepted, then JUnit on its types.
   try {
-    (void)xval::junitXml(nlohmann::json::parse(r.dump()), "fuzz");
+    (void)xval::junitXml(xval::results::resultsFromJson(r, kFile), "fuzz");
   } catch (const nlohmann::json::exception& e) {
-    finding("a library exception from JUnit on a results.json the check accepted", e.what());
-  } catch (const std::runtime_error&) {
+    finding("a library exception from the typed reader or JUnit on a results.json the check accepted", e.what());
+  } catch (const std::runtime_error& e) {
+    if (std::string(e.what()).rfind(kFile + ": ", 0) != 0) finding("an error not naming the file", e.what());
+  } catch (const std::exception& e) {
+    finding("an unexpected exception from the typed reader or JUnit", e.what());
   }
   return true;
 }

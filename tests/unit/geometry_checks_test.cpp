@@ -101,7 +101,7 @@ TEST(GeometryChecks, JunitHasOneTestcasePerCheck) {
   };
   const nlohmann::json results =
       J{{"format", "xval-results/1"}, {"cases", {one("a", checks), one("b", nexp), one("c", err), one("d", pass)}}};
-  const std::string x = junitXml(results, "s");
+  const std::string x = junitXml(xval::results::resultsFromJson(xval::results::Json::parse(results.dump()), "results"), "s");
   EXPECT_NE(x.find("tests=\"4\" failures=\"1\" errors=\"1\" skipped=\"1\""), std::string::npos) << x;
   EXPECT_NE(x.find("<testcase classname=\"a\" name=\"reference-blender-import (geometry)\" time=\"4.000\">\n"
                    "      <failure message=\"geometry outside its bounds: uv error 0.840000 &gt; 0.000100; covered "

@@ -15,10 +15,21 @@ using J = nlohmann::json;
 
 namespace {
 
-J results() {
-  J metrics_fail = {{"p999_abs_16bit", 9.5},       {"max_abs_16bit", 300.0},
-                    {"fraction_within", 0.95},     {"mask_disagree", 3},
-                    {"mask_disagree_explained", 1}, {"tolerance", {{"max_abs_16bit", 2.0}, {"fraction", 0.999}}},
+J sample() {
+  J metrics_fail = {{"width", 10},
+                    {"height", 10},
+                    {"p999_abs_16bit", 9.5},
+                    {"max_abs_16bit", 300.0},
+                    {"rmse_16bit", 4.0},
+                    {"psnr_db", 50.0},
+                    {"fraction_within", 0.95},
+                    {"mask_disagree", 3},
+                    {"mask_disagree_explained", 1},
+                    {"max_unexplained_16bit", 12.0},
+                    {"over_tolerance", {{"total", 5}, {"precision", 0}, {"edge", 2}, {"backfacing_normal", 0}, {"unexplained", 3}}},
+                    {"over_tolerance_max_16bit", {{"precision", 0.0}, {"edge", 9.0}, {"backfacing_normal", 0.0}, {"unexplained", 12.0}}},
+                    {"tolerance",
+                     {{"max_abs_16bit", 2.0}, {"fraction", 0.999}, {"exclude_backfacing", false}, {"max_unexplained_16bit", 128.0}}},
                     {"tolerance_reason", ""}};
   J metrics_pass = metrics_fail;
   metrics_pass["fraction_within"] = 1.0;
@@ -44,6 +55,12 @@ J results() {
                {{"pair", "reference-blender"}, {"not_expressible", "blender: spp 9 not supported"}}}}}}}};
 }
 
+// JUnit of results.json's JSON, through the results types' reader
+// (validate/results/results.h) as every caller's.
+std::string junitXml(const J& r, const std::string& suite) {
+  return xval::junitXml(xval::results::resultsFromJson(xval::results::Json::parse(r.dump()), "results"), suite);
+}
+
 std::filesystem::path dir() {
   static const std::filesystem::path d = xval::test::freshTempDir("xval_junit_test");
   return d;
@@ -58,7 +75,7 @@ ProcessResult xmllint(const std::string& xml, const char* name) {
 }  // namespace
 
 TEST(JunitReport, OneTestcasePerScenePairWithItsOutcome) {
-  const std::string x = junitXml(results(), "reference set");
+  const std::string x = junitXml(sample(), "reference set");
   EXPECT_NE(x.find("<testsuite name=\"reference set\" tests=\"5\" failures=\"1\" errors=\"2\" skipped=\"1\""),
             std::string::npos) << x;
   EXPECT_NE(x.find("<testcase classname=\"sphere\" name=\"reference-povray\""), std::string::npos) << x;
@@ -78,7 +95,7 @@ TEST(JunitReport, OneTestcasePerScenePairWithItsOutcome) {
 }
 
 TEST(JunitReport, ValidAgainstTheSchema) {
-  ProcessResult r = xmllint(junitXml(results(), "reference set"), "ok.xml");
+  ProcessResult r = xmllint(junitXml(sample(), "reference set"), "ok.xml");
   EXPECT_TRUE(r.ok()) << r.describe() << "\n" << tailOfFile(r.log);
 }
 
@@ -87,7 +104,7 @@ TEST(JunitReport, ValidAgainstTheSchema) {
 // finite"; a pair without values has none (results.json from before the
 // table). Valid against the schema.
 TEST(JunitReport, PairMetricValuesAreTestcaseProperties) {
-  J r = results();
+  J r = sample();
   r["cases"][0]["pairs"][0]["metrics"]["values"] = {{"flip", 0.0125}, {"psnr", nullptr}, {"rmse", 3.5}};
   r["cases"][1]["pairs"][0]["metrics"]["values"] = {{"flip", 0.5}};
   const std::string x = junitXml(r, "reference set");
@@ -100,7 +117,7 @@ TEST(JunitReport, PairMetricValuesAreTestcaseProperties) {
   EXPECT_NE(x.find("<property name=\"metric.flip\" value=\"0.5\"/>\n      </properties>\n      <failure "),
             std::string::npos)
       << x;
-  EXPECT_EQ(junitXml(results(), "reference set").find("<properties>"), std::string::npos);
+  EXPECT_EQ(junitXml(sample(), "reference set").find("<properties>"), std::string::npos);
   ProcessResult v = xmllint(x, "properties.xml");
   EXPECT_TRUE(v.ok()) << v.describe() << "\n" << tailOfFile(v.log);
 }
@@ -156,9 +173,9 @@ TEST(JunitReport, ACaseThatComparedNothingIsAFailure) {
   ProcessResult lint = xmllint(x, "not_compared.xml");
   EXPECT_TRUE(lint.ok()) << lint.describe() << "\n" << tailOfFile(lint.log);
   // A verdict the testcases already say adds nothing; an unknown one is an error.
-  J passing = results();
+  J passing = sample();
   passing["cases"][1]["verdict"] = "fail";
-  EXPECT_EQ(junitXml(passing, "reference set"), junitXml(results(), "reference set"));
+  EXPECT_EQ(junitXml(passing, "reference set"), junitXml(sample(), "reference set"));
   passing["cases"][1]["verdict"] = "maybe";
   EXPECT_THROW(junitXml(passing, "reference set"), std::runtime_error);
 }

@@ -17,6 +17,9 @@ namespace {
 
 using J = nlohmann::ordered_json;
 
+// The summary of a pair read as the report reads each (validate/results/results.h).
+std::string pairSummary(const J& p) { return xval::pairSummary(results::pairFromJson(p, "pair")); }
+
 // A pair as the compare step writes it (validation/compare_step.cpp).
 J pairRecord(const CompareMetrics& m, const Tolerance& t) {
   J p = {{"pair", "reference-gl"}};

@@ -17,6 +17,8 @@ std::string fixed(const nlohmann::json& j, int digits) {
   return j.is_number() ? fixed(j.get<double>(), digits) : "n/a";
 }
 
+std::string fixed(const std::optional<double>& v, int digits) { return v ? fixed(*v, digits) : "n/a"; }
+
 std::string fixed(const nlohmann::ordered_json& j, int digits) {
   return j.is_number() ? fixed(j.get<double>(), digits) : "n/a";
 }

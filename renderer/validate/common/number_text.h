@@ -15,6 +15,7 @@
 // decimals (0.1/65535 on 99.99% must not print as "0 on 100.0%").
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -24,6 +25,8 @@ namespace xval {
 std::string fixed(double v, int digits);
 std::string fixed(const nlohmann::json& j, int digits);
 std::string fixed(const nlohmann::ordered_json& j, int digits);
+// "n/a" for none (an infinite or absent number).
+std::string fixed(const std::optional<double>& v, int digits);
 std::string significant(double v);
 std::string significant(const nlohmann::json& j);
 std::string significant(const nlohmann::ordered_json& j);

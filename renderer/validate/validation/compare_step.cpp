@@ -35,6 +35,7 @@
 #include "validate/tolerances.h"
 #include "render/geometry_passes.h"
 #include "validate/geometry_check.h"
+#include "validate/results/results.h"
 #include "validate/validation/case_verdict.h"
 #include "validate/validation/geometry_checks.h"
 #include "validate/validation/job_record.h"
@@ -117,6 +118,17 @@ J renderJson(const RenderJob& job, const Render& r) {
 constexpr int kPass = renderers::kPairPasses, kFail = renderers::kPairFails,
               kFailOnlyFraction = renderers::kPairFailsOnlyOnFraction, kRenderError = -1, kNotExpressible = -2,
               kCompareError = -3;
+
+// The pair's verdict results.json stores (results/results.h), once.
+results::PairVerdict pairVerdict(int verdict) {
+  switch (verdict) {
+    case kPass: return results::PairVerdict::Pass;
+    case kFail:
+    case kFailOnlyFraction: return results::PairVerdict::Fail;
+    case kNotExpressible: return results::PairVerdict::NotExpressible;
+    default: return results::PairVerdict::Error;  // kRenderError, kCompareError
+  }
+}
 
 std::vector<PairFailure> comparedPair(const CompareContext& cx, const Scene& scene, const std::string& key,
                                       const Tolerance& tol, const PairPrecision& precision, const std::string& reason,
@@ -338,6 +350,7 @@ J compareCase(const CompareContext& cx, size_t k, std::vector<std::string>& remo
   for (size_t p = 0; p < pairs.size(); ++p) {
     jpairs.push_back(comparePair(cx, scene, *rs[pairs[p].a], *rs[pairs[p].b], renders, verdict[p]));
     if (verdict[p] == kCompareError) ++compare_errors, verdict[p] = kRenderError;
+    jpairs.back()["verdict"] = results::pairVerdictName(pairVerdict(verdict[p]));
   }
   jc["pairs"] = jpairs;
   removed = removeStaleCompareOutputs(plan.dir / ps.name, namedOutputs(jpairs));
@@ -389,13 +402,6 @@ std::string progressWord(CaseVerdict v) {
   if (v == CaseVerdict::Pass) return word;
   for (char& ch : word) ch = ch == '_' ? ' ' : static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
   return word;
-}
-
-// How many of the case's renders (or pairs) have `key` ("error", "not_expressible").
-int entriesWith(const J& entries, const char* key) {
-  int n = 0;
-  for (const auto& [id, e] : entries.items()) n += e.contains(key);
-  return n;
 }
 
 // The case of plan.scenes[k] when comparing it threw: an error, saying why.
@@ -478,46 +484,46 @@ int CaseComparer::finish() {
   // that names the file: the other cases are still reported.
   for (size_t k = 0; k < plan.scenes.size(); ++k)
     if (st.failed[k]) st.compared[k] = failedCase(plan, k, st.failed[k]);
-  std::map<CaseVerdict, int> cases;  // by verdict
-  std::vector<CaseVerdict> verdicts;
-  int not_expressible = 0, not_compared = 0;  // image renders, and their pairs
-  int checks_pass = 0, checks_fail = 0, checks_error = 0, checks_nexp = 0;  // geometry checks
   J jcases = J::array();
   std::vector<fs::path> setting_files{plan.tolerances_path};
   for (size_t k = 0; k < plan.scenes.size(); ++k) {
     if (st.compared[k].is_null())
       throw std::logic_error("the compare step: case " + plan.scenes[k].name + " was not compared");
     setting_files.push_back(plan.scenes[k].path);
-    J jc = std::move(st.compared[k]);
-    not_expressible += entriesWith(jc["renders"], "not_expressible");
-    not_compared += entriesWith(jc["pairs"], "not_expressible");
-    if (jc.contains("geometry_checks")) {
-      const J& checks = jc["geometry_checks"];
-      // A check's not-expressible render is the check's verdict, counted
-      // with the checks, not with the image renders.
-      not_expressible -= geometryChecksWith(checks, "not_expressible");
-      checks_pass += geometryChecksWith(checks, "pass");
-      checks_fail += geometryChecksWith(checks, "fail");
-      checks_error += geometryChecksWith(checks, "error");
-      checks_nexp += geometryChecksWith(checks, "not_expressible");
-    }
-    verdicts.push_back(parseCaseVerdict(jc["verdict"].get<std::string>(), plan.scenes[k].name + ": verdict"));
-    ++cases[verdicts.back()];
-    jcases.push_back(std::move(jc));
+    jcases.push_back(std::move(st.compared[k]));
   }
-  // Errors quote tools' logs and files' names, which are bytes: any that
-  // are not UTF-8 are written as U+FFFD (files/utf8_text.h), never a
+  // The results as their types (results/results.h): the summary below reads
+  // the verdicts stored there, and the one writer writes them, with bytes
+  // that are no UTF-8 (tools' logs, files' names) as U+FFFD: never a
   // results.json that cannot be written.
-  writeFileAtomically(dir / "results.json",
-                      resultsJson(plan, jcases, setting_files, st.jsections)
-                              .dump(2, ' ', false, nlohmann::json::error_handler_t::replace) +
-                          "\n");
+  const fs::path results_file = dir / "results.json";
+  const results::Results res =
+      results::resultsFromJson(resultsJson(plan, jcases, setting_files, st.jsections), results_file.string());
+  std::map<CaseVerdict, int> cases;  // by verdict
+  std::vector<CaseVerdict> verdicts;
+  int not_expressible = 0, not_compared = 0;  // image renders, and their pairs
+  std::map<results::PairVerdict, int> checks;  // geometry checks by verdict
+  for (const results::Case& c : res.cases) {
+    for (const auto& [id, r] : c.renders) not_expressible += r.not_expressible.has_value();
+    for (const results::Pair& p : c.pairs) not_compared += p.verdict == results::PairVerdict::NotExpressible;
+    // A check's not-expressible render is the check's verdict, counted
+    // with the checks, not with the image renders.
+    for (const results::GeometryCheck& g : c.geometry_checks)
+      not_expressible -= g.verdict == results::PairVerdict::NotExpressible, ++checks[g.verdict];
+    if (!c.verdict) throw std::logic_error("the compare step: case " + c.scene + " has no verdict");
+    verdicts.push_back(*c.verdict);
+    ++cases[verdicts.back()];
+  }
+  const int checks_pass = checks[results::PairVerdict::Pass], checks_fail = checks[results::PairVerdict::Fail],
+            checks_error = checks[results::PairVerdict::Error],
+            checks_nexp = checks[results::PairVerdict::NotExpressible];
+  results::writeResults(results_file, res);
   writeReport(dir / "results.json", dir / "report.html");
-  printNextSteps(plan, jcases);
+  printNextSteps(plan, res.cases);
   // "3 scenes, all pass", else the worst verdict and every verdict's count:
   // "3 scenes, ERRORS: 1 error, 1 fail, 1 not compared".
   const int status = validateExitStatus(verdicts);
-  std::string line = counted(jcases.size(), "scene", "scenes") + ", ";
+  std::string line = counted(res.cases.size(), "scene", "scenes") + ", ";
   if (status == 0) {
     line += "all pass";
   } else {

@@ -27,22 +27,20 @@ const PlannedScene& plannedScene(const Plan& plan, const std::string& name) {
 // The id of renderer `id`'s golden set: golden for the reference, else golden-ID.
 std::string goldenSetOf(const std::string& id) { return renderers::goldenSetIdOf(id); }
 
-bool pairFailed(const nlohmann::ordered_json& jc, const std::string& a, const std::string& b) {
-  for (const auto& p : jc["pairs"])
-    if ((p["pair"] == a + "-" + b || p["pair"] == b + "-" + a) && p.contains("pass") && !p["pass"].get<bool>())
-      return true;
+bool pairFailed(const results::Case& c, const std::string& a, const std::string& b) {
+  for (const results::Pair& p : c.pairs)
+    if ((p.pair == a + "-" + b || p.pair == b + "-" + a) && p.verdict == results::PairVerdict::Fail) return true;
   return false;
 }
 
 // The renderers of the case whose golden images are the step (next_steps.h).
-std::vector<std::string> goldenStepRenderers(const nlohmann::ordered_json& jc, const PlannedScene& ps) {
+std::vector<std::string> goldenStepRenderers(const results::Case& c, const PlannedScene& ps) {
   std::vector<std::string> out;
-  for (const auto& [id, render] : jc["renders"].items()) {
+  for (const auto& [id, render] : c.renders) {
     const renderers::Renderer* r = renderers::registry().find(id);
     if (!r || r->geometry_passes || !r->images_of.empty()) continue;
-    const bool deviates = jc.contains("deviating") &&
-                          std::find(jc["deviating"].begin(), jc["deviating"].end(), id) != jc["deviating"].end();
-    if (!deviates && !pairFailed(jc, id, goldenSetOf(id))) continue;
+    const bool deviates = std::find(c.deviating.begin(), c.deviating.end(), id) != c.deviating.end();
+    if (!deviates && !pairFailed(c, id, goldenSetOf(id))) continue;
     try {
       if (golden::readManifest(golden::goldenFolder(ps.path, id), id).entries.count(ps.path.stem().string()))
         out.push_back(id);
@@ -74,32 +72,28 @@ std::string reproduceCommand(const Plan& plan, const PlannedScene& ps) {
   return c + runOptions(plan, ps.path);
 }
 
-void printNextSteps(const Plan& plan, const nlohmann::ordered_json& cases) {
-  for (const auto& jc : cases) {
-    const std::string scene = jc["scene"].get<std::string>();
-    const CaseVerdict v = parseCaseVerdict(jc["verdict"].get<std::string>(), scene + ": verdict");
+void printNextSteps(const Plan& plan, const std::vector<results::Case>& cases) {
+  for (const results::Case& c : cases) {
+    const std::string& scene = c.scene;
+    if (!c.verdict) throw std::logic_error("printNextSteps: case " + scene + " has no verdict");
+    const CaseVerdict v = *c.verdict;
     if (v == CaseVerdict::Pass) continue;
     if (v == CaseVerdict::NotCompared) {
       // Nothing to look closer at: say why nothing was compared.
-      std::fprintf(stderr, "NOT COMPARED %s (%s)\n", scene.c_str(), jc["attribution"].get<std::string>().c_str());
-      const nlohmann::ordered_json left_out = jc.value("left_out", nlohmann::ordered_json::object());
-      for (const auto& [id, why] : left_out.items())
-        std::fprintf(stderr, "  %s left out: %s\n", id.c_str(), why.get<std::string>().c_str());
+      std::fprintf(stderr, "NOT COMPARED %s (%s)\n", scene.c_str(), c.attribution.c_str());
+      for (const auto& [id, why] : c.left_out) std::fprintf(stderr, "  %s left out: %s\n", id.c_str(), why.c_str());
       continue;
     }
     const PlannedScene& ps = plannedScene(plan, scene);
     const std::string options = runOptions(plan, ps.path);
     std::fprintf(stderr, "%s %s (%s)\n", v == CaseVerdict::Error ? "ERROR" : "FAIL", scene.c_str(),
-                 jc["attribution"].get<std::string>().c_str());
+                 c.attribution.c_str());
     // Each failing pair, with every criterion it fails (image/pair_failure.h).
-    for (const auto& p : jc["pairs"]) {
-      if (p.value("failed", nlohmann::ordered_json::array()).empty()) continue;
-      std::fprintf(stderr, "  %s fails: %s\n", p["pair"].get<std::string>().c_str(),
-                   failedText(failedFromJson(p["failed"], scene + ": failed")).c_str());
-    }
+    for (const results::Pair& p : c.pairs)
+      if (!p.failed.empty()) std::fprintf(stderr, "  %s fails: %s\n", p.pair.c_str(), failedText(p.failed).c_str());
     // Every renderer of the case that rendered it, but the reference.
-    for (const auto& [id, render] : jc["renders"].items())
-      if (id != renderers::registry().reference().id && !render.contains("not_expressible"))
+    for (const auto& [id, render] : c.renders)
+      if (id != renderers::registry().reference().id && !render.not_expressible)
         std::fprintf(stderr, "  look closer: xval crosscheck %s --renderer %s -o %s%s\n",
                      shellPath(ps.path).c_str(), shellWord(id).c_str(),
                      shellPath(plan.dir / (scene + "." + id)).c_str(), options.c_str());
@@ -107,7 +101,7 @@ void printNextSteps(const Plan& plan, const nlohmann::ordered_json& cases) {
                  "  accept a documented difference: declare it, with its measured reason, in the\n"
                  "  `tolerances` field of %s (defaults: %s)\n",
                  ps.file.c_str(), plan.tolerances.c_str());
-    for (const std::string& id : goldenStepRenderers(jc, ps))
+    for (const std::string& id : goldenStepRenderers(c, ps))
       std::fprintf(stderr,
                    "  after an intended change of %s, store its images anew:\n"
                    "  %s\n",

@@ -17,7 +17,9 @@
 #include <filesystem>
 #include <string>
 
-#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "validate/results/results.h"
 
 #include "validate/validation/plan.h"
 
@@ -36,12 +38,13 @@ std::string runOptions(const Plan& plan, const std::filesystem::path& scene_file
 // runOptions.
 std::string reproduceCommand(const Plan& plan, const PlannedScene& ps);
 
-// `cases`: results.json's cases (results_file.h). The golden-update step
+// `cases`: results.json's cases (validate/results/results.h), each with its
+// stored verdict. The golden-update step
 // is printed for a renderer R of the case (not a golden set, not a
 // geometry check) only when R is to blame, i.e. a majority deviates from R
 // (the case's `deviating`) or R's pair with its own golden set failed (its
 // images changed since they were stored), AND R's golden set holds an
 // image of the scene: otherwise storing R's images is not the step.
-void printNextSteps(const Plan& plan, const nlohmann::ordered_json& cases);
+void printNextSteps(const Plan& plan, const std::vector<results::Case>& cases);
 
 }  // namespace xval::validation

@@ -13,7 +13,7 @@
 #include "scene/json_reader.h"
 #include "scene/scene_loader.h"
 #include "validate/junit_report.h"
-#include "validate/results_shape.h"
+#include "validate/results/results.h"
 #include "validate/tolerances.h"
 #include "validate/validation/compare_step.h"
 #include "validate/validation/image_handoff.h"
@@ -32,10 +32,10 @@ namespace fs = std::filesystem;
 int withJunit(const Plan& plan, int status, const std::string& junit) {
   if (junit.empty()) return status;
   const fs::path results = plan.dir / "results.json";
-  const auto r = parseOrderedJsonText(readJsonFile(results, "results file"), results.string());
-  checkResultsShape(r, results.string());  // as the report reads it (validate/results_shape.h)
   const fs::path name = plan.dir.lexically_normal().filename();
-  writeFileAtomically(junit, junitXml(nlohmann::json(r), name.empty() ? std::string("xval validate") : name.string()));
+  // As the report reads it (validate/results/results.h).
+  writeFileAtomically(junit, junitXml(xval::results::readResults(results),
+                                      name.empty() ? std::string("xval validate") : name.string()));
   std::fprintf(stderr, "xval validate: wrote %s\n", junit.c_str());
   return status;
 }
