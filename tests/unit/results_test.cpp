@@ -58,7 +58,10 @@ TEST(Results, ReadWriteReadIsTheSame) {
     // Every field of the file read is in the file written.
     EXPECT_EQ(withoutPairVerdicts(Json::parse(text(written))), withoutPairVerdicts(Json::parse(text(f))));
     // ... and every pair has its verdict.
-    for (const auto& c : Json::parse(text(written))["cases"])
+    // (The parsed file named: a range-for over a temporary's member would
+    // read it after it is destroyed.)
+    const Json written_json = Json::parse(text(written));
+    for (const auto& c : written_json["cases"])
       for (const auto& p : c["pairs"]) EXPECT_TRUE(p.contains("verdict")) << p.dump();
     ASSERT_FALSE(std::string(XVAL_NODE).empty()) << "node not found: the schema check cannot run";
     const ProcessResult v = runProcess({XVAL_NODE, (fs::path(XVAL_SOURCE_DIR) / "tests/tools/validate_json_schema.js").string(),
