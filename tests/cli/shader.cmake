@@ -3,6 +3,9 @@
 #   listing_passes            the listing, crosscheck against the reference: PASS
 #   missing_saturate_fails    Diffuse without its inner saturate: FAIL (exit 1)
 #   reflection_sign_fails     R = -normalize(...): FAIL (exit 1)
+#   light_unnormalised_fails  LightVector = LightPos - PosWorld, not normalised (both copies of the
+#                             duplicated line, so the tool's one edit still applies): FAIL (exit 1)
+#   yiq_rows_swapped_fails    RGBtoYIQ with its I and Q rows swapped: FAIL (exit 1)
 #   unbound_uniform_error     no "uniforms" mapping for AmbientValue: an error naming it (exit 2)
 #   compile_error             a call glslang refuses: an error naming the file's line (exit 2)
 #   infinite_loop_times_out   a loop that never ends: killed at --timeout, an error (exit 2).
@@ -29,13 +32,22 @@ file(MAKE_DIRECTORY ${WORK}/shader)
 file(READ ${LISTING} listing)
 file(READ ${DEFINITION} definition)
 
-# WORK/shader/broken.fx: the listing with FROM replaced by TO; broken.json its definition.
-function(broken from to)
-  string(FIND "${listing}" "${from}" _at)
-  if(_at EQUAL -1)
-    message(FATAL_ERROR "the listing has no \"${from}\" to replace")
-  endif()
-  string(REPLACE "${from}" "${to}" _text "${listing}")
+# WORK/shader/broken.fx: the listing with FROM replaced by TO (each pair
+# FROM TO of the arguments, in order); broken.json its definition.
+function(broken)
+  set(_text "${listing}")
+  set(_i 0)
+  while(_i LESS ARGC)  # ARGVn, not a list: the texts hold semicolons
+    math(EXPR _j "${_i} + 1")
+    set(from "${ARGV${_i}}")
+    set(to "${ARGV${_j}}")
+    math(EXPR _i "${_i} + 2")
+    string(FIND "${_text}" "${from}" _at)
+    if(_at EQUAL -1)
+      message(FATAL_ERROR "the listing has no \"${from}\" to replace")
+    endif()
+    string(REPLACE "${from}" "${to}" _text "${_text}")
+  endwhile()
   file(WRITE ${WORK}/shader/broken.fx "${_text}")
   string(REPLACE "kotsarenko2012_table1.fx" "broken.fx" _def "${definition}")
   file(WRITE ${WORK}/shader/broken.json "${_def}")
@@ -66,6 +78,17 @@ elseif(CASE STREQUAL "missing_saturate_fails")
   expect_in("${out}${err}" "vs paper-listing: FAIL")
 elseif(CASE STREQUAL "reflection_sign_fails")
   broken("float3 Reflection = normalize(" "float3 Reflection = -normalize(")
+  run(1 ${crosscheck})
+  expect_in("${out}${err}" "vs paper-listing: FAIL")
+elseif(CASE STREQUAL "light_unnormalised_fails")
+  broken("float3 LightVector = normalize(LightPos - PosWorld);" "float3 LightVector = LightPos - PosWorld;")
+  run(1 ${crosscheck})
+  expect_in("${out}${err}" "vs paper-listing: FAIL")
+elseif(CASE STREQUAL "yiq_rows_swapped_fails")
+  # OutCol.x (I) takes Q's row and OutCol.z (Q) I's: a placeholder keeps the two replacements apart.
+  broken("OutCol.x = 0.59597799f" "OutCol.SWAP = 0.59597799f"
+         "OutCol.z = 0.21147017f" "OutCol.x = 0.21147017f"
+         "OutCol.SWAP = 0.59597799f" "OutCol.z = 0.59597799f")
   run(1 ${crosscheck})
   expect_in("${out}${err}" "vs paper-listing: FAIL")
 elseif(CASE STREQUAL "unbound_uniform_error")
