@@ -18,15 +18,22 @@
 #                             names mapped) against the reference on a classic-Phong scene: PASS
 #   glsl_example_passes       docs/examples/shaders/phong330.json (GLSL 3.30, names mapped) likewise: PASS
 #   glsl_unmapped_uniform_error that definition without u_ka's mapping: an error naming u_ka (exit 2)
+#   validate_expresses_or_refuses  validate on three reference scenes (REFERENCE_SCENES), the listing's
+#                             definition given to --renderer-file (docs/shaders.md: the way a shader
+#                             joins a run): fig1_yiq_front_listing compared (reference-paper-listing
+#                             pass); fig1_yiq_specular (kd 0) and fig1_yiq_front (the normal
+#                             re-normalised, which the definition declares the listing does not do)
+#                             refused with their reasons, printed and in results.json; every case
+#                             passes on the pairs it compares (exit 0)
 #   bench_beside_gl           bench times gl and the listing in one process (gl's EGL display made
 #                             first must not reach the shader's draw: a forked draw hung on it)
 # Each broken copy is made from the listing by string(REPLACE) here, and the
 # script fails if the text to replace is not found (the mutation must bite).
 # Arguments: XVAL, LISTING (the .fx), DEFINITION (its .json), SCENE (a small
 # scene the listing can express), PHONG (docs/examples/shaders/phong.json),
-# CASE, WORK.
+# REFERENCE_SCENES (reference/scenes), CASE, WORK.
 include(${CMAKE_CURRENT_LIST_DIR}/cli_run.cmake)
-require_defined(shader.cmake XVAL LISTING DEFINITION SCENE PHONG CASE WORK)
+require_defined(shader.cmake XVAL LISTING DEFINITION SCENE PHONG REFERENCE_SCENES CASE WORK)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK}/shader)
 file(READ ${LISTING} listing)
@@ -151,6 +158,44 @@ elseif(CASE STREQUAL "glsl_example_passes" OR CASE STREQUAL "glsl_unmapped_unifo
     run(0 ${XVAL} crosscheck ${WORK}/phong.json --renderer phong-glsl --renderer-file ${WORK}/glsl/phong330.json -o ${WORK}/out)
     expect_in("${out}${err}" "vs phong-glsl: PASS")
   endif()
+elseif(CASE STREQUAL "validate_expresses_or_refuses")
+  run(0 ${XVAL} validate ${REFERENCE_SCENES}/fig1_yiq_front_listing.json ${REFERENCE_SCENES}/fig1_yiq_specular.json
+      ${REFERENCE_SCENES}/fig1_yiq_front.json --renderer-file ${DEFINITION} --renderers reference,gl,paper-listing -o ${WORK}/validation --jobs 2)
+  if(NOT "${out}${err}" MATCHES "fig1_yiq_specular +paper-listing not expressible")
+    message(FATAL_ERROR "does not say that paper-listing cannot express fig1_yiq_specular")
+  endif()
+  expect_in("${out}${err}" "paper-listing hard-codes kd = 1: the scene's material has 0.0")
+  expect_in("${out}${err}" "paper-listing uses the interpolated normal as it is, not re-normalised")
+  expect_in("${out}${err}" "3 scenes, all pass")
+  file(READ ${WORK}/validation/results.json _results)
+  # case scene -> the verdict of its reference-paper-listing pair (and its reason when refused)
+  string(JSON _cases LENGTH "${_results}" cases)
+  set(_seen "")
+  math(EXPR _last_case "${_cases} - 1")
+  foreach(_c RANGE ${_last_case})
+    string(JSON _scene GET "${_results}" cases ${_c} scene)
+    string(JSON _verdict GET "${_results}" cases ${_c} verdict)
+    expect_eq("${_scene}'s verdict" "${_verdict}" "pass")
+    string(JSON _pairs LENGTH "${_results}" cases ${_c} pairs)
+    math(EXPR _last_pair "${_pairs} - 1")
+    foreach(_p RANGE ${_last_pair})
+      string(JSON _pair GET "${_results}" cases ${_c} pairs ${_p} pair)
+      if(_pair STREQUAL "reference-paper-listing")
+        string(JSON _pv GET "${_results}" cases ${_c} pairs ${_p} verdict)
+        list(APPEND _seen "${_scene}=${_pv}")
+        if(_scene STREQUAL "fig1_yiq_specular")
+          string(JSON _why GET "${_results}" cases ${_c} pairs ${_p} not_expressible)
+          expect_in("${_why}" "hard-codes kd = 1")
+        elseif(_scene STREQUAL "fig1_yiq_front")
+          string(JSON _why GET "${_results}" cases ${_c} pairs ${_p} not_expressible)
+          expect_in("${_why}" "the scene asks for normalize_normal true")
+        endif()
+      endif()
+    endforeach()
+  endforeach()
+  list(SORT _seen)
+  expect_eq("reference-paper-listing verdicts" "${_seen}"
+            "fig1_yiq_front=not_expressible;fig1_yiq_front_listing=pass;fig1_yiq_specular=not_expressible")
 elseif(CASE STREQUAL "bench_beside_gl")
   broken("float4x4 World " "float4x4 World ")
   run(0 ${XVAL} bench ${SCENE} --renderers gl,paper-listing --renderer-file ${def} --frames 2 --runs 1)
