@@ -324,7 +324,7 @@ std::string shaderCannotExpress(const ShaderDefinition& d, const Scene& scene) {
     return d.name +
            (*d.normalize_normal ? " re-normalises the interpolated normal"
                                 : " uses the interpolated normal as it is, not re-normalised") +
-           " (\"normalize_normal\": " + (*d.normalize_normal ? "true" : "false") + " in " + d.file.string() +
+           " (\"normalize_normal\": " + (*d.normalize_normal ? "true" : "false") + " in " + d.file.filename().string() +
            "): the scene asks for normalize_normal " + (scene.normalize_normal ? "true" : "false");
   return "";
 }
