@@ -25,6 +25,9 @@
 #                             re-normalised, which the definition declares the listing does not do)
 #                             refused with their reasons, printed and in results.json; every case
 #                             passes on the pairs it compares (exit 0)
+#   golden_update_and_check   golden update of the listing's images of a set (SCENE), golden check
+#                             and validate against golden-paper-listing pass; a broken listing
+#                             (missing saturate) then fails golden check (exit 1)
 #   bench_beside_gl           bench times gl and the listing in one process (gl's EGL display made
 #                             first must not reach the shader's draw: a forked draw hung on it)
 # Each broken copy is made from the listing by string(REPLACE) here, and the
@@ -196,6 +199,24 @@ elseif(CASE STREQUAL "validate_expresses_or_refuses")
   list(SORT _seen)
   expect_eq("reference-paper-listing verdicts" "${_seen}"
             "fig1_yiq_front=not_expressible;fig1_yiq_front_listing=pass;fig1_yiq_specular=not_expressible")
+elseif(CASE STREQUAL "golden_update_and_check")
+  broken("float4x4 World " "float4x4 World ")
+  file(MAKE_DIRECTORY ${WORK}/set/scenes)
+  file(COPY ${SCENE} DESTINATION ${WORK}/set/scenes)
+  set(_with --renderer paper-listing --renderer-file ${def})
+  run(0 ${XVAL} golden update ${WORK}/set/scenes ${_with})
+  if(NOT EXISTS ${WORK}/set/golden/paper-listing/shader_knot.exr)
+    message(FATAL_ERROR "golden update stored no ${WORK}/set/golden/paper-listing/shader_knot.exr")
+  endif()
+  run(0 ${XVAL} golden check ${WORK}/set/scenes ${_with})
+  expect_in("${out}${err}" "1 of 1 scenes match their golden images of paper-listing")
+  run(0 ${XVAL} validate ${WORK}/set/scenes --renderers reference,golden-paper-listing --renderer-file ${def}
+      -o ${WORK}/validation --jobs 2)
+  expect_in("${out}${err}" "1 scene, all pass")
+  broken("saturate(saturate(dot(LightVector, \nNormalWorld)) +" "saturate(dot(LightVector, \nNormalWorld) +")
+  run(1 ${XVAL} golden check ${WORK}/set/scenes ${_with})
+  expect_in("${out}${err}" "outside the tolerance")
+  expect_in("${out}${err}" "0 of 1 scenes match their golden images of paper-listing")
 elseif(CASE STREQUAL "bench_beside_gl")
   broken("float4x4 World " "float4x4 World ")
   run(0 ${XVAL} bench ${SCENE} --renderers gl,paper-listing --renderer-file ${def} --frames 2 --runs 1)
