@@ -26,8 +26,10 @@
 #                             refused with their reasons, printed and in results.json; every case
 #                             passes on the pairs it compares (exit 0)
 #   golden_update_and_check   golden update of the listing's images of a set (SCENE), golden check
-#                             and validate against golden-paper-listing pass; a broken listing
-#                             (missing saturate) then fails golden check (exit 1)
+#                             and validate against golden-paper-listing pass; a scene the listing
+#                             cannot express is refused by golden-paper-listing with the listing's
+#                             reason (not an error hinting at a golden update that would refuse it);
+#                             a broken listing (missing saturate) then fails golden check (exit 1)
 #   bench_beside_gl           bench times gl and the listing in one process (gl's EGL display made
 #                             first must not reach the shader's draw: a forked draw hung on it)
 # Each broken copy is made from the listing by string(REPLACE) here, and the
@@ -213,6 +215,20 @@ elseif(CASE STREQUAL "golden_update_and_check")
   run(0 ${XVAL} validate ${WORK}/set/scenes --renderers reference,golden-paper-listing --renderer-file ${def}
       -o ${WORK}/validation --jobs 2)
   expect_in("${out}${err}" "1 scene, all pass")
+  # A scene the listing cannot express (the normal re-normalised) has no image in its set: the golden set
+  # refuses it with the listing's reason, rather than hint at a golden update that would refuse it.
+  file(READ ${SCENE} _scene)
+  string(REPLACE "\"normalize_normal\": false" "\"normalize_normal\": true" _normalised "${_scene}")
+  string(REPLACE "\"name\": \"shader_knot\"" "\"name\": \"shader_knot_normalised\"" _normalised "${_normalised}")
+  if(NOT _normalised MATCHES "shader_knot_normalised" OR NOT _normalised MATCHES "\"normalize_normal\": true")
+    message(FATAL_ERROR "the scene's name or normalize_normal was not found to replace")
+  endif()
+  file(WRITE ${WORK}/set/scenes/shader_knot_normalised.json "${_normalised}")
+  run(0 ${XVAL} validate ${WORK}/set/scenes --renderers reference,gl,golden-paper-listing --renderer-file ${def}
+      -o ${WORK}/validation_refused --jobs 2)
+  expect_in("${out}${err}" "paper-listing cannot express the scene, so its golden set has no image of it: paper-listing uses the interpolated normal as it is")
+  expect_in("${out}${err}" "2 scenes, all pass")
+  file(REMOVE ${WORK}/set/scenes/shader_knot_normalised.json)
   broken("saturate(saturate(dot(LightVector, \nNormalWorld)) +" "saturate(dot(LightVector, \nNormalWorld) +")
   run(1 ${XVAL} golden check ${WORK}/set/scenes ${_with})
   expect_in("${out}${err}" "outside the tolerance")
