@@ -44,21 +44,26 @@ file(MAKE_DIRECTORY ${WORK}/shader)
 file(READ ${LISTING} listing)
 file(READ ${DEFINITION} definition)
 
+# OUT_VAR = TEXT with FROM replaced by TO; fails, naming WHAT, if FROM is
+# not found (the change must bite).
+function(replaced out_var what text from to)
+  string(FIND "${text}" "${from}" _at)
+  if(_at EQUAL -1)
+    message(FATAL_ERROR "${what} has no \"${from}\" to replace")
+  endif()
+  string(REPLACE "${from}" "${to}" text "${text}")
+  set(${out_var} "${text}" PARENT_SCOPE)
+endfunction()
+
 # WORK/shader/broken.fx: the listing with FROM replaced by TO (each pair
 # FROM TO of the arguments, in order); broken.json its definition.
 function(broken)
   set(_text "${listing}")
   set(_i 0)
-  while(_i LESS ARGC)  # ARGVn, not a list: the texts hold semicolons
+  while(_i LESS ARGC)  # ARGVn, not ${ARGV}: the texts hold semicolons
     math(EXPR _j "${_i} + 1")
-    set(from "${ARGV${_i}}")
-    set(to "${ARGV${_j}}")
+    replaced(_text "the listing" "${_text}" "${ARGV${_i}}" "${ARGV${_j}}")
     math(EXPR _i "${_i} + 2")
-    string(FIND "${_text}" "${from}" _at)
-    if(_at EQUAL -1)
-      message(FATAL_ERROR "the listing has no \"${from}\" to replace")
-    endif()
-    string(REPLACE "${from}" "${to}" _text "${_text}")
   endwhile()
   file(WRITE ${WORK}/shader/broken.fx "${_text}")
   string(REPLACE "kotsarenko2012_table1.fx" "broken.fx" _def "${definition}")
@@ -69,11 +74,8 @@ endfunction()
 # the re-normalised normal the Phong examples compute.
 function(phong_scene)
   file(READ ${SCENE} _scene)
-  string(REPLACE "\"type\": \"yiq_luma\"" "\"type\": \"classic_phong\", \"variant\": \"paper\"" _phong "${_scene}")
-  string(REPLACE "\"normalize_normal\": false" "\"normalize_normal\": true" _phong "${_phong}")
-  if(NOT _phong MATCHES "classic_phong" OR NOT _phong MATCHES "\"normalize_normal\": true")
-    message(FATAL_ERROR "the scene's model or normalize_normal was not found to replace")
-  endif()
+  replaced(_phong "the scene" "${_scene}" "\"type\": \"yiq_luma\"" "\"type\": \"classic_phong\", \"variant\": \"paper\"")
+  replaced(_phong "the scene" "${_phong}" "\"normalize_normal\": false" "\"normalize_normal\": true")
   file(WRITE ${WORK}/phong.json "${_phong}")
 endfunction()
 
@@ -218,11 +220,8 @@ elseif(CASE STREQUAL "golden_update_and_check")
   # A scene the listing cannot express (the normal re-normalised) has no image in its set: the golden set
   # refuses it with the listing's reason, rather than hint at a golden update that would refuse it.
   file(READ ${SCENE} _scene)
-  string(REPLACE "\"normalize_normal\": false" "\"normalize_normal\": true" _normalised "${_scene}")
-  string(REPLACE "\"name\": \"shader_knot\"" "\"name\": \"shader_knot_normalised\"" _normalised "${_normalised}")
-  if(NOT _normalised MATCHES "shader_knot_normalised" OR NOT _normalised MATCHES "\"normalize_normal\": true")
-    message(FATAL_ERROR "the scene's name or normalize_normal was not found to replace")
-  endif()
+  replaced(_normalised "the scene" "${_scene}" "\"normalize_normal\": false" "\"normalize_normal\": true")
+  replaced(_normalised "the scene" "${_normalised}" "\"name\": \"shader_knot\"" "\"name\": \"shader_knot_normalised\"")
   file(WRITE ${WORK}/set/scenes/shader_knot_normalised.json "${_normalised}")
   run(0 ${XVAL} validate ${WORK}/set/scenes --renderers reference,gl,golden-paper-listing --renderer-file ${def}
       -o ${WORK}/validation_refused --jobs 2)
