@@ -20,6 +20,16 @@ def pair(case, name):
     return None
 
 
+def compared(p):
+    """A pair with metrics; a renderer that cannot express the scene
+    (verdict not_expressible, docs/results-schema.json) has none."""
+    return p is not None and "metrics" in p
+
+
+def not_compared(p):
+    return "not expressible" if p is not None and p.get("verdict") == "not_expressible" else "(not compared)"
+
+
 def cell_metrics(p):
     m = p["metrics"]
     return "%.2f / %.2f / %.3f" % (m["max_abs_16bit"], m["p999_abs_16bit"], m["rmse_16bit"])
@@ -37,13 +47,16 @@ def readme(cases):
     for c in cases:
         pov, bl = pair(c, "reference-povray"), pair(c, "reference-blender")
         r = c["renders"]
-        if pov is None or bl is None:
+        if not compared(pov) and not compared(bl) and (pov is None or bl is None):
             print("| %s | (not compared) |||||||" % c["scene"])
             continue
-        print("| %s | %s | %s | %.2f | %s | %s | %.2f / %.2f | %.2f |" % (
-            c["scene"], cell_metrics(pov), within(pov), r["povray"]["seconds"],
-            cell_metrics(bl), within(bl), r["blender"].get("render_seconds", float("nan")),
-            r["blender"]["seconds"], r["reference"]["seconds"]))
+        pov_cells = ((cell_metrics(pov), within(pov), "%.2f" % r["povray"]["seconds"]) if compared(pov)
+                     else (not_compared(pov), "", ""))
+        bl_cells = ((cell_metrics(bl), within(bl), "%.2f / %.2f" % (
+            r["blender"].get("render_seconds", float("nan")), r["blender"]["seconds"])) if compared(bl)
+                    else (not_compared(bl), "", ""))
+        print("| %s | %s | %s | %s | %s | %s | %s | %.2f |" % (
+            (c["scene"],) + pov_cells + bl_cells + (r["reference"]["seconds"],)))
 
 
 def povray(cases):
@@ -52,8 +65,8 @@ def povray(cases):
     print("|---|---|---|---|---|---|---|---|---|---|")
     for c in cases:
         p = pair(c, "reference-povray")
-        if p is None:
-            print("| %s | (not compared) ||||||||||" % c["scene"])
+        if not compared(p):
+            print("| %s | %s ||||||||||" % (c["scene"], not_compared(p)))
             continue
         m, o = p["metrics"], p["metrics"]["over_tolerance"]
         print("| %s | %s | %.2f | %.2f | %.3f | %.3f%% | %g | %d/%d/%d/%d | %.2f | %.2f |" % (

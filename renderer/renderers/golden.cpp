@@ -8,7 +8,10 @@
 // without a stored image, a scene file whose SHA-256 differs from the one
 // stored with the image (the scene changed: the image no longer shows it),
 // an image file that changed, one of another size than the scene's, or one
-// holding NaN or infinite values. Runs no outside tool (no work folder, no
+// holding NaN or infinite values. A scene the renderer that made the set
+// cannot express (its cannot_express) is not expressible by the set either,
+// with that reason: there is no image to store, and `xval golden update`
+// would refuse it, so the missing image's hint would not run as printed. Runs no outside tool (no work folder, no
 // time-out); its version is xval's, the stored renderer's version is in the
 // manifest.
 //
@@ -41,6 +44,12 @@ Renderer goldenRendererOf(const std::string& made_by, const std::string& made_by
               "/, xval golden update); refuses a scene file changed since";
   r.every_scene = false;
   r.images_of = made_by;
+  r.cannot_express = [made_by, made_by_name](const Scene& scene) -> std::string {
+    const Renderer* maker = registry().find(made_by);
+    if (!maker || !maker->cannot_express) return "";
+    const std::string why = maker->cannot_express(scene);
+    return why.empty() ? "" : made_by_name + " cannot express the scene, so its golden set has no image of it: " + why;
+  };
   r.render = [made_by](const Scene& scene, const RenderRequest&, RenderInfo* info) {
     const auto t0 = std::chrono::steady_clock::now();
     const std::filesystem::path folder = golden::goldenFolder(scene.source_file, made_by);

@@ -3,13 +3,17 @@
 
 #include "files/sha256.h"
 #include "renderers/export_cache.h"
+#include "renderers/registry.h"
 
 namespace xval::renderers {
 
 std::string refusalKey(const Renderer& renderer, const std::string& inputs_key) {
   if (inputs_key.empty()) return "";
-  const std::string definition =
-      renderer.definition_file.empty() ? std::string() : sha256File(renderer.definition_file);
+  // A golden set refuses what the renderer that made it refuses (golden.cpp):
+  // that renderer's definition file is part of the key.
+  const Renderer* maker = renderer.images_of.empty() ? nullptr : registry().find(renderer.images_of);
+  const std::filesystem::path& file = maker ? maker->definition_file : renderer.definition_file;
+  const std::string definition = file.empty() ? std::string() : sha256File(file);
   return sha256Pieces([&](const std::function<void(const char*, size_t)>& update) {
     for (const std::string& piece : {inputs_key, renderer.id, definition}) {
       update(piece.data(), piece.size());

@@ -27,7 +27,8 @@ std::string refuseOrExport(const Renderer& renderer, const Scene& scene, RenderR
 
 // The inputs key of a renderer's refusal: SHA-256 of the scene's inputs key,
 // the renderer's id and, for a renderer defined by a file, that file's
-// bytes (a changed definition is a new key); "" for an empty inputs key.
+// bytes (a changed definition is a new key; for a golden set, golden-NAME,
+// NAME's file, whose refusals it takes); "" for an empty inputs key.
 std::string refusalKey(const Renderer& renderer, const std::string& inputs_key);
 
 }  // namespace xval::renderers

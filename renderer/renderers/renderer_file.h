@@ -56,7 +56,8 @@ void registerRendererFiles(const std::vector<std::string>& files);
 
 // The --renderer-file option's help text.
 inline constexpr const char* kRendererFileHelp =
-    "A renderer defined by a JSON file (format xval-renderer/1, docs/renderer-file.md), taking part like a "
-    "built-in one (repeatable)";
+    "A renderer defined by a JSON file, taking part like a built-in one (repeatable): a program (format "
+    "xval-renderer/1, docs/renderer-file.md) or a shader of yours, HLSL or GLSL, drawn by xval (format "
+    "xval-shader/1, docs/shaders.md; this option is how a shader joins every command, there is no --shader)";
 
 }  // namespace xval::renderers

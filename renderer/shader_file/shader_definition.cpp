@@ -155,6 +155,7 @@ ShaderDefinition loadShaderDefinition(const fs::path& file, const nlohmann::json
   }
   if (r.has("timeout_s")) d.timeout_s = r.requireNumber("timeout_s", Range::openClosed(0.0, 3600.0));
   const std::string texture_filter = r.choice("texture_filter", "effect", {"effect", "scene"});
+  if (r.has("normalize_normal")) d.normalize_normal = r.boolean("normalize_normal", true);
   {
     JsonReader m = r.requireObject("model");
     m.requireString("type");  // the keys are checked against a scene's model, not here
@@ -318,6 +319,13 @@ std::string shaderCannotExpress(const ShaderDefinition& d, const Scene& scene) {
     if (!m->texture && m->base_color != dvec3(1.0) && !bound("base_color"))
       return d.name + " binds no base colour: the scene's material is not white";
   }
+  // Last: a scene of another model or material says so first.
+  if (d.normalize_normal && *d.normalize_normal != scene.normalize_normal)
+    return d.name +
+           (*d.normalize_normal ? " re-normalises the interpolated normal"
+                                : " uses the interpolated normal as it is, not re-normalised") +
+           " (\"normalize_normal\": " + (*d.normalize_normal ? "true" : "false") + " in " + d.file.filename().string() +
+           "): the scene asks for normalize_normal " + (scene.normalize_normal ? "true" : "false");
   return "";
 }
 

@@ -11,6 +11,7 @@
 //    "model": {"type": "yiq_luma", "kd": 1, "ks": 1, "luma_offset": 0.1},
 //    "uniforms": {"AmbientValue": "ambient_luma"},   // optional: uniform -> scene quantity
 //    "texture_filter": "scene",               // optional: "effect" (default) or "scene"
+//    "normalize_normal": false,               // optional: the shader re-normalises the interpolated normal or not
 //    "timeout_s": 60}                         // optional: each compiler run's time-out
 //
 // "language": "glsl" (any #version the OpenGL 4.5 core context compiles):
@@ -26,10 +27,15 @@
 // lighting model the shader implements: its scene-file type and the value
 // of each parameter the shader hard-codes; a scene of another model or
 // another value of a listed parameter is refused (not expressible).
+// "normalize_normal", when given, is what the shader's pixel stage does with
+// the interpolated normal (the scene field of that name, docs/scene-format.md):
+// a scene asking for the other is refused, as for a model parameter; absent,
+// the shader is compared on both and the difference shows.
 #pragma once
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -115,6 +121,7 @@ struct ShaderDefinition {
   std::string language;          // "hlsl" or "glsl"
   std::string vertex_entry, fragment_entry;
   nlohmann::json model;  // {"type": ..., hard-coded parameters}
+  std::optional<bool> normalize_normal;  // the shader's own normal handling, when declared
   double timeout_s = kDefaultCompileTimeoutSeconds;
   PreparedEffect effect;  // HLSL only
   PipelineState pipeline;
@@ -131,7 +138,7 @@ ShaderDefinition loadShaderDefinition(const std::filesystem::path& file, const n
 // it can): the lights (one point light, white and unattenuated unless a
 // uniform takes its colour; ambient only when a uniform takes it), every
 // material's model against "model", the textures against the samplers,
-// shading phong.
+// shading phong, the scene's normalize_normal against a declared one.
 std::string shaderCannotExpress(const ShaderDefinition& d, const Scene& scene);
 
 // The value of a model parameter ("shininess") of `material`, as the

@@ -214,18 +214,28 @@ TEST(SceneWriter, RoundTripsEveryReferenceScene) {
   EXPECT_GE(n, 20);
 }
 
-// The committed Figure 1 scenes are exactly what their spec generates
-// (regenerate: xval generate reference/specs/fig1.json -o reference/scenes).
-TEST(SceneGenerator, Fig1SpecGeneratesTheCommittedScenes) {
-  auto scenes = generateScenes(std::string(XVAL_REFERENCE_DIR) + "/specs/fig1.json");
-  ASSERT_EQ(scenes.size(), 6u);
+// The committed scenes of each spec in reference/specs that generates
+// reference scenes are exactly what it generates (regenerate: xval generate
+// reference/specs/SPEC.json -o reference/scenes): the Figure 1 scenes and
+// the listing-literal YIQ scenes.
+namespace {
+void expectSpecGeneratesTheCommittedScenes(const std::string& spec, size_t count) {
+  auto scenes = generateScenes(std::string(XVAL_REFERENCE_DIR) + "/specs/" + spec);
+  ASSERT_EQ(scenes.size(), count) << spec;
   for (const auto& g : scenes) {
     std::ifstream in(std::string(XVAL_REFERENCE_DIR) + "/scenes/" + g.name + ".json");
-    ASSERT_TRUE(in) << g.name;
+    ASSERT_TRUE(in) << spec << ": " << g.name;
     std::stringstream s;
     s << in.rdbuf();
-    EXPECT_EQ(s.str(), g.json.dump(2) + "\n") << g.name;
+    EXPECT_EQ(s.str(), g.json.dump(2) + "\n") << spec << ": " << g.name;
   }
+}
+}  // namespace
+
+TEST(SceneGenerator, Fig1SpecGeneratesTheCommittedScenes) { expectSpecGeneratesTheCommittedScenes("fig1.json", 6); }
+
+TEST(SceneGenerator, ListingSpecGeneratesTheCommittedScenes) {
+  expectSpecGeneratesTheCommittedScenes("listing.json", 3);
 }
 
 TEST(SceneGenerator, InvalidCombinationNamesTheSpecAndTheField) {

@@ -15,10 +15,12 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "common/export_common.h"
 #include "geometry/scene_meshes.h"
 #include "gltf/gltf_exporter.h"
 #include "povray/pov_exporter.h"
@@ -170,7 +172,20 @@ TEST_P(TracedGeometry, PovMesh2HoldsTheTracedAttributes) {
     const PreparedScene prepared(scene, Precision::Double);
     const fs::path dir = fs::temp_directory_path() / ("xval_traced_pov_" + file.stem().string());
     fs::remove_all(dir);
-    const PovExport ex = exportPov(scene, dir);
+    std::optional<PovExport> exported;
+    try {
+      exported = exportPov(scene, dir);
+    } catch (const ExportError& e) {
+      // A trilinear texture (the listing-literal scenes) POV-Ray cannot
+      // express: it never traces the scene, so there is nothing to hold (the
+      // glTF test below still covers its geometry). Any other refusal of a
+      // reference scene fails.
+      fs::remove_all(dir);
+      const bool trilinear = scene.material.texture && scene.material.texture->filter == TextureFilter::Trilinear;
+      if (!trilinear) FAIL() << file << ": POV-Ray refuses a reference scene: " << e.what();
+      GTEST_SKIP() << file << ": POV-Ray refuses the trilinear texture: " << e.what();
+    }
+    const PovExport& ex = *exported;
     const std::vector<Mesh2> pov = readMesh2(ex.pov);
     ASSERT_EQ(pov.size(), prepared.meshes().size()) << file;
     const std::vector<size_t> owner = sceneMeshes(scene).object;  // the object each mesh belongs to
