@@ -19,6 +19,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <kainjow/mustache.hpp>
 
 #include "image/image.h"
 #include "image/pair_failure.h"
@@ -29,6 +30,7 @@
 #include "scene/scene_loader.h"
 #include "validate/common/number_text.h"
 #include "validate/extremes/report_section.h"
+#include "validate/report_page_template.h"
 #include "validate/report_pixels.h"
 #include "validate/results/results.h"
 #include "validate/tolerances.h"
@@ -40,6 +42,7 @@ namespace xval {
 
 namespace fs = std::filesystem;
 using J = nlohmann::ordered_json;
+namespace mu = kainjow::mustache;
 
 std::string htmlEscape(const std::string& s) {
   std::string o;
@@ -212,20 +215,48 @@ const T* ofClass(const results::Named<T>& per_class, const std::string& key) {
   return nullptr;
 }
 
-// A verdict's table cell, from its class attribute on: "class="l pass">PASS".
-std::string verdictCell(const std::string& v) {
-  const char* cls = v == "pass" ? "pass" : v == "fail" ? "fail" : v == "error" ? "err" : "nexp";
-  std::string upper;
-  for (char ch : v) upper += char(std::toupper(static_cast<unsigned char>(ch)));
-  return std::string("class=\"l ") + cls + "\">" + upper;
+// A verdict's class in the page's style sheet (report_page.mustache).
+std::string verdictClass(const std::string& v) {
+  return v == "pass" ? "pass" : v == "fail" ? "fail" : v == "error" ? "err" : "nexp";
 }
 
-// A pair's summary (report.h pairSummary) as a table cell's class attribute
-// on: "class="l fail">FAIL fraction 99.81% &lt; 99.9%".
-std::string pairCell(const results::Pair& p) {
-  if (p.verdict == results::PairVerdict::NotExpressible) return "class=\"l nexp\">not expressible";
-  const std::string cell = verdictCell(pairVerdict(p));
-  return cell.substr(0, cell.find('>') + 1) + htmlEscape(pairSummary(p));
+std::string upperCase(const std::string& s) {
+  std::string upper;
+  for (char ch : s) upper += char(std::toupper(static_cast<unsigned char>(ch)));
+  return upper;
+}
+
+// A verdict's table cell, from its class attribute on: "class="l pass">PASS".
+std::string verdictCell(const std::string& v) { return "class=\"l " + verdictClass(v) + "\">" + upperCase(v); }
+
+// The page's data (kainjow::mustache, rendered over report_page.mustache):
+// a list, and an optional value as a list of none or one, so that
+// {{#key}}..{{.}}..{{/key}} shows it only when there is one. Every object
+// sets each key its part of the template reads: a key left out would be
+// looked up in the enclosing objects.
+mu::data list() { return mu::data(mu::data::type::list); }
+
+mu::data optional(const std::optional<std::string>& v) {
+  mu::data l = list();
+  if (v) l << mu::data(*v);
+  return l;
+}
+
+mu::data strings(const std::vector<std::string>& v) {
+  mu::data l = list();
+  for (const std::string& s : v) l << mu::data(s);
+  return l;
+}
+
+// A pair's summary (report.h pairSummary) in a cell: pair, pair_class,
+// pair_text ("FAIL fraction 99.81% < 99.9%", escaped by the template).
+mu::data pairCell(const results::Pair& p) {
+  const bool nexp = p.verdict == results::PairVerdict::NotExpressible;
+  mu::data d;
+  d.set("pair", p.pair);
+  d.set("pair_class", nexp ? std::string("nexp") : verdictClass(pairVerdict(p)));
+  d.set("pair_text", nexp ? std::string("not expressible") : pairSummary(p));
+  return d;
 }
 
 // How bad a pair's verdict is: error, fail, pass, not expressible.
@@ -258,36 +289,47 @@ const results::Pair* worstPair(const results::Case& c, const std::vector<std::st
 // a 1280 px window), the count of each verdict, opening onto the
 // renderers x renderers matrix of the pairs' verdicts (row before column
 // in the run's order; a pair the case does not have is empty).
-std::string pairsCell(const results::Case& c, const RunPairs& run) {
+// None when the case has no pair ("no pairs"); else one: counts ("3 pairs:
+// 1 fail, 2 pass"), columns, rows (renderer, cells: a cell is a pairCell
+// or none).
+mu::data pairsMatrix(const results::Case& c, const RunPairs& run) {
   std::map<std::string, int> count;
   int n = 0;
   for (const std::string& id : run.ids)
     if (const results::Pair* p = c.findPair(id)) ++count[pairVerdict(*p)], ++n;
-  if (n == 0) return "<td class=\"l\">no pairs</td>";
-  std::ostringstream h;
-  h << "<td class=\"l\"><details class=\"pairs\"><summary>" << n << (n == 1 ? " pair" : " pairs") << ":";
+  mu::data out = list();
+  if (n == 0) return out;
+  std::string counts = std::to_string(n) + (n == 1 ? " pair" : " pairs") + ":";
   const char* sep = " ";
   for (const char* v : {"error", "fail", "pass", "not expressible"})
-    if (count[v]) h << sep << count[v] << " " << v, sep = ", ";
-  h << "</summary><table class=\"matrix\"><tr><th></th>";
+    if (count[v]) counts += sep + std::to_string(count[v]) + " " + v, sep = ", ";
   const std::vector<std::string>& rs = run.renderers;
-  for (size_t j = 1; j < rs.size(); ++j) h << "<th>" << htmlEscape(rs[j]) << "</th>";
-  h << "</tr>";
+  mu::data rows = list();
   for (size_t i = 0; i + 1 < rs.size(); ++i) {
-    h << "<tr><th class=\"l\">" << htmlEscape(rs[i]) << "</th>";
+    mu::data cells = list();
     for (size_t j = 1; j < rs.size(); ++j) {
       const std::string key = renderers::pairKey(rs[i], rs[j]);
-      const results::Pair* p = j > i ? c.findPair(key) : nullptr;
-      if (!p) {
-        h << "<td></td>";
-        continue;
+      mu::data cell = list();
+      if (const results::Pair* p = j > i ? c.findPair(key) : nullptr) {
+        mu::data d = pairCell(*p);
+        d.set("pair", key);
+        cell << d;
       }
-      h << "<td title=\"" << htmlEscape(key) << "\" " << pairCell(*p) << "</td>";
+      mu::data e;
+      e.set("cell", cell);
+      cells << e;
     }
-    h << "</tr>";
+    mu::data row;
+    row.set("renderer", rs[i]);
+    row.set("cells", cells);
+    rows << row;
   }
-  h << "</table></details></td>";
-  return h.str();
+  mu::data m;
+  m.set("counts", counts);
+  m.set("columns", strings(std::vector<std::string>(rs.begin() + (rs.empty() ? 0 : 1), rs.end())));
+  m.set("rows", rows);
+  out << m;
+  return out;
 }
 
 // Whether a case's render is a geometry check's: a picture of its passes
@@ -401,11 +443,213 @@ void requireSectionFile(const fs::path& folder, const char* file, const char* wh
                              what + " -o DIR`)");
 }
 
+// A case: the verdict the compare step decided and stored (validation/
+// case_verdict.h; the schema requires it of every results.json case), as
+// the pairs' verdicts read ("not compared").
+std::string caseVerdict(const results::Case& c) {
+  std::string v = validation::verdictName(*c.verdict);
+  std::replace(v.begin(), v.end(), '_', ' ');
+  return v;
+}
+
+// A case's row of the summary: scene, verdict_class, verdict_text,
+// attribution, pair_columns (none when the run has no image pair; else
+// worst: its worst pair's cell or none, matrix: pairsMatrix), check_cells
+// (per geometry check of the run: check_class none or one, check_text).
+mu::data summaryRow(const results::Case& c, const RunPairs& run, const std::vector<std::string>& check_ids) {
+  const std::string verdict = caseVerdict(c);
+  mu::data row;
+  row.set("scene", c.scene);
+  row.set("verdict_class", verdictClass(verdict));
+  row.set("verdict_text", upperCase(verdict));
+  row.set("attribution", c.attribution);
+  mu::data pair_columns = list();
+  if (!run.ids.empty()) {
+    mu::data worst = list();
+    if (const results::Pair* w = worstPair(c, run.ids)) worst << pairCell(*w);
+    mu::data columns;
+    columns.set("worst", worst);
+    columns.set("matrix", pairsMatrix(c, run));
+    pair_columns << columns;
+  }
+  row.set("pair_columns", pair_columns);
+  mu::data check_cells = list();
+  for (const std::string& id : check_ids) {
+    const results::GeometryCheck* g = findCheck(c, id);
+    std::optional<std::string> cls;
+    std::string text;
+    if (g && g->verdict == results::PairVerdict::NotExpressible) {
+      cls = "nexp";
+      text = "not expressible";
+    } else if (g) {
+      cls = "l " + verdictClass(checkVerdict(*g));
+      text = upperCase(checkVerdict(*g));
+    }
+    mu::data cell;
+    cell.set("check_class", optional(cls));
+    cell.set("check_text", text);
+    check_cells << cell;
+  }
+  row.set("check_cells", check_cells);
+  return row;
+}
+
+// A render's figure: renderer, not_expressible (its reason, or none), else
+// image (the file's name, when renderHasImage) or no_image (why not),
+// seconds, render_seconds, geometry_caption (each none or one).
+mu::data renderFigure(const results::Case& c, const std::string& renderer, const results::Render& rr,
+                      const fs::path& dir) {
+  mu::data f;
+  f.set("renderer", renderer);
+  f.set("not_expressible", optional(rr.not_expressible));
+  // A failed render shows its error where its image would be: no <img> of
+  // a file that is not there.
+  const bool has_image = renderHasImage(rr, dir);
+  f.set("image", optional(has_image ? rr.image : std::nullopt));
+  f.set("no_image", optional(has_image ? std::nullopt
+                                       : std::optional<std::string>(
+                                             rr.error ? "error: " + *rr.error
+                                                      : "no image: " + rr.image.value_or("(none named)") +
+                                                            " (named in results.json) is missing")));
+  f.set("seconds", fixed(rr.seconds, 2));
+  f.set("render_seconds", optional(rr.render_seconds ? std::optional<std::string>(fixed(*rr.render_seconds, 2))
+                                                     : std::nullopt));
+  f.set("geometry_caption", optional(isGeometryCheck(c, renderer) ? std::optional<std::string>(geometryCheckCaption())
+                                                                  : std::nullopt));
+  return f;
+}
+
+// A pair's row of the case's table: pair, not_compared (none, or one of
+// class, colspan, text) and metrics (none, or one: the verdict's
+// pair_class and pair_text, the numbers as text, over_tolerance: per pixel
+// class count and class_max).
+mu::data pairRow(const results::Pair& p) {
+  mu::data row;
+  row.set("pair", p.pair);
+  mu::data not_compared = list(), metrics = list();
+  const std::string colspan = std::to_string(9 + kPixelClassCount);
+  if (p.verdict == results::PairVerdict::NotExpressible || !p.metrics) {
+    const bool nexp = p.verdict == results::PairVerdict::NotExpressible;
+    mu::data d;
+    d.set("class", nexp ? "nexp" : "err");
+    d.set("colspan", colspan);
+    d.set("text", nexp ? "not expressible, not compared: " + p.not_expressible.value_or("") : p.error.value_or("error"));
+    not_compared << d;
+  } else {
+    const results::PairMetrics& m = *p.metrics;
+    mu::data d;
+    d.set("pair_class", verdictClass(pairVerdict(p)));
+    d.set("pair_text", upperCase(pairVerdict(p)));
+    d.set("max_unexplained", fixed(m.max_unexplained_16bit, 2));
+    d.set("cap", fixed(m.tolerance.max_unexplained_16bit, 0));
+    d.set("max", fixed(m.max_abs_16bit, 2));
+    d.set("p999", fixed(m.p999_abs_16bit, 2));
+    d.set("rmse", fixed(m.rmse_16bit, 3));
+    d.set("psnr", m.psnr_db ? fixed(*m.psnr_db, 1) : std::string("inf"));
+    d.set("within", fixed(100.0 * m.fraction_within, 3));
+    d.set("tolerance", significant(m.tolerance.max_abs_16bit));
+    d.set("fraction", significant(100.0 * m.tolerance.fraction));
+    d.set("masks_off", std::to_string(m.mask_disagree));
+    d.set("masks_explained", std::to_string(m.mask_disagree_explained));
+    mu::data classes = list();
+    for (const PixelClassInfo& k : kPixelClasses) {
+      const long long* count = ofClass(m.over_tolerance, k.key);
+      const std::optional<double>* max = ofClass(m.over_tolerance_max_16bit, k.key);
+      mu::data cell;
+      cell.set("count", count ? std::to_string(*count) : std::string("n/a"));
+      cell.set("class_max", optional(max && count && *count > 0 ? std::optional<std::string>(fixed(*max, 1))
+                                                                : std::nullopt));
+      classes << cell;
+    }
+    d.set("over_tolerance", classes);
+    metrics << d;
+  }
+  row.set("not_compared", not_compared);
+  row.set("metrics", metrics);
+  return row;
+}
+
+// A case's section: scene, verdict_class, verdict_text, attribution,
+// reproduce (none or one), left_out, warnings, renders (renderFigure, in
+// the run's order), pair_rows (pairRow), notes (pair, label, text: why each
+// failing pair fails, then each declared tolerance's reason), and the
+// fragments case_pixels, pair_metrics_table, geometry_checks_table.
+mu::data caseSection(const results::Case& c, const std::vector<std::string>& run_renderers, const fs::path& dir) {
+  const std::string verdict = caseVerdict(c);
+  mu::data d;
+  d.set("scene", c.scene);
+  d.set("verdict_class", verdictClass(verdict));
+  d.set("verdict_text", upperCase(verdict));
+  d.set("attribution", c.attribution);
+  // The command is the compare step's (validate/validation/next_steps.h
+  // reproduceCommand: with the run's renderers, renderer files and
+  // tolerance file); results.json files written before it had none: no
+  // command rather than one that would not run as the case ran.
+  d.set("reproduce", optional(c.reproduce));
+  mu::data left_out = list();
+  for (const auto& [renderer, why] : c.left_out) {
+    mu::data l;
+    l.set("renderer", renderer);
+    l.set("why", why);
+    left_out << l;
+  }
+  d.set("left_out", left_out);
+  // The scene's warnings (scene/scene_lint.h): beside the verdict, not in it.
+  mu::data warnings = list();
+  for (const results::Warning& w : c.warnings) {
+    mu::data l;
+    l.set("subject", w.subject);
+    l.set("message", w.message);
+    l.set("code", w.code);
+    warnings << l;
+  }
+  d.set("warnings", warnings);
+  mu::data renders = list();
+  for (const std::string& rid : run_renderers)
+    if (const results::Render* rr = c.render(rid)) renders << renderFigure(c, rid, *rr, dir);
+  d.set("renders", renders);
+  d.set("case_pixels", casePixels(c, dir));
+  mu::data pair_rows = list();
+  for (const results::Pair& p : c.pairs) pair_rows << pairRow(p);
+  d.set("pair_rows", pair_rows);
+  // Every metric of the table (image/metric_table.h), a column each.
+  d.set("pair_metrics_table", pairMetricsTable(c.pairs));
+  d.set("geometry_checks_table", geometryChecksTable(c));
+  // Why each failing pair fails: every criterion, with its numbers.
+  mu::data notes = list();
+  auto note = [&notes](const std::string& pair, const char* label, const std::string& text) {
+    mu::data n;
+    n.set("pair", pair);
+    n.set("label", label);
+    n.set("text", text);
+    notes << n;
+  };
+  for (const results::Pair& p : c.pairs)
+    if (!p.failed.empty()) note(p.pair, "fails", failedText(p.failed));
+  for (const results::Pair& p : c.pairs)
+    if (p.metrics && !p.metrics->tolerance_reason.empty()) note(p.pair, "tolerance", p.metrics->tolerance_reason);
+  d.set("notes", notes);
+  return d;
+}
+
+// The page: the template compiled in (report_page_template.h), its
+// {{key}}s escaped by htmlEscape (the one escaping of the report's
+// fragments too). Throws std::runtime_error when the template does not
+// parse or render.
+std::string renderPage(mu::data& page) {
+  mu::mustache tmpl{std::string(kReportPageTemplate)};
+  if (!tmpl.is_valid()) throw std::runtime_error("report template (report_page.mustache): " + tmpl.error_message());
+  tmpl.set_custom_escape(htmlEscape);
+  std::string out = tmpl.render(page);
+  if (!tmpl.error_message().empty())
+    throw std::runtime_error("report template (report_page.mustache): " + tmpl.error_message());
+  return out;
+}
+
 }  // namespace
 
 std::string pairSummary(const results::Pair& p) {
-  std::string text;
-  for (char ch : pairVerdict(p)) text += char(std::toupper(static_cast<unsigned char>(ch)));
+  std::string text = upperCase(pairVerdict(p));
   if (!p.failed.empty()) return text + " " + p.failed[0].brief;
   if (p.metrics) text += " " + fixed(p.metrics->max_unexplained_16bit, 2);
   return text;
@@ -451,210 +695,67 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   // only): nothing to plot.
   if (!pairs.empty()) writePlot(cases, pairs, dir);
 
-  // A case: the verdict the compare step decided and stored (validation/
-  // case_verdict.h; the schema requires it of every results.json case), as
-  // the pairs' verdicts read ("not compared").
-  auto caseVerdict = [](const results::Case* c) -> std::string {
-    std::string v = validation::verdictName(*c->verdict);
-    std::replace(v.begin(), v.end(), '_', ' ');
-    return v;
-  };
   int pass = 0, fail = 0, nexp = 0, err = 0, nexp_pairs = 0;
   std::map<std::string, int> checks;  // geometry checks by verdict
   const std::vector<std::string> check_ids = checkIds(cases);
   for (const results::Case* c : cases) {
     for (const results::Pair& p : c->pairs) nexp_pairs += p.verdict == results::PairVerdict::NotExpressible;
     for (const results::GeometryCheck& g : c->geometry_checks) ++checks[checkVerdict(g)];
-    const std::string v = caseVerdict(c);
+    const std::string v = caseVerdict(*c);
     (v == "error" ? err : v == "fail" ? fail : v == "pass" ? pass : nexp)++;
   }
   const std::string doc_href =
       relativeHref(toolkitToleranceFile().parent_path().parent_path() / kPixelClassDoc, html_dir);
-  std::ostringstream h;
-  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
-    << "<title>xval report</title>\n<style>\n"
-    << "body{font-family:sans-serif;margin:1.5em;color:#222}table{border-collapse:collapse;margin:.5em 0}"
-    << "td,th{border:1px solid #bbb;padding:2px 6px;font-size:13px;text-align:right}"
-    << "th{background:#eee}td.l,th.l{text-align:left}.pass{color:#070;font-weight:bold}"
-    << ".fail{color:#b00;font-weight:bold}.err{color:#b60;font-weight:bold}.nexp{color:#558;font-weight:bold}.warn{color:#960}"
-    << ".marked{position:relative;display:inline-block;line-height:0}.marked img{width:100%;border:0}"
-    << ".heat,.swap,.crop{image-rendering:pixelated}.mark{position:absolute;box-sizing:border-box;"
-    << "border:2px solid #f0f;pointer-events:none}.mark.worst_unexplained{border-color:#f00}"
-    << ".mark.worst_explained{border-color:#08f}.crops .mark{border-width:1px;border-color:#f0f}"
-    << ".crops p{font-size:12px;margin:.6em 0 .2em}.viewer{margin:.5em 0}.viewer img{border:1px solid #999}"
-    << ".swapbar button{margin:0 4px 4px 0}.swapbar button.on{background:#333;color:#fff}"
-    << ".case{border-top:2px solid #888;margin-top:1.5em;padding-top:.5em}"
-    << ".imgs{display:flex;flex-wrap:wrap;gap:10px}.imgs figure{margin:0}"
-    << ".imgs>figure>img{width:256px;image-rendering:pixelated;border:1px solid #999}"
-    << "figcaption{font-size:12px;text-align:center}.reason{font-size:12px;color:#444;max-width:900px}"
-    << ".imgs>figure{max-width:258px}.noimage{box-sizing:border-box;width:256px;min-height:64px;padding:4px;"
-    << "border:1px solid #b60;font-size:12px;white-space:pre-wrap;overflow-wrap:anywhere}"
-    << "td.deviates{max-width:22em}.pairname{font-weight:normal;color:#444;font-size:11px}"
-    << "details.pairs summary{cursor:pointer;white-space:nowrap}.matrix{margin:.3em 0 0}"
-    << ".matrix td,.matrix th{font-size:11px;padding:1px 3px;white-space:nowrap}"
-    << "</style></head><body>\n";
-  h << "<h1>xval cross-validation report</h1>\n";
-  h << "<p>" << cases.size() << " scenes: <span class=\"pass\">" << pass << " pass</span>, "
-    << "<span class=\"fail\">" << fail << " fail</span>, <span class=\"err\">" << err
-    << " errors</span>, <span class=\"nexp\">" << nexp << " not compared</span> (" << nexp_pairs
-    << " pairs not expressible by a renderer, not compared). Wall time " << fixed(r.wall_seconds, 1)
-    << " s. Failures are listed first. Errors are in 1/65535 of the full scale. A pair passes when its "
-       "pixels are within the tolerance on the declared fraction and no pixel that no known cause explains "
-       "differs by more than the cap on unexplained error (max_unexplained_16bit).</p>\n";
-  if (!check_ids.empty())
-    h << "<p>Geometry checks (" << htmlEscape(renderers::joinNames(check_ids))
-      << "; docs/model-files.md, \"The Blender-import check\"): <span class=\"pass\">" << checks["pass"]
-      << " pass</span>, <span class=\"fail\">" << checks["fail"] << " fail</span>, <span class=\"err\">"
-      << checks["error"] << " errors</span>, <span class=\"nexp\">" << checks["not expressible"]
-      << " not expressible</span>. Blender imports the scene's original model files itself; its hit mask, "
-         "object, depth and uv at the pixel centres are compared with the reference renderer's of our loaded "
-         "triangles, within the check's own bounds (not the image tolerances). A failing check fails its case.</p>\n";
-  h << "<table><tr><th class=\"l\">provenance</th><th class=\"l\"></th></tr>";
-  for (const auto& [key, value] : r.provenance)
-    h << "<tr><td class=\"l\">" << htmlEscape(key) << "</td><td class=\"l\">" << htmlEscape(value) << "</td></tr>";
-  h << "</table>\n";
-  h << "<h2>Summary</h2>\n<table id=\"summary\"><tr><th class=\"l\">scene</th><th class=\"l\">verdict</th>"
-       "<th class=\"l\">who deviates</th>";
-  if (!pairs.empty())
-    h << "<th class=\"l\">worst pair<br>verdict: the first criterion it fails, or its max unexplained</th><th class=\"l\">pairs<br>(" << pairs.size()
-      << "; open for the renderers x renderers matrix)</th>";
-  for (const auto& g : check_ids) h << "<th>" << htmlEscape(g) << "<br>verdict</th>";
-  h << "</tr>\n";
+  mu::data page;
+  page.set("scene_count", std::to_string(cases.size()));
+  page.set("pass", std::to_string(pass));
+  page.set("fail", std::to_string(fail));
+  page.set("errors", std::to_string(err));
+  page.set("not_compared", std::to_string(nexp));
+  page.set("not_expressible_pairs", std::to_string(nexp_pairs));
+  page.set("wall_seconds", fixed(r.wall_seconds, 1));
+  mu::data geometry = list();
+  if (!check_ids.empty()) {
+    mu::data g;
+    g.set("names", renderers::joinNames(check_ids));
+    g.set("pass", std::to_string(checks["pass"]));
+    g.set("fail", std::to_string(checks["fail"]));
+    g.set("errors", std::to_string(checks["error"]));
+    g.set("not_expressible", std::to_string(checks["not expressible"]));
+    geometry << g;
+  }
+  page.set("geometry_checks", geometry);
+  mu::data provenance = list();
+  for (const auto& [key, value] : r.provenance) {
+    mu::data row;
+    row.set("key", key);
+    row.set("value", value);
+    provenance << row;
+  }
+  page.set("provenance", provenance);
+  mu::data image_pairs = list();
+  if (!pairs.empty()) image_pairs << mu::data("count", std::to_string(pairs.size()));
+  page.set("image_pairs", image_pairs);
+  page.set("check_names", strings(check_ids));
+  mu::data summary = list(), case_list = list();
   for (const results::Case* c : cases) {
-    const std::string id = htmlEscape(c->scene);
-    h << "<tr><td class=\"l\"><a href=\"#" << id << "\">" << id << "</a></td><td "
-      << verdictCell(caseVerdict(c)) << "</td><td class=\"l deviates\">" << htmlEscape(c->attribution) << "</td>";
-    if (!pairs.empty()) {
-      if (const results::Pair* w = worstPair(*c, pairs))
-        h << "<td " << pairCell(*w) << "<br><span class=\"pairname\">" << htmlEscape(w->pair) << "</span></td>";
-      else
-        h << "<td></td>";  // this case has no pair
-      h << pairsCell(*c, run_pairs);
-    }
-    for (const auto& id : check_ids) {
-      const results::GeometryCheck* g = findCheck(*c, id);
-      if (!g) h << "<td></td>";
-      else if (g->verdict == results::PairVerdict::NotExpressible) h << "<td class=\"nexp\">not expressible</td>";
-      else h << "<td " << verdictCell(checkVerdict(*g)) << "</td>";
-    }
-    h << "</tr>\n";
+    summary << summaryRow(*c, run_pairs, check_ids);
+    case_list << caseSection(*c, run_renderers, dir);
   }
-  h << "</table>\n";
-  if (!pairs.empty())
-    h << "<figure><img src=\"p999.png\" alt=\"p99.9 error per scene and pair\">"
-         "<figcaption>p99.9 error per scene and pair (log scale; gnuplot)</figcaption></figure>\n";
-
-  h << "<h2>Cases</h2>\n<p>Heat maps (full resolution): largest channel difference per pixel, "
-       "<img src=\"heat_scale.png\" alt=\"scale\" style=\"width:300px;height:12px;vertical-align:middle\">"
-       " from 0 through 1 (first seventh, linear) to 4096/65535 (logarithmic); grey: not covered. Red box: "
-       "the pair's worst unexplained pixel, blue box: its worst explained one; the crops below show every "
-       "render and the heat map around them, magnified nearest-neighbour. The buttons above each case "
-       "swap its renders and heat maps in one place. Over-tolerance pixels are classified by cause:</p>\n"
-    << pixelClassLegend(doc_href);
-  for (const results::Case* cp : cases) {
-    const results::Case& c = *cp;
-    const std::string id = htmlEscape(c.scene);
-    h << "<div class=\"case\" id=\"" << id << "\"><h3>" << id << " &mdash; <span class=\""
-      << verdictCell(caseVerdict(cp)).substr(std::string("class=\"l ").size()) << "</span></h3>\n";
-    // The command is the compare step's (validate/validation/next_steps.h
-    // reproduceCommand: with the run's renderers, renderer files and
-    // tolerance file); results.json files written before it had none: no
-    // command rather than one that would not run as the case ran.
-    h << "<p>" << htmlEscape(c.attribution) << ".";
-    if (c.reproduce) h << " Reproduce: <code>" << htmlEscape(*c.reproduce) << "</code>";
-    h << "</p>\n";
-    for (const auto& [renderer, why] : c.left_out)
-      h << "<p class=\"nexp\">" << htmlEscape(renderer) << " left out: " << htmlEscape(why) << "</p>\n";
-    // The scene's warnings (scene/scene_lint.h): beside the verdict, not in it.
-    for (const results::Warning& w : c.warnings)
-      h << "<p class=\"warn\">warning: " << htmlEscape(w.subject) << ": " << htmlEscape(w.message) << " ["
-        << htmlEscape(w.code) << "]</p>\n";
-    h << "<div class=\"imgs\">";
-    for (const std::string& rid : run_renderers) {
-      const results::Render* found = c.render(rid);
-      if (!found) continue;
-      const results::Render& rr = *found;
-      const std::string renderer = htmlEscape(rid);
-      if (rr.not_expressible) {
-        h << "<figure><figcaption>" << renderer << ": <span class=\"nexp\">not expressible: "
-          << htmlEscape(*rr.not_expressible) << "</span></figcaption></figure>";
-        continue;
-      }
-      // A failed render shows its error where its image would be: no
-      // <img> of a file that is not there.
-      if (renderHasImage(rr, dir))
-        h << "<figure><img src=\"" << htmlEscape(*rr.image) << "\" alt=\"" << renderer << "\">";
-      else
-        h << "<figure><div class=\"noimage err\">"
-          << (rr.error ? "error: " + htmlEscape(*rr.error)
-                       : "no image: " + htmlEscape(rr.image.value_or("(none named)")) +
-                             " (named in results.json) is missing")
-          << "</div>";
-      h << "<figcaption>" << renderer << ", " << fixed(rr.seconds, 2) << " s";
-      if (rr.render_seconds) h << " (render " << fixed(*rr.render_seconds, 2) << " s)";
-      if (isGeometryCheck(c, rid)) h << "<br>" << htmlEscape(geometryCheckCaption());
-      h << "</figcaption></figure>";
-    }
-    h << "</div>\n" << casePixels(c, dir);
-    h << "<table><tr><th class=\"l\">pair</th><th>verdict</th><th>max unexpl. (cap)</th><th>max</th><th>p99.9</th>"
-         "<th>RMSE</th><th>PSNR dB</th><th>within tol.</th><th>tol.</th><th>masks off (silh.)</th>";
-    for (const PixelClassInfo& k : kPixelClasses) h << "<th>over tol.: " << k.name << "<br>count (max)</th>";
-    h << "</tr>\n";
-    for (const results::Pair& p : c.pairs) {
-      h << "<tr><td class=\"l\">" << htmlEscape(p.pair) << "</td>";
-      if (p.verdict == results::PairVerdict::NotExpressible) {
-        h << "<td class=\"nexp\" colspan=\"" << 9 + kPixelClassCount << "\">not expressible, not compared: "
-          << htmlEscape(p.not_expressible.value_or("")) << "</td></tr>\n";
-        continue;
-      }
-      if (!p.metrics) {
-        h << "<td class=\"err\" colspan=\"" << 9 + kPixelClassCount << "\">" << htmlEscape(p.error.value_or("error"))
-          << "</td></tr>\n";
-        continue;
-      }
-      const results::PairMetrics& m = *p.metrics;
-      h << "<td " << verdictCell(pairVerdict(p)) << "</td><td>" << fixed(m.max_unexplained_16bit, 2) << " ("
-        << fixed(m.tolerance.max_unexplained_16bit, 0) << ")</td><td>" << fixed(m.max_abs_16bit, 2) << "</td><td>"
-        << fixed(m.p999_abs_16bit, 2) << "</td><td>" << fixed(m.rmse_16bit, 3) << "</td><td>"
-        << (m.psnr_db ? fixed(*m.psnr_db, 1) : std::string("inf")) << "</td><td>" << fixed(100.0 * m.fraction_within, 3)
-        << "%</td><td>" << significant(m.tolerance.max_abs_16bit) << " on " << significant(100.0 * m.tolerance.fraction)
-        << "%</td><td>" << m.mask_disagree << " (" << m.mask_disagree_explained << ")</td>";
-      for (const PixelClassInfo& k : kPixelClasses) {
-        const long long* count = ofClass(m.over_tolerance, k.key);
-        const std::optional<double>* max = ofClass(m.over_tolerance_max_16bit, k.key);
-        h << "<td>" << (count ? std::to_string(*count) : std::string("n/a"));
-        if (max && count && *count > 0) h << " (" << fixed(*max, 1) << ")";
-        h << "</td>";
-      }
-      h << "</tr>\n";
-    }
-    h << "</table>\n";
-    // Every metric of the table (image/metric_table.h), a column each.
-    h << pairMetricsTable(c.pairs);
-    h << geometryChecksTable(c);
-    // Why each failing pair fails: every criterion, with its numbers.
-    for (const results::Pair& p : c.pairs)
-      if (!p.failed.empty())
-        h << "<p class=\"reason\"><b>" << htmlEscape(p.pair) << " fails:</b> " << htmlEscape(failedText(p.failed))
-          << "</p>\n";
-    for (const results::Pair& p : c.pairs)
-      if (p.metrics && !p.metrics->tolerance_reason.empty())
-        h << "<p class=\"reason\"><b>" << htmlEscape(p.pair) << " tolerance:</b> "
-          << htmlEscape(p.metrics->tolerance_reason) << "</p>\n";
-    h << "</div>\n";
-  }
+  page.set("summary", summary);
+  page.set("pixel_class_legend", pixelClassLegend(doc_href));
+  std::vector<std::string> class_names;
+  for (const PixelClassInfo& k : kPixelClasses) class_names.push_back(k.name);
+  page.set("pixel_classes", strings(class_names));
+  page.set("cases", case_list);
   // After the cases: the paper's claims, the extremes and the trade-off.
-  h << paperClaimsSection(r, cases);
-  if (extremes_dir) h << extremes::reportSection(*extremes_dir, relativeHref(*extremes_dir, html_dir));
-  if (tradeoff_dir) h << tradeoffReportSection(*tradeoff_dir, relativeHref(*tradeoff_dir, html_dir));
-  h << "<script>\n" << swapScript() << "window.addEventListener('load', function () {\n"
-       "  var bad = [], imgs = document.images;\n"
-       "  for (var i = 0; i < imgs.length; i++)\n"
-       "    if (!imgs[i].complete || imgs[i].naturalWidth === 0) bad.push(imgs[i].getAttribute('src'));\n"
-       "  document.title = bad.length ? 'xval report: BROKEN ' + bad.join(' ')\n"
-       "                              : 'xval report: ' + imgs.length + ' images OK';\n"
-       "});\n</script>\n</body></html>\n";
-  writeFileAtomically(html, h.str());
+  page.set("paper_claims", paperClaimsSection(r, cases));
+  page.set("extremes", extremes_dir ? extremes::reportSection(*extremes_dir, relativeHref(*extremes_dir, html_dir))
+                                    : std::string());
+  page.set("tradeoff", tradeoff_dir ? tradeoffReportSection(*tradeoff_dir, relativeHref(*tradeoff_dir, html_dir))
+                                    : std::string());
+  page.set("swap_script", swapScript());
+  writeFileAtomically(html, renderPage(page));
 }
 
 }  // namespace xval
