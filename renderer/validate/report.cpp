@@ -226,9 +226,6 @@ std::string upperCase(const std::string& s) {
   return upper;
 }
 
-// A verdict's table cell, from its class attribute on: "class="l pass">PASS".
-std::string verdictCell(const std::string& v) { return "class=\"l " + verdictClass(v) + "\">" + upperCase(v); }
-
 // The page's data (kainjow::mustache, rendered over report_page.mustache):
 // a list, and an optional value as a list of none or one, so that
 // {{#key}}..{{.}}..{{/key}} shows it only when there is one. Every object
@@ -346,38 +343,55 @@ std::string geometryCheckCaption() {
 }
 
 // A case's geometry checks: per check, each metric beside the bound it is
-// held to (validate/geometry_check.h), the verdict and its reason.
-std::string geometryChecksTable(const results::Case& c) {
-  if (c.geometry_checks.empty()) return "";
-  std::ostringstream h;
-  h << "<table class=\"geometry\"><tr><th class=\"l\">geometry check</th><th>verdict</th><th>covered</th>"
-       "<th>hit/object off the silhouette (bound)</th><th>on the silhouette (bound)</th>"
-       "<th>max depth rel. error (bound; all pixels)</th><th>uv pixels</th><th>max uv error (bound; all pixels)</th>"
-       "<th>edge pixels over (bound)</th></tr>\n";
+// held to (validate/geometry_check.h), the verdict and its reason. None
+// when the case has none; else one: checks (name, not_compared: none or
+// one of class and text, compared: none or one of the verdict's
+// check_class and check_text, the numbers as text and reason).
+mu::data geometryChecksTable(const results::Case& c) {
+  mu::data table = list();
+  if (c.geometry_checks.empty()) return table;
+  mu::data checks = list();
   for (const results::GeometryCheck& g : c.geometry_checks) {
-    h << "<tr><td class=\"l\">" << htmlEscape(checkName(g)) << "</td>";
+    mu::data row;
+    row.set("name", checkName(g));
+    mu::data not_compared = list(), compared = list();
     if (!g.metrics) {
       const bool nx = g.verdict == results::PairVerdict::NotExpressible;
-      h << "<td class=\"" << (nx ? "nexp" : "err") << "\" colspan=\"8\">" << (nx ? "not expressible: " : "error: ")
-        << htmlEscape(g.reason.value_or("")) << "</td></tr>\n";
-      continue;
+      mu::data d;
+      d.set("class", nx ? "nexp" : "err");
+      d.set("text", (nx ? "not expressible: " : "error: ") + g.reason.value_or(""));
+      not_compared << d;
+    } else {
+      const results::GeometryCheckMetrics& m = *g.metrics;  // a compared check has both (results/results.h)
+      const results::GeometryCheckBounds& b = *g.bounds;
+      const double covered = double(m.covered);
+      mu::data d;
+      d.set("check_class", verdictClass(checkVerdict(g)));
+      d.set("check_text", upperCase(checkVerdict(g)));
+      d.set("covered", std::to_string(m.covered));
+      d.set("off", std::to_string(m.mask_disagree - m.mask_disagree_silhouette));
+      d.set("silhouette", std::to_string(m.mask_disagree_silhouette));
+      d.set("silhouette_bound", std::to_string(static_cast<long long>(std::floor(b.max_silhouette_fraction * covered))));
+      d.set("depth", twoDigits(m.max_depth_rel));
+      d.set("depth_bound", twoDigits(b.max_depth_rel));
+      d.set("depth_all", twoDigits(m.max_depth_rel_all));
+      d.set("uv_compared", std::to_string(m.uv_compared));
+      d.set("uv", twoDigits(m.max_uv));
+      d.set("uv_bound", twoDigits(b.max_uv));
+      d.set("uv_all", twoDigits(m.max_uv_all));
+      d.set("edge_over", std::to_string(m.edge_over));
+      d.set("edge_bound", std::to_string(static_cast<long long>(std::floor(b.max_edge_fraction * covered))));
+      d.set("reason", optional(g.reason));
+      compared << d;
     }
-    const results::GeometryCheckMetrics& m = *g.metrics;  // a compared check has both (results/results.h)
-    const results::GeometryCheckBounds& b = *g.bounds;
-    const double covered = double(m.covered);
-    const long long off = m.mask_disagree - m.mask_disagree_silhouette;
-    h << "<td " << verdictCell(checkVerdict(g)) << "</td><td>" << m.covered << "</td><td>" << off << " (0)</td><td>"
-      << m.mask_disagree_silhouette << " (" << static_cast<long long>(std::floor(b.max_silhouette_fraction * covered))
-      << ")</td><td>" << twoDigits(m.max_depth_rel) << " (" << twoDigits(b.max_depth_rel) << "; "
-      << twoDigits(m.max_depth_rel_all) << ")</td><td>" << m.uv_compared << "</td><td>" << twoDigits(m.max_uv) << " ("
-      << twoDigits(b.max_uv) << "; " << twoDigits(m.max_uv_all) << ")</td><td>" << m.edge_over << " ("
-      << static_cast<long long>(std::floor(b.max_edge_fraction * covered)) << ")</td></tr>\n";
-    if (g.reason)
-      h << "<tr><td class=\"l\"></td><td class=\"l fail\" colspan=\"8\">" << htmlEscape(*g.reason)
-        << "</td></tr>\n";
+    row.set("not_compared", not_compared);
+    row.set("compared", compared);
+    checks << row;
   }
-  h << "</table>\n";
-  return h.str();
+  mu::data t;
+  t.set("checks", checks);
+  table << t;
+  return table;
 }
 
 const results::ColourStats* findColourStats(const Cases& cases, const std::string& name) {
@@ -388,36 +402,44 @@ const results::ColourStats* findColourStats(const Cases& cases, const std::strin
 
 // The paper's Figure 1 claims as results.json states them (`paper_claims`,
 // judged by the compare step: validate/paper_claims.h), with the colour
-// statistics of the scenes they are judged on.
-std::string paperClaimsSection(const results::Results& results, const Cases& cases) {
-  if (!results.paper_claims) return "";  // not in this run
+// statistics of the scenes they are judged on. None when the run has none;
+// else one: claim_scenes (scene, stats: none or one of lit, chroma,
+// albedo_chroma, grey, hue), claims (claim, condition, measured, holds).
+mu::data paperClaimsSection(const results::Results& results, const Cases& cases) {
+  mu::data section = list();
+  if (!results.paper_claims) return section;  // not in this run
   const results::PaperClaims& pc = *results.paper_claims;
-  std::ostringstream h;
-  h << "<h2>The paper's Figure 1 claims, measured</h2>\n<p>On the reference renders of the "
-       "Figure 1 scenes, over lit pixels (luma &gt; 0.02), colours as sRGB-coded CIELAB: mean "
-       "chroma C*, the share of grey pixels (C* &lt; 5), and the mean hue error against the "
-       "texture colour at the same pixel (where both have C* &ge; 5). See docs/paper-claims.md.</p>\n"
-       "<table><tr><th class=\"l\">scene</th><th>lit pixels</th><th>mean C*</th><th>texture mean C*</th>"
-       "<th>grey share</th><th>hue error (deg)</th></tr>\n";
+  mu::data scenes = list();
   for (const std::string& name : pc.scenes) {
-    const results::ColourStats* st = findColourStats(cases, name);
-    h << "<tr><td class=\"l\">" << htmlEscape(name) << "</td>";
-    if (!st) {
-      h << "<td class=\"err\" colspan=\"5\">no colour statistics in results.json</td></tr>\n";
-      continue;
+    mu::data row;
+    row.set("scene", name);
+    mu::data stats = list();
+    if (const results::ColourStats* st = findColourStats(cases, name)) {
+      mu::data d;
+      d.set("lit", std::to_string(st->lit_pixels));
+      d.set("chroma", fixed(st->mean_chroma, 2));
+      d.set("albedo_chroma", fixed(st->mean_albedo_chroma, 2));
+      d.set("grey", fixed(100 * st->grey_fraction, 1));
+      d.set("hue", fixed(st->hue_error_deg, 2));
+      stats << d;
     }
-    h << "<td>" << st->lit_pixels << "</td><td>" << fixed(st->mean_chroma, 2) << "</td><td>"
-      << fixed(st->mean_albedo_chroma, 2) << "</td><td>" << fixed(100 * st->grey_fraction, 1) << "%</td><td>"
-      << fixed(st->hue_error_deg, 2) << "</td></tr>\n";
+    row.set("stats", stats);
+    scenes << row;
   }
-  h << "</table>\n<table><tr><th class=\"l\">claim (paper, section 4)</th><th class=\"l\">condition</th>"
-       "<th>measured</th><th>verdict</th></tr>\n";
-  for (const results::PaperClaim& c : pc.claims)
-    h << "<tr><td class=\"l\">" << htmlEscape(c.claim) << "</td><td class=\"l\">" << htmlEscape(c.condition)
-      << "</td><td>" << htmlEscape(c.measured) << "</td><td class=\"" << (c.holds ? "pass\">holds" : "fail\">does not hold")
-      << "</td></tr>\n";
-  h << "</table>\n";
-  return h.str();
+  mu::data claims = list();
+  for (const results::PaperClaim& c : pc.claims) {
+    mu::data row;
+    row.set("claim", c.claim);
+    row.set("condition", c.condition);
+    row.set("measured", c.measured);
+    row.set("holds", mu::data(c.holds));
+    claims << row;
+  }
+  mu::data d;
+  d.set("claim_scenes", scenes);
+  d.set("claims", claims);
+  section << d;
+  return section;
 }
 
 // The folder of an extremes or trade-off section: the one given, else the
@@ -573,7 +595,8 @@ mu::data pairRow(const results::Pair& p) {
 // reproduce (none or one), left_out, warnings, renders (renderFigure, in
 // the run's order), pair_rows (pairRow), notes (pair, label, text: why each
 // failing pair fails, then each declared tolerance's reason), and the
-// fragments case_pixels, pair_metrics_table, geometry_checks_table.
+// metric_table (report_metrics.h), check_table (geometryChecksTable) and
+// the fragment case_pixels (report_pixels.h).
 mu::data caseSection(const results::Case& c, const std::vector<std::string>& run_renderers, const fs::path& dir) {
   const std::string verdict = caseVerdict(c);
   mu::data d;
@@ -613,8 +636,8 @@ mu::data caseSection(const results::Case& c, const std::vector<std::string>& run
   for (const results::Pair& p : c.pairs) pair_rows << pairRow(p);
   d.set("pair_rows", pair_rows);
   // Every metric of the table (image/metric_table.h), a column each.
-  d.set("pair_metrics_table", pairMetricsTable(c.pairs));
-  d.set("geometry_checks_table", geometryChecksTable(c));
+  d.set("metric_table", pairMetricsTable(c.pairs));
+  d.set("check_table", geometryChecksTable(c));
   // Why each failing pair fails: every criterion, with its numbers.
   mu::data notes = list();
   auto note = [&notes](const std::string& pair, const char* label, const std::string& text) {
@@ -747,6 +770,7 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   std::vector<std::string> class_names;
   for (const PixelClassInfo& k : kPixelClasses) class_names.push_back(k.name);
   page.set("pixel_classes", strings(class_names));
+  page.set("metric_columns", metricColumns());
   page.set("cases", case_list);
   // After the cases: the paper's claims, the extremes and the trade-off.
   page.set("paper_claims", paperClaimsSection(r, cases));

@@ -55,15 +55,24 @@ TEST(ReportPage, EveryStringFromTheResultsIsEscapedInItsPlace) {
   pair.verdict = results::PairVerdict::NotExpressible;
   pair.not_expressible = hostile("pair not expressible");
   c.pairs = {pair};
+  results::GeometryCheck check;
+  check.renderer = "blender-import";
+  check.against = "reference";
+  check.verdict = results::PairVerdict::NotExpressible;
+  check.reason = hostile("geometry check");
+  c.geometry_checks = {check};
   c.attribution = hostile("attribution");
   c.verdict = validation::CaseVerdict::Error;
   r.cases = {c};
+  r.paper_claims = results::PaperClaims{{hostile("claim scene")},
+                                        {{hostile("claim"), hostile("claim condition"), hostile("claim measured"), true}}};
   results::writeResults(dir / "results.json", r);
   writeReport(dir / "results.json", dir / "report.html");
   const std::string page = readFile(dir / "report.html");
   for (const char* field : {"provenance", "scene", "reproduce", "render error",
                             "render not expressible", "left out", "warning code", "warning subject",
-                            "warning message", "pair not expressible", "attribution"}) {
+                            "warning message", "pair not expressible", "geometry check", "attribution", "claim scene",
+                            "claim", "claim condition", "claim measured"}) {
     EXPECT_EQ(page.find(hostile(field)), std::string::npos) << field << " is in the page unescaped";
     EXPECT_NE(page.find(htmlEscape(hostile(field))), std::string::npos) << field << " is not in the page";
   }
