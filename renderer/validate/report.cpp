@@ -1,4 +1,6 @@
 #include "validate/report.h"
+#include "validate/report_case.h"
+#include "validate/report_data.h"
 #include "validate/report_metrics.h"
 
 #include "files/atomic_write.h"
@@ -10,7 +12,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <optional>
@@ -18,13 +19,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include <fmt/format.h>
 #include <kainjow/mustache.hpp>
 
 #include "image/image.h"
-#include "image/pair_failure.h"
 #include "process/run_process.h"
-#include "render/geometry_passes.h"
 #include "renderers/registry.h"
 #include "scene/json_reader.h"
 #include "scene/scene_loader.h"
@@ -35,14 +33,13 @@
 #include "validate/results/results.h"
 #include "validate/tolerances.h"
 #include "validate/tradeoff/report_section.h"
-#include "validate/validation/case_verdict.h"
-#include "validate/validation/geometry_checks.h"
 
 namespace xval {
 
 namespace fs = std::filesystem;
 using J = nlohmann::ordered_json;
 namespace mu = kainjow::mustache;
+using namespace page;
 
 std::string htmlEscape(const std::string& s) {
   std::string o;
@@ -123,12 +120,6 @@ RunPairs runPairs(const Cases& cases, const std::vector<std::string>& renderers)
   return out;
 }
 
-// A case's geometry checks (validate/validation/geometry_checks.h) as
-// "verdict" with a space for the underscore, as the pairs' verdicts read.
-std::string checkVerdict(const results::GeometryCheck& g) { return verdictWords(g.verdict); }
-
-std::string checkName(const results::GeometryCheck& g) { return validation::geometryCheckName(g.against, g.renderer); }
-
 // The geometry checks of the run, by name, in the order of their first appearance.
 std::vector<std::string> checkIds(const Cases& cases) {
   std::vector<std::string> ids;
@@ -143,9 +134,6 @@ const results::GeometryCheck* findCheck(const results::Case& c, const std::strin
     if (checkName(g) == name) return &g;
   return nullptr;
 }
-
-// A small number in two significant digits ("3.3e-06", "0.84").
-std::string twoDigits(double v) { return fmt::format("{:.2g}", v); }
 
 // The p99.9 error of every pair of every case, as a gnuplot bar chart.
 void writePlot(const Cases& cases, const std::vector<std::string>& pairs, const std::filesystem::path& dir) {
@@ -204,45 +192,6 @@ void writePlot(const Cases& cases, const std::vector<std::string>& pairs, const 
     requireDecodable(tmp_png, 1100, 460);
     return true;
   });
-}
-
-// A pixel class's entry (its key, image/pixel_classes.h) of a pair's
-// per-class counts or maxima; null when the file has none for it.
-template <class T>
-const T* ofClass(const results::Named<T>& per_class, const std::string& key) {
-  for (const auto& [k, v] : per_class)
-    if (k == key) return &v;
-  return nullptr;
-}
-
-// A verdict's class in the page's style sheet (report_page.mustache).
-std::string verdictClass(const std::string& v) {
-  return v == "pass" ? "pass" : v == "fail" ? "fail" : v == "error" ? "err" : "nexp";
-}
-
-std::string upperCase(const std::string& s) {
-  std::string upper;
-  for (char ch : s) upper += char(std::toupper(static_cast<unsigned char>(ch)));
-  return upper;
-}
-
-// The page's data (kainjow::mustache, rendered over report_page.mustache):
-// a list, and an optional value as a list of none or one, so that
-// {{#key}}..{{.}}..{{/key}} shows it only when there is one. Every object
-// sets each key its part of the template reads: a key left out would be
-// looked up in the enclosing objects.
-mu::data list() { return mu::data(mu::data::type::list); }
-
-mu::data optional(const std::optional<std::string>& v) {
-  mu::data l = list();
-  if (v) l << mu::data(*v);
-  return l;
-}
-
-mu::data strings(const std::vector<std::string>& v) {
-  mu::data l = list();
-  for (const std::string& s : v) l << mu::data(s);
-  return l;
 }
 
 // A pair's summary (report.h pairSummary) in a cell: pair, pair_class,
@@ -329,71 +278,6 @@ mu::data pairsMatrix(const results::Case& c, const RunPairs& run) {
   return out;
 }
 
-// Whether a case's render is a geometry check's: a picture of its passes
-// (render/geometry_passes.h passesPreview), not a render.
-bool isGeometryCheck(const results::Case& c, const std::string& renderer) {
-  for (const results::GeometryCheck& g : c.geometry_checks)
-    if (g.renderer == renderer) return true;
-  return false;
-}
-
-std::string geometryCheckCaption() {
-  return std::string("not a render: its geometry passes (") + kPassesPreviewLegend +
-         "), compared with the reference's passes of our loaded triangles (the geometry check below)";
-}
-
-// A case's geometry checks: per check, each metric beside the bound it is
-// held to (validate/geometry_check.h), the verdict and its reason. None
-// when the case has none; else one: checks (name, not_compared: none or
-// one of class and text, compared: none or one of the verdict's
-// check_class and check_text, the numbers as text and reason).
-mu::data geometryChecksTable(const results::Case& c) {
-  mu::data table = list();
-  if (c.geometry_checks.empty()) return table;
-  mu::data checks = list();
-  for (const results::GeometryCheck& g : c.geometry_checks) {
-    mu::data row;
-    row.set("name", checkName(g));
-    mu::data not_compared = list(), compared = list();
-    if (!g.metrics) {
-      const bool nx = g.verdict == results::PairVerdict::NotExpressible;
-      mu::data d;
-      d.set("class", nx ? "nexp" : "err");
-      d.set("text", (nx ? "not expressible: " : "error: ") + g.reason.value_or(""));
-      not_compared << d;
-    } else {
-      const results::GeometryCheckMetrics& m = *g.metrics;  // a compared check has both (results/results.h)
-      const results::GeometryCheckBounds& b = *g.bounds;
-      const double covered = double(m.covered);
-      mu::data d;
-      d.set("check_class", verdictClass(checkVerdict(g)));
-      d.set("check_text", upperCase(checkVerdict(g)));
-      d.set("covered", std::to_string(m.covered));
-      d.set("off", std::to_string(m.mask_disagree - m.mask_disagree_silhouette));
-      d.set("silhouette", std::to_string(m.mask_disagree_silhouette));
-      d.set("silhouette_bound", std::to_string(static_cast<long long>(std::floor(b.max_silhouette_fraction * covered))));
-      d.set("depth", twoDigits(m.max_depth_rel));
-      d.set("depth_bound", twoDigits(b.max_depth_rel));
-      d.set("depth_all", twoDigits(m.max_depth_rel_all));
-      d.set("uv_compared", std::to_string(m.uv_compared));
-      d.set("uv", twoDigits(m.max_uv));
-      d.set("uv_bound", twoDigits(b.max_uv));
-      d.set("uv_all", twoDigits(m.max_uv_all));
-      d.set("edge_over", std::to_string(m.edge_over));
-      d.set("edge_bound", std::to_string(static_cast<long long>(std::floor(b.max_edge_fraction * covered))));
-      d.set("reason", optional(g.reason));
-      compared << d;
-    }
-    row.set("not_compared", not_compared);
-    row.set("compared", compared);
-    checks << row;
-  }
-  mu::data t;
-  t.set("checks", checks);
-  table << t;
-  return table;
-}
-
 const results::ColourStats* findColourStats(const Cases& cases, const std::string& name) {
   for (const results::Case* c : cases)
     if (c->scene == name && c->colour_stats) return &*c->colour_stats;
@@ -465,15 +349,6 @@ void requireSectionFile(const fs::path& folder, const char* file, const char* wh
                              what + " -o DIR`)");
 }
 
-// A case: the verdict the compare step decided and stored (validation/
-// case_verdict.h; the schema requires it of every results.json case), as
-// the pairs' verdicts read ("not compared").
-std::string caseVerdict(const results::Case& c) {
-  std::string v = validation::verdictName(*c.verdict);
-  std::replace(v.begin(), v.end(), '_', ' ');
-  return v;
-}
-
 // A case's row of the summary: scene, verdict_class, verdict_text,
 // attribution, pair_columns (none when the run has no image pair; else
 // worst: its worst pair's cell or none, matrix: pairsMatrix), check_cells
@@ -508,7 +383,7 @@ mu::data summaryRow(const results::Case& c, const RunPairs& run, const std::vect
       text = upperCase(checkVerdict(*g));
     }
     mu::data cell;
-    cell.set("check_class", optional(cls));
+    cell.set("check_class", maybe(cls));
     cell.set("check_text", text);
     check_cells << cell;
   }
@@ -516,143 +391,47 @@ mu::data summaryRow(const results::Case& c, const RunPairs& run, const std::vect
   return row;
 }
 
-// A render's figure: renderer, not_expressible (its reason, or none), else
-// image (the file's name, when renderHasImage) or no_image (why not),
-// seconds, render_seconds, geometry_caption (each none or one).
-mu::data renderFigure(const results::Case& c, const std::string& renderer, const results::Render& rr,
-                      const fs::path& dir) {
-  mu::data f;
-  f.set("renderer", renderer);
-  f.set("not_expressible", optional(rr.not_expressible));
-  // A failed render shows its error where its image would be: no <img> of
-  // a file that is not there.
-  const bool has_image = renderHasImage(rr, dir);
-  f.set("image", optional(has_image ? rr.image : std::nullopt));
-  f.set("no_image", optional(has_image ? std::nullopt
-                                       : std::optional<std::string>(
-                                             rr.error ? "error: " + *rr.error
-                                                      : "no image: " + rr.image.value_or("(none named)") +
-                                                            " (named in results.json) is missing")));
-  f.set("seconds", fixed(rr.seconds, 2));
-  f.set("render_seconds", optional(rr.render_seconds ? std::optional<std::string>(fixed(*rr.render_seconds, 2))
-                                                     : std::nullopt));
-  f.set("geometry_caption", optional(isGeometryCheck(c, renderer) ? std::optional<std::string>(geometryCheckCaption())
-                                                                  : std::nullopt));
-  return f;
-}
-
-// A pair's row of the case's table: pair, not_compared (none, or one of
-// class, colspan, text) and metrics (none, or one: the verdict's
-// pair_class and pair_text, the numbers as text, over_tolerance: per pixel
-// class count and class_max).
-mu::data pairRow(const results::Pair& p) {
-  mu::data row;
-  row.set("pair", p.pair);
-  mu::data not_compared = list(), metrics = list();
-  const std::string colspan = std::to_string(9 + kPixelClassCount);
-  if (p.verdict == results::PairVerdict::NotExpressible || !p.metrics) {
-    const bool nexp = p.verdict == results::PairVerdict::NotExpressible;
-    mu::data d;
-    d.set("class", nexp ? "nexp" : "err");
-    d.set("colspan", colspan);
-    d.set("text", nexp ? "not expressible, not compared: " + p.not_expressible.value_or("") : p.error.value_or("error"));
-    not_compared << d;
-  } else {
-    const results::PairMetrics& m = *p.metrics;
-    mu::data d;
-    d.set("pair_class", verdictClass(pairVerdict(p)));
-    d.set("pair_text", upperCase(pairVerdict(p)));
-    d.set("max_unexplained", fixed(m.max_unexplained_16bit, 2));
-    d.set("cap", fixed(m.tolerance.max_unexplained_16bit, 0));
-    d.set("max", fixed(m.max_abs_16bit, 2));
-    d.set("p999", fixed(m.p999_abs_16bit, 2));
-    d.set("rmse", fixed(m.rmse_16bit, 3));
-    d.set("psnr", m.psnr_db ? fixed(*m.psnr_db, 1) : std::string("inf"));
-    d.set("within", fixed(100.0 * m.fraction_within, 3));
-    d.set("tolerance", significant(m.tolerance.max_abs_16bit));
-    d.set("fraction", significant(100.0 * m.tolerance.fraction));
-    d.set("masks_off", std::to_string(m.mask_disagree));
-    d.set("masks_explained", std::to_string(m.mask_disagree_explained));
-    mu::data classes = list();
-    for (const PixelClassInfo& k : kPixelClasses) {
-      const long long* count = ofClass(m.over_tolerance, k.key);
-      const std::optional<double>* max = ofClass(m.over_tolerance_max_16bit, k.key);
-      mu::data cell;
-      cell.set("count", count ? std::to_string(*count) : std::string("n/a"));
-      cell.set("class_max", optional(max && count && *count > 0 ? std::optional<std::string>(fixed(*max, 1))
-                                                                : std::nullopt));
-      classes << cell;
-    }
-    d.set("over_tolerance", classes);
-    metrics << d;
+// The page's head: scene_count and the cases by verdict (pass, fail,
+// errors, not_compared), not_expressible_pairs, wall_seconds,
+// geometry_checks (none when the run has none; else one: names and the
+// checks by verdict), provenance (key, value).
+mu::data pageHead(const results::Results& r, const Cases& cases, const std::vector<std::string>& check_ids) {
+  mu::data page;
+  int pass = 0, fail = 0, nexp = 0, err = 0, nexp_pairs = 0;
+  std::map<std::string, int> checks;  // geometry checks by verdict
+  for (const results::Case* c : cases) {
+    for (const results::Pair& p : c->pairs) nexp_pairs += p.verdict == results::PairVerdict::NotExpressible;
+    for (const results::GeometryCheck& g : c->geometry_checks) ++checks[checkVerdict(g)];
+    const std::string v = caseVerdict(*c);
+    (v == "error" ? err : v == "fail" ? fail : v == "pass" ? pass : nexp)++;
   }
-  row.set("not_compared", not_compared);
-  row.set("metrics", metrics);
-  return row;
-}
-
-// A case's section: scene, verdict_class, verdict_text, attribution,
-// reproduce (none or one), left_out, warnings, renders (renderFigure, in
-// the run's order), pair_rows (pairRow), notes (pair, label, text: why each
-// failing pair fails, then each declared tolerance's reason), and the
-// metric_table (report_metrics.h), check_table (geometryChecksTable) and
-// the fragment case_pixels (report_pixels.h).
-mu::data caseSection(const results::Case& c, const std::vector<std::string>& run_renderers, const fs::path& dir) {
-  const std::string verdict = caseVerdict(c);
-  mu::data d;
-  d.set("scene", c.scene);
-  d.set("verdict_class", verdictClass(verdict));
-  d.set("verdict_text", upperCase(verdict));
-  d.set("attribution", c.attribution);
-  // The command is the compare step's (validate/validation/next_steps.h
-  // reproduceCommand: with the run's renderers, renderer files and
-  // tolerance file); results.json files written before it had none: no
-  // command rather than one that would not run as the case ran.
-  d.set("reproduce", optional(c.reproduce));
-  mu::data left_out = list();
-  for (const auto& [renderer, why] : c.left_out) {
-    mu::data l;
-    l.set("renderer", renderer);
-    l.set("why", why);
-    left_out << l;
+  page.set("scene_count", std::to_string(cases.size()));
+  page.set("pass", std::to_string(pass));
+  page.set("fail", std::to_string(fail));
+  page.set("errors", std::to_string(err));
+  page.set("not_compared", std::to_string(nexp));
+  page.set("not_expressible_pairs", std::to_string(nexp_pairs));
+  page.set("wall_seconds", fixed(r.wall_seconds, 1));
+  mu::data geometry = list();
+  if (!check_ids.empty()) {
+    mu::data g;
+    g.set("names", renderers::joinNames(check_ids));
+    g.set("pass", std::to_string(checks["pass"]));
+    g.set("fail", std::to_string(checks["fail"]));
+    g.set("errors", std::to_string(checks["error"]));
+    g.set("not_expressible", std::to_string(checks["not expressible"]));
+    geometry << g;
   }
-  d.set("left_out", left_out);
-  // The scene's warnings (scene/scene_lint.h): beside the verdict, not in it.
-  mu::data warnings = list();
-  for (const results::Warning& w : c.warnings) {
-    mu::data l;
-    l.set("subject", w.subject);
-    l.set("message", w.message);
-    l.set("code", w.code);
-    warnings << l;
+  page.set("geometry_checks", geometry);
+  mu::data provenance = list();
+  for (const auto& [key, value] : r.provenance) {
+    mu::data row;
+    row.set("key", key);
+    row.set("value", value);
+    provenance << row;
   }
-  d.set("warnings", warnings);
-  mu::data renders = list();
-  for (const std::string& rid : run_renderers)
-    if (const results::Render* rr = c.render(rid)) renders << renderFigure(c, rid, *rr, dir);
-  d.set("renders", renders);
-  d.set("case_pixels", casePixels(c, dir));
-  mu::data pair_rows = list();
-  for (const results::Pair& p : c.pairs) pair_rows << pairRow(p);
-  d.set("pair_rows", pair_rows);
-  // Every metric of the table (image/metric_table.h), a column each.
-  d.set("metric_table", pairMetricsTable(c.pairs));
-  d.set("check_table", geometryChecksTable(c));
-  // Why each failing pair fails: every criterion, with its numbers.
-  mu::data notes = list();
-  auto note = [&notes](const std::string& pair, const char* label, const std::string& text) {
-    mu::data n;
-    n.set("pair", pair);
-    n.set("label", label);
-    n.set("text", text);
-    notes << n;
-  };
-  for (const results::Pair& p : c.pairs)
-    if (!p.failed.empty()) note(p.pair, "fails", failedText(p.failed));
-  for (const results::Pair& p : c.pairs)
-    if (p.metrics && !p.metrics->tolerance_reason.empty()) note(p.pair, "tolerance", p.metrics->tolerance_reason);
-  d.set("notes", notes);
-  return d;
+  page.set("provenance", provenance);
+  return page;
 }
 
 // The page: the template compiled in (report_page_template.h), its
@@ -718,44 +497,8 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   // only): nothing to plot.
   if (!pairs.empty()) writePlot(cases, pairs, dir);
 
-  int pass = 0, fail = 0, nexp = 0, err = 0, nexp_pairs = 0;
-  std::map<std::string, int> checks;  // geometry checks by verdict
   const std::vector<std::string> check_ids = checkIds(cases);
-  for (const results::Case* c : cases) {
-    for (const results::Pair& p : c->pairs) nexp_pairs += p.verdict == results::PairVerdict::NotExpressible;
-    for (const results::GeometryCheck& g : c->geometry_checks) ++checks[checkVerdict(g)];
-    const std::string v = caseVerdict(*c);
-    (v == "error" ? err : v == "fail" ? fail : v == "pass" ? pass : nexp)++;
-  }
-  const std::string doc_href =
-      relativeHref(toolkitToleranceFile().parent_path().parent_path() / kPixelClassDoc, html_dir);
-  mu::data page;
-  page.set("scene_count", std::to_string(cases.size()));
-  page.set("pass", std::to_string(pass));
-  page.set("fail", std::to_string(fail));
-  page.set("errors", std::to_string(err));
-  page.set("not_compared", std::to_string(nexp));
-  page.set("not_expressible_pairs", std::to_string(nexp_pairs));
-  page.set("wall_seconds", fixed(r.wall_seconds, 1));
-  mu::data geometry = list();
-  if (!check_ids.empty()) {
-    mu::data g;
-    g.set("names", renderers::joinNames(check_ids));
-    g.set("pass", std::to_string(checks["pass"]));
-    g.set("fail", std::to_string(checks["fail"]));
-    g.set("errors", std::to_string(checks["error"]));
-    g.set("not_expressible", std::to_string(checks["not expressible"]));
-    geometry << g;
-  }
-  page.set("geometry_checks", geometry);
-  mu::data provenance = list();
-  for (const auto& [key, value] : r.provenance) {
-    mu::data row;
-    row.set("key", key);
-    row.set("value", value);
-    provenance << row;
-  }
-  page.set("provenance", provenance);
+  mu::data page = pageHead(r, cases, check_ids);
   mu::data image_pairs = list();
   if (!pairs.empty()) image_pairs << mu::data("count", std::to_string(pairs.size()));
   page.set("image_pairs", image_pairs);
@@ -766,6 +509,8 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
     case_list << caseSection(*c, run_renderers, dir);
   }
   page.set("summary", summary);
+  const std::string doc_href =
+      relativeHref(toolkitToleranceFile().parent_path().parent_path() / kPixelClassDoc, html_dir);
   page.set("pixel_class_legend", pixelClassLegend(doc_href));
   std::vector<std::string> class_names;
   for (const PixelClassInfo& k : kPixelClasses) class_names.push_back(k.name);
