@@ -423,14 +423,7 @@ mu::data pageHead(const results::Results& r, const Cases& cases, const std::vect
     geometry << g;
   }
   page.set("geometry_checks", geometry);
-  mu::data provenance = list();
-  for (const auto& [key, value] : r.provenance) {
-    mu::data row;
-    row.set("key", key);
-    row.set("value", value);
-    provenance << row;
-  }
-  page.set("provenance", provenance);
+  page.set("provenance", members(r.provenance, "key", "value"));
   return page;
 }
 

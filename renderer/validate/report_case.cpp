@@ -195,14 +195,7 @@ mu::data caseSection(const results::Case& c, const std::vector<std::string>& run
   // tolerance file); results.json files written before it had none: no
   // command rather than one that would not run as the case ran.
   d.set("reproduce", maybe(c.reproduce));
-  mu::data left_out = list();
-  for (const auto& [renderer, why] : c.left_out) {
-    mu::data l;
-    l.set("renderer", renderer);
-    l.set("why", why);
-    left_out << l;
-  }
-  d.set("left_out", left_out);
+  d.set("left_out", members(c.left_out, "renderer", "why"));
   // The scene's warnings (scene/scene_lint.h): beside the verdict, not in it.
   mu::data warnings = list();
   for (const results::Warning& w : c.warnings) {

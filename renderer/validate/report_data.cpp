@@ -36,6 +36,17 @@ mu::data strings(const std::vector<std::string>& v) {
   return l;
 }
 
+mu::data members(const results::Named<std::string>& named, const char* key, const char* value) {
+  mu::data l = list();
+  for (const auto& [k, v] : named) {
+    mu::data member;
+    member.set(key, k);
+    member.set(value, v);
+    l << member;
+  }
+  return l;
+}
+
 std::string caseVerdict(const results::Case& c) {
   std::string v = validation::verdictName(*c.verdict);
   std::replace(v.begin(), v.end(), '_', ' ');

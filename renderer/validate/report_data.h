@@ -25,6 +25,9 @@ std::string upperCase(const std::string& s);
 kainjow::mustache::data list();
 kainjow::mustache::data maybe(const std::optional<std::string>& v);
 kainjow::mustache::data strings(const std::vector<std::string>& v);
+// Key-value members (results.json's provenance, a case's left_out) as a
+// list of objects, each with the key under `key` and the value under `value`.
+kainjow::mustache::data members(const results::Named<std::string>& named, const char* key, const char* value);
 
 // A case: the verdict the compare step decided and stored (validation/
 // case_verdict.h; the schema requires it of every results.json case), as
