@@ -1,4 +1,6 @@
 #include "validate/report.h"
+#include "validate/report_case.h"
+#include "validate/report_data.h"
 #include "validate/report_metrics.h"
 
 #include "files/atomic_write.h"
@@ -10,7 +12,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <optional>
@@ -18,28 +19,27 @@
 #include <stdexcept>
 #include <vector>
 
-#include <fmt/format.h>
+#include <kainjow/mustache.hpp>
 
 #include "image/image.h"
-#include "image/pair_failure.h"
 #include "process/run_process.h"
-#include "render/geometry_passes.h"
 #include "renderers/registry.h"
 #include "scene/json_reader.h"
 #include "scene/scene_loader.h"
 #include "validate/common/number_text.h"
 #include "validate/extremes/report_section.h"
+#include "validate/report_page_template.h"
 #include "validate/report_pixels.h"
 #include "validate/results/results.h"
 #include "validate/tolerances.h"
 #include "validate/tradeoff/report_section.h"
-#include "validate/validation/case_verdict.h"
-#include "validate/validation/geometry_checks.h"
 
 namespace xval {
 
 namespace fs = std::filesystem;
 using J = nlohmann::ordered_json;
+namespace mu = kainjow::mustache;
+using namespace page;
 
 std::string htmlEscape(const std::string& s) {
   std::string o;
@@ -120,12 +120,6 @@ RunPairs runPairs(const Cases& cases, const std::vector<std::string>& renderers)
   return out;
 }
 
-// A case's geometry checks (validate/validation/geometry_checks.h) as
-// "verdict" with a space for the underscore, as the pairs' verdicts read.
-std::string checkVerdict(const results::GeometryCheck& g) { return verdictWords(g.verdict); }
-
-std::string checkName(const results::GeometryCheck& g) { return validation::geometryCheckName(g.against, g.renderer); }
-
 // The geometry checks of the run, by name, in the order of their first appearance.
 std::vector<std::string> checkIds(const Cases& cases) {
   std::vector<std::string> ids;
@@ -140,9 +134,6 @@ const results::GeometryCheck* findCheck(const results::Case& c, const std::strin
     if (checkName(g) == name) return &g;
   return nullptr;
 }
-
-// A small number in two significant digits ("3.3e-06", "0.84").
-std::string twoDigits(double v) { return fmt::format("{:.2g}", v); }
 
 // The p99.9 error of every pair of every case, as a gnuplot bar chart.
 void writePlot(const Cases& cases, const std::vector<std::string>& pairs, const std::filesystem::path& dir) {
@@ -203,29 +194,15 @@ void writePlot(const Cases& cases, const std::vector<std::string>& pairs, const 
   });
 }
 
-// A pixel class's entry (its key, image/pixel_classes.h) of a pair's
-// per-class counts or maxima; null when the file has none for it.
-template <class T>
-const T* ofClass(const results::Named<T>& per_class, const std::string& key) {
-  for (const auto& [k, v] : per_class)
-    if (k == key) return &v;
-  return nullptr;
-}
-
-// A verdict's table cell, from its class attribute on: "class="l pass">PASS".
-std::string verdictCell(const std::string& v) {
-  const char* cls = v == "pass" ? "pass" : v == "fail" ? "fail" : v == "error" ? "err" : "nexp";
-  std::string upper;
-  for (char ch : v) upper += char(std::toupper(static_cast<unsigned char>(ch)));
-  return std::string("class=\"l ") + cls + "\">" + upper;
-}
-
-// A pair's summary (report.h pairSummary) as a table cell's class attribute
-// on: "class="l fail">FAIL fraction 99.81% &lt; 99.9%".
-std::string pairCell(const results::Pair& p) {
-  if (p.verdict == results::PairVerdict::NotExpressible) return "class=\"l nexp\">not expressible";
-  const std::string cell = verdictCell(pairVerdict(p));
-  return cell.substr(0, cell.find('>') + 1) + htmlEscape(pairSummary(p));
+// A pair's summary (report.h pairSummary) in a cell: pair, pair_class,
+// pair_text ("FAIL fraction 99.81% < 99.9%", escaped by the template).
+mu::data pairCell(const results::Pair& p) {
+  const bool nexp = p.verdict == results::PairVerdict::NotExpressible;
+  mu::data d;
+  d.set("pair", p.pair);
+  d.set("pair_class", nexp ? std::string("nexp") : verdictClass(pairVerdict(p)));
+  d.set("pair_text", nexp ? std::string("not expressible") : pairSummary(p));
+  return d;
 }
 
 // How bad a pair's verdict is: error, fail, pass, not expressible.
@@ -258,84 +235,47 @@ const results::Pair* worstPair(const results::Case& c, const std::vector<std::st
 // a 1280 px window), the count of each verdict, opening onto the
 // renderers x renderers matrix of the pairs' verdicts (row before column
 // in the run's order; a pair the case does not have is empty).
-std::string pairsCell(const results::Case& c, const RunPairs& run) {
+// None when the case has no pair ("no pairs"); else one: counts ("3 pairs:
+// 1 fail, 2 pass"), columns, rows (renderer, cells: a cell is a pairCell
+// or none).
+mu::data pairsMatrix(const results::Case& c, const RunPairs& run) {
   std::map<std::string, int> count;
   int n = 0;
   for (const std::string& id : run.ids)
     if (const results::Pair* p = c.findPair(id)) ++count[pairVerdict(*p)], ++n;
-  if (n == 0) return "<td class=\"l\">no pairs</td>";
-  std::ostringstream h;
-  h << "<td class=\"l\"><details class=\"pairs\"><summary>" << n << (n == 1 ? " pair" : " pairs") << ":";
+  mu::data out = list();
+  if (n == 0) return out;
+  std::string counts = std::to_string(n) + (n == 1 ? " pair" : " pairs") + ":";
   const char* sep = " ";
   for (const char* v : {"error", "fail", "pass", "not expressible"})
-    if (count[v]) h << sep << count[v] << " " << v, sep = ", ";
-  h << "</summary><table class=\"matrix\"><tr><th></th>";
+    if (count[v]) counts += sep + std::to_string(count[v]) + " " + v, sep = ", ";
   const std::vector<std::string>& rs = run.renderers;
-  for (size_t j = 1; j < rs.size(); ++j) h << "<th>" << htmlEscape(rs[j]) << "</th>";
-  h << "</tr>";
+  mu::data rows = list();
   for (size_t i = 0; i + 1 < rs.size(); ++i) {
-    h << "<tr><th class=\"l\">" << htmlEscape(rs[i]) << "</th>";
+    mu::data cells = list();
     for (size_t j = 1; j < rs.size(); ++j) {
       const std::string key = renderers::pairKey(rs[i], rs[j]);
-      const results::Pair* p = j > i ? c.findPair(key) : nullptr;
-      if (!p) {
-        h << "<td></td>";
-        continue;
+      mu::data cell = list();
+      if (const results::Pair* p = j > i ? c.findPair(key) : nullptr) {
+        mu::data d = pairCell(*p);
+        d.set("pair", key);
+        cell << d;
       }
-      h << "<td title=\"" << htmlEscape(key) << "\" " << pairCell(*p) << "</td>";
+      mu::data e;
+      e.set("cell", cell);
+      cells << e;
     }
-    h << "</tr>";
+    mu::data row;
+    row.set("renderer", rs[i]);
+    row.set("cells", cells);
+    rows << row;
   }
-  h << "</table></details></td>";
-  return h.str();
-}
-
-// Whether a case's render is a geometry check's: a picture of its passes
-// (render/geometry_passes.h passesPreview), not a render.
-bool isGeometryCheck(const results::Case& c, const std::string& renderer) {
-  for (const results::GeometryCheck& g : c.geometry_checks)
-    if (g.renderer == renderer) return true;
-  return false;
-}
-
-std::string geometryCheckCaption() {
-  return std::string("not a render: its geometry passes (") + kPassesPreviewLegend +
-         "), compared with the reference's passes of our loaded triangles (the geometry check below)";
-}
-
-// A case's geometry checks: per check, each metric beside the bound it is
-// held to (validate/geometry_check.h), the verdict and its reason.
-std::string geometryChecksTable(const results::Case& c) {
-  if (c.geometry_checks.empty()) return "";
-  std::ostringstream h;
-  h << "<table class=\"geometry\"><tr><th class=\"l\">geometry check</th><th>verdict</th><th>covered</th>"
-       "<th>hit/object off the silhouette (bound)</th><th>on the silhouette (bound)</th>"
-       "<th>max depth rel. error (bound; all pixels)</th><th>uv pixels</th><th>max uv error (bound; all pixels)</th>"
-       "<th>edge pixels over (bound)</th></tr>\n";
-  for (const results::GeometryCheck& g : c.geometry_checks) {
-    h << "<tr><td class=\"l\">" << htmlEscape(checkName(g)) << "</td>";
-    if (!g.metrics) {
-      const bool nx = g.verdict == results::PairVerdict::NotExpressible;
-      h << "<td class=\"" << (nx ? "nexp" : "err") << "\" colspan=\"8\">" << (nx ? "not expressible: " : "error: ")
-        << htmlEscape(g.reason.value_or("")) << "</td></tr>\n";
-      continue;
-    }
-    const results::GeometryCheckMetrics& m = *g.metrics;  // a compared check has both (results/results.h)
-    const results::GeometryCheckBounds& b = *g.bounds;
-    const double covered = double(m.covered);
-    const long long off = m.mask_disagree - m.mask_disagree_silhouette;
-    h << "<td " << verdictCell(checkVerdict(g)) << "</td><td>" << m.covered << "</td><td>" << off << " (0)</td><td>"
-      << m.mask_disagree_silhouette << " (" << static_cast<long long>(std::floor(b.max_silhouette_fraction * covered))
-      << ")</td><td>" << twoDigits(m.max_depth_rel) << " (" << twoDigits(b.max_depth_rel) << "; "
-      << twoDigits(m.max_depth_rel_all) << ")</td><td>" << m.uv_compared << "</td><td>" << twoDigits(m.max_uv) << " ("
-      << twoDigits(b.max_uv) << "; " << twoDigits(m.max_uv_all) << ")</td><td>" << m.edge_over << " ("
-      << static_cast<long long>(std::floor(b.max_edge_fraction * covered)) << ")</td></tr>\n";
-    if (g.reason)
-      h << "<tr><td class=\"l\"></td><td class=\"l fail\" colspan=\"8\">" << htmlEscape(*g.reason)
-        << "</td></tr>\n";
-  }
-  h << "</table>\n";
-  return h.str();
+  mu::data m;
+  m.set("counts", counts);
+  m.set("columns", strings(std::vector<std::string>(rs.begin() + (rs.empty() ? 0 : 1), rs.end())));
+  m.set("rows", rows);
+  out << m;
+  return out;
 }
 
 const results::ColourStats* findColourStats(const Cases& cases, const std::string& name) {
@@ -346,36 +286,44 @@ const results::ColourStats* findColourStats(const Cases& cases, const std::strin
 
 // The paper's Figure 1 claims as results.json states them (`paper_claims`,
 // judged by the compare step: validate/paper_claims.h), with the colour
-// statistics of the scenes they are judged on.
-std::string paperClaimsSection(const results::Results& results, const Cases& cases) {
-  if (!results.paper_claims) return "";  // not in this run
+// statistics of the scenes they are judged on. None when the run has none;
+// else one: claim_scenes (scene, stats: none or one of lit, chroma,
+// albedo_chroma, grey, hue), claims (claim, condition, measured, holds).
+mu::data paperClaimsSection(const results::Results& results, const Cases& cases) {
+  mu::data section = list();
+  if (!results.paper_claims) return section;  // not in this run
   const results::PaperClaims& pc = *results.paper_claims;
-  std::ostringstream h;
-  h << "<h2>The paper's Figure 1 claims, measured</h2>\n<p>On the reference renders of the "
-       "Figure 1 scenes, over lit pixels (luma &gt; 0.02), colours as sRGB-coded CIELAB: mean "
-       "chroma C*, the share of grey pixels (C* &lt; 5), and the mean hue error against the "
-       "texture colour at the same pixel (where both have C* &ge; 5). See docs/paper-claims.md.</p>\n"
-       "<table><tr><th class=\"l\">scene</th><th>lit pixels</th><th>mean C*</th><th>texture mean C*</th>"
-       "<th>grey share</th><th>hue error (deg)</th></tr>\n";
+  mu::data scenes = list();
   for (const std::string& name : pc.scenes) {
-    const results::ColourStats* st = findColourStats(cases, name);
-    h << "<tr><td class=\"l\">" << htmlEscape(name) << "</td>";
-    if (!st) {
-      h << "<td class=\"err\" colspan=\"5\">no colour statistics in results.json</td></tr>\n";
-      continue;
+    mu::data row;
+    row.set("scene", name);
+    mu::data stats = list();
+    if (const results::ColourStats* st = findColourStats(cases, name)) {
+      mu::data d;
+      d.set("lit", std::to_string(st->lit_pixels));
+      d.set("chroma", fixed(st->mean_chroma, 2));
+      d.set("albedo_chroma", fixed(st->mean_albedo_chroma, 2));
+      d.set("grey", fixed(100 * st->grey_fraction, 1));
+      d.set("hue", fixed(st->hue_error_deg, 2));
+      stats << d;
     }
-    h << "<td>" << st->lit_pixels << "</td><td>" << fixed(st->mean_chroma, 2) << "</td><td>"
-      << fixed(st->mean_albedo_chroma, 2) << "</td><td>" << fixed(100 * st->grey_fraction, 1) << "%</td><td>"
-      << fixed(st->hue_error_deg, 2) << "</td></tr>\n";
+    row.set("stats", stats);
+    scenes << row;
   }
-  h << "</table>\n<table><tr><th class=\"l\">claim (paper, section 4)</th><th class=\"l\">condition</th>"
-       "<th>measured</th><th>verdict</th></tr>\n";
-  for (const results::PaperClaim& c : pc.claims)
-    h << "<tr><td class=\"l\">" << htmlEscape(c.claim) << "</td><td class=\"l\">" << htmlEscape(c.condition)
-      << "</td><td>" << htmlEscape(c.measured) << "</td><td class=\"" << (c.holds ? "pass\">holds" : "fail\">does not hold")
-      << "</td></tr>\n";
-  h << "</table>\n";
-  return h.str();
+  mu::data claims = list();
+  for (const results::PaperClaim& c : pc.claims) {
+    mu::data row;
+    row.set("claim", c.claim);
+    row.set("condition", c.condition);
+    row.set("measured", c.measured);
+    row.set("holds", mu::data(c.holds));
+    claims << row;
+  }
+  mu::data d;
+  d.set("claim_scenes", scenes);
+  d.set("claims", claims);
+  section << d;
+  return section;
 }
 
 // The folder of an extremes or trade-off section: the one given, else the
@@ -401,11 +349,102 @@ void requireSectionFile(const fs::path& folder, const char* file, const char* wh
                              what + " -o DIR`)");
 }
 
+// A case's row of the summary: scene, verdict_class, verdict_text,
+// attribution, pair_columns (none when the run has no image pair; else
+// worst: its worst pair's cell or none, matrix: pairsMatrix), check_cells
+// (per geometry check of the run: check_class none or one, check_text).
+mu::data summaryRow(const results::Case& c, const RunPairs& run, const std::vector<std::string>& check_ids) {
+  const std::string verdict = caseVerdict(c);
+  mu::data row;
+  row.set("scene", c.scene);
+  row.set("verdict_class", verdictClass(verdict));
+  row.set("verdict_text", upperCase(verdict));
+  row.set("attribution", c.attribution);
+  mu::data pair_columns = list();
+  if (!run.ids.empty()) {
+    mu::data worst = list();
+    if (const results::Pair* w = worstPair(c, run.ids)) worst << pairCell(*w);
+    mu::data columns;
+    columns.set("worst", worst);
+    columns.set("matrix", pairsMatrix(c, run));
+    pair_columns << columns;
+  }
+  row.set("pair_columns", pair_columns);
+  mu::data check_cells = list();
+  for (const std::string& id : check_ids) {
+    const results::GeometryCheck* g = findCheck(c, id);
+    std::optional<std::string> cls;
+    std::string text;
+    if (g && g->verdict == results::PairVerdict::NotExpressible) {
+      cls = "nexp";
+      text = "not expressible";
+    } else if (g) {
+      cls = "l " + verdictClass(checkVerdict(*g));
+      text = upperCase(checkVerdict(*g));
+    }
+    mu::data cell;
+    cell.set("check_class", maybe(cls));
+    cell.set("check_text", text);
+    check_cells << cell;
+  }
+  row.set("check_cells", check_cells);
+  return row;
+}
+
+// The page's head: scene_count and the cases by verdict (pass, fail,
+// errors, not_compared), not_expressible_pairs, wall_seconds,
+// geometry_checks (none when the run has none; else one: names and the
+// checks by verdict), provenance (key, value).
+mu::data pageHead(const results::Results& r, const Cases& cases, const std::vector<std::string>& check_ids) {
+  mu::data page;
+  int pass = 0, fail = 0, nexp = 0, err = 0, nexp_pairs = 0;
+  std::map<std::string, int> checks;  // geometry checks by verdict
+  for (const results::Case* c : cases) {
+    for (const results::Pair& p : c->pairs) nexp_pairs += p.verdict == results::PairVerdict::NotExpressible;
+    for (const results::GeometryCheck& g : c->geometry_checks) ++checks[checkVerdict(g)];
+    const std::string v = caseVerdict(*c);
+    (v == "error" ? err : v == "fail" ? fail : v == "pass" ? pass : nexp)++;
+  }
+  page.set("scene_count", std::to_string(cases.size()));
+  page.set("pass", std::to_string(pass));
+  page.set("fail", std::to_string(fail));
+  page.set("errors", std::to_string(err));
+  page.set("not_compared", std::to_string(nexp));
+  page.set("not_expressible_pairs", std::to_string(nexp_pairs));
+  page.set("wall_seconds", fixed(r.wall_seconds, 1));
+  mu::data geometry = list();
+  if (!check_ids.empty()) {
+    mu::data g;
+    g.set("names", renderers::joinNames(check_ids));
+    g.set("pass", std::to_string(checks["pass"]));
+    g.set("fail", std::to_string(checks["fail"]));
+    g.set("errors", std::to_string(checks["error"]));
+    g.set("not_expressible", std::to_string(checks["not expressible"]));
+    geometry << g;
+  }
+  page.set("geometry_checks", geometry);
+  page.set("provenance", members(r.provenance, "key", "value"));
+  return page;
+}
+
+// The page: the template compiled in (report_page_template.h), its
+// {{key}}s escaped by htmlEscape (the one escaping of the report's
+// fragments too). Throws std::runtime_error when the template does not
+// parse or render.
+std::string renderPage(mu::data& page) {
+  mu::mustache tmpl{std::string(kReportPageTemplate)};
+  if (!tmpl.is_valid()) throw std::runtime_error("report template (report_page.mustache): " + tmpl.error_message());
+  tmpl.set_custom_escape(htmlEscape);
+  std::string out = tmpl.render(page);
+  if (!tmpl.error_message().empty())
+    throw std::runtime_error("report template (report_page.mustache): " + tmpl.error_message());
+  return out;
+}
+
 }  // namespace
 
 std::string pairSummary(const results::Pair& p) {
-  std::string text;
-  for (char ch : pairVerdict(p)) text += char(std::toupper(static_cast<unsigned char>(ch)));
+  std::string text = upperCase(pairVerdict(p));
   if (!p.failed.empty()) return text + " " + p.failed[0].brief;
   if (p.metrics) text += " " + fixed(p.metrics->max_unexplained_16bit, 2);
   return text;
@@ -451,210 +490,34 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
   // only): nothing to plot.
   if (!pairs.empty()) writePlot(cases, pairs, dir);
 
-  // A case: the verdict the compare step decided and stored (validation/
-  // case_verdict.h; the schema requires it of every results.json case), as
-  // the pairs' verdicts read ("not compared").
-  auto caseVerdict = [](const results::Case* c) -> std::string {
-    std::string v = validation::verdictName(*c->verdict);
-    std::replace(v.begin(), v.end(), '_', ' ');
-    return v;
-  };
-  int pass = 0, fail = 0, nexp = 0, err = 0, nexp_pairs = 0;
-  std::map<std::string, int> checks;  // geometry checks by verdict
   const std::vector<std::string> check_ids = checkIds(cases);
+  mu::data page = pageHead(r, cases, check_ids);
+  mu::data image_pairs = list();
+  if (!pairs.empty()) image_pairs << mu::data("count", std::to_string(pairs.size()));
+  page.set("image_pairs", image_pairs);
+  page.set("check_names", strings(check_ids));
+  mu::data summary = list(), case_list = list();
   for (const results::Case* c : cases) {
-    for (const results::Pair& p : c->pairs) nexp_pairs += p.verdict == results::PairVerdict::NotExpressible;
-    for (const results::GeometryCheck& g : c->geometry_checks) ++checks[checkVerdict(g)];
-    const std::string v = caseVerdict(c);
-    (v == "error" ? err : v == "fail" ? fail : v == "pass" ? pass : nexp)++;
+    summary << summaryRow(*c, run_pairs, check_ids);
+    case_list << caseSection(*c, run_renderers, dir);
   }
+  page.set("summary", summary);
   const std::string doc_href =
       relativeHref(toolkitToleranceFile().parent_path().parent_path() / kPixelClassDoc, html_dir);
-  std::ostringstream h;
-  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
-    << "<title>xval report</title>\n<style>\n"
-    << "body{font-family:sans-serif;margin:1.5em;color:#222}table{border-collapse:collapse;margin:.5em 0}"
-    << "td,th{border:1px solid #bbb;padding:2px 6px;font-size:13px;text-align:right}"
-    << "th{background:#eee}td.l,th.l{text-align:left}.pass{color:#070;font-weight:bold}"
-    << ".fail{color:#b00;font-weight:bold}.err{color:#b60;font-weight:bold}.nexp{color:#558;font-weight:bold}.warn{color:#960}"
-    << ".marked{position:relative;display:inline-block;line-height:0}.marked img{width:100%;border:0}"
-    << ".heat,.swap,.crop{image-rendering:pixelated}.mark{position:absolute;box-sizing:border-box;"
-    << "border:2px solid #f0f;pointer-events:none}.mark.worst_unexplained{border-color:#f00}"
-    << ".mark.worst_explained{border-color:#08f}.crops .mark{border-width:1px;border-color:#f0f}"
-    << ".crops p{font-size:12px;margin:.6em 0 .2em}.viewer{margin:.5em 0}.viewer img{border:1px solid #999}"
-    << ".swapbar button{margin:0 4px 4px 0}.swapbar button.on{background:#333;color:#fff}"
-    << ".case{border-top:2px solid #888;margin-top:1.5em;padding-top:.5em}"
-    << ".imgs{display:flex;flex-wrap:wrap;gap:10px}.imgs figure{margin:0}"
-    << ".imgs>figure>img{width:256px;image-rendering:pixelated;border:1px solid #999}"
-    << "figcaption{font-size:12px;text-align:center}.reason{font-size:12px;color:#444;max-width:900px}"
-    << ".imgs>figure{max-width:258px}.noimage{box-sizing:border-box;width:256px;min-height:64px;padding:4px;"
-    << "border:1px solid #b60;font-size:12px;white-space:pre-wrap;overflow-wrap:anywhere}"
-    << "td.deviates{max-width:22em}.pairname{font-weight:normal;color:#444;font-size:11px}"
-    << "details.pairs summary{cursor:pointer;white-space:nowrap}.matrix{margin:.3em 0 0}"
-    << ".matrix td,.matrix th{font-size:11px;padding:1px 3px;white-space:nowrap}"
-    << "</style></head><body>\n";
-  h << "<h1>xval cross-validation report</h1>\n";
-  h << "<p>" << cases.size() << " scenes: <span class=\"pass\">" << pass << " pass</span>, "
-    << "<span class=\"fail\">" << fail << " fail</span>, <span class=\"err\">" << err
-    << " errors</span>, <span class=\"nexp\">" << nexp << " not compared</span> (" << nexp_pairs
-    << " pairs not expressible by a renderer, not compared). Wall time " << fixed(r.wall_seconds, 1)
-    << " s. Failures are listed first. Errors are in 1/65535 of the full scale. A pair passes when its "
-       "pixels are within the tolerance on the declared fraction and no pixel that no known cause explains "
-       "differs by more than the cap on unexplained error (max_unexplained_16bit).</p>\n";
-  if (!check_ids.empty())
-    h << "<p>Geometry checks (" << htmlEscape(renderers::joinNames(check_ids))
-      << "; docs/model-files.md, \"The Blender-import check\"): <span class=\"pass\">" << checks["pass"]
-      << " pass</span>, <span class=\"fail\">" << checks["fail"] << " fail</span>, <span class=\"err\">"
-      << checks["error"] << " errors</span>, <span class=\"nexp\">" << checks["not expressible"]
-      << " not expressible</span>. Blender imports the scene's original model files itself; its hit mask, "
-         "object, depth and uv at the pixel centres are compared with the reference renderer's of our loaded "
-         "triangles, within the check's own bounds (not the image tolerances). A failing check fails its case.</p>\n";
-  h << "<table><tr><th class=\"l\">provenance</th><th class=\"l\"></th></tr>";
-  for (const auto& [key, value] : r.provenance)
-    h << "<tr><td class=\"l\">" << htmlEscape(key) << "</td><td class=\"l\">" << htmlEscape(value) << "</td></tr>";
-  h << "</table>\n";
-  h << "<h2>Summary</h2>\n<table id=\"summary\"><tr><th class=\"l\">scene</th><th class=\"l\">verdict</th>"
-       "<th class=\"l\">who deviates</th>";
-  if (!pairs.empty())
-    h << "<th class=\"l\">worst pair<br>verdict: the first criterion it fails, or its max unexplained</th><th class=\"l\">pairs<br>(" << pairs.size()
-      << "; open for the renderers x renderers matrix)</th>";
-  for (const auto& g : check_ids) h << "<th>" << htmlEscape(g) << "<br>verdict</th>";
-  h << "</tr>\n";
-  for (const results::Case* c : cases) {
-    const std::string id = htmlEscape(c->scene);
-    h << "<tr><td class=\"l\"><a href=\"#" << id << "\">" << id << "</a></td><td "
-      << verdictCell(caseVerdict(c)) << "</td><td class=\"l deviates\">" << htmlEscape(c->attribution) << "</td>";
-    if (!pairs.empty()) {
-      if (const results::Pair* w = worstPair(*c, pairs))
-        h << "<td " << pairCell(*w) << "<br><span class=\"pairname\">" << htmlEscape(w->pair) << "</span></td>";
-      else
-        h << "<td></td>";  // this case has no pair
-      h << pairsCell(*c, run_pairs);
-    }
-    for (const auto& id : check_ids) {
-      const results::GeometryCheck* g = findCheck(*c, id);
-      if (!g) h << "<td></td>";
-      else if (g->verdict == results::PairVerdict::NotExpressible) h << "<td class=\"nexp\">not expressible</td>";
-      else h << "<td " << verdictCell(checkVerdict(*g)) << "</td>";
-    }
-    h << "</tr>\n";
-  }
-  h << "</table>\n";
-  if (!pairs.empty())
-    h << "<figure><img src=\"p999.png\" alt=\"p99.9 error per scene and pair\">"
-         "<figcaption>p99.9 error per scene and pair (log scale; gnuplot)</figcaption></figure>\n";
-
-  h << "<h2>Cases</h2>\n<p>Heat maps (full resolution): largest channel difference per pixel, "
-       "<img src=\"heat_scale.png\" alt=\"scale\" style=\"width:300px;height:12px;vertical-align:middle\">"
-       " from 0 through 1 (first seventh, linear) to 4096/65535 (logarithmic); grey: not covered. Red box: "
-       "the pair's worst unexplained pixel, blue box: its worst explained one; the crops below show every "
-       "render and the heat map around them, magnified nearest-neighbour. The buttons above each case "
-       "swap its renders and heat maps in one place. Over-tolerance pixels are classified by cause:</p>\n"
-    << pixelClassLegend(doc_href);
-  for (const results::Case* cp : cases) {
-    const results::Case& c = *cp;
-    const std::string id = htmlEscape(c.scene);
-    h << "<div class=\"case\" id=\"" << id << "\"><h3>" << id << " &mdash; <span class=\""
-      << verdictCell(caseVerdict(cp)).substr(std::string("class=\"l ").size()) << "</span></h3>\n";
-    // The command is the compare step's (validate/validation/next_steps.h
-    // reproduceCommand: with the run's renderers, renderer files and
-    // tolerance file); results.json files written before it had none: no
-    // command rather than one that would not run as the case ran.
-    h << "<p>" << htmlEscape(c.attribution) << ".";
-    if (c.reproduce) h << " Reproduce: <code>" << htmlEscape(*c.reproduce) << "</code>";
-    h << "</p>\n";
-    for (const auto& [renderer, why] : c.left_out)
-      h << "<p class=\"nexp\">" << htmlEscape(renderer) << " left out: " << htmlEscape(why) << "</p>\n";
-    // The scene's warnings (scene/scene_lint.h): beside the verdict, not in it.
-    for (const results::Warning& w : c.warnings)
-      h << "<p class=\"warn\">warning: " << htmlEscape(w.subject) << ": " << htmlEscape(w.message) << " ["
-        << htmlEscape(w.code) << "]</p>\n";
-    h << "<div class=\"imgs\">";
-    for (const std::string& rid : run_renderers) {
-      const results::Render* found = c.render(rid);
-      if (!found) continue;
-      const results::Render& rr = *found;
-      const std::string renderer = htmlEscape(rid);
-      if (rr.not_expressible) {
-        h << "<figure><figcaption>" << renderer << ": <span class=\"nexp\">not expressible: "
-          << htmlEscape(*rr.not_expressible) << "</span></figcaption></figure>";
-        continue;
-      }
-      // A failed render shows its error where its image would be: no
-      // <img> of a file that is not there.
-      if (renderHasImage(rr, dir))
-        h << "<figure><img src=\"" << htmlEscape(*rr.image) << "\" alt=\"" << renderer << "\">";
-      else
-        h << "<figure><div class=\"noimage err\">"
-          << (rr.error ? "error: " + htmlEscape(*rr.error)
-                       : "no image: " + htmlEscape(rr.image.value_or("(none named)")) +
-                             " (named in results.json) is missing")
-          << "</div>";
-      h << "<figcaption>" << renderer << ", " << fixed(rr.seconds, 2) << " s";
-      if (rr.render_seconds) h << " (render " << fixed(*rr.render_seconds, 2) << " s)";
-      if (isGeometryCheck(c, rid)) h << "<br>" << htmlEscape(geometryCheckCaption());
-      h << "</figcaption></figure>";
-    }
-    h << "</div>\n" << casePixels(c, dir);
-    h << "<table><tr><th class=\"l\">pair</th><th>verdict</th><th>max unexpl. (cap)</th><th>max</th><th>p99.9</th>"
-         "<th>RMSE</th><th>PSNR dB</th><th>within tol.</th><th>tol.</th><th>masks off (silh.)</th>";
-    for (const PixelClassInfo& k : kPixelClasses) h << "<th>over tol.: " << k.name << "<br>count (max)</th>";
-    h << "</tr>\n";
-    for (const results::Pair& p : c.pairs) {
-      h << "<tr><td class=\"l\">" << htmlEscape(p.pair) << "</td>";
-      if (p.verdict == results::PairVerdict::NotExpressible) {
-        h << "<td class=\"nexp\" colspan=\"" << 9 + kPixelClassCount << "\">not expressible, not compared: "
-          << htmlEscape(p.not_expressible.value_or("")) << "</td></tr>\n";
-        continue;
-      }
-      if (!p.metrics) {
-        h << "<td class=\"err\" colspan=\"" << 9 + kPixelClassCount << "\">" << htmlEscape(p.error.value_or("error"))
-          << "</td></tr>\n";
-        continue;
-      }
-      const results::PairMetrics& m = *p.metrics;
-      h << "<td " << verdictCell(pairVerdict(p)) << "</td><td>" << fixed(m.max_unexplained_16bit, 2) << " ("
-        << fixed(m.tolerance.max_unexplained_16bit, 0) << ")</td><td>" << fixed(m.max_abs_16bit, 2) << "</td><td>"
-        << fixed(m.p999_abs_16bit, 2) << "</td><td>" << fixed(m.rmse_16bit, 3) << "</td><td>"
-        << (m.psnr_db ? fixed(*m.psnr_db, 1) : std::string("inf")) << "</td><td>" << fixed(100.0 * m.fraction_within, 3)
-        << "%</td><td>" << significant(m.tolerance.max_abs_16bit) << " on " << significant(100.0 * m.tolerance.fraction)
-        << "%</td><td>" << m.mask_disagree << " (" << m.mask_disagree_explained << ")</td>";
-      for (const PixelClassInfo& k : kPixelClasses) {
-        const long long* count = ofClass(m.over_tolerance, k.key);
-        const std::optional<double>* max = ofClass(m.over_tolerance_max_16bit, k.key);
-        h << "<td>" << (count ? std::to_string(*count) : std::string("n/a"));
-        if (max && count && *count > 0) h << " (" << fixed(*max, 1) << ")";
-        h << "</td>";
-      }
-      h << "</tr>\n";
-    }
-    h << "</table>\n";
-    // Every metric of the table (image/metric_table.h), a column each.
-    h << pairMetricsTable(c.pairs);
-    h << geometryChecksTable(c);
-    // Why each failing pair fails: every criterion, with its numbers.
-    for (const results::Pair& p : c.pairs)
-      if (!p.failed.empty())
-        h << "<p class=\"reason\"><b>" << htmlEscape(p.pair) << " fails:</b> " << htmlEscape(failedText(p.failed))
-          << "</p>\n";
-    for (const results::Pair& p : c.pairs)
-      if (p.metrics && !p.metrics->tolerance_reason.empty())
-        h << "<p class=\"reason\"><b>" << htmlEscape(p.pair) << " tolerance:</b> "
-          << htmlEscape(p.metrics->tolerance_reason) << "</p>\n";
-    h << "</div>\n";
-  }
+  page.set("pixel_class_legend", pixelClassLegend(doc_href));
+  std::vector<std::string> class_names;
+  for (const PixelClassInfo& k : kPixelClasses) class_names.push_back(k.name);
+  page.set("pixel_classes", strings(class_names));
+  page.set("metric_columns", metricColumns());
+  page.set("cases", case_list);
   // After the cases: the paper's claims, the extremes and the trade-off.
-  h << paperClaimsSection(r, cases);
-  if (extremes_dir) h << extremes::reportSection(*extremes_dir, relativeHref(*extremes_dir, html_dir));
-  if (tradeoff_dir) h << tradeoffReportSection(*tradeoff_dir, relativeHref(*tradeoff_dir, html_dir));
-  h << "<script>\n" << swapScript() << "window.addEventListener('load', function () {\n"
-       "  var bad = [], imgs = document.images;\n"
-       "  for (var i = 0; i < imgs.length; i++)\n"
-       "    if (!imgs[i].complete || imgs[i].naturalWidth === 0) bad.push(imgs[i].getAttribute('src'));\n"
-       "  document.title = bad.length ? 'xval report: BROKEN ' + bad.join(' ')\n"
-       "                              : 'xval report: ' + imgs.length + ' images OK';\n"
-       "});\n</script>\n</body></html>\n";
-  writeFileAtomically(html, h.str());
+  page.set("paper_claims", paperClaimsSection(r, cases));
+  page.set("extremes", extremes_dir ? extremes::reportSection(*extremes_dir, relativeHref(*extremes_dir, html_dir))
+                                    : std::string());
+  page.set("tradeoff", tradeoff_dir ? tradeoffReportSection(*tradeoff_dir, relativeHref(*tradeoff_dir, html_dir))
+                                    : std::string());
+  page.set("swap_script", swapScript());
+  writeFileAtomically(html, renderPage(page));
 }
 
 }  // namespace xval

@@ -20,8 +20,12 @@
 // geometry_checks, validate/validation/geometry_checks.h) are a column of
 // the summary, a count beside it, and a table of metrics against bounds in
 // the case; a failing or erring check makes the case's verdict FAIL or
-// ERROR. Every string from the results is
-// HTML-escaped. The page checks on load that every image decoded and says
+// ERROR. The page is validate/report_page.mustache (compiled into the
+// binary), rendered with kainjow::mustache over a data view of the results'
+// types (report_data.h, report_case.h, report_metrics.h); every string from
+// the results is HTML-escaped, by the template or, in the fragments it
+// inserts as they are (report_pixels.h, the extremes and trade-off
+// sections), by the code that wrote them. The page checks on load that every image decoded and says
 // so in its title ("xval report: N images OK" or "xval report: BROKEN
 // ..."), which the report's test reads.
 #pragma once

@@ -2,42 +2,49 @@
 #include "validate/report_metrics.h"
 
 #include <algorithm>
-#include <sstream>
 
 #include "image/metric_table.h"
 #include "validate/common/number_text.h"
-#include "validate/report.h"
 
 namespace xval {
 
-std::string pairMetricsTable(const std::vector<results::Pair>& pairs) {
-  std::ostringstream h;
-  bool any = false;
-  for (const results::Pair& p : pairs) any = any || p.metrics.has_value();
-  if (!any) return "";
-  h << "<table class=\"metrics\"><tr><th class=\"l\">pair</th>";
-  for (const MetricInfo& m : metricTable())
-    h << "<th title=\"" << (m.better == Better::Lower ? "lower is better" : "higher is better") << "\">"
-      << htmlEscape(m.label) << (*m.unit ? "<br>(" + htmlEscape(m.unit) + ")" : std::string())
-      << (m.better == Better::Lower ? " &darr;" : " &uarr;") << "</th>";
-  h << "</tr>\n";
+namespace mu = kainjow::mustache;
+
+mu::data metricColumns() {
+  mu::data columns(mu::data::type::list);
+  for (const MetricInfo& m : metricTable()) {
+    mu::data c;
+    c.set("label", m.label);
+    mu::data unit(mu::data::type::list);
+    if (*m.unit) unit << mu::data(m.unit);
+    c.set("unit", unit);
+    c.set("lower", mu::data(m.better == Better::Lower));
+    columns << c;
+  }
+  return columns;
+}
+
+mu::data pairMetricsTable(const std::vector<results::Pair>& pairs) {
+  mu::data table(mu::data::type::list), rows(mu::data::type::list);
   for (const results::Pair& p : pairs) {
     if (!p.metrics) continue;
-    h << "<tr><td class=\"l\">" << htmlEscape(p.pair) << "</td>";
     const results::Named<std::optional<double>> none;
     const auto& values = p.metrics->values ? *p.metrics->values : none;
+    mu::data cells(mu::data::type::list);
     for (const MetricInfo& m : metricTable()) {
       const auto v = std::find_if(values.begin(), values.end(), [&](const auto& e) { return e.first == m.id; });
-      h << "<td>";
-      if (v == values.end()) h << "n/a";
-      else if (!v->second) h << "not finite";
-      else h << significant(*v->second);
-      h << "</td>";
+      cells << mu::data(v == values.end() ? std::string("n/a") : !v->second ? "not finite" : significant(*v->second));
     }
-    h << "</tr>\n";
+    mu::data row;
+    row.set("pair", p.pair);
+    row.set("values", cells);
+    rows << row;
   }
-  h << "</table>\n";
-  return h.str();
+  if (rows.is_empty_list()) return table;
+  mu::data t;
+  t.set("metric_rows", rows);
+  table << t;
+  return table;
 }
 
 }  // namespace xval
