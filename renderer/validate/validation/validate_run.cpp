@@ -97,7 +97,10 @@ int runNew(const ValidateRequest& r) {
   sectionsJson(r.sections, r.output);  // a folder with no results fails before any render
   const std::vector<std::string> inputs = r.inputs.empty() ? std::vector<std::string>{toolkitSceneSet().string()}
                                                            : r.inputs;
-  Plan plan = makePlan(inputs, r.tolerances, r.output, r.timeout_seconds, r.budget, runRenderers(r.renderers));
+  const bool crosscheck = !r.crosscheck_renderer.empty();
+  Plan plan = makePlan(inputs, r.tolerances, r.output, r.timeout_seconds, r.budget,
+                       crosscheck ? crosscheckRenderers(r.crosscheck_renderer) : runRenderers(r.renderers),
+                       crosscheck ? NotMeantFor::Refuse : NotMeantFor::LeaveOut);
   fs::create_directories(plan.dir);
   const FolderLock folder_lock(plan.dir, FolderLock::Mode::Exclusive, "xval validate");
   // The folder's other cases are kept (validate/validation/plan_update.h).
