@@ -11,6 +11,7 @@
 #include "files/atomic_write.h"
 #include "image/pixel_classes.h"
 #include "renderers/registry.h"
+#include "validate/tolerances.h"
 #include "validate/validation/plan.h"
 #include "validate/validation/validate_run.h"
 
@@ -29,12 +30,6 @@ const results::Case& crosscheckedCase(const results::Results& r, const Crosschec
   for (const results::Case& c : r.cases)
     if (normal(c.file) == normal(request.scene_file)) return c;
   throw std::runtime_error(results_file.string() + ": cases: no case of " + request.scene_file);
-}
-
-std::string provenanceOf(const results::Results& r, const std::string& key) {
-  for (const auto& [k, v] : r.provenance)
-    if (k == key) return v;
-  return "";
 }
 
 double secondsOf(const results::Case& c, const std::string& id) {
@@ -115,6 +110,12 @@ int crosscheck(const CrosscheckRequest& request, results::Results& results) {
   std::error_code ec;
   if (!fs::remove(dir / "metrics.json", ec) && ec)
     throw std::runtime_error((dir / "metrics.json").string() + ": cannot remove the previous run's: " + ec.message());
+  // The file validate's plan finds by the same rule (validate/tolerances.h),
+  // said first as before any render, and recorded in metrics.json with how
+  // it was found.
+  const ToleranceFile tol_file = findToleranceFile(request.tolerances, {request.scene_file});
+  std::printf("tolerances: %s\n", tol_file.describe().c_str());
+  std::fflush(stdout);
   ValidateRequest v;
   v.inputs = {request.scene_file};
   v.output = request.dir;
@@ -135,7 +136,6 @@ int crosscheck(const CrosscheckRequest& request, results::Results& results) {
   results.cases = {crosscheckedCase(all, request, results_file)};
   results::Case& c = results.cases.front();
   c.verdict.reset();  // a crosscheck's verdict is its pair's (JUnit: no "case" testcase)
-  std::printf("tolerances: %s\n", provenanceOf(all, "tolerances").c_str());
 
   results::Json metrics = {{"scene", c.scene}, {"renderer", id}};
   int status = 2;
@@ -156,7 +156,7 @@ int crosscheck(const CrosscheckRequest& request, results::Results& results) {
                                                                   : p->not_expressible.value_or("");
     status = report(c, p->verdict, id, why, [&] { printPair(c, *p, ref, id); });
   }
-  metrics["tolerance_file"] = provenanceOf(all, "tolerances");
+  metrics["tolerance_file"] = {{"path", tol_file.path.string()}, {"found_by", tol_file.found_by}};
   metrics["seconds"] = {{ref, secondsOf(c, ref)}, {id, secondsOf(c, id)}};
   writeFileAtomically(dir / "metrics.json", metrics.dump(2) + "\n");
   return status;
