@@ -14,8 +14,10 @@
 // two renders.
 //
 // Unlike validate, any renderer of the registry but the reference may be
-// named (blender-native, a golden set, a renderer file's), and a scene
-// whose `renderers` field does not name it is an error, not left out.
+// named (blender-native, a golden set, a renderer file's), a scene whose
+// `renderers` field does not name it is an error, not left out, and an
+// earlier run in DIR (another crosscheck's, of any scene or renderer) is
+// replaced, its cases not kept (validate/validation/plan_update.h).
 //
 // A renderer of geometry passes (Renderer::geometry_passes: blender-import)
 // is validate's geometry check (validate/geometry_check.h, its own bounds),

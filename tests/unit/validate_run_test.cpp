@@ -122,3 +122,25 @@ TEST(ValidateRun, ACrosscheckRefusesASceneNotMeantForItsRenderer) {
   r.renderers = {"reference", "povray"};
   EXPECT_EQ(v::run(r), 0);  // validate: left out, said on stderr
 }
+
+// A crosscheck's folder holds that one crosscheck: an earlier run there
+// with other renderers is replaced (validate would refuse to keep its
+// cases: plan_update.h).
+TEST(ValidateRun, ACrosscheckReplacesAnEarlierRunInItsFolder) {
+  const fs::path d = test::freshTempDir("validate_run");
+  v::ValidateRequest r;
+  r.inputs = {kScene};
+  r.output = (d / "out").string();
+  r.renderers = {"reference", "golden"};  // rendered: its case could be kept
+  r.export_cache = false;
+  ASSERT_EQ(v::run(r), 0);
+  r.renderers.clear();
+  r.plan_only = true;
+  r.inputs = {XVAL_REFERENCE_DIR "/scenes/light_spot.json"};  // another scene
+  r.crosscheck_renderer = "povray";
+  EXPECT_EQ(v::run(r), 0) << errorOf(r);
+  const v::Plan plan = v::readPlan(d / "out" / "jobs.json");
+  EXPECT_EQ(plan.renderers, (std::vector<std::string>{"reference", "povray"}));
+  ASSERT_EQ(plan.scenes.size(), 1u);  // fig1_phong_behind's case not kept
+  EXPECT_EQ(plan.scenes[0].name, "light_spot");
+}

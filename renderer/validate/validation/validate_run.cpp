@@ -103,8 +103,10 @@ int runNew(const ValidateRequest& r) {
                        crosscheck ? NotMeantFor::Refuse : NotMeantFor::LeaveOut);
   fs::create_directories(plan.dir);
   const FolderLock folder_lock(plan.dir, FolderLock::Mode::Exclusive, "xval validate");
-  // The folder's other cases are kept (validate/validation/plan_update.h).
-  if (const std::optional<Plan> earlier = earlierPlan(plan)) {
+  // The folder's other cases are kept (validate/validation/plan_update.h);
+  // a crosscheck's folder holds that one crosscheck: an earlier run there,
+  // of any scene and renderers, is replaced, as a crosscheck's files were.
+  if (const std::optional<Plan> earlier = crosscheck ? std::nullopt : earlierPlan(plan)) {
     const PlanUpdate update = keepEarlierScenes(plan, *earlier);
     for (const std::string& d : update.dropped) std::fprintf(stderr, "xval validate: earlier case %s\n", d.c_str());
     if (update.kept)
