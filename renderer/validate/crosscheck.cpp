@@ -151,9 +151,11 @@ int crosscheck(const CrosscheckRequest& request, results::Results& results) {
     if (!p) throw std::runtime_error(results_file.string() + ": " + c.scene + ": no pair " + ref + "-" + id);
     metrics.update(results::toJson(*p));
     const results::Render* r = c.render(id);
-    const std::string why = p->error                              ? *p->error
-                            : r && r->not_expressible             ? *r->not_expressible
-                                                                  : p->not_expressible.value_or("");
+    // The renderer's own refusal, as the render record has it (the pair's
+    // says which renderer refused).
+    const std::string why = p->error                  ? *p->error
+                            : r && r->not_expressible ? *r->not_expressible
+                                                      : p->not_expressible.value_or("");
     status = report(c, p->verdict, id, why, [&] { printPair(c, *p, ref, id); });
   }
   metrics["tolerance_file"] = {{"path", tol_file.path.string()}, {"found_by", tol_file.found_by}};
