@@ -1,11 +1,12 @@
 // xval crosscheck SCENE.json --renderer povray -o DIR [--tolerances FILE] [--junit FILE]: argument
 // parsing; the work is validation::crosscheck (validate/crosscheck.h).
 //
-// Renders the scene with the reference renderer and with an external
-// renderer, compares them with the declared tolerance, and writes
-// DIR/reference.exr, DIR/<renderer>.exr, DIR/diff.exr, DIR/metrics.json;
-// with --junit, the verdict as JUnit XML (validate/junit_report.h), an
-// error as <error>.
+// Validate of one scene with the reference renderer and one other
+// (validate/crosscheck.h): compares them with the declared tolerance, and
+// writes validate's files to DIR (the renders in DIR/<scene>/,
+// results.json, report.html) and DIR/metrics.json, the pair's verdict and
+// metrics; with --junit, the verdict as JUnit XML (validate/junit_report.h),
+// an error as <error>.
 // Exit 0: within tolerance, or not expressible (the renderer declares it
 // cannot express the scene; metrics.json says why); 1: outside; 2: an error
 // (bad scene, renderer missing, failing or timing out: never a pass).
@@ -33,7 +34,8 @@ void addCrosscheckCommand(CLI::App& app, std::function<int()>& run) {
   CLI::App* cmd = app.add_subcommand(
       "crosscheck",
       "Render a scene with the reference renderer and an external one, and compare them with "
-      "the tolerance declared for that case.\nExit 0 within tolerance or when the renderer declares it cannot "
+      "the tolerance declared for that case: `xval validate` of that scene with those two renderers (its "
+      "files in the output folder), and metrics.json, the pair's verdict and metrics.\nExit 0 within tolerance or when the renderer declares it cannot "
       "express the scene (NOT EXPRESSIBLE, the reason in metrics.json), 1 outside, 2 on an error "
       "(a missing, failing or hanging renderer is an error, never a pass).");
   cmd->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
@@ -56,23 +58,20 @@ void addCrosscheckCommand(CLI::App& app, std::function<int()>& run) {
   addBudgetOptions(cmd, args->budget);
   cmd->callback([args, renderer_files, &run]() {
     run = [args, renderer_files]() -> int {
-      const validation::CrosscheckRequest request{args->scene, args->renderer, args->dir, args->tolerances,
-                                                  args->timeout, args->budget.get()};
+      const validation::CrosscheckRequest request{args->scene,   args->renderer,      args->dir,
+                                                  args->tolerances, args->timeout,    args->budget.get(),
+                                                  *renderer_files};
       int status = 2;
-      std::string error;
+      results::Results results;
       try {
-        renderers::registerRendererFiles(*renderer_files);
-        if (renderers::registry().at(args->renderer).reference)
-          throw std::runtime_error("--renderer " + args->renderer + ": the reference renderer is compared with itself");
-        status = validation::crosscheck(request);
+        status = validation::crosscheck(request, results);
       } catch (const std::exception& e) {
-        error = e.what();
+        results = validation::crosscheckError(request, e.what());
         std::fprintf(stderr, "xval crosscheck: error: %s\n", e.what());
       }
       if (!args->junit.empty()) {
         try {
-          writeFileAtomically(args->junit,
-                              junitXml(validation::crosscheckAsResults(request, error), "xval crosscheck"));
+          writeFileAtomically(args->junit, junitXml(results, "xval crosscheck"));
         } catch (const std::exception& e) {
           std::fprintf(stderr, "xval crosscheck: error: --junit %s: %s\n", args->junit.c_str(), e.what());
           return 2;

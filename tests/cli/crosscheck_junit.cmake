@@ -4,6 +4,8 @@
 #   - it writes that render darkened by 2%: exit 1, a <failure> naming the
 #     tolerance;
 #   - it fails (exit 9): exit 2, an <error> naming what happened.
+# Each is validate's run of that one scene and pair (validate/crosscheck.h):
+# results.json holds the case, and metrics.json is its pair as written there.
 # Arguments: XVAL, SCENE, XSD, WORK.
 include(${CMAKE_CURRENT_LIST_DIR}/cli_run.cmake)
 require_defined(crosscheck_junit.cmake XVAL SCENE XSD WORK)
@@ -41,11 +43,25 @@ endfunction()
 povray_stand_in("/bin/cp '${WORK}/ref.exr' \"$out\"")
 crosscheck_case(pass 0)
 expect_in("${xml}" "tests=\"1\" failures=\"0\" errors=\"0\" skipped=\"0\"")
+function(expect_validate_run name verdict)
+  file(READ ${WORK}/${name}/results.json _r)
+  get_json(_renderers "${_r}" renderers)
+  expect_eq("${name}: results.json renderers" "${_renderers}" "[ \"reference\", \"povray\" ]")
+  get_json(_pair "${_r}" cases 0 pairs 0 pair)
+  expect_eq("${name}: results.json pair" "${_pair}" "reference-povray")
+  get_json(_v "${_r}" cases 0 pairs 0 verdict)
+  expect_eq("${name}: results.json verdict" "${_v}" "${verdict}")
+  file(READ ${WORK}/${name}/metrics.json _m)
+  get_json(_v "${_m}" verdict)
+  expect_eq("${name}: metrics.json verdict" "${_v}" "${verdict}")
+endfunction()
+expect_validate_run(pass pass)
 
 povray_stand_in("'${_oiiotool}' '${WORK}/ref.exr' --mulc 0.98,0.98,0.98,1 -d float -o \"$out.exr\" && /bin/mv \"$out.exr\" \"$out\"")
 crosscheck_case(fail 1)
 expect_in("${xml}" "tests=\"1\" failures=\"1\" errors=\"0\"")
 expect_in("${xml}" "<failure message=\"outside the tolerance: ")
+expect_validate_run(fail fail)
 
 povray_stand_in("echo 'stand-in trouble' >&2; exit 9")
 crosscheck_case(error 2)

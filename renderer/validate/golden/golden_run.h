@@ -15,6 +15,12 @@
 // tolerance, has no stored image, was rendered with other settings, or its
 // file changed since it was stored; each failure prints the command that
 // accepts the fresh render as the new golden image.
+//
+// check is not `validate --renderers reference,golden` (validation::run):
+// validate has no float path for the reference, does not refuse a stored
+// image made with other settings, makes a changed scene a render error
+// (exit 2) rather than a FAIL, and needs an output folder; the reasons are
+// in docs/golden-images.md ("check beside validate").
 #pragma once
 
 #include <filesystem>

@@ -512,6 +512,9 @@ Results resultsFromJson(const Json& j, const std::string& where) {
 
 Pair pairFromJson(const Json& j, const std::string& where) { return readPair(j, where); }
 
+Json toJson(const Pair& p) { return pairJson(p); }
+Json toJson(const GeometryCheck& g) { return checkJson(g); }
+
 Results readResults(const std::filesystem::path& file) {
   const Json j = parseOrderedJsonText(readJsonFile(file, "results file"), file.string());
   checkResultsShape(j, file.string());

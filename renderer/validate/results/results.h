@@ -189,7 +189,7 @@ struct Case {
   std::string attribution;
   std::vector<std::string> deviating;
   // Every results.json case has one; a crosscheck's single case
-  // (validation::crosscheckAsResults) has none.
+  // (validation::crosscheck: its verdict is the pair's) has none.
   std::optional<validation::CaseVerdict> verdict;
   bool pass = false;
   Json rest = Json::object();
@@ -228,6 +228,9 @@ Pair pairFromJson(const Json& j, const std::string& where);
 // step writes them, then each object's `rest`), and the file (strings that
 // are no UTF-8 written with U+FFFD, atomically).
 Json toJson(const Results& r);
+// One pair, one geometry check, as toJson writes each (crosscheck's metrics.json).
+Json toJson(const Pair& p);
+Json toJson(const GeometryCheck& g);
 void writeResults(const std::filesystem::path& file, const Results& r);
 
 }  // namespace xval::results

@@ -95,7 +95,7 @@ std::vector<std::string> readRunRenderers(const FieldReader& rd, const J& j) {
     throw std::runtime_error(rd.file + ": renderers: " + v.dump() + ": expected a non-empty array of renderer ids");
   std::vector<std::string> ordered;
   try {
-    ordered = runRenderers(names);
+    ordered = planRenderers(names);
   } catch (const std::exception& e) {
     throw std::runtime_error(rd.file + ": renderers: " + e.what());
   }
@@ -312,6 +312,19 @@ std::vector<std::string> runRenderers(const std::vector<std::string>& names) {
   return out;
 }
 
+std::vector<std::string> crosscheckRenderers(const std::string& renderer) {
+  const std::string golden = renderers::goldenAlias(renderer);
+  const renderers::Renderer& r = renderers::registry().at(golden.empty() ? renderer : golden);
+  if (r.reference)
+    throw std::runtime_error("--renderer " + renderer + ": the reference renderer is compared with itself");
+  return {renderers::registry().reference().id, r.id};
+}
+
+std::vector<std::string> planRenderers(const std::vector<std::string>& names) {
+  if (names.size() == 2 && names[0] == renderers::registry().reference().id) return crosscheckRenderers(names[1]);
+  return runRenderers(names);
+}
+
 std::vector<size_t> sceneJobs(const Plan& plan, size_t k) {
   std::vector<size_t> out;
   for (const RenderJob& job : plan.jobs)
@@ -331,7 +344,7 @@ void removeVerdict(const Plan& plan) {
 
 Plan makePlan(const std::vector<std::string>& inputs, const std::string& tolerances,
               const fs::path& dir, double timeout_seconds, const Budget& budget,
-              const std::vector<std::string>& run_renderers) {
+              const std::vector<std::string>& run_renderers, NotMeantFor not_meant_for) {
   Plan plan;
   plan.dir = fs::absolute(dir).lexically_normal();
   if (!plan.dir.has_filename()) plan.dir = plan.dir.parent_path();  // "out/" -> "out"
@@ -344,7 +357,7 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
   std::fprintf(stderr, "xval validate: tolerances: %s\n", tol_file.describe().c_str());
   plan.timeout_seconds = timeout_seconds;
   plan.budget = budget;
-  plan.renderers = runRenderers(run_renderers);
+  plan.renderers = planRenderers(run_renderers);
   plan.renderer_files = rendererFiles(plan.renderers);
   std::map<std::string, std::string> seen;  // scene name -> file
   // Every invalid scene is reported, not only the first: a folder of
@@ -356,6 +369,10 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
     try {
       scene = loadScene(f, plan.budget);
       checkSceneName(scene.name, f.string());
+      if (not_meant_for == NotMeantFor::Refuse)
+        for (const LeftOut& l : leftOut(scene, plan.renderers))
+          throw std::runtime_error(f.string() + ": renderers: the scene is meant for " +
+                                   renderers::joinNames(scene.renderers) + " only, not " + l.renderer);
       checkCaseFolder(plan.dir / scene.name, f);
       printSceneWarnings("xval validate", scene);  // recorded by the compare step (results.json)
       auto [it, fresh] = seen.emplace(scene.name, f.string());

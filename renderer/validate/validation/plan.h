@@ -126,6 +126,22 @@ bool runsWhenNamed(const std::string& id);
 // twice, or fewer than two.
 std::vector<std::string> runRenderers(const std::vector<std::string>& names);
 
+// A crosscheck's renderers (validate/crosscheck.h): the reference and
+// `renderer`, any renderer of the registry but the reference (a golden set
+// also spelled golden:NAME; renderers validate leaves out, such as
+// blender-native, too). Throws std::runtime_error for an unknown id
+// (listing them) or the reference itself.
+std::vector<std::string> crosscheckRenderers(const std::string& renderer);
+
+// A plan's renderers as given: runRenderers' of them, or a crosscheck's
+// pair (crosscheckRenderers); throws as runRenderers does for any other.
+std::vector<std::string> planRenderers(const std::vector<std::string>& names);
+
+// What a plan does with a renderer a scene is not meant for (its
+// `renderers` field): validate leaves it out of that case (recorded with
+// the reason); a crosscheck, whose one renderer it is, refuses the scene.
+enum class NotMeantFor { LeaveOut, Refuse };
+
 // The jobs of plan.scenes[k], as indices into plan.jobs (adjacent).
 std::vector<size_t> sceneJobs(const Plan& plan, size_t k);
 
@@ -143,12 +159,14 @@ void removeVerdict(const Plan& plan);
 // Scene files from files and folders (scene/scene_set.h: a folder's *.json,
 // sorted, less those that are not scenes, each said on stderr), loaded
 // and checked (scene names unique and usable as folder names), one job per
-// renderer of `renderers` (runRenderers) the scene is meant for; the others
-// are its left_out, each said on stderr. Throws std::runtime_error /
-// SceneError naming the file and field.
+// renderer of `renderers` (planRenderers) the scene is meant for; the others
+// are its left_out, each said on stderr (with NotMeantFor::Refuse, an error:
+// "FILE: renderers: the scene is meant for A and B only, not C"). Throws
+// std::runtime_error / SceneError naming the file and field.
 Plan makePlan(const std::vector<std::string>& inputs, const std::string& tolerances,
               const std::filesystem::path& dir, double timeout_seconds,
-              const Budget& budget = Budget{}, const std::vector<std::string>& renderers = jobRenderers());
+              const Budget& budget = Budget{}, const std::vector<std::string>& renderers = jobRenderers(),
+              NotMeantFor not_meant_for = NotMeantFor::LeaveOut);
 void writePlan(const Plan& plan);  // to planFile(plan.dir), atomically
 // Throws std::runtime_error naming the file, the field and what was expected.
 // The plan's renderer files are added to the process's registry (those not

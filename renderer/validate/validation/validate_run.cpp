@@ -97,11 +97,16 @@ int runNew(const ValidateRequest& r) {
   sectionsJson(r.sections, r.output);  // a folder with no results fails before any render
   const std::vector<std::string> inputs = r.inputs.empty() ? std::vector<std::string>{toolkitSceneSet().string()}
                                                            : r.inputs;
-  Plan plan = makePlan(inputs, r.tolerances, r.output, r.timeout_seconds, r.budget, runRenderers(r.renderers));
+  const bool crosscheck = !r.crosscheck_renderer.empty();
+  Plan plan = makePlan(inputs, r.tolerances, r.output, r.timeout_seconds, r.budget,
+                       crosscheck ? crosscheckRenderers(r.crosscheck_renderer) : runRenderers(r.renderers),
+                       crosscheck ? NotMeantFor::Refuse : NotMeantFor::LeaveOut);
   fs::create_directories(plan.dir);
   const FolderLock folder_lock(plan.dir, FolderLock::Mode::Exclusive, "xval validate");
-  // The folder's other cases are kept (validate/validation/plan_update.h).
-  if (const std::optional<Plan> earlier = earlierPlan(plan)) {
+  // The folder's other cases are kept (validate/validation/plan_update.h);
+  // a crosscheck's folder holds that one crosscheck: an earlier run there,
+  // of any scene and renderers, is replaced, as a crosscheck's files were.
+  if (const std::optional<Plan> earlier = crosscheck ? std::nullopt : earlierPlan(plan)) {
     const PlanUpdate update = keepEarlierScenes(plan, *earlier);
     for (const std::string& d : update.dropped) std::fprintf(stderr, "xval validate: earlier case %s\n", d.c_str());
     if (update.kept)

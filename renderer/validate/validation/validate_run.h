@@ -27,6 +27,11 @@ struct ValidateRequest {
   std::vector<std::string> renderers;  // as given to --renderers (runRenderers); empty: jobRenderers()
   double timeout_seconds = kDefaultToolTimeoutSeconds;
   Budget budget;
+  // A crosscheck's run (validate/crosscheck.h): the reference and this one
+  // renderer (crosscheckRenderers, plan.h), in place of `renderers`; a
+  // scene not meant for it is an error, not left out (NotMeantFor::Refuse);
+  // an earlier run in the folder is replaced, its cases not kept.
+  std::string crosscheck_renderer;
   bool resume = false;     // keep the earlier run's finished jobs (jobsToRun)
   bool plan_only = false;  // write the plan, print the jobs to run, render nothing
 
