@@ -18,12 +18,12 @@
 #include "render/renderer.h"
 #include "renderers/job_export.h"
 #include "renderers/registry.h"
-#include "scene/scene_lint.h"
+#include "lint/scene_lint.h"
 #include "scene/json_reader.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 #include "validate/tolerances.h"
 #include "validate/geometry_check.h"
-#include "validate/validation/geometry_checks.h"
+#include "validate/results/geometry_checks.h"
 #include "render/geometry_passes.h"
 
 namespace xval::validation {
@@ -169,7 +169,7 @@ nlohmann::json crosscheckCase(const CrosscheckRequest& request, const std::strin
   }
   const renderers::Renderer* r = renderers::registry().find(request.renderer);
   if (r && r->geometry_passes) {
-    // A geometry check (validate/validation/geometry_checks.h), as validate
+    // A geometry check (validate/results/geometry_checks.h), as validate
     // records it: no image pair.
     J g;
     if (!problem.empty()) g = geometryCheckError(request.renderer, reference, problem);

@@ -25,7 +25,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/export_common.h"
-#include "scene/scene_budget.h"
+#include "scene_file/scene_budget.h"
 #include "validate/results/results.h"
 
 namespace xval::validation {
@@ -57,7 +57,7 @@ int crosscheck(const CrosscheckRequest& request);
 // the scene file's stem when the scene could not be loaded. A renderer of
 // geometry passes (blender-import) gives no pair but the case's
 // geometry_checks record, as validate writes it
-// (validate/validation/geometry_checks.h).
+// (validate/results/geometry_checks.h).
 results::Results crosscheckAsResults(const CrosscheckRequest& request, const std::string& error);
 
 }  // namespace xval::validation

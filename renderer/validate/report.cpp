@@ -26,15 +26,15 @@
 #include "render/geometry_passes.h"
 #include "renderers/registry.h"
 #include "scene/json_reader.h"
-#include "scene/scene_loader.h"
-#include "validate/common/number_text.h"
+#include "scene_file/scene_loader.h"
+#include "text/number_text.h"
 #include "validate/extremes/report_section.h"
 #include "validate/report_pixels.h"
 #include "validate/results/results.h"
 #include "validate/tolerances.h"
 #include "validate/tradeoff/report_section.h"
-#include "validate/validation/case_verdict.h"
-#include "validate/validation/geometry_checks.h"
+#include "validate/results/case_verdict.h"
+#include "validate/results/geometry_checks.h"
 
 namespace xval {
 
@@ -120,7 +120,7 @@ RunPairs runPairs(const Cases& cases, const std::vector<std::string>& renderers)
   return out;
 }
 
-// A case's geometry checks (validate/validation/geometry_checks.h) as
+// A case's geometry checks (validate/results/geometry_checks.h) as
 // "verdict" with a space for the underscore, as the pairs' verdicts read.
 std::string checkVerdict(const results::GeometryCheck& g) { return verdictWords(g.verdict); }
 
@@ -565,7 +565,7 @@ void writeReport(const std::filesystem::path& results_json, const std::filesyste
     h << "</p>\n";
     for (const auto& [renderer, why] : c.left_out)
       h << "<p class=\"nexp\">" << htmlEscape(renderer) << " left out: " << htmlEscape(why) << "</p>\n";
-    // The scene's warnings (scene/scene_lint.h): beside the verdict, not in it.
+    // The scene's warnings (lint/scene_lint.h): beside the verdict, not in it.
     for (const results::Warning& w : c.warnings)
       h << "<p class=\"warn\">warning: " << htmlEscape(w.subject) << ": " << htmlEscape(w.message) << " ["
         << htmlEscape(w.code) << "]</p>\n";

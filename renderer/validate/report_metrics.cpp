@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "image/metric_table.h"
-#include "validate/common/number_text.h"
+#include "text/number_text.h"
 #include "validate/report.h"
 
 namespace xval {
