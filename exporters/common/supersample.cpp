@@ -5,8 +5,8 @@
 #include <string>
 
 #include "common/export_common.h"
-#include "scene/scene_budget.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_budget.h"
+#include "scene_file/scene_loader.h"
 #include "shading/models.h"
 
 namespace xval {

@@ -31,7 +31,7 @@ struct SubpixelGrid {
 // its value when spp is not a perfect square in [1, kMaxSpp] (the scene
 // format's limit), or when the n W x n H image would exceed what an image
 // read back may be (kMaxImageSide a side, kMaxImagePixels in all:
-// image/image.h) or the default memory budget (scene/scene_budget.h,
+// image/image.h) or the default memory budget (scene_file/scene_budget.h,
 // kBytesPerPixel per pixel of that image): checked before anything is
 // exported or allocated.
 SubpixelGrid subpixelGrid(const Scene& scene);

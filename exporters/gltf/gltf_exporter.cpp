@@ -21,7 +21,7 @@
 #include "common/export_common.h"
 #include "files/atomic_write.h"
 #include "gltf/shading_constants.h"
-#include "scene/scene_writer.h"
+#include "scene_file/scene_writer.h"
 #include "shading/flat_normals.h"
 #include "shading/shader.h"
 #include "shading/surface_colour.h"

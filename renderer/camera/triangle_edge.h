@@ -44,15 +44,14 @@
 
 #include <glm/glm.hpp>
 
+#include "image/channel_sentinels.h"
+
 #include <algorithm>
 #include <cmath>
 
 #include "camera/camera.h"
 
 namespace xval {
-
-// "Not near a triangle edge": no sample hit, or a degenerate triangle.
-inline constexpr float kFarFromTriangleEdge = 3.0e38f;
 
 // p's position in the image plane, in pixels (up to a shift that cancels);
 // depth: p's distance along the camera's forward axis.

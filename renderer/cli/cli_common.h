@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene_budget.h"
+#include "scene_file/scene_budget.h"
 #include "validate/common/frame_timing.h"  // Spread, spread()
 
 namespace xval::cli {
@@ -53,7 +53,7 @@ inline const CLI::Validator FinitePositive(
     },
     "POSITIVE", "FinitePositive");
 // --max-triangles, --max-samples, --max-memory-mb and --allow-large: the
-// total budget of a render (scene/scene_budget.h), checked when the scene
+// total budget of a render (scene_file/scene_budget.h), checked when the scene
 // is loaded and whenever a command changes its size, spp or tessellation.
 struct BudgetOptions {
   Budget budget;

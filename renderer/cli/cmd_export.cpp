@@ -6,7 +6,7 @@
 #include "cli/commands.h"
 #include "gltf/gltf_exporter.h"
 #include "povray/pov_exporter.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 
 namespace xval::cli {
 

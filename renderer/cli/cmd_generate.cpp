@@ -6,8 +6,8 @@
 #include "cli/commands.h"
 #include "files/atomic_write.h"
 #include "render/renderer.h"
-#include "scene/scene_generator.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_generator.h"
+#include "scene_file/scene_loader.h"
 
 namespace xval::cli {
 

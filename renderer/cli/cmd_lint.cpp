@@ -1,4 +1,4 @@
-// xval lint SCENE.json...: the scenes' warnings (scene/scene_lint.h), with
+// xval lint SCENE.json...: the scenes' warnings (lint/scene_lint.h), with
 // nothing rendered. Warnings are advice: the exit status is 0 whatever
 // they say (2 for a scene that does not load).
 #include <cstdio>
@@ -6,8 +6,8 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "scene/scene_lint.h"
-#include "scene/scene_loader.h"
+#include "lint/scene_lint.h"
+#include "scene_file/scene_loader.h"
 
 namespace xval::cli {
 

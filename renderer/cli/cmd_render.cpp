@@ -9,8 +9,8 @@
 #include "geometry/scene_meshes.h"
 #include "render/renderer.h"
 #include "renderers/registry.h"
-#include "scene/scene_lint.h"
-#include "scene/scene_loader.h"
+#include "lint/scene_lint.h"
+#include "scene_file/scene_loader.h"
 
 namespace xval::cli {
 

@@ -10,7 +10,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "image/metric_table.h"
-#include "scene/scene_loader.h"  // kMaxImageSide
+#include "scene_file/scene_loader.h"  // kMaxImageSide
 #include "validate/tradeoff/run.h"
 
 namespace xval::cli {

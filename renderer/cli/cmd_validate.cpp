@@ -36,7 +36,7 @@
 // The Blender-import check (blender-import: Blender imports the scene's
 // original model files itself) runs by default as each case's geometry
 // check: its passes against the reference's, with their own bounds, not an
-// image pair (validate/validation/geometry_checks.h); a scene it cannot
+// image pair (validate/results/geometry_checks.h); a scene it cannot
 // take (a built-in shape, an OFF file) records it as not expressible, with
 // the reason. --renderers leaves it out unless it names blender-import.
 //
@@ -47,7 +47,7 @@
 // is decided on the other pairs (validate/validation/compare_step.h). A
 // scene meant for the reference renderer takes `golden` (its stored
 // images) in its place. A case that compares nothing (no pair, no geometry
-// check) is NOT COMPARED, never a pass (validate/validation/case_verdict.h).
+// check) is NOT COMPARED, never a pass (validate/results/case_verdict.h).
 //
 // Exit 0: every case compared something and every compared pair is within
 // tolerance; 1: some case outside, or a case that compared nothing; 2: an

@@ -1,5 +1,5 @@
 // What the gl renderer (gl/gl_frame.h) and the shader renderer
-// (gl/shader_frame.h) both do on an OpenGL 4.5 context: compile a stage,
+// (shader_file/shader_frame.h) both do on an OpenGL 4.5 context: compile a stage,
 // upload a texture as RGBA32F, make the RGBA32F + DEPTH32F targets, read
 // the frame back top row first, and finish a supersampled frame.
 // All calls on the thread whose context is current; errors throw

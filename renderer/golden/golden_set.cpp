@@ -15,9 +15,8 @@
 #include "files/sha256.h"
 #include "image/image_header.h"
 #include "image/pixel_classes.h"
-#include "renderers/renderer.h"
 #include "scene/json_reader.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 
 namespace xval::golden {
 
@@ -172,13 +171,13 @@ void writeManifest(const fs::path& folder, const Manifest& m) {
   writeFileAtomically(folder / "manifest.json", j.dump(2) + "\n");
 }
 
-std::string goldenProblem(const fs::path& folder, const Manifest& m, const fs::path& scene_file) {
+std::string goldenProblem(const fs::path& folder, const Manifest& m, const fs::path& scene_file,
+                          const std::string& update_command) {
   const std::string stem = scene_file.stem().string();
   const fs::path manifest = folder / "manifest.json";
   const auto it = m.entries.find(stem);
   if (it == m.entries.end())
-    return "no golden image of " + stem + " in " + manifest.string() + " (" +
-           renderers::goldenUpdateCommand(scene_file, m.renderer) + " stores one)";
+    return "no golden image of " + stem + " in " + manifest.string() + " (" + update_command + " stores one)";
   const Entry& e = it->second;
   const std::string now = sha256File(scene_file);
   if (now != e.scene_sha256)

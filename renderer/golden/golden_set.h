@@ -99,7 +99,10 @@ void writeManifest(const std::filesystem::path& folder, const Manifest& m);
 // Why the stored image of `scene_file` in `folder` cannot stand for it
 // ("" when it can): no manifest entry, the image missing, or the scene file
 // changed since it was stored (both hashes quoted) or the image file did.
+// `update_command` is the command that stores one (quoted when there is no
+// entry; renderers::goldenUpdateCommand builds it from the registry, which
+// sits above this module).
 std::string goldenProblem(const std::filesystem::path& folder, const Manifest& m,
-                          const std::filesystem::path& scene_file);
+                          const std::filesystem::path& scene_file, const std::string& update_command);
 
 }  // namespace xval::golden

@@ -14,8 +14,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "camera/triangle_edge.h"
-#include "texture/texel_edge.h"
+#include "image/channel_sentinels.h"
 
 namespace xval {
 
@@ -170,7 +169,7 @@ void writePreviewPng(const Image& img, const std::filesystem::path& file, int ma
 void requireDecodable(const std::filesystem::path& file, int width, int height);
 // Images read back (from the external renderers, by `xval compare` and
 // `xval validate`): at most the largest image xval renders (kMaxImageSide,
-// kMaxImagePixels: scene/scene_loader.h) and this many channels (xval's EXRs
+// kMaxImagePixels: scene/scene_limits.h) and this many channels (xval's EXRs
 // have up to 20, a Blender multilayer EXR a few dozen); checked on the header
 // before any pixel is allocated (image/image_header.h).
 inline constexpr int kMaxReadImageChannels = 64;

@@ -8,7 +8,7 @@
 #include "files/atomic_write.h"
 #include "image/image.h"
 #include "image/image_header.h"
-#include "scene/scene_loader.h"
+#include "scene/scene_limits.h"
 
 namespace xval {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "validate/common/number_text.h"
+#include "text/number_text.h"
 
 namespace xval {
 

@@ -21,8 +21,8 @@
 #include "process/run_process.h"
 #include "renderers/renderer.h"
 #include "scene/json_reader.h"
-#include "scene/scene_loader.h"
-#include "scene/scene_set.h"
+#include "scene_file/scene_loader.h"
+#include "scene_file/scene_set.h"
 #include "validate/common/provenance.h"
 #include "validate/tolerances.h"
 
@@ -182,7 +182,7 @@ std::vector<SetFile> setFiles(const fs::path& set) {
   const fs::path scenes = root.lexical / "scenes";
   if (!fs::is_directory(scenes))
     throw PackError(set.string() + ": has no scenes/ folder (expected a scene set: SET/scenes/*.json)");
-  // The scenes folder's files as validate finds them (scene/scene_set.h);
+  // The scenes folder's files as validate finds them (scene_file/scene_set.h);
   // each is checked to lie in the set before it is read.
   std::vector<fs::path> jsons;
   try {

@@ -25,7 +25,7 @@
 #include "render/accel.h"
 #include "render/precision_probe.h"
 #include "render/raster.h"
-#include "scene/precision_limits.h"
+#include "scene_file/precision_limits.h"
 #include "shading/batch_shader.h"
 #include "shading/flat_normals.h"
 #include "shading/shader.h"

@@ -17,7 +17,7 @@
 #include "files/sha256.h"
 #include "process/run_process.h"
 #include "scene/json_reader.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 
 namespace xval::renderers {
 

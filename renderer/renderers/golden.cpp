@@ -54,7 +54,8 @@ Renderer goldenRendererOf(const std::string& made_by, const std::string& made_by
     const auto t0 = std::chrono::steady_clock::now();
     const std::filesystem::path folder = golden::goldenFolder(scene.source_file, made_by);
     const golden::Manifest m = golden::readManifest(folder, made_by);
-    if (const std::string problem = golden::goldenProblem(folder, m, scene.source_file); !problem.empty())
+    if (const std::string problem = golden::goldenProblem(folder, m, scene.source_file,
+                                                            goldenUpdateCommand(scene.source_file, made_by)); !problem.empty())
       throw std::runtime_error("golden images of " + made_by + ": " + problem);
     const golden::Entry& e = m.entries.at(scene.source_file.stem().string());
     Image image = readImage(folder / e.image, scene.camera.width, scene.camera.height);

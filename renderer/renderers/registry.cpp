@@ -9,7 +9,7 @@
 
 #include "files/scratch_folder.h"
 #include "process/run_process.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 
 // The built-in renderers, in registry order (the order of validate's jobs,
 // of the pairs and of every listing). Adding a renderer: its file
@@ -32,7 +32,7 @@ bool validId(const std::string& id) {
 }
 
 // A scene file's `tolerances` may name every renderer compared against the
-// reference (scene/scene_loader.h); installed before main() runs.
+// reference (scene_file/scene_loader.h); installed before main() runs.
 const bool kToleranceKeysInstalled =
     (setToleranceRenderers([] { return registry().comparedIds(); }),
      setSceneRenderers([] { return registry().ids(); }), true);

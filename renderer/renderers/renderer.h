@@ -28,7 +28,7 @@ namespace xval::renderers {
 inline constexpr const char* kXvalVersion = "xval 0.1.0";
 
 // What a render needs besides the scene. The scene was checked against the
-// command's budget when it was loaded (scene/scene_budget.h).
+// command's budget when it was loaded (scene_file/scene_budget.h).
 struct RenderRequest {
   // An outside tool's export, log and raw output go here: a fresh folder
   // the caller made (files/output_folder.h makeFreshFolder), or any folder
@@ -133,7 +133,7 @@ struct Renderer {
   // of the same scene (validate/geometry_check.h), not with any render; it
   // is in no image pair and in no attribution. validate runs it by default
   // (Registry::validateIds) as the case's geometry check
-  // (validate/validation/geometry_checks.h).
+  // (validate/results/geometry_checks.h).
   bool geometry_passes = false;
   // The command printing the outside tool's version, e.g. {"povray",
   // "--version"}; its first word must be on PATH for the renderer to be

@@ -15,8 +15,8 @@
 #include "renderers/export_cache.h"
 #include "renderers/registry.h"
 #include "scene/json_reader.h"
-#include "scene/scene_loader.h"
-#include "scene/scene_writer.h"
+#include "scene_file/scene_loader.h"
+#include "scene_file/scene_writer.h"
 #include "shader_file/shader_definition.h"
 
 namespace xval::renderers {

@@ -4,7 +4,7 @@
 // and its uniforms bound when the file is read (shader_file/
 // shader_definition.h), compiled to GLSL 4.50 by glslangValidator and
 // spirv-cross (shader_file/shader_compile.h, once per process), drawn on
-// the gl renderer's context (gl/shader_frame.h).
+// the gl renderer's context (shader_file/shader_frame.h).
 //
 // The draw runs in a process of its own, xval-shader-draw beside the xval
 // executable (shader_file/shader_draw_main.cpp), with the render's
@@ -34,11 +34,11 @@
 #include "files/atomic_write.h"
 #include "files/scratch_folder.h"
 #include "gl/egl_context.h"
-#include "gl/shader_frame.h"
+#include "shader_file/shader_frame.h"
 #include "process/run_process.h"
 #include "renderers/renderer.h"
 #include "renderers/renderer_file.h"
-#include "scene/scene_writer.h"
+#include "scene_file/scene_writer.h"
 #include "shader_file/shader_compile.h"
 #include "shader_file/shader_image_bytes.h"
 

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "scene/json_reader.h"
-#include "scene/scene_writer.h"
+#include "scene_file/scene_writer.h"
 
 namespace xval::shaderfile {
 
@@ -108,7 +108,7 @@ const Quantity* findQuantity(const std::string& name) {
 }
 
 namespace {
-// The material's model as the scene file writes it (scene/scene_writer.h).
+// The material's model as the scene file writes it (scene_file/scene_writer.h).
 nlohmann::json modelJson(const Material& material) {
   Scene one;
   one.material = material;

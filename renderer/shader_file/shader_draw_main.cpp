@@ -8,17 +8,17 @@
 // another renderer of the calling process (a context made before a fork
 // does not work in the child). It reads the definition (xval-shader/1) and
 // the scene (as xval wrote it: paths absolute, its budget already
-// checked), draws with the compiled GLSL (gl/shader_frame.h) and writes
+// checked), draws with the compiled GLSL (shader_file/shader_frame.h) and writes
 // OUT: width and height (two native ints), then the RGBA and raw floats.
 // Exit 0 when OUT is written; 1 with the reason on stderr otherwise.
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
-#include "gl/shader_frame.h"
+#include "shader_file/shader_frame.h"
 #include "scene/json_reader.h"
-#include "scene/scene_budget.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_budget.h"
+#include "scene_file/scene_loader.h"
 #include "shader_file/shader_image_bytes.h"
 
 namespace {

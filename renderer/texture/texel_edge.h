@@ -17,13 +17,12 @@
 
 #include <glm/glm.hpp>
 
+#include "image/channel_sentinels.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace xval {
-
-// "Not near a texel edge": no nearest-filtered texture, or no sample.
-inline constexpr float kFarFromTexelEdge = 3.0e38f;
 
 // uv: the hit's uv (any whole offset: only frac counts); corners: the
 // triangle's three uvs; w, h: the texture's size in texels.

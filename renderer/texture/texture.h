@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "image/image_header.h"
 #include "scene/scene.h"
 
 namespace xval {
@@ -90,6 +91,11 @@ Texture loadTextureImage(const std::filesystem::path& file);
 
 // The texture a material uses (brick generated in code, or its image).
 Texture loadTexture(const TextureSpec& spec);
+
+// The texture limits of scene/scene_limits.h (kMaxTextureSide,
+// kMaxTexturePixels) as image/image_header.h checks them: the loader checks
+// a texture's header with them, and loadTextureImage again.
+ImageLimits textureLimits();
 
 // Writes an RGB PNG holding exactly the texture's code values: 8-bit for
 // textures with 8-bit codes, 16-bit for those with 16-bit codes (others

@@ -16,13 +16,15 @@
 #include "files/atomic_write.h"
 #include "image/image.h"
 #include "image/image_header.h"
-#include "scene/scene_loader.h"
+#include "scene/scene_limits.h"
 #include "texture/brick.h"
 #include "texture/texture.h"
 
 namespace xval {
 
 namespace OIIO = OIIO_NAMESPACE;
+
+ImageLimits textureLimits() { return {kMaxTextureSide, kMaxTexturePixels, "texels"}; }
 
 namespace {
 // The file name OpenImageIO chooses an embedded image's reader by: from

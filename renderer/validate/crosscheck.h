@@ -34,7 +34,7 @@
 #include <vector>
 
 #include "common/export_common.h"
-#include "scene/scene_budget.h"
+#include "scene_file/scene_budget.h"
 #include "validate/results/results.h"
 
 namespace xval::validation {

@@ -76,7 +76,7 @@ nlohmann::json toJson(const GeometryMetrics& m, const GeometryTolerance& tol);
 // The counts and maxima alone (covered, mask_disagree, ..., edge_over), and
 // the bounds alone (max_silhouette_fraction, max_depth_rel, max_uv,
 // max_edge_fraction, reason): what toJson and validate's results.json
-// (validate/validation/geometry_checks.h) both say.
+// (validate/results/geometry_checks.h) both say.
 nlohmann::json metricsJson(const GeometryMetrics& m);
 nlohmann::json boundsJson(const GeometryTolerance& tol);
 

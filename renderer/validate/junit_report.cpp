@@ -5,9 +5,9 @@
 
 #include "image/metric_table.h"
 #include "image/pair_failure.h"
-#include "validate/validation/case_verdict.h"
-#include "validate/common/number_text.h"
-#include "validate/validation/geometry_checks.h"
+#include "validate/results/case_verdict.h"
+#include "text/number_text.h"
+#include "validate/results/geometry_checks.h"
 
 namespace xval {
 
@@ -127,7 +127,7 @@ std::string junitXml(const results::Results& results, const std::string& suite_n
           break;
       }
     }
-    // The case's geometry checks (validate/validation/geometry_checks.h):
+    // The case's geometry checks (validate/results/geometry_checks.h):
     // one testcase each, "reference-blender-import (geometry)".
     for (const results::GeometryCheck& g : c.geometry_checks) {
       const std::string reason = g.reason.value_or("");

@@ -16,7 +16,7 @@
 // <properties>, before its outcome: <property name="metric.ID"
 // value="%.6g">, in table order ("not finite" for null).
 // Then one <testcase> per geometry check of the case (results.json
-// cases[].geometry_checks, validate/validation/geometry_checks.h), name =
+// cases[].geometry_checks, validate/results/geometry_checks.h), name =
 // "reference-blender-import (geometry)": pass empty, fail <failure> with
 // the metrics against the bounds, error <error>, not expressible <skipped>.
 // Then, when the case's verdict (cases[].verdict, validate/validation/

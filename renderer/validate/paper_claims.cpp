@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <string>
 
-#include "validate/common/number_text.h"
+#include "text/number_text.h"
 
 namespace xval {
 

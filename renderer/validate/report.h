@@ -17,7 +17,7 @@
 // (p999.png, drawn by gnuplot through process/run_process.h; none when the
 // run has no image pair) and the heat
 // map's scale (heat_scale.png). A case's geometry checks (results.json
-// geometry_checks, validate/validation/geometry_checks.h) are a column of
+// geometry_checks, validate/results/geometry_checks.h) are a column of
 // the summary, a count beside it, and a table of metrics against bounds in
 // the case; a failing or erring check makes the case's verdict FAIL or
 // ERROR. The page is validate/report_page.mustache (compiled into the

@@ -9,7 +9,7 @@
 #include "image/pair_failure.h"
 #include "image/pixel_classes.h"
 #include "render/geometry_passes.h"
-#include "validate/common/number_text.h"
+#include "text/number_text.h"
 #include "validate/report.h"
 #include "validate/report_data.h"
 #include "validate/report_metrics.h"
@@ -196,7 +196,7 @@ mu::data caseSection(const results::Case& c, const std::vector<std::string>& run
   // command rather than one that would not run as the case ran.
   d.set("reproduce", maybe(c.reproduce));
   d.set("left_out", members(c.left_out, "renderer", "why"));
-  // The scene's warnings (scene/scene_lint.h): beside the verdict, not in it.
+  // The scene's warnings (lint/scene_lint.h): beside the verdict, not in it.
   mu::data warnings = list();
   for (const results::Warning& w : c.warnings) {
     mu::data l;

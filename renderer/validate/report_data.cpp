@@ -5,8 +5,8 @@
 #include <cctype>
 
 #include "validate/report_pixels.h"
-#include "validate/validation/case_verdict.h"
-#include "validate/validation/geometry_checks.h"
+#include "validate/results/case_verdict.h"
+#include "validate/results/geometry_checks.h"
 
 namespace xval::page {
 

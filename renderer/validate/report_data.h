@@ -34,7 +34,7 @@ kainjow::mustache::data members(const results::Named<std::string>& named, const 
 // the pairs' verdicts read ("not compared").
 std::string caseVerdict(const results::Case& c);
 
-// A geometry check (validate/validation/geometry_checks.h): its name
+// A geometry check (validate/results/geometry_checks.h): its name
 // ("reference-blender-import (geometry)") and its verdict as the pairs'
 // verdicts read.
 std::string checkName(const results::GeometryCheck& g);

@@ -4,7 +4,7 @@
 #include <algorithm>
 
 #include "image/metric_table.h"
-#include "validate/common/number_text.h"
+#include "text/number_text.h"
 
 namespace xval {
 

@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "image/pixel_classes.h"
-#include "validate/common/number_text.h"
+#include "text/number_text.h"
 #include "validate/report.h"
 
 namespace xval {

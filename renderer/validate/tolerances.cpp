@@ -12,7 +12,7 @@
 #include <stdexcept>
 
 #include "scene/json_reader.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 
 #ifndef XVAL_TOOLKIT_TOLERANCES
 #error "XVAL_TOOLKIT_TOLERANCES (the toolkit's reference/tolerances.json) is set by renderer/CMakeLists.txt"

@@ -26,7 +26,7 @@
 #include "image/heat_map.h"
 #include "image/image.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 
 namespace {
 

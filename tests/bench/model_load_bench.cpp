@@ -42,7 +42,7 @@
 #include "geometry/model_file.h"
 #include "render/accel.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 
 namespace {
 

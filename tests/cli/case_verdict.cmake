@@ -1,4 +1,4 @@
-# A case's verdict is decided once (validate/validation/case_verdict.h) and
+# A case's verdict is decided once (validate/results/case_verdict.h) and
 # every view of it agrees (issue #30, point 1):
 #   1. a case where nothing was compared (the scene's `renderers` field,
 #      ["reference", "gl", "blender-import"], leaves out every renderer of

@@ -32,7 +32,7 @@ expect("${_manifest}" "\"scene_file\": \"../../scenes/tiny.json\".*\"settings_sh
 run_xval(0 _o golden check ${WORK}/set/scenes)
 expect("${_o}" "pass .*tiny.json \\(double\\).*1 of 1 scenes match" "golden check")
 # A file of another xval format beside the scenes is skipped and said, as
-# validate skips it (one rule: scene/scene_set.h), not loaded as a scene.
+# validate skips it (one rule: scene_file/scene_set.h), not loaded as a scene.
 file(WRITE ${WORK}/set/scenes/spec.json "{\"format\": \"xval-generate/1\"}")
 run_xval(0 _o golden check ${WORK}/set/scenes)
 expect("${_o}" "xval golden: skipping [^\n]*spec.json: a file of format \"xval-generate/1\", not a scene" "golden check of a folder with a spec")

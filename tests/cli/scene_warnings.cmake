@@ -1,4 +1,4 @@
-# Scene warnings (scene/scene_lint.h, docs/scene-format.md "Warnings") are
+# Scene warnings (lint/scene_lint.h, docs/scene-format.md "Warnings") are
 # said and recorded, never a verdict:
 #   - `xval validate` of a scene with a point light inside its sphere (and
 #     a directional light that lights it) prints the warning once on

@@ -37,7 +37,7 @@
 
 #include "geometry/model_file.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 
 namespace fs = std::filesystem;
 

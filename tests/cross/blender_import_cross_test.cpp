@@ -21,7 +21,7 @@
 #include "blender/model_import.h"
 #include "geometry/model_file.h"
 #include "render/geometry_passes.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 #include "support/temp_files.h"
 #include "validate/geometry_check.h"
 #include "validate/junit_report.h"

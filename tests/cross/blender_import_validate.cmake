@@ -1,5 +1,5 @@
 # `xval validate` runs the Blender-import check as a case's geometry check
-# (renderer/validate/validation/geometry_checks.h), recorded in results.json
+# (renderer/validate/results/geometry_checks.h), recorded in results.json
 # (cases[].geometry_checks), report.html and the JUnit file:
 #   MODE pass      a scene of model files (mesh_wuson_ply) with renderers
 #                  reference,blender-import: exit 0, a passing check with

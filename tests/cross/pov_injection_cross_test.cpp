@@ -11,7 +11,7 @@
 #include "blender/blender_render.h"
 #include "povray/pov_render.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 #include "texture/brick.h"
 #include "support/temp_files.h"
 

@@ -21,7 +21,7 @@
 
 #include "scene/json_reader.h"
 #include "validate/junit_report.h"
-#include "validate/results_shape.h"
+#include "validate/results/results_shape.h"
 
 namespace {
 

@@ -13,8 +13,8 @@
 #include <string>
 
 #include "fuzz_common.h"
-#include "scene/scene_loader.h"
-#include "scene/scene_writer.h"
+#include "scene_file/scene_loader.h"
+#include "scene_file/scene_writer.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::filesystem::path file = xval::fuzz::emptyDir() / "fuzz.json";

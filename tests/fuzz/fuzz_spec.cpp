@@ -10,8 +10,8 @@
 #include <string>
 
 #include "fuzz_common.h"
-#include "scene/scene_generator.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_generator.h"
+#include "scene_file/scene_loader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::filesystem::path spec = xval::fuzz::emptyDir() / "spec.json";

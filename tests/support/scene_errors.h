@@ -8,7 +8,7 @@
 #include <string>
 
 #include "scene/json_reader.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 
 namespace xval::test {
 

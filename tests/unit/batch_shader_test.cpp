@@ -12,7 +12,7 @@
 
 #include "geometry/mesh.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 #include "shading/batch_shader.h"
 #include "texture/texture.h"
 #include "support/random_hits.h"

@@ -1,10 +1,10 @@
-// A case's verdict (validate/validation/case_verdict.h): decided on what
+// A case's verdict (validate/results/case_verdict.h): decided on what
 // the case compared; a case that compared nothing is never a pass.
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 
-#include "validate/validation/case_verdict.h"
+#include "validate/results/case_verdict.h"
 
 using namespace xval::validation;
 

@@ -14,7 +14,7 @@
 #include "geometry/front_faces.h"
 #include "geometry/scene_meshes.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 #include "support/temp_files.h"
 
 using namespace xval;

@@ -23,8 +23,8 @@
 #include <stdlib.h>
 
 #include "renderers/registry.h"
-#include "scene/scene_generator.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_generator.h"
+#include "scene_file/scene_loader.h"
 
 namespace xval {
 namespace {

@@ -10,7 +10,7 @@
 
 #include "files/atomic_write.h"
 #include "renderers/export_cache.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 #include "validate/validation/plan.h"
 
 namespace fs = std::filesystem;

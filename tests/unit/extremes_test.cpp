@@ -21,7 +21,7 @@
 
 #include "geometry/mesh.h"
 #include "render/accel.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 #include "shading/lights.h"
 #include "shading/models.h"
 #include "shading/shader.h"

@@ -6,7 +6,7 @@
 
 #include "geometry/front_faces.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 
 using namespace xval;
 

@@ -15,7 +15,7 @@
 #include "geometry/model_file.h"
 #include "render/geometry_passes.h"
 #include "renderers/registry.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 #include "validate/geometry_check.h"
 
 using namespace xval;

@@ -1,4 +1,4 @@
-// validate's geometry checks (validate/validation/geometry_checks.h): the
+// validate's geometry checks (validate/results/geometry_checks.h): the
 // record each verdict gives, which records let a case pass, validate's
 // default renderers (the geometry check among them), and the JUnit
 // testcase of each verdict.
@@ -11,7 +11,7 @@
 #include "renderers/registry.h"
 #include "support/temp_files.h"
 #include "validate/junit_report.h"
-#include "validate/validation/geometry_checks.h"
+#include "validate/results/geometry_checks.h"
 #include "validate/validation/plan.h"
 
 using namespace xval;

@@ -14,7 +14,7 @@
 #include "renderers/export_cache.h"
 #include "renderers/job_export.h"
 #include "renderers/renderer_file.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 
 namespace fs = std::filesystem;
 using namespace xval;

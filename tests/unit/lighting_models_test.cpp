@@ -16,9 +16,9 @@
 
 #include "gl/glsl_models.h"
 #include "gltf/shading_constants.h"
-#include "scene/precision_limits.h"
-#include "scene/scene_loader.h"
-#include "scene/scene_writer.h"
+#include "scene_file/precision_limits.h"
+#include "scene_file/scene_loader.h"
+#include "scene_file/scene_writer.h"
 #include "shading/model/registry.h"
 #include "support/shading_cases.h"
 

@@ -10,7 +10,7 @@
 #include "image/compare.h"
 #include "image/pair_failure.h"
 #include "validate/report.h"
-#include "validate/results_shape.h"
+#include "validate/results/results_shape.h"
 
 namespace xval {
 namespace {

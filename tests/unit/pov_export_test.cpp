@@ -13,7 +13,7 @@
 #include "blender/blender_render.h"
 #include "povray/pov_render.h"
 #include "povray/pov_shading.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 #include "texture/brick.h"
 
 using namespace xval;

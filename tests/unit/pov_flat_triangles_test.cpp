@@ -10,7 +10,7 @@
 
 #include "povray/flat_triangles.h"
 #include "povray/pov_exporter.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 #include "support/temp_files.h"
 
 using namespace xval;

@@ -1,5 +1,5 @@
 // Every number of a scene, set to values at and beyond the edges of float
-// and double (scene/precision_limits.h): either the loader or the renderer
+// and double (scene_file/precision_limits.h): either the loader or the renderer
 // refuses it with a message naming the field, or both precisions render it
 // without a NaN, and the float image agrees with the double one. A silent
 // wrong image (the float path's inf x 0 = NaN, saturated to black where
@@ -16,8 +16,8 @@
 #include <nlohmann/json.hpp>
 
 #include "render/renderer.h"
-#include "scene/precision_limits.h"
-#include "scene/scene_loader.h"
+#include "scene_file/precision_limits.h"
+#include "scene_file/scene_loader.h"
 
 using namespace xval;
 using nlohmann::json;

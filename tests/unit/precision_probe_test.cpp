@@ -20,7 +20,7 @@
 #include "image/pixel_classes.h"
 #include "render/precision_probe.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 
 namespace xval {
 namespace {

@@ -5,7 +5,7 @@
 #include <set>
 
 #include "renderers/registry.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 
 using namespace xval;
 using namespace xval::renderers;

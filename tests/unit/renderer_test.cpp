@@ -13,7 +13,7 @@
 #include "render/accel.h"
 #include "render/ray_triangle.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 
 using namespace xval;
 

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "support/temp_files.h"
-#include "scene/scene_generator.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_generator.h"
+#include "scene_file/scene_loader.h"
 #include "texture/brick.h"
 #include "texture/texture.h"
 

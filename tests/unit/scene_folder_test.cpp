@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "scene/scene_generator.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_generator.h"
+#include "scene_file/scene_loader.h"
 #include "support/temp_files.h"
 
 using namespace xval;

@@ -1,8 +1,8 @@
-// Scene warnings (scene/scene_lint.h): each rule warns on the scene it
+// Scene warnings (lint/scene_lint.h): each rule warns on the scene it
 // describes and stays silent on its near neighbours.
 #include <gtest/gtest.h>
 
-#include "scene/scene_lint.h"
+#include "lint/scene_lint.h"
 
 using namespace xval;
 

@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "scene/scene_loader.h"
-#include "scene/scene_writer.h"
-#include "scene/scene_generator.h"
+#include "scene_file/scene_loader.h"
+#include "scene_file/scene_writer.h"
+#include "scene_file/scene_generator.h"
 #include "texture/brick.h"
 #include "texture/texture.h"
 

@@ -16,8 +16,8 @@
 #include "geometry/scene_meshes.h"
 #include "geometry/transform.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
-#include "scene/scene_writer.h"
+#include "scene_file/scene_loader.h"
+#include "scene_file/scene_writer.h"
 #include "support/scene_errors.h"
 #include "support/temp_files.h"
 

@@ -1,13 +1,13 @@
 // A generator spec's "sample": a seeded subset of the axes' combinations
-// (scene/scene_generator.h).
+// (scene_file/scene_generator.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <set>
 #include <string>
 
-#include "scene/scene_generator.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_generator.h"
+#include "scene_file/scene_loader.h"
 
 namespace xval {
 namespace {

@@ -1,4 +1,4 @@
-// scene/scene_set.h: the scene files of a command's inputs, one rule for
+// scene_file/scene_set.h: the scene files of a command's inputs, one rule for
 // validate, golden and pack.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "scene/scene_set.h"
+#include "scene_file/scene_set.h"
 #include "support/temp_files.h"
 
 using namespace xval;

@@ -19,7 +19,7 @@
 #include "povray/pov_exporter.h"
 #include "povray/pov_render.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 
 using namespace xval;
 namespace fs = std::filesystem;

@@ -25,7 +25,7 @@
 #include "gltf/gltf_exporter.h"
 #include "povray/pov_exporter.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 
 using namespace xval;
 namespace fs = std::filesystem;

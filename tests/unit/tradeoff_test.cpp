@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 #include "validate/tradeoff/sweep.h"
 
 using namespace xval;

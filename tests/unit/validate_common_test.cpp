@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "validate/common/number_text.h"
+#include "text/number_text.h"
 #include "validate/common/provenance.h"
 #include "support/temp_files.h"
 

@@ -33,7 +33,7 @@ enum class Unit {
   Colour,    // linear RGB per unit light colour, multiplying the light's colour
 };
 
-// A number's part in the precision bound (scene/precision_limits.cpp): the
+// A number's part in the precision bound (scene_file/precision_limits.cpp): the
 // model coefficients K sum the |value| of Coefficient and Specular numbers;
 // Specular is also the ks of the specular weight; the Forsyth colours F sum
 // the colours.

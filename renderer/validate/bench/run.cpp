@@ -18,7 +18,7 @@
 #include "process/run_process.h"
 #include "render/renderer.h"
 #include "renderers/registry.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 #include "validate/common/frame_timing.h"
 
 namespace xval::bench {

@@ -47,7 +47,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene_budget.h"
+#include "scene_file/scene_budget.h"
 
 namespace xval::bench {
 

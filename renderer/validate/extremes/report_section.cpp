@@ -22,7 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include "renderers/registry.h"
-#include "validate/common/number_text.h"
+#include "text/number_text.h"
 #include "validate/report.h"
 
 namespace xval::extremes {

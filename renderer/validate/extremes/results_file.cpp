@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "renderers/registry.h"
-#include "validate/common/number_text.h"
+#include "text/number_text.h"
 #include "validate/extremes/run.h"
 #include "validate/extremes/report_section.h"
 

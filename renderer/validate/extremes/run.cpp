@@ -12,7 +12,7 @@
 #include "image/heat_map.h"
 #include "process/job_pool.h"
 #include "renderers/registry.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 #include "validate/common/provenance.h"
 #include "validate/extremes/matrix.h"
 #include "validate/extremes/measure.h"

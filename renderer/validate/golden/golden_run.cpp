@@ -14,8 +14,8 @@
 #include "process/shell_word.h"
 #include "render/renderer.h"
 #include "renderers/registry.h"
-#include "scene/scene_loader.h"
-#include "scene/scene_set.h"
+#include "scene_file/scene_loader.h"
+#include "scene_file/scene_set.h"
 #include "validate/common/provenance.h"
 #include "validate/tolerances.h"
 
@@ -130,7 +130,7 @@ int goldenCheck(const GoldenRequest& request) {
         std::printf("  (the fast path against the exact path's golden image: `xval golden check %s` first)\n",
                     shellWord(file.string()).c_str());
     };
-    if (const std::string problem = golden::goldenProblem(folder, m, file); !problem.empty()) {
+    if (const std::string problem = golden::goldenProblem(folder, m, file, renderers::goldenUpdateCommand(file, m.renderer)); !problem.empty()) {
       fail(problem);
       continue;
     }

@@ -28,12 +28,12 @@
 #include <vector>
 
 #include "common/export_common.h"
-#include "scene/scene_budget.h"
+#include "scene_file/scene_budget.h"
 
 namespace xval::validation {
 
 struct GoldenRequest {
-  std::vector<std::string> inputs;  // scene files or folders (scene/scene_set.h)
+  std::vector<std::string> inputs;  // scene files or folders (scene_file/scene_set.h)
   std::string renderer;             // a registry id; not a golden set itself
   std::string tolerances;           // check only; empty: found by the one rule
   // check only, the reference renderer only: "float" renders the fast path

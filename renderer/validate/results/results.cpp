@@ -7,8 +7,8 @@
 
 #include "files/atomic_write.h"
 #include "scene/json_reader.h"
-#include "scene/scene_loader.h"
-#include "validate/results_shape.h"
+#include "scene_file/scene_loader.h"
+#include "validate/results/results_shape.h"
 
 namespace xval::results {
 

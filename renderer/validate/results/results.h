@@ -35,7 +35,7 @@
 #include <nlohmann/json.hpp>
 
 #include "image/pair_failure.h"
-#include "validate/validation/case_verdict.h"
+#include "validate/results/case_verdict.h"
 
 namespace xval::results {
 
@@ -213,7 +213,7 @@ struct Results {
 
 // results.json read as the report reads it (a key given twice, nesting too
 // deep: refused), checked against docs/results-schema.json
-// (validate/results_shape.h), then typed. Throws std::runtime_error
+// (validate/results/results_shape.h), then typed. Throws std::runtime_error
 // "FILE: FIELD: ..." naming the file and the field.
 Results readResults(const std::filesystem::path& file);
 

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "validate/common/number_text.h"
+#include "text/number_text.h"
 #include "validate/report.h"
 
 namespace xval {

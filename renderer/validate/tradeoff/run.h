@@ -41,7 +41,7 @@
 
 #include <string>
 
-#include "scene/scene_budget.h"
+#include "scene_file/scene_budget.h"
 
 namespace xval {
 

@@ -10,8 +10,8 @@
 
 #include "image/compare.h"
 #include "image/perceptual.h"
-#include "scene/scene_loader.h"
-#include "scene/scene_writer.h"
+#include "scene_file/scene_loader.h"
+#include "scene_file/scene_writer.h"
 
 namespace xval {
 

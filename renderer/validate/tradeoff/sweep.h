@@ -54,7 +54,7 @@
 #include "image/image.h"
 #include "image/metric_table.h"
 #include "scene/scene.h"
-#include "scene/scene_budget.h"
+#include "scene_file/scene_budget.h"
 
 namespace xval {
 

@@ -3,7 +3,7 @@
 
 #include <sstream>
 
-#include "validate/common/number_text.h"
+#include "text/number_text.h"
 
 namespace xval {
 

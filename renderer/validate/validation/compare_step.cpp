@@ -27,8 +27,8 @@
 #include "image/perceptual.h"
 #include "process/job_pool.h"
 #include "renderers/registry.h"
-#include "scene/scene_lint.h"
-#include "scene/scene_loader.h"
+#include "lint/scene_lint.h"
+#include "scene_file/scene_loader.h"
 #include "validate/colour_stats.h"
 #include "validate/compare_outputs.h"
 #include "validate/pixel_crops.h"
@@ -36,8 +36,8 @@
 #include "render/geometry_passes.h"
 #include "validate/geometry_check.h"
 #include "validate/results/results.h"
-#include "validate/validation/case_verdict.h"
-#include "validate/validation/geometry_checks.h"
+#include "validate/results/case_verdict.h"
+#include "validate/results/geometry_checks.h"
 #include "validate/validation/job_record.h"
 #include "validate/validation/next_steps.h"
 #include "validate/validation/results_file.h"
@@ -340,7 +340,7 @@ J compareCase(const CompareContext& cx, size_t k, std::vector<std::string>& remo
     jc["left_out"] = J::object();
     for (const LeftOut& l : ps.left_out) jc["left_out"][l.renderer] = l.reason;
   }
-  // The scene's warnings (scene/scene_lint.h): recorded, never part of the verdict.
+  // The scene's warnings (lint/scene_lint.h): recorded, never part of the verdict.
   for (const SceneWarning& w : lintScene(scene))
     jc["warnings"].push_back({{"code", w.code}, {"subject", w.subject}, {"message", w.message}});
   const std::vector<renderers::RendererPair> pairs = renderers::unorderedPairs(rs.size());

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <numeric>
 
-#include "scene/scene_budget.h"
+#include "scene_file/scene_budget.h"
 
 namespace xval::validation {
 

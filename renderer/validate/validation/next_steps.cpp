@@ -10,7 +10,7 @@
 #include "process/shell_word.h"
 #include "renderers/registry.h"
 #include "validate/tolerances.h"
-#include "validate/validation/case_verdict.h"
+#include "validate/results/case_verdict.h"
 
 namespace xval::validation {
 

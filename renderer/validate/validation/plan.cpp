@@ -20,8 +20,8 @@
 #include "renderers/renderer_file.h"
 #include "renderers/registry.h"
 #include "scene/json_reader.h"
-#include "scene/scene_lint.h"
-#include "scene/scene_set.h"
+#include "lint/scene_lint.h"
+#include "scene_file/scene_set.h"
 #include "validate/tolerances.h"
 #include "validate/validation/file_fields.h"
 #include "validate/validation/job_record.h"
@@ -349,7 +349,7 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
   plan.dir = fs::absolute(dir).lexically_normal();
   if (!plan.dir.has_filename()) plan.dir = plan.dir.parent_path();  // "out/" -> "out"
   checkToolPath(plan.dir);
-  const std::vector<fs::path> scene_files = sceneFiles(inputs, "xval validate");  // the rule: scene/scene_set.h
+  const std::vector<fs::path> scene_files = sceneFiles(inputs, "xval validate");  // the rule: scene_file/scene_set.h
   const ToleranceFile tol_file = findToleranceFile(tolerances, scene_files);  // the rule: tolerances.h
   plan.tolerances = tolerances.empty() ? tol_file.shown() : tolerances;
   plan.tolerances_path = tol_file.path;

@@ -24,7 +24,7 @@
 // reference renderer's passes of the same scene,
 // OUT/<scene>/<renderer>.reference-passes.exr (RenderJob::
 // reference_passes): the two sides of that one comparison, so the compare
-// step only compares (validate/validation/geometry_checks.h) and the check
+// step only compares (validate/results/geometry_checks.h) and the check
 // is done, resumed or kept as one job. They are made in the check's job
 // rather than in the reference's so that the reference job's outputs do
 // not depend on which renderers the run has, and the check needs no other
@@ -50,8 +50,8 @@
 #include <vector>
 
 #include "files/output_folder.h"
-#include "scene/scene_budget.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_budget.h"
+#include "scene_file/scene_loader.h"
 
 namespace xval::validation {
 
@@ -149,14 +149,14 @@ std::vector<size_t> sceneJobs(const Plan& plan, size_t k);
 std::filesystem::path planFile(const std::filesystem::path& dir);
 
 // What xval validate writes or reads at the top of its output folder; no
-// scene is named like one of them (sceneNameProblem, scene/scene_loader.h).
+// scene is named like one of them (sceneNameProblem, scene_file/scene_loader.h).
 inline constexpr const auto& kOwnFiles = kReservedSceneNames;
 
 // Removes the output folder's results.json and report.html (a new run, or a
 // new compare step, starts with no verdict; the new ones are written last).
 void removeVerdict(const Plan& plan);
 
-// Scene files from files and folders (scene/scene_set.h: a folder's *.json,
+// Scene files from files and folders (scene_file/scene_set.h: a folder's *.json,
 // sorted, less those that are not scenes, each said on stderr), loaded
 // and checked (scene names unique and usable as folder names), one job per
 // renderer of `renderers` (planRenderers) the scene is meant for; the others

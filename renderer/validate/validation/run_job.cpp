@@ -22,7 +22,7 @@
 #include "validate/validation/job_cost.h"
 #include "renderers/job_export.h"
 #include "renderers/registry.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 
 namespace xval::validation {
 

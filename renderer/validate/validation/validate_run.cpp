@@ -11,7 +11,7 @@
 #include "renderers/registry.h"
 #include "renderers/renderer_file.h"
 #include "scene/json_reader.h"
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 #include "validate/junit_report.h"
 #include "validate/results/results.h"
 #include "validate/tolerances.h"

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "common/export_common.h"
-#include "scene/scene_budget.h"
+#include "scene_file/scene_budget.h"
 #include "validate/report.h"
 #include "validate/validation/run_job.h"
 
@@ -21,7 +21,7 @@ namespace xval::validation {
 
 struct ValidateRequest {
   // A new run (plan, render, compare), unless `plan` is given.
-  std::vector<std::string> inputs;     // scene files or folders (scene/scene_set.h); empty: the toolkit's set
+  std::vector<std::string> inputs;     // scene files or folders (scene_file/scene_set.h); empty: the toolkit's set
   std::string output;                  // the output folder (-o); required for a new run
   std::string tolerances;              // the tolerance file; empty: found by the one rule (tolerances.h)
   std::vector<std::string> renderers;  // as given to --renderers (runRenderers); empty: jobRenderers()

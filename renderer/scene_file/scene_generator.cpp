@@ -1,4 +1,4 @@
-#include "scene/scene_generator.h"
+#include "scene_file/scene_generator.h"
 
 #include <algorithm>
 #include <fstream>
@@ -7,8 +7,8 @@
 #include <stdexcept>
 #include <sstream>
 
-#include "scene/scene_loader.h"
-#include "scene/scene_writer.h"
+#include "scene_file/scene_loader.h"
+#include "scene_file/scene_writer.h"
 
 namespace xval {
 

@@ -1,4 +1,4 @@
-#include "validate/results_shape.h"
+#include "validate/results/results_shape.h"
 
 #include <algorithm>
 #include <cmath>

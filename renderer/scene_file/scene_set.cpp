@@ -1,12 +1,12 @@
-// The scene files of a command's inputs (scene/scene_set.h).
-#include "scene/scene_set.h"
+// The scene files of a command's inputs (scene_file/scene_set.h).
+#include "scene_file/scene_set.h"
 
 #include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 #include <system_error>
 
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 
 namespace xval {
 

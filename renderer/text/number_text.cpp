@@ -1,5 +1,5 @@
-// Numbers as text (validate/common/number_text.h).
-#include "validate/common/number_text.h"
+// Numbers as text (text/number_text.h).
+#include "text/number_text.h"
 
 #include <cmath>
 

@@ -1,5 +1,5 @@
 // Scene warnings (scene_lint.h states each rule and its reason).
-#include "scene/scene_lint.h"
+#include "lint/scene_lint.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,8 @@
 #include "files/output_folder.h"
 #include "scene/json_reader.h"
 #include "scene/scene.h"
-#include "scene/scene_budget.h"
+#include "scene_file/scene_budget.h"
+#include "scene/scene_limits.h"
 
 #include <filesystem>
 #include <functional>
@@ -17,7 +18,7 @@ namespace xval {
 // field path and the bad value. Relative texture paths resolve against the
 // scene file's folder; the texture file must exist and be readable.
 // The scene must also fit `budget` at its own render.spp
-// (scene/scene_budget.h); a command that renders it otherwise checks again.
+// (scene_file/scene_budget.h); a command that renders it otherwise checks again.
 Scene loadScene(const std::filesystem::path& file, const Budget& budget = Budget{});
 
 // The text of a JSON file xval reads (scene, spec, tolerance file, validate's
@@ -47,33 +48,6 @@ void setSceneRenderers(std::function<std::vector<std::string>()> ids);
 // resolve relative paths.
 Scene parseScene(const std::string& text, const std::filesystem::path& file,
                  const Budget& budget = Budget{});
-
-// Largest accepted image side and pixel count (an "absurd resolution" is an
-// error, not an attempt to allocate it).
-inline constexpr int kMaxImageSide = 16384;
-inline constexpr long long kMaxImagePixels = 64ll * 1024 * 1024;
-inline constexpr int kMaxSpp = 256;
-// The narrowest field of view: the float path's raster projects a scene
-// of size 1 to 1 / tan(fov / 2) pixels, and its edge functions multiply two
-// of those (1e-300 degrees: 1e302 px, whose products overflow).
-inline constexpr double kMinFovDeg = 1e-6;
-inline constexpr long long kMaxMeshVertices = 16ll * 1024 * 1024;
-// A scene file larger than this is refused before it is read.
-inline constexpr long long kMaxSceneFileBytes = 64ll * 1024 * 1024;
-// Texture images: the header is checked against these when the scene is
-// loaded (and again when the image is read), before any pixel is allocated.
-inline constexpr int kMaxTextureSide = 16384;
-inline constexpr long long kMaxTexturePixels = 16ll * 1024 * 1024;
-// A texel value (code / (2^bits - 1) for integer images, as stored for
-// floating-point ones) must be finite and at most this in magnitude
-// (checked when the pixels are read; scene/precision_limits.h counts on it).
-inline constexpr double kMaxTexelValue = 1e6;
-// The texture limits as image/image_header.h checks them.
-struct ImageLimits;
-ImageLimits textureLimits();
-// Scene names become folder names (`xval validate` writes DIR/NAME/): at
-// most this many bytes, no '/', no NUL, not "." or "..".
-inline constexpr size_t kMaxSceneNameBytes = 200;
 
 // What xval validate writes or reads at the top of its output folder,
 // beside the scenes' case folders: no scene may be named like one of them

@@ -1,4 +1,4 @@
-#include "scene/precision_limits.h"
+#include "scene_file/precision_limits.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,13 +11,13 @@
 #include "geometry/model_file.h"
 #include "geometry/transform.h"
 #include "scene/json_reader.h"
-#include "scene/scene_loader.h"
+#include "scene/scene_limits.h"
 
 namespace xval {
 
 namespace {
 
-// Six significant digits, as the reports' numbers (validate/common/number_text.h significant).
+// Six significant digits, as the reports' numbers (text/number_text.h significant).
 std::string num(double v) { return fmt::format("{:.6g}", v); }
 
 // Every number of the scene that a renderer computes with, with its field

@@ -1,4 +1,4 @@
-#include "gl/shader_frame.h"
+#include "shader_file/shader_frame.h"
 
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/glcorearb.h>

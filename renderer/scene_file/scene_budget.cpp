@@ -1,11 +1,11 @@
-#include "scene/scene_budget.h"
+#include "scene_file/scene_budget.h"
 
 #include <cmath>
 #include <limits>
 
 #include "geometry/model_file.h"
 #include "scene/json_reader.h"
-#include "scene/scene_loader.h"
+#include "scene/scene.h"
 
 namespace xval {
 

@@ -1,9 +1,10 @@
-#include "scene/scene_loader.h"
+#include "scene_file/scene_loader.h"
 
 #include "geometry/model_file.h"
 #include "geometry/transform.h"
 #include "image/image_header.h"
-#include "scene/precision_limits.h"
+#include "scene_file/precision_limits.h"
+#include "texture/texture.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -461,14 +462,13 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file, con
   s.tolerances = readTolerances(r);
   s.renderers = readRenderers(r);
   r.finish();
-  // Numbers its own precision cannot compute with (scene/precision_limits.h).
+  // Numbers its own precision cannot compute with (scene_file/precision_limits.h).
   checkPrecision(s, s.render.precision);
-  // Triangles, samples and memory in all (scene/scene_budget.h).
+  // Triangles, samples and memory in all (scene_file/scene_budget.h).
   checkBudget(s, s.render.spp, budget);
   return s;
 }
 
-ImageLimits textureLimits() { return {kMaxTextureSide, kMaxTexturePixels, "texels"}; }
 
 std::string nonSceneReason(const std::filesystem::path& file) {
   if (file.filename() == "tolerances.json") return "a tolerance file";

@@ -1,5 +1,5 @@
 // A case's verdict (case_verdict.h).
-#include "validate/validation/case_verdict.h"
+#include "validate/results/case_verdict.h"
 
 #include <algorithm>
 #include <stdexcept>

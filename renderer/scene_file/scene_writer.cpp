@@ -1,4 +1,4 @@
-#include "scene/scene_writer.h"
+#include "scene_file/scene_writer.h"
 
 namespace xval {
 

@@ -9,7 +9,7 @@
 // refuses every file outside it). A file given by name is taken as it is,
 // whatever its name. A *.json of a folder that is not a scene file (a
 // tolerance file, or a file of another xval format: nonSceneReason,
-// scene/scene_loader.h) is skipped, said on stderr; one that is not a
+// scene_file/scene_loader.h) is skipped, said on stderr; one that is not a
 // regular file (a FIFO, a folder named x.json, a dangling link) is kept,
 // so that loading it reports it as an error rather than it being passed
 // over in silence.

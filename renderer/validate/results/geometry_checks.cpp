@@ -1,5 +1,5 @@
 // A case's geometry checks in `xval validate` (geometry_checks.h).
-#include "validate/validation/geometry_checks.h"
+#include "validate/results/geometry_checks.h"
 
 namespace xval::validation {
 
