@@ -39,9 +39,9 @@ LAYERS = [
     ["gl"],                        # the GLSL renderer on OpenGL
     ["shader_file"],               # users' shaders on the gl context
     ["renderers"],                 # the registry of renderers
-    ["validate/common"],
+    ["validate/common"],           # provenance, timing, HTML text
+    ["validate"],                  # tolerances, geometry checks, crops, claims
     ["validate/results"],          # results.json as types, verdicts
-    ["validate"],                  # tolerances, pair checks, report pieces
     ["validate/extremes", "validate/tradeoff"],
     ["validate/report"],           # the report and JUnit
     ["validate/golden", "validate/bench", "validate/validation"],

@@ -12,7 +12,7 @@ packages=(
   # libraries
   libopenimageio-dev openimageio-tools libglm-dev nlohmann-json3-dev libcli11-dev
   libfmt-dev libtinygltf-dev libassimp-dev libembree-dev libhwy-dev libgtest-dev libgmock-dev libbenchmark-dev
-  # the report's template (renderer/validate/report_page.mustache)
+  # the report's template (renderer/validate/report/report_page.mustache)
   libkainjow-mustache-dev
   # the gl renderer: OpenGL 4.5 core through EGL (Mesa llvmpipe without a GPU)
   libopengl-dev libegl-dev libegl-mesa0 libgl1-mesa-dri

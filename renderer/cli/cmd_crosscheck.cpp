@@ -1,11 +1,11 @@
 // xval crosscheck SCENE.json --renderer povray -o DIR [--tolerances FILE] [--junit FILE]: argument
-// parsing; the work is validation::crosscheck (validate/crosscheck.h).
+// parsing; the work is validation::crosscheck (validate/validation/crosscheck.h).
 //
 // Validate of one scene with the reference renderer and one other
-// (validate/crosscheck.h): compares them with the declared tolerance, and
+// (validate/validation/crosscheck.h): compares them with the declared tolerance, and
 // writes validate's files to DIR (the renders in DIR/<scene>/,
 // results.json, report.html) and DIR/metrics.json, the pair's verdict and
-// metrics; with --junit, the verdict as JUnit XML (validate/junit_report.h),
+// metrics; with --junit, the verdict as JUnit XML (validate/report/junit_report.h),
 // an error as <error>.
 // Exit 0: within tolerance, or not expressible (the renderer declares it
 // cannot express the scene; metrics.json says why); 1: outside; 2: an error
@@ -18,8 +18,8 @@
 #include "files/atomic_write.h"
 #include "cli/renderer_file_option.h"
 #include "renderers/registry.h"
-#include "validate/crosscheck.h"
-#include "validate/junit_report.h"
+#include "validate/validation/crosscheck.h"
+#include "validate/report/junit_report.h"
 #include "validate/tolerances.h"
 
 namespace xval::cli {

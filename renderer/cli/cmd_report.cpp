@@ -3,7 +3,7 @@
 #include <memory>
 
 #include "cli/commands.h"
-#include "validate/report.h"
+#include "validate/report/report.h"
 
 namespace xval::cli {
 

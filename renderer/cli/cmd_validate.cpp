@@ -10,7 +10,7 @@
 // (renderers/registry.h: the reference renderer, POV-Ray, Blender Cycles
 // and EEVEE, gl), compares every pair (reference-povray, ...,
 // povray-blender, ...) with the declared tolerances, attributes each disagreement, and writes
-// results.json and, from it alone, report.html (validate/report.h).
+// results.json and, from it alone, report.html (validate/report/report.h).
 //
 // The work is split into jobs (validate/validation/plan.h): a plan
 // (OUT/jobs.json, one render job per scene and renderer, every output path
@@ -85,7 +85,7 @@
 #include "common/export_common.h"
 #include "process/job_pool.h"
 #include "renderers/registry.h"
-#include "validate/report.h"
+#include "validate/report/report.h"
 #include "validate/tolerances.h"
 #include "validate/validation/plan.h"
 #include "validate/validation/validate_run.h"
@@ -195,7 +195,7 @@ void addValidateCommand(CLI::App& app, std::function<int()>& run) {
                   "Also write JUnit XML to this file after the compare step: one testcase per scene "
                   "and pair (classname = scene, name = pair) and per geometry check (name "
                   "\"reference-blender-import (geometry)\"), <failure> with the metrics and the "
-                  "tolerance or bounds, <error> for a failed render (validate/junit_report.h)");
+                  "tolerance or bounds, <error> for a failed render (validate/report/junit_report.h)");
   auto* resume = cmd->add_flag(
       "--resume", args->resume,
       "Keep the renders of an earlier run into the same folder whose record says ok, whose "

@@ -23,7 +23,7 @@
 
 #include "renderers/registry.h"
 #include "text/number_text.h"
-#include "validate/report.h"
+#include "validate/common/html_text.h"
 
 namespace xval::extremes {
 

@@ -11,7 +11,7 @@ namespace xval::extremes {
 // with " plus uncommitted changes" for a dirty tree.
 std::string shortCommit(const std::string& described);
 
-// The report's section (validate/report.cpp calls it): HTML for
+// The report's section (validate/report/report.cpp calls it): HTML for
 // folder/extremes.json (the folder of `xval extremes -o folder`, as
 // results.json or `xval report --extremes` names it), with its tables and
 // maps, whose paths start with `href` (the folder relative to the report);

@@ -1,8 +1,8 @@
 // A case's verdict in `xval validate` (results.json cases[].verdict,
 // docs/results-schema.json): decided once, by the compare step
 // (compare_step.h), from what the case compared; the console summary, the
-// exit status, results.json's `pass`, JUnit (validate/junit_report.h), the
-// next steps and the report (validate/report.h) all read it, none decides
+// exit status, results.json's `pass`, JUnit (validate/report/junit_report.h), the
+// next steps and the report (validate/report/report.h) all read it, none decides
 // it again.
 //
 //   error         a render of the case has an error (it failed, its job has

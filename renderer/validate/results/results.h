@@ -1,6 +1,6 @@
 // results.json of `xval validate` (docs/results-schema.json) as C++ types,
-// with its one reader and its one writer: the report (validate/report.h),
-// JUnit (validate/junit_report.h) and the compare step read and write the
+// with its one reader and its one writer: the report (validate/report/report.h),
+// JUnit (validate/report/junit_report.h) and the compare step read and write the
 // file through these, not through string keys.
 //
 // What is modelled: the run (format, provenance, wall time, renderers,

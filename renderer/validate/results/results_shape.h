@@ -1,4 +1,4 @@
-// results.json read by the report (validate/report.h) checked against its
+// results.json read by the report (validate/report/report.h) checked against its
 // documented schema, docs/results-schema.json, compiled into xval: a
 // results.json edited by hand, cut short or written by another version is
 // refused with the file, the field and what was expected

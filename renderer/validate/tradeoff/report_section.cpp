@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "text/number_text.h"
-#include "validate/report.h"
+#include "validate/common/html_text.h"
 
 namespace xval {
 

@@ -1,6 +1,6 @@
 // The compare step of `xval validate` (plan.h): from the plan, the job
 // records and the EXRs, every case compared pair by pair, results.json
-// (results_file.h) and, from it alone, report.html (validate/report.h).
+// (results_file.h) and, from it alone, report.html (validate/report/report.h).
 //
 // A case is one scene: its renders (each an image, an error: no record, a
 // failed render, a record from other inputs, an unreadable EXR; or the
@@ -27,7 +27,7 @@
 #include <mutex>
 #include <vector>
 
-#include "validate/report.h"
+#include "validate/report/report.h"
 #include "validate/validation/image_handoff.h"
 #include "validate/validation/plan.h"
 

@@ -126,7 +126,7 @@ bool runsWhenNamed(const std::string& id);
 // twice, or fewer than two.
 std::vector<std::string> runRenderers(const std::vector<std::string>& names);
 
-// A crosscheck's renderers (validate/crosscheck.h): the reference and
+// A crosscheck's renderers (validate/validation/crosscheck.h): the reference and
 // `renderer`, any renderer of the registry but the reference (a golden set
 // also spelled golden:NAME; renderers validate leaves out, such as
 // blender-native, too). Throws std::runtime_error for an unknown id

@@ -2,7 +2,7 @@
 // compare step made (compare_step.h), the provenance of the run, its wall
 // time, the paper's Figure 1 verdicts (validate/paper_claims.h) and the
 // report sections it names. The report is a view of this file alone
-// (validate/report.h).
+// (validate/report/report.h).
 #pragma once
 
 #include <filesystem>

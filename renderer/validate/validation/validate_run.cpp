@@ -12,7 +12,7 @@
 #include "renderers/renderer_file.h"
 #include "scene/json_reader.h"
 #include "scene_file/scene_loader.h"
-#include "validate/junit_report.h"
+#include "validate/report/junit_report.h"
 #include "validate/results/results.h"
 #include "validate/tolerances.h"
 #include "validate/validation/compare_step.h"

@@ -14,7 +14,7 @@
 
 #include "common/export_common.h"
 #include "scene_file/scene_budget.h"
-#include "validate/report.h"
+#include "validate/report/report.h"
 #include "validate/validation/run_job.h"
 
 namespace xval::validation {
@@ -27,7 +27,7 @@ struct ValidateRequest {
   std::vector<std::string> renderers;  // as given to --renderers (runRenderers); empty: jobRenderers()
   double timeout_seconds = kDefaultToolTimeoutSeconds;
   Budget budget;
-  // A crosscheck's run (validate/crosscheck.h): the reference and this one
+  // A crosscheck's run (validate/validation/crosscheck.h): the reference and this one
   // renderer (crosscheckRenderers, plan.h), in place of `renderers`; a
   // scene not meant for it is an error, not left out (NotMeantFor::Refuse);
   // an earlier run in the folder is replaced, its cases not kept.

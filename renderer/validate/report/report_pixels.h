@@ -1,4 +1,4 @@
-// The parts of report.html that show single pixels (validate/report.h
+// The parts of report.html that show single pixels (validate/report/report.h
 // assembles the page): the pixel classes' legend, each case's viewer (a
 // swap between its renders and heat maps), the heat maps at full
 // resolution with the worst unexplained and worst explained pixel of each

@@ -3,7 +3,7 @@
 // better direction), the values from the pair's metrics.values in
 // results.json. A pair without values (a results.json written before the
 // metric table) shows "n/a"; a null value (not finite) "not finite".
-// As data of the page's template (validate/report_page.mustache), which
+// As data of the page's template (validate/report/report_page.mustache), which
 // escapes every string.
 #pragma once
 

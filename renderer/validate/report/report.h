@@ -20,7 +20,7 @@
 // geometry_checks, validate/results/geometry_checks.h) are a column of
 // the summary, a count beside it, and a table of metrics against bounds in
 // the case; a failing or erring check makes the case's verdict FAIL or
-// ERROR. The page is validate/report_page.mustache (compiled into the
+// ERROR. The page is validate/report/report_page.mustache (compiled into the
 // binary), rendered with kainjow::mustache over a data view of the results'
 // types (report_data.h, report_case.h, report_metrics.h); every string from
 // the results is HTML-escaped, by the template or, in the fragments it
@@ -29,6 +29,8 @@
 // so in its title ("xval report: N images OK" or "xval report: BROKEN
 // ..."), which the report's test reads.
 #pragma once
+
+#include "validate/common/html_text.h"
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -56,8 +58,6 @@ nlohmann::ordered_json sectionsJson(const ReportSections& sections, const std::f
 // gnuplot is missing or fails.
 void writeReport(const std::filesystem::path& results_json, const std::filesystem::path& html,
                  const ReportSections& sections = {});
-
-std::string htmlEscape(const std::string& s);
 
 // What the summary shows of a pair of results.json (not HTML-escaped): its
 // verdict in capitals, then, when it fails, the short form of the first

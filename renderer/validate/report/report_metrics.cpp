@@ -1,5 +1,5 @@
-// The report's metrics table (validate/report_metrics.h).
-#include "validate/report_metrics.h"
+// The report's metrics table (validate/report/report_metrics.h).
+#include "validate/report/report_metrics.h"
 
 #include <algorithm>
 

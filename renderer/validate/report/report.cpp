@@ -1,7 +1,7 @@
-#include "validate/report.h"
-#include "validate/report_case.h"
-#include "validate/report_data.h"
-#include "validate/report_metrics.h"
+#include "validate/report/report.h"
+#include "validate/report/report_case.h"
+#include "validate/report/report_data.h"
+#include "validate/report/report_metrics.h"
 
 #include "files/atomic_write.h"
 #include "image/heat_map.h"
@@ -27,9 +27,10 @@
 #include "scene/json_reader.h"
 #include "scene_file/scene_loader.h"
 #include "text/number_text.h"
+#include "validate/common/html_text.h"
 #include "validate/extremes/report_section.h"
-#include "validate/report_page_template.h"
-#include "validate/report_pixels.h"
+#include "validate/report/report_page_template.h"
+#include "validate/report/report_pixels.h"
 #include "validate/results/results.h"
 #include "validate/tolerances.h"
 #include "validate/tradeoff/report_section.h"
@@ -41,20 +42,6 @@ using J = nlohmann::ordered_json;
 namespace mu = kainjow::mustache;
 using namespace page;
 
-std::string htmlEscape(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    switch (c) {
-      case '&': o += "&amp;"; break;
-      case '<': o += "&lt;"; break;
-      case '>': o += "&gt;"; break;
-      case '"': o += "&quot;"; break;
-      case '\'': o += "&#39;"; break;
-      default: o += c;
-    }
-  }
-  return o;
-}
 
 namespace {
 

@@ -1,5 +1,5 @@
-// A case's section of report.html (validate/report_case.h).
-#include "validate/report_case.h"
+// A case's section of report.html (validate/report/report_case.h).
+#include "validate/report/report_case.h"
 
 #include <cmath>
 #include <optional>
@@ -10,10 +10,10 @@
 #include "image/pixel_classes.h"
 #include "render/geometry_passes.h"
 #include "text/number_text.h"
-#include "validate/report.h"
-#include "validate/report_data.h"
-#include "validate/report_metrics.h"
-#include "validate/report_pixels.h"
+#include "validate/report/report.h"
+#include "validate/report/report_data.h"
+#include "validate/report/report_metrics.h"
+#include "validate/report/report_pixels.h"
 
 namespace xval {
 

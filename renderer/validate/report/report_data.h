@@ -1,5 +1,5 @@
-// The data of report.html (validate/report.h) for its template
-// (validate/report_page.mustache, rendered with kainjow::mustache): the
+// The data of report.html (validate/report/report.h) for its template
+// (validate/report/report_page.mustache, rendered with kainjow::mustache): the
 // helpers the page's parts share. The template escapes every value.
 #pragma once
 

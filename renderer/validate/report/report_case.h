@@ -1,5 +1,5 @@
-// One case's section of report.html (validate/report.h) as data of the
-// page's template (validate/report_page.mustache): its verdict,
+// One case's section of report.html (validate/report/report.h) as data of the
+// page's template (validate/report/report_page.mustache): its verdict,
 // attribution and command to reproduce it, the renderers left out, its
 // warnings, its renders (a failed one by its error, never an <img> of a
 // missing file), its pixels (report_pixels.h, an escaped fragment), the

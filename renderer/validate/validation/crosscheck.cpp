@@ -1,6 +1,6 @@
 // xval crosscheck (crosscheck.h): validate's run of one scene and one
 // pair, then the pair's verdict from the typed results.
-#include "validate/crosscheck.h"
+#include "validate/validation/crosscheck.h"
 
 #include <cstdio>
 #include <filesystem>

@@ -57,7 +57,7 @@ struct CrosscheckRequest {
 // file, a scene whose `renderers` does not name the renderer, an unknown
 // renderer). `results` is set to the run's one case (without a case
 // verdict: a crosscheck's verdict is its pair's) as soon as the compare
-// step has written it, for the JUnit writer (validate/junit_report.h).
+// step has written it, for the JUnit writer (validate/report/junit_report.h).
 int crosscheck(const CrosscheckRequest& request, results::Results& results);
 
 // The results of a crosscheck that stopped with `error` before its compare

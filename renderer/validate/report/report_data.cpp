@@ -1,10 +1,10 @@
-// The page's shared data helpers (validate/report_data.h).
-#include "validate/report_data.h"
+// The page's shared data helpers (validate/report/report_data.h).
+#include "validate/report/report_data.h"
 
 #include <algorithm>
 #include <cctype>
 
-#include "validate/report_pixels.h"
+#include "validate/report/report_pixels.h"
 #include "validate/results/case_verdict.h"
 #include "validate/results/geometry_checks.h"
 

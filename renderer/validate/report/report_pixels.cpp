@@ -1,11 +1,11 @@
-#include "validate/report_pixels.h"
+#include "validate/report/report_pixels.h"
 
 #include <algorithm>
 #include <sstream>
 
 #include "image/pixel_classes.h"
 #include "text/number_text.h"
-#include "validate/report.h"
+#include "validate/report/report.h"
 
 namespace xval {
 

@@ -1,4 +1,4 @@
-#include "validate/junit_report.h"
+#include "validate/report/junit_report.h"
 
 #include <algorithm>
 #include <stdexcept>
