@@ -4,7 +4,7 @@
 #   - it writes that render darkened by 2%: exit 1, a <failure> naming the
 #     tolerance;
 #   - it fails (exit 9): exit 2, an <error> naming what happened.
-# Each is validate's run of that one scene and pair (validate/crosscheck.h):
+# Each is validate's run of that one scene and pair (validate/validation/crosscheck.h):
 # results.json holds the case, and metrics.json is its pair as written there.
 # Arguments: XVAL, SCENE, XSD, WORK.
 include(${CMAKE_CURRENT_LIST_DIR}/cli_run.cmake)

@@ -1,5 +1,5 @@
 # "Not expressible" is a verdict, not an error (validate/validation/compare_step.h,
-# validate/crosscheck.h), with stand-in POV-Ray and Blender that write the
+# validate/validation/crosscheck.h), with stand-in POV-Ray and Blender that write the
 # reference render of the scene they were given (found by its case folder):
 #   - a folder mixing expressible scenes (tiny, meant_for_two), one POV-Ray
 #     refuses (pov_refuses: classic Phong of shininess 1000 lit by two

@@ -1,4 +1,4 @@
-# The report of a run with many renderers (validate/report.h): six
+# The report of a run with many renderers (validate/report/report.h): six
 # renderers, the reference and five users' renderers defined by files
 # (the stand-in tests/cli/standin_renderer.sh: three hand the scene to the
 # reference renderer, `kilo` dims its image, `mike` crashes), so 15 pairs:

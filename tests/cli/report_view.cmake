@@ -1,5 +1,5 @@
 # The report is a view of results.json and the files it names
-# (validate/report.h):
+# (validate/report/report.h):
 #   - `xval validate` on a small scene, with stand-in POV-Ray and Blender
 #     that write the reference render (Blender's darkened by 2%; one scene
 #     per Blender process, --batch 1: the stand-in speaks only that

@@ -81,7 +81,7 @@ def diff(a, b, path, out):
         out.append(f"{path}: {a!r} != {b!r}")
 
 
-# The report's timing figures (validate/report.cpp): "Wall time 12.3 s" and
+# The report's timing figures (validate/report/report.cpp): "Wall time 12.3 s" and
 # a render caption's "reference, 0.13 s" / "(render 0.45 s)".
 REPORT_TIMINGS = [
     (re.compile(r"Wall time [0-9.eE+-]+ s"), "Wall time T s"),

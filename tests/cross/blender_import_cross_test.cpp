@@ -24,7 +24,7 @@
 #include "scene_file/scene_loader.h"
 #include "support/temp_files.h"
 #include "validate/geometry_check.h"
-#include "validate/junit_report.h"
+#include "validate/report/junit_report.h"
 #include "validate/validation/compare_step.h"
 #include "validate/validation/plan.h"
 #include "validate/validation/run_job.h"

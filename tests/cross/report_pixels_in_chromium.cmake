@@ -1,4 +1,4 @@
-# The report's pixel views in headless Chromium (validate/report_pixels.h):
+# The report's pixel views in headless Chromium (validate/report/report_pixels.h):
 # a harness page next to the report loads it in a frame and checks that
 # every image decoded, that a viewer button swaps the image shown (to one
 # that decodes), and that the crop of the heat map around the pair's worst

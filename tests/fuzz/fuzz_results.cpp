@@ -1,7 +1,7 @@
 // libFuzzer target: the report's reader of results.json (validate/
 // results_shape.h, the check against docs/results-schema.json that every
 // report runs first), the typed reader after it (validate/results/
-// results.h) and JUnit (validate/junit_report.h), on arbitrary bytes.
+// results.h) and JUnit (validate/report/junit_report.h), on arbitrary bytes.
 //
 // Every input that the check accepts is also checked with each of its
 // fields left out in turn (every member of every object, at any depth):
@@ -20,7 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/json_reader.h"
-#include "validate/junit_report.h"
+#include "validate/report/junit_report.h"
 #include "validate/results/results_shape.h"
 
 namespace {

@@ -10,7 +10,7 @@
 #include "process/run_process.h"
 #include "renderers/registry.h"
 #include "support/temp_files.h"
-#include "validate/junit_report.h"
+#include "validate/report/junit_report.h"
 #include "validate/results/geometry_checks.h"
 #include "validate/validation/plan.h"
 

@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "process/run_process.h"
-#include "validate/junit_report.h"
+#include "validate/report/junit_report.h"
 #include "support/temp_files.h"
 
 using namespace xval;

@@ -9,7 +9,7 @@
 
 #include "image/compare.h"
 #include "image/pair_failure.h"
-#include "validate/report.h"
+#include "validate/report/report.h"
 #include "validate/results/results_shape.h"
 
 namespace xval {

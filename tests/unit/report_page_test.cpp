@@ -1,4 +1,4 @@
-// report.html over its template (validate/report_page.mustache): every
+// report.html over its template (validate/report/report_page.mustache): every
 // string results.json gives the page reaches it HTML-escaped, each in its
 // place, whichever part of the template shows it.
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "support/temp_files.h"
-#include "validate/report.h"
+#include "validate/report/report.h"
 #include "validate/results/results.h"
 
 namespace xval {

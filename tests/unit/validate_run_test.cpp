@@ -78,7 +78,7 @@ TEST(ValidateRun, PlanOnlyWritesThePlanAndRendersNothing) {
   EXPECT_FALSE(fs::exists(d / "out" / "results.json"));
 }
 
-// A crosscheck's run (validate/crosscheck.h) is validate's with the
+// A crosscheck's run (validate/validation/crosscheck.h) is validate's with the
 // reference and one renderer, any the registry has but the reference:
 // blender-native, which validate's --renderers refuses, too; its plan is
 // read back (readPlan: planRenderers) and runs as any.
