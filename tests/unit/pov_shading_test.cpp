@@ -22,6 +22,8 @@
 //                            above the last, linear between neighbours
 //   average pigment_map      sum(w_i P_i) / sum(w_i), here all w_i = 1
 //   finish emission 1, ambient 0, diffuse 0: the pigment colour
+//   specular ks roughness r  per light: ks max(N.H, 0)^(1/r) Lc att [spot],
+//                            H = normalize(V + L), gated as phong
 //   phong ks phong_size n    per light: ks max(R.L, 0)^n Lc att [spot],
 //                            R = the eye ray reflected about N; 0 where
 //                            N.L <= 0 unless double_illuminate
@@ -187,6 +189,13 @@ dvec3 phong(const Specular& sp, const Point& q) {
     if (s.spotlight) {
       const double cos_theta = glm::dot(glm::normalize(q.x - loc), glm::normalize(sdl(s.point_at) - loc));
       if (!(cos_theta > std::cos(sdl(s.cone_deg) * std::numbers::pi / 180.0))) continue;
+    }
+    if (sp.blinn) {
+      // specular ks roughness rho: ks max(N.H, 0)^(1/rho), H = normalize(V + L) (issue #33's blinn_phong)
+      const dvec3 h = glm::normalize(-d + l);
+      const double ch = glm::dot(q.n, h);
+      if (ch > 0.0) out += sdl(sp.ks) * std::pow(ch, 1.0 / sdl(1.0 / sp.shininess)) * sdl(s.colour) * att;
+      continue;
     }
     const double c = glm::dot(r, l);
     if (c > 0.0) out += sdl(sp.ks) * std::pow(c, sdl(sp.shininess)) * sdl(s.colour) * att;
