@@ -86,7 +86,7 @@ struct ModelConstants {
     ambient();
     const bool cycles = m.variant == OrenNayar::Variant::Cycles;
     const models::OrenNayarAB ab = cycles ? models::orenNayarCyclesAB(m.sigma) : models::orenNayarQualitativeAB(m.sigma);
-    j["kd"] = m.kd, j["cycles"] = cycles, j["a"] = ab.a, j["b"] = ab.b;
+    j["kd"] = m.kd, j["sigma"] = m.sigma, j["cycles"] = cycles, j["a"] = ab.a, j["b"] = ab.b;
   }
 };
 

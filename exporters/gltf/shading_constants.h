@@ -24,7 +24,7 @@
 //                    factor and wrap_divisor = 1 + factor (wrap_around)
 //     minnaert       ambient = A, kd, k
 //     blinn_phong    ka, kd, ks, shininess, specular (ks != 0), ka_ambient = ka A
-//     oren_nayar     ambient = A, kd, cycles (variant cycles), a and b
+//     oren_nayar     ambient = A, kd, sigma, cycles (variant cycles), a and b
 //                    (models::orenNayarQualitativeAB / orenNayarCyclesAB)
 //   lights          the non-ambient lights, in scene order:
 //     kind          "point" | "spot" | "directional"

@@ -197,14 +197,14 @@ vec3 shade(vec3 p, vec3 n, vec3 v, vec3 c) {
     yiq.x = yiq.x * dl + u_ks * ssum - u_offset;  // WorkCol.y = WorkCol.y * Diffuse + Specular - 0.1
     return yiqToRgb(yiq);
   }
-  if (u_model == MODEL_MINNAERT || u_model == MODEL_OREN_NAYAR) {
+  if ((u_model == MODEL_MINNAERT) || (u_model == MODEL_OREN_NAYAR)) {
     vec3 diff = vec3(0.0);
     for (int i = 0; i < u_light_count; ++i) {
       vec3 L; float att; bool lit;
       sampleLight(u_lights[i], p, L, att, lit);
       if (!lit) continue;
       float x = dot(n, L), y = dot(n, v);
-      float o = u_model == MODEL_MINNAERT ? minnaertTerm(x, y) : orenNayarTerm(x, y, dot(L, v));
+      float o = (u_model == MODEL_MINNAERT) ? minnaertTerm(x, y) : orenNayarTerm(x, y, dot(L, v));
       diff += att * u_lights[i].colour_luma.rgb * o;
     }
     return c * (u_ambient + u_kd * diff);
