@@ -272,7 +272,7 @@ class LightTerm:
     R.V (built on first use)."""
 
     def __init__(self, g, light, P, N, V, NV):
-        self.g, self.light, self.V, self.NV = g, light, V, NV
+        self.g, self.light, self.V, self.NV, self.N = g, light, V, NV, N
         self.att = self.lit = None
         if light["kind"] == "directional":
             self.L = g.const(light["to_light"])
@@ -321,11 +321,12 @@ class LightTerm:
 # checks these lists against the registry.
 PHONG_MODELS = ("classic_phong", "yiq_luma")
 FORSYTH_MODELS = ("lambert", "wrap_around", "hemispherical", "bidirectional", "trilight")
+ISSUE33_DIFFUSE_BLINN_MODELS = ("minnaert", "blinn_phong", "oren_nayar")
 
 
 def unknown_model(t):
     fail("lighting model %r: this harness builds no node graph for it (it knows %s)"
-         % (t, ", ".join(PHONG_MODELS + FORSYTH_MODELS)))
+         % (t, ", ".join(PHONG_MODELS + FORSYTH_MODELS + ISSUE33_DIFFUSE_BLINN_MODELS)))
 
 
 def forsyth(g, k, x):
@@ -345,6 +346,54 @@ def forsyth(g, k, x):
     return out
 
 
+def issue33_colour(g, k, lights, NV, C):
+    """minnaert, blinn_phong and oren_nayar (docs/models.md) as nodes."""
+    t = k["model"]
+    if t == "blinn_phong":
+        # C (x) (ka A + kd sum att Lc clamp(N.L)) + ks sum att Lc clamp(N.H)^n,
+        # H = normalize(L + V): N.H = (N.L + N.V) / |L + V|, |L + V| =
+        # sqrt(2 + 2 L.V); 0 where L + V = 0 (the reference's zero H).
+        ka, kd, ks, n = k["ka"], k["kd"], k["ks"], k["shininess"]
+        diff = (0.0, 0.0, 0.0)
+        spec = (0.0, 0.0, 0.0)
+        for lt in lights:
+            diff = g.vadd(diff, g.scale(lt.light["colour"], lt.weighted(g.clamp0(lt.x))))
+            if k["specular"]:
+                H = g.vmath("NORMALIZE", g.vadd(lt.L, lt.V))  # Blender's normalize: 0 stays 0
+                nh = g.vmath("DOT_PRODUCT", H, lt.N)
+                s = g.math("POWER", g.clamp0(nh), n) if n != 0.0 else 1.0
+                spec = g.vadd(spec, g.scale(lt.light["colour"], lt.weighted(s)))
+        out = g.vmul(C, g.vadd(tuple(k["ka_ambient"]), g.scale(diff, kd)))
+        return g.vadd(out, g.scale(spec, ks)) if k["specular"] else out
+    acc = (0.0, 0.0, 0.0)
+    for lt in lights:
+        x = lt.x
+        xc = g.clamp0(x)
+        lit = g.math("GREATER_THAN", x, 0.0)  # 0 where N.L <= 0
+        if t == "minnaert":
+            # clamp(x)^k clamp(y)^(k-1); x where k = 1; 0 where y <= 0 otherwise
+            kk = k["k"]
+            if kk == 1.0:
+                o = xc
+            else:
+                seen = g.math("GREATER_THAN", NV, 0.0)
+                yc = g.math("MAXIMUM", NV, 1e-30)  # keeps POWER finite where seen is 0
+                o = g.mul(g.mul(g.math("POWER", xc, kk), g.math("POWER", yc, kk - 1.0)), g.mul(lit, seen))
+        else:
+            # s = L.V - x clamp(y); qualitative x (a + b max(s, 0) / max(x, y)),
+            # cycles x (a + b t), t = s / max(x, y) where s > 0, else s
+            yc = g.clamp0(NV)
+            s = g.math("SUBTRACT", g.vmath("DOT_PRODUCT", lt.L, lt.V), g.mul(xc, yc))
+            pos = g.math("GREATER_THAN", s, 0.0)
+            m = g.math("MAXIMUM", g.math("MAXIMUM", xc, yc), 1e-30)  # > 0 where it matters (x > 0)
+            tpos = g.mul(pos, g.math("DIVIDE", s, m))
+            tt = g.add(tpos, g.mul(g.math("SUBTRACT", 1.0, pos), s)) if k["cycles"] else tpos
+            o = g.mul(xc, g.add(k["a"], g.mul(k["b"], tt)))
+        term = g.scale(lt.light["colour"], lt.weighted(o))
+        acc = g.vadd(acc, term)
+    return g.vmul(C, g.vadd(tuple(k["ambient"]), g.scale(acc, k["kd"])))
+
+
 def model_colour(g, k, P, N, V, C):
     """The colour of docs/models.md as nodes, from the constants k."""
     NV = g.vmath("DOT_PRODUCT", N, V)
@@ -353,8 +402,10 @@ def model_colour(g, k, P, N, V, C):
         for lt in lights:
             lt.unit_r_of = N
     t = k["model"]
-    if t not in PHONG_MODELS + FORSYTH_MODELS:
+    if t not in PHONG_MODELS + FORSYTH_MODELS + ISSUE33_DIFFUSE_BLINN_MODELS:
         unknown_model(t)
+    if t in ISSUE33_DIFFUSE_BLINN_MODELS:
+        return issue33_colour(g, k, lights, NV, C)
     if t == "classic_phong":
         ka, kd, ks, n = k["ka"], k["kd"], k["ks"], k["shininess"]
         if k["course"]:

@@ -72,6 +72,22 @@ struct ModelConstants {
     ambient();
     j["c0"] = vec(m.c0), j["c1"] = vec(m.c1), j["c2"] = vec(m.c2);
   }
+  // issue #33's models
+  void operator()(const Minnaert& m) const {
+    ambient();
+    j["kd"] = m.kd, j["k"] = m.k;
+  }
+  void operator()(const BlinnPhong& m) const {
+    j["ka"] = m.ka, j["kd"] = m.kd, j["ks"] = m.ks, j["shininess"] = m.shininess;
+    j["specular"] = shader.usesSpecular();
+    j["ka_ambient"] = vec(m.ka * shader.ambient());
+  }
+  void operator()(const OrenNayar& m) const {
+    ambient();
+    const bool cycles = m.variant == OrenNayar::Variant::Cycles;
+    const models::OrenNayarAB ab = cycles ? models::orenNayarCyclesAB(m.sigma) : models::orenNayarQualitativeAB(m.sigma);
+    j["kd"] = m.kd, j["sigma"] = m.sigma, j["cycles"] = cycles, j["a"] = ab.a, j["b"] = ab.b;
+  }
 };
 
 }  // namespace

@@ -22,6 +22,10 @@
 //                    ambient_luma = Y(A), luma_row (Y of the listing)
 //     forsyth family ambient = A, c0, c1, c2, c0_minus_c2 (hemispherical),
 //                    factor and wrap_divisor = 1 + factor (wrap_around)
+//     minnaert       ambient = A, kd, k
+//     blinn_phong    ka, kd, ks, shininess, specular (ks != 0), ka_ambient = ka A
+//     oren_nayar     ambient = A, kd, sigma, cycles (variant cycles), a and b
+//                    (models::orenNayarQualitativeAB / orenNayarCyclesAB)
 //   lights          the non-ambient lights, in scene order:
 //     kind          "point" | "spot" | "directional"
 //     colour, luma  Lc and Y(Lc) (normalised luma, models::lightLuma)

@@ -30,9 +30,11 @@ using glm::dvec3;
 
 namespace {
 
-std::string finish(double ks, double n) {
+// blinn: POV-Ray's `specular ks roughness 1/n` (its exponent is 1/roughness).
+std::string finish(double ks, double n, bool blinn = false) {
   std::string f = "finish { ambient 0 diffuse 0 emission 1";
-  if (ks != 0.0) f += " phong " + num(ks) + " phong_size " + num(n);
+  if (ks != 0.0 && blinn) f += " specular " + num(ks) + " roughness " + num(1.0 / n);
+  else if (ks != 0.0) f += " phong " + num(ks) + " phong_size " + num(n);
   return f + " }";
 }
 
@@ -184,12 +186,12 @@ PovExport exportPov(const Scene& input, const std::filesystem::path& dir, const 
         // texture_map entries cannot be layered in place: declared layers.
         o << "#declare XvalLayer0" << sx << " = texture { pigment { XvalEmission" << sx << " } " << finish(0, 0)
           << " }" << top << "\n#declare XvalLayer1" << sx << " = texture { pigment { XvalEmission" << sx
-          << " } " << finish(sp.ks, sp.shininess) << " }" << top << "\n#declare XvalMaterial" << sx
+          << " } " << finish(sp.ks, sp.shininess, sp.blinn) << " }" << top << "\n#declare XvalMaterial" << sx
           << " = texture { " << patternSdl(*sp.att_texture_map) << "\n  texture_map { [0 XvalLayer0" << sx
           << "] [1 XvalLayer1" << sx << "] }\n}\n";
       } else {
         o << "#declare XvalMaterial" << sx << " = texture { pigment { XvalEmission" << sx << " } "
-          << finish(sp.ks, sp.shininess) << " }" << top << "\n";
+          << finish(sp.ks, sp.shininess, sp.blinn) << " }" << top << "\n";
       }
     }
   }

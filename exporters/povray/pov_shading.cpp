@@ -98,8 +98,40 @@ std::vector<std::pair<double, dvec3>> diffuseBreakpoints(const LightingModel& mo
           [](const WrapAround& m) { return P{{-1, dvec3(0)}, {-m.factor, dvec3(0)}, {1, m.c0}}; },
           [](const Hemispherical& m) { return P{{-1, m.c2}, {1, m.c0}}; },
           [](const BiDirectional& m) { return P{{-1, m.c2}, {0, dvec3(0)}, {1, m.c0}}; },
-          [](const Trilight& m) { return P{{-1, m.c2}, {0, m.c1}, {1, m.c0}}; }},
+          [](const Trilight& m) { return P{{-1, m.c2}, {0, m.c1}, {1, m.c0}}; },
+          // issue #33's models
+          [](const Minnaert&) { return P{}; },  // not piecewise linear: minnaertTerm's
+          [](const BlinnPhong& m) { return P{{-1, dvec3(0)}, {0, dvec3(0)}, {1, dvec3(m.kd)}}; },
+          [](const OrenNayar&) -> P {
+            throw ExportError(
+                "oren_nayar: its term x (A + B t) divides L.V - (N.L)(N.V) by max(N.L, N.V), a quotient of "
+                "two slope patterns; POV-Ray's pigments form only piecewise-linear maps, products and powers "
+                "of pattern values in [0, 1) (pigment_pattern wraps 1 and above), so it cannot be expressed");
+          }},
       model);
+}
+
+// minnaert's term of one light (issue #33), per unit light colour times
+// kd Lc: clamp(x)^k clamp(y)^(k-1), x = N.L, y = N.V. Each of clamp(x) and
+// clamp(y) is a slope map scaled by 1/M (M = kMinnaertScale > 1, so the
+// grey value stays below 1, where pigment_pattern does not wrap); poly_wave
+// raises it to k and k - 1; the product is a map over the first power
+// inside `times` of the second, its top entry kd Lc M^(2k - 1) undoing the
+// scaling. Refused for k < 1: clamp(y)^(k-1) is unbounded (a grey value
+// above 1 wraps).
+inline constexpr double kMinnaertScale = 1.001;
+Pigment minnaertTerm(const Light& l, dvec3 eye, const Minnaert& m, dvec3 colour) {
+  if (m.k < 1.0)
+    throw ExportError("minnaert: k = " + num(m.k) +
+                      " < 1 makes clamp(N.V)^(k-1) unbounded towards the silhouette, which a POV-Ray pigment "
+                      "value (a grey in [0, 1), wrapped above) cannot carry; k >= 1 is exported");
+  const double M = kMinnaertScale;
+  auto g = [](double v) { return constant(dvec3(v)); };
+  const Pigment x = map(slopePattern(l), {{0.0, g(0.0)}, {0.5, g(0.0)}, {1.0, g(1.0 / M)}});
+  Pigment term = map(greyPower(x, m.k), {{0.0, g(0.0)}, {1.0, constant(m.kd * colour * std::pow(M, 2.0 * m.k - 1.0))}});
+  if (m.k == 1.0) return term;
+  const Pigment y = map(slopeTowards(eye), {{0.0, g(0.0)}, {0.5, g(0.0)}, {1.0, g(1.0 / M)}});
+  return times(greyPower(y, m.k - 1.0), term);
 }
 
 dvec3 ambientSum(const Scene& s) {
@@ -116,10 +148,16 @@ Pigment emissionLinear(const Scene& s, const std::vector<LightInfo>& lights, boo
   const LightingModel& model = s.material.model;
   dvec3 ambient = ambientSum(s);
   const auto* phong = std::get_if<ClassicPhong>(&model);
+  const auto* blinn = std::get_if<BlinnPhong>(&model);  // issue #33
+  const auto* minnaert = std::get_if<Minnaert>(&model);  // issue #33
   std::vector<Pigment> terms;
-  terms.push_back(constant(phong ? phong->ka * ambient : ambient));
+  terms.push_back(constant(phong ? phong->ka * ambient : blinn ? blinn->ka * ambient : ambient));
   auto points = diffuseBreakpoints(model);
   for (const auto& l : lights) {
+    if (minnaert) {
+      terms.push_back(perLight(l, minnaertTerm(*l.light, CameraRays(s.camera).origin, *minnaert, l.colour), true));
+      continue;
+    }
     auto scaled_points = points;
     for (auto& p : scaled_points) p.second *= l.colour;
     terms.push_back(perLight(l, slopeMap(*l.light, scaled_points), true));
@@ -293,6 +331,12 @@ Specular specular(const Scene& s, const std::vector<LightInfo>& lights, bool fil
   } else if (auto* m = std::get_if<YiqLuma>(&model)) {
     sp.ks = m->ks, sp.shininess = m->shininess;
     colour = [](const LightInfo& l) { return dvec3(models::lightLuma(l.colour)); };
+  } else if (auto* m = std::get_if<BlinnPhong>(&model)) {  // issue #33: POV-Ray's `specular`
+    sp.ks = m->ks, sp.shininess = m->shininess, sp.blinn = true;
+    if (m->ks != 0.0 && !(m->shininess > 0.0))
+      throw ExportError("blinn_phong: shininess " + num(m->shininess) +
+                        " is exported as POV-Ray's `specular ks roughness 1/n`, which needs n > 0");
+    colour = [](const LightInfo& l) { return l.colour; };
   }
   if (sp.ks == 0.0) return sp;
   // 1/(c + l d + q d^2) with l > 0 and q > 0 and no real roots apart: a
@@ -303,6 +347,10 @@ Specular specular(const Scene& s, const std::vector<LightInfo>& lights, bool fil
   };
   const dvec3 eye = CameraRays(s.camera).origin;
   for (const auto& l : lights) {
+    if (lights.size() > 1 && general(l) && sp.blinn)
+      throw ExportError("blinn_phong: attenuation 1/(c + l d + q d^2) with l > 0, q > 0 and l^2 < 4 q c (or "
+                        "nearly equal roots) on a light with a highlight, among several lights: no sum of POV-Ray "
+                        "light sources gives it, and the emission-pigment highlight is classic Phong's R.V");
     if (lights.size() > 1 && general(l)) {
       highlights.push_back(highlight(l, eye, sp.ks, sp.shininess, colour(l)));
       continue;

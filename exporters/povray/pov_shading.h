@@ -33,6 +33,9 @@ std::string lightSourceSdl(const LightSource& l);
 
 struct Specular {
   double ks = 0.0, shininess = 0.0;  // finish { phong ks phong_size shininess }
+  // issue #33's blinn_phong: finish { specular ks roughness 1/shininess }
+  // instead (POV-Ray: ks max(N.H, 0)^(1/roughness), H = normalize(L + V)).
+  bool blinn = false;
   std::vector<LightSource> light_sources;
   // A texture_map over this pattern blends the material without (0) and
   // with (1) the phong term: the one general attenuation of the highlight.

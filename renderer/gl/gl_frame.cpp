@@ -59,6 +59,8 @@ struct ModelUniforms {
   bool course = false, specular = false;
   float ka = 1, kd = 1, ks = 1, n = 55, offset = 0.1f, factor = 0;
   glm::vec3 c0{1}, c1{0}, c2{0};
+  bool on_cycles = false;    // oren_nayar: variant cycles
+  float on_a = 1, on_b = 0;  // oren_nayar: A, B (models::orenNayar*AB)
 };
 
 // u_model is the registry's id (glsl_models.cpp's MODEL_<NAME> constants).
@@ -81,6 +83,18 @@ ModelUniforms modelUniforms(const LightingModel& m) {
                  [&u](const BiDirectional& mm) { u.c0 = glm::vec3(mm.c0), u.c2 = glm::vec3(mm.c2); },
                  [&u](const Trilight& mm) {
                    u.c0 = glm::vec3(mm.c0), u.c1 = glm::vec3(mm.c1), u.c2 = glm::vec3(mm.c2);
+                 },
+                 // issue #33's models
+                 [&u](const Minnaert& mm) { u.kd = float(mm.kd), u.n = float(mm.k); },
+                 [&u](const BlinnPhong& mm) {
+                   u.ka = float(mm.ka), u.kd = float(mm.kd), u.ks = float(mm.ks), u.n = float(mm.shininess);
+                   u.specular = mm.ks != 0.0;
+                 },
+                 [&u](const OrenNayar& mm) {
+                   u.kd = float(mm.kd), u.on_cycles = mm.variant == OrenNayar::Variant::Cycles;
+                   const models::OrenNayarAB ab = u.on_cycles ? models::orenNayarCyclesAB(mm.sigma)
+                                                              : models::orenNayarQualitativeAB(mm.sigma);
+                   u.on_a = float(ab.a), u.on_b = float(ab.b);
                  }},
              m);
   return u;
@@ -136,6 +150,9 @@ void setMaterialUniforms(GLuint p, const Draw& d) {
   glUniform3f(loc("u_c0"), mu.c0.x, mu.c0.y, mu.c0.z);
   glUniform3f(loc("u_c1"), mu.c1.x, mu.c1.y, mu.c1.z);
   glUniform3f(loc("u_c2"), mu.c2.x, mu.c2.y, mu.c2.z);
+  glUniform1i(loc("u_on_cycles"), mu.on_cycles);
+  glUniform1f(loc("u_on_a"), mu.on_a);
+  glUniform1f(loc("u_on_b"), mu.on_b);
   glUniform3f(loc("u_base"), d.base.x, d.base.y, d.base.z);
   glUniform1i(loc("u_texture"), d.texture_mode);
 }

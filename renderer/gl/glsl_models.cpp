@@ -32,6 +32,8 @@ uniform bool u_course;     // classic_phong's course variant
 uniform bool u_specular;   // ks != 0
 uniform float u_ka, u_kd, u_ks, u_n, u_offset, u_factor;
 uniform vec3 u_c0, u_c1, u_c2;
+uniform bool u_on_cycles;  // oren_nayar's variant cycles
+uniform float u_on_a, u_on_b;  // oren_nayar's A, B
 uniform vec3 u_ambient;    // A: the ambient lights' summed colour
 uniform float u_ambient_luma;  // A_Y = lightLuma(A)
 uniform vec3 u_base;
@@ -116,6 +118,35 @@ vec3 forsyth(float x) {
   return vec3(0.0);  // not of Forsyth's family: shade() does not call this
 }
 
+// ---- issue #33's models, per unit light colour (shading/models.h) ------
+// Minnaert: clamp(x)^k clamp(y)^(k-1); 0 where x <= 0; x where k = 1; 0
+// where y <= 0 otherwise (GLSL's pow is undefined for a zero base and a
+// non-positive exponent: those cases never reach it).
+float minnaertTerm(float x, float y) {
+  if (!(x > 0.0)) return 0.0;
+  if (u_n == 1.0) return x;
+  if (!(y > 0.0)) return 0.0;
+  return pow(x, u_n) * pow(y, u_n - 1.0);
+}
+// Oren-Nayar: s = L.V - x clamp(y); qualitative x (A + B max(s, 0) / max(x, y)),
+// cycles x (A + B t), t = s / max(x, y) where s > 0, else s.
+float orenNayarTerm(float x, float y, float lv) {
+  if (!(x > 0.0)) return 0.0;
+  float yc = clamp0(y);
+  float s = lv - x * yc;
+  float t = s > 0.0 ? s / max(x, yc) : (u_on_cycles ? s : 0.0);
+  return x * (u_on_a + u_on_b * t);
+}
+// Blinn-Phong: clamp(N.H)^n, H = normalize(L + V) (0 where L + V = 0); n = 0 gives 1.
+float blinnSpecular(vec3 N, vec3 L, vec3 V) {
+  if (u_n == 0.0) return 1.0;
+  vec3 s = L + V;
+  float len = length(s);
+  if (!(len > 0.0)) return 0.0;
+  float nh = saturate1(dot(N, s / len));
+  return nh > 0.0 ? pow(nh, u_n) : 0.0;
+}
+
 // ---- the model at one point (shading/shader.h), unsaturated -------------
 // p: relative to the eye, n: unit normal, v: unit towards the eye, c: C.
 vec3 shade(vec3 p, vec3 n, vec3 v, vec3 c) {
@@ -165,6 +196,30 @@ vec3 shade(vec3 p, vec3 n, vec3 v, vec3 c) {
     vec3 yiq = rgbToYiq(c);
     yiq.x = yiq.x * dl + u_ks * ssum - u_offset;  // WorkCol.y = WorkCol.y * Diffuse + Specular - 0.1
     return yiqToRgb(yiq);
+  }
+  if ((u_model == MODEL_MINNAERT) || (u_model == MODEL_OREN_NAYAR)) {
+    vec3 diff = vec3(0.0);
+    for (int i = 0; i < u_light_count; ++i) {
+      vec3 L; float att; bool lit;
+      sampleLight(u_lights[i], p, L, att, lit);
+      if (!lit) continue;
+      float x = dot(n, L), y = dot(n, v);
+      float o = (u_model == MODEL_MINNAERT) ? minnaertTerm(x, y) : orenNayarTerm(x, y, dot(L, v));
+      diff += att * u_lights[i].colour_luma.rgb * o;
+    }
+    return c * (u_ambient + u_kd * diff);
+  }
+  if (u_model == MODEL_BLINN_PHONG) {
+    vec3 diff = vec3(0.0), spec = vec3(0.0);
+    for (int i = 0; i < u_light_count; ++i) {
+      vec3 L; float att; bool lit;
+      sampleLight(u_lights[i], p, L, att, lit);
+      if (!lit) continue;
+      vec3 w = att * u_lights[i].colour_luma.rgb;
+      diff += w * clamp0(dot(n, L));
+      if (u_specular) spec += w * blinnSpecular(n, L, v);
+    }
+    return c * (u_ka * u_ambient + u_kd * diff) + u_ks * spec;
   }
   vec3 acc = u_ambient;
   for (int i = 0; i < u_light_count; ++i) {

@@ -18,7 +18,8 @@
 // texture (nearest or bilinear; not trilinear, whose level needs each hit's
 // footprint) or base colour; the normal re-normalised (not the scene
 // option normalize_normal false, with its normalize(R)). Anything else (flat,
-// gouraud, course variant, Forsyth's family) is not built: batchShading()
+// gouraud, course variant, Forsyth's family, minnaert, blinn_phong,
+// oren_nayar) is not built: batchShading()
 // returns nothing and the renderer shades one hit at a time.
 #pragma once
 

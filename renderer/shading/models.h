@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "colour/yiq.h"
@@ -79,6 +80,78 @@ template <class T> vec3<T> biDirectional(T x, vec3<T> c0, vec3<T> c2) {
 // c0 clamp(x) + c1 (1 - |x|) + c2 clamp(-x)
 template <class T> vec3<T> trilight(T x, vec3<T> c0, vec3<T> c1, vec3<T> c2) {
   return c0 * clamp0(x) + c1 * (T(1) - std::abs(x)) + c2 * clamp0(-x);
+}
+
+// ---- Minnaert, Blinn-Phong, Oren-Nayar (issue #33), per unit light colour
+// Minnaert (ApJ 93:403, 1941): M = clamp(x)^k clamp(y)^(k-1), y = N.V.
+// x <= 0 (or NaN) gives 0. y <= 0 gives clamp(x) for k = 1 (pow(0, 0) = 1:
+// k = 1 is Lambert everywhere, bit for bit, since pow(x, 1) = x) and 0 for
+// any other k (for k < 1 the power of 0 would be infinite: the point is
+// not seen, and the term is taken as 0). For k < 1 and y > 0 the factor
+// y^(k-1) grows without bound towards the silhouette (y -> 0): it
+// overflows to +inf where y^(k-1) exceeds the precision's range, and the
+// final saturate takes C (x) inf to 1 where C > 0 (the limit).
+// Numerics: two pow calls, each correctly rounded to within an ulp or so.
+template <class T> T minnaert(T x, T y, T k) {
+  if (!(x > T(0))) return T(0);
+  if (k == T(1)) return x;
+  if (!(y > T(0))) return T(0);
+  return std::pow(x, k) * std::pow(y, k - T(1));
+}
+
+// Blinn's half vector H = normalize(L + V) of unit L and V; 0 where L + V
+// is 0 (the light exactly opposite the eye), whose N.H = 0 gives a zero
+// highlight (n > 0). The highlight clamp(N.H)^n is phongSpecular(H, N, n)
+// (above): from |H - N|, without the cancellation of 1 - N.H at high n.
+template <class T> vec3<T> halfVector(vec3<T> l, vec3<T> v) {
+  const vec3<T> s = l + v;
+  const T len = glm::length(s);
+  return len > T(0) ? s / len : vec3<T>(0);
+}
+
+// Oren-Nayar, both variants, from x = N.L, y = N.V and lv = L.V:
+//   s = lv - x clamp(y)  (= sin(ti) sin(tr) cos(phi_i - phi_r) for unit
+//   vectors and y >= 0; y is clamped at 0 as Cycles clamps nv, in both).
+// 0 where x <= 0 (or NaN); there max(x, y) >= x > 0, so the division is
+// safe. Numerics: s cancels where L.V ~ x y (near the plane of incidence
+// at 90 degrees); its absolute error is a few ulps of 1, and the division
+// by max(x, y) >= x multiplies it by at most 1/x, which the leading x
+// cancels: O's absolute error stays a few ulps.
+// The qualitative model (Oren & Nayar 1994), sigma in radians:
+//   A = 1 - 0.5 sigma^2 / (sigma^2 + 0.33), B = 0.45 sigma^2 / (sigma^2 + 0.09),
+//   O = x (A + B max(s, 0) / max(x, clamp(y))).
+struct OrenNayarAB {
+  double a, b;
+};
+inline OrenNayarAB orenNayarQualitativeAB(double sigma) {
+  const double s2 = sigma * sigma;
+  return {1.0 - 0.5 * s2 / (s2 + 0.33), 0.45 * s2 / (s2 + 0.09)};
+}
+template <class T> T orenNayarQualitative(T x, T y, T lv, T a, T b) {
+  if (!(x > T(0))) return T(0);
+  const T yc = clamp0(y);
+  const T s = lv - x * yc;
+  return x * (a + (s > T(0) ? b * s / std::max(x, yc) : T(0)));
+}
+// Blender 3.4 Cycles' Diffuse BSDF with roughness sigma > 0
+// (bsdf_oren_nayar.h: a = 1 / (pi + (3 pi - 4)/6 sigma), b = sigma a,
+// t = s / max(nl, nv) only where s > 0, nl and nv clamped at 0), times pi,
+// so that sigma = 0 is Lambert's clamp(N.L) (Cycles' is N.L / pi):
+//   a = pi / (pi + 0.904130 sigma), b = sigma a,
+//   O = x (a + b t),  t = s / max(x, clamp(y)) where s > 0, else s.
+// (3 pi - 4)/6 = 0.9041297... is written exactly below; Cycles rounds it to
+// float, as it does sigma.
+inline OrenNayarAB orenNayarCyclesAB(double sigma) {
+  constexpr double pi = 3.14159265358979323846;
+  const double a = pi / (pi + (3.0 * pi - 4.0) / 6.0 * sigma);
+  return {a, sigma * a};
+}
+template <class T> T orenNayarCycles(T x, T y, T lv, T a, T b) {
+  if (!(x > T(0))) return T(0);
+  const T yc = clamp0(y);
+  T t = lv - x * yc;
+  if (t > T(0)) t /= std::max(x, yc);
+  return x * (a + b * t);
 }
 
 // ---- YIQ (paper eq. 4-5 and the Table 1 listing) ------------------------

@@ -12,6 +12,13 @@
 //     F  = C + (Y Dl + S - luma_offset - Y) (1,1,1)
 //   lambert / wrap_around / hemispherical / bidirectional / trilight:
 //     F = C (x) (A + sum_l att Lc (x) forsyth(N.L))
+//   minnaert (M = models::minnaert(N.L, N.V, k)):
+//     F = C (x) (A + kd sum_l att Lc M)
+//   blinn_phong (H = models::halfVector(L, V)):
+//     F = C (x) (ka A + kd sum_l att Lc clamp(N.L)) + ks sum_l att Lc clamp(N.H)^n
+//   oren_nayar (O = models::orenNayarQualitative or orenNayarCycles of N.L,
+//   N.V, L.V):
+//     F = C (x) (A + kd sum_l att Lc O)
 // A is the summed colour of the ambient lights; [lit] is 0 outside a spot
 // cone, where (except course's per-light ambient) a light adds nothing.
 // R = 2 (N.L) N - L is not gated by N.L (the listing does not gate it).
@@ -127,6 +134,32 @@ template <class T> class Shader {
         }
         return c * acc;
       }
+      // issue #33's models
+      case ModelId::Minnaert:
+      case ModelId::OrenNayar: {
+        V diff(0);
+        for (const auto& l : lights_) {
+          LightSample<T> s = sampleLight(l, p);
+          if (!s.lit) continue;
+          const T x = glm::dot(n, s.L), y = glm::dot(n, v);
+          const T o = kind_ == ModelId::Minnaert ? minnaert(x, y, n_)
+                      : on_cycles_             ? orenNayarCycles(x, y, glm::dot(s.L, v), on_a_, on_b_)
+                                               : orenNayarQualitative(x, y, glm::dot(s.L, v), on_a_, on_b_);
+          diff += s.att * l.color * o;
+        }
+        return c * (ambient_ + kd_ * diff);
+      }
+      case ModelId::BlinnPhong: {
+        V diff(0), spec(0);
+        for (const auto& l : lights_) {
+          LightSample<T> s = sampleLight(l, p);
+          if (!s.lit) continue;
+          V w = s.att * l.color;
+          diff += w * clamp0(glm::dot(n, s.L));
+          if (specular_) spec += w * phongSpecular(halfVector(s.L, v), n, n_);
+        }
+        return c * (ka_ * ambient_ + kd_ * diff) + ks_ * spec;
+      }
     }
     return V(0);  // unreachable: the switch covers every ModelId
   }
@@ -148,7 +181,10 @@ template <class T> class Shader {
       case ModelId::BiDirectional: return biDirectional(x, c0_, c2_);
       case ModelId::Trilight: return trilight(x, c0_, c1_, c2_);
       case ModelId::ClassicPhong:
-      case ModelId::YiqLuma: break;  // not of Forsyth's family: shade() does not call this
+      case ModelId::YiqLuma:
+      case ModelId::Minnaert:
+      case ModelId::BlinnPhong:
+      case ModelId::OrenNayar: break;  // not of Forsyth's family: shade() does not call this
     }
     return V(0);
   }
@@ -171,6 +207,21 @@ template <class T> class Shader {
   void setParams(const BiDirectional& m) { kind_ = ModelId::BiDirectional, c0_ = V(m.c0), c2_ = V(m.c2); }
   void setParams(const Trilight& m) { kind_ = ModelId::Trilight, c0_ = V(m.c0), c1_ = V(m.c1), c2_ = V(m.c2); }
 
+  // issue #33's models (n_ carries Minnaert's k).
+  void setParams(const Minnaert& m) { kind_ = ModelId::Minnaert, kd_ = T(m.kd), n_ = T(m.k); }
+  void setParams(const BlinnPhong& m) {
+    kind_ = ModelId::BlinnPhong;
+    ka_ = T(m.ka), kd_ = T(m.kd), ks_ = T(m.ks), n_ = T(m.shininess);
+    specular_ = m.ks != 0.0;
+  }
+  void setParams(const OrenNayar& m) {
+    kind_ = ModelId::OrenNayar, kd_ = T(m.kd);
+    on_cycles_ = m.variant == OrenNayar::Variant::Cycles;
+    const models::OrenNayarAB ab =
+        on_cycles_ ? models::orenNayarCyclesAB(m.sigma) : models::orenNayarQualitativeAB(m.sigma);
+    on_a_ = T(ab.a), on_b_ = T(ab.b);
+  }
+
   ModelId kind_ = ModelId::ClassicPhong;
   glm::dvec3 origin_{0};
   std::vector<PreparedLight<T>> lights_;
@@ -179,6 +230,8 @@ template <class T> class Shader {
   bool course_ = false, specular_ = false, unit_reflection_ = false;
   T ka_ = 1, kd_ = 1, ks_ = 1, n_ = 55, offset_ = T(0.1), factor_ = 0;
   V c0_{1}, c1_{0}, c2_{0};
+  bool on_cycles_ = false;  // oren_nayar: its variant and constants
+  T on_a_ = 1, on_b_ = 0;
 };
 
 }  // namespace xval

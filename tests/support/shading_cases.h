@@ -105,6 +105,14 @@ inline std::vector<std::pair<std::string, LightingModel>> lightingModels(CaseRng
   m.push_back({"hemispherical", Hemispherical{r.colour(0.3, 1.0), r.colour(0.0, 0.5)}});
   m.push_back({"bidirectional", BiDirectional{r.colour(0.3, 1.0), r.colour(0.0, 0.5)}});
   m.push_back({"trilight", Trilight{r.colour(0.3, 1.0), r.colour(0.0, 0.4), r.colour(0.0, 0.5)}});
+  // issue #33's models, from a generator of their own (the cases above keep their values).
+  CaseRng r33(33);
+  m.push_back({"minnaert1", Minnaert{r33.uniform(0.5, 1.0), 1.0}});
+  m.push_back({"minnaert", Minnaert{r33.uniform(0.5, 1.0), r33.uniform(1.2, 2.5)}});
+  m.push_back({"blinn_phong", BlinnPhong{r33.uniform(0.05, 0.3), r33.uniform(0.5, 1.0), r33.uniform(0.2, 1.0),
+                                         r33.uniform(5, 80)}});
+  m.push_back({"oren_nayar_q", OrenNayar{OrenNayar::Variant::Qualitative, r33.uniform(0.5, 1.0), r33.uniform(0.2, 1.0)}});
+  m.push_back({"oren_nayar_c", OrenNayar{OrenNayar::Variant::Cycles, r33.uniform(0.5, 1.0), r33.uniform(0.2, 1.0)}});
   return m;
 }
 

@@ -186,8 +186,11 @@ TEST(LightingModels, TheBlenderHarnessBuildsEveryModel) {
   std::set<std::string> known = pythonTuple(text.str(), "PHONG_MODELS");
   const std::set<std::string> forsyth = pythonTuple(text.str(), "FORSYTH_MODELS");
   known.insert(forsyth.begin(), forsyth.end());
+  // issue #33's minnaert, blinn_phong, oren_nayar
+  const std::set<std::string> issue33 = pythonTuple(text.str(), "ISSUE33_DIFFUSE_BLINN_MODELS");
+  known.insert(issue33.begin(), issue33.end());
   const std::set<std::string> registry(kModelNames.begin(), kModelNames.end());
-  EXPECT_EQ(known, registry) << path << ": PHONG_MODELS + FORSYTH_MODELS";
+  EXPECT_EQ(known, registry) << path << ": PHONG_MODELS + FORSYTH_MODELS + ISSUE33_DIFFUSE_BLINN_MODELS";
 }
 
 TEST(LightingModels, TheShadingCasesCoverEveryModel) {

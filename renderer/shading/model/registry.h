@@ -30,6 +30,10 @@
 #include "shading/model/trilight.h"
 #include "shading/model/wrap_around.h"
 #include "shading/model/yiq_luma.h"
+// issue #33: Minnaert, Blinn-Phong, Oren-Nayar
+#include "shading/model/blinn_phong.h"
+#include "shading/model/minnaert.h"
+#include "shading/model/oren_nayar.h"
 
 #define XVAL_LIGHTING_MODELS(X) \
   X(ClassicPhong)               \
@@ -38,7 +42,10 @@
   X(WrapAround)                 \
   X(Hemispherical)              \
   X(BiDirectional)              \
-  X(Trilight)
+  X(Trilight)                   \
+  X(Minnaert)                   \
+  X(BlinnPhong)                 \
+  X(OrenNayar)
 
 namespace xval {
 

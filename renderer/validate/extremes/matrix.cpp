@@ -369,6 +369,38 @@ std::vector<Case> extremesMatrix(const MatrixOptions& options) {
                     J::array({spot, ambient()}));
     out.push_back(c);
   }
+
+  // --- issue #33's models: roughness 0 and 1, k near 0, grazing angles ------
+  {
+    // A sphere lit from the side (L = +x), seen from +z: N.L and N.V both
+    // run to 0 at the terminator and the silhouette, where Oren-Nayar
+    // divides by max(N.L, N.V) and Minnaert's clamp(N.V)^(k-1) diverges.
+    auto sphereCase = [&](const std::string& name, const std::string& what, J model, J light) {
+      Case c;
+      c.name = name;
+      c.group = "issue #33 models";
+      c.what = what;
+      c.scene = scene(name, camera(kEye, {0, 0, 0}, 45, n), J::array({sphere()}),
+                      J{{"model", std::move(model)}, {"base_color", v3(0.8, 0.7, 0.6)}},
+                      J::array({std::move(light), ambient()}));
+      out.push_back(c);
+    };
+    const J side = directional({-1, 0, 0});
+    for (const char* variant : {"qualitative", "cycles"})
+      for (double sigma : {0.0, 1.0})
+        sphereCase(std::string("oren_nayar_") + variant + "_sigma" + (sigma == 0.0 ? "0" : "1"),
+                   std::string("oren_nayar ") + variant + ", sigma " + (sigma == 0.0 ? "0 (Lambert)" : "1") +
+                       ", lit from the side: N.L and N.V -> 0 at the terminator and the silhouette",
+                   {{"type", "oren_nayar"}, {"variant", variant}, {"kd", 1}, {"sigma", sigma}}, side);
+    sphereCase("minnaert_k1e-3",
+               "minnaert k = 1e-3, lit from the front: clamp(N.V)^(k-1) ~ 1 / N.V grows towards the "
+               "silhouette",
+               {{"type", "minnaert"}, {"kd", 1}, {"k", 1e-3}}, point(kFront));
+    sphereCase("blinn_phong_grazing",
+               "blinn_phong n = 55, lit from behind: H = normalize(L + V) near the silhouette, where L "
+               "and V are nearly opposite and |L + V| -> 0",
+               {{"type", "blinn_phong"}, {"ka", 1}, {"kd", 1}, {"ks", 1}, {"shininess", 55}}, point(kBehind));
+  }
   return out;
 }
 
