@@ -72,6 +72,16 @@ struct ModelConstants {
     ambient();
     j["c0"] = vec(m.c0), j["c1"] = vec(m.c1), j["c2"] = vec(m.c2);
   }
+  void operator()(const CookTorrance& m) const {
+    ambient();
+    const auto p = CookTorrance::params();
+    j["kd"] = m.kd, j["ks"] = m.ks, j["specular"] = shader.usesSpecular();
+    j["distribution"] = std::get<0>(p).nameOf(m.distribution);
+    j["geometry"] = std::get<1>(p).nameOf(m.geometry);
+    j["fresnel"] = std::get<2>(p).nameOf(m.fresnel);
+    j["f0"] = m.f0, j["alpha"] = m.roughness;
+    j["vgroove_min_vh"] = models::kVGrooveMinVh<double>;
+  }
 };
 
 }  // namespace

@@ -22,6 +22,10 @@
 //                    ambient_luma = Y(A), luma_row (Y of the listing)
 //     forsyth family ambient = A, c0, c1, c2, c0_minus_c2 (hemispherical),
 //                    factor and wrap_divisor = 1 + factor (wrap_around)
+//     cook_torrance  ambient = A, kd, ks, specular (ks != 0), distribution
+//                    ("ggx" | "beckmann"), geometry ("smith" |
+//                    "cook_torrance"), fresnel ("none" | "schlick"), f0,
+//                    alpha (= roughness), vgroove_min_vh (models.h)
 //   lights          the non-ambient lights, in scene order:
 //     kind          "point" | "spot" | "directional"
 //     colour, luma  Lc and Y(Lc) (normalised luma, models::lightLuma)

@@ -59,6 +59,9 @@ struct ModelUniforms {
   bool course = false, specular = false;
   float ka = 1, kd = 1, ks = 1, n = 55, offset = 0.1f, factor = 0;
   glm::vec3 c0{1}, c1{0}, c2{0};
+  // cook_torrance: the enums' values (models::Microfacet*), alpha, f0.
+  int ct_distribution = 0, ct_geometry = 0, ct_fresnel = 0;
+  float ct_alpha = 0.25f, ct_f0 = 0.04f;
 };
 
 // u_model is the registry's id (glsl_models.cpp's MODEL_<NAME> constants).
@@ -81,6 +84,11 @@ ModelUniforms modelUniforms(const LightingModel& m) {
                  [&u](const BiDirectional& mm) { u.c0 = glm::vec3(mm.c0), u.c2 = glm::vec3(mm.c2); },
                  [&u](const Trilight& mm) {
                    u.c0 = glm::vec3(mm.c0), u.c1 = glm::vec3(mm.c1), u.c2 = glm::vec3(mm.c2);
+                 },
+                 [&u](const CookTorrance& mm) {
+                   u.kd = float(mm.kd), u.ks = float(mm.ks), u.specular = mm.ks != 0.0;
+                   u.ct_distribution = int(mm.distribution), u.ct_geometry = int(mm.geometry);
+                   u.ct_fresnel = int(mm.fresnel), u.ct_alpha = float(mm.roughness), u.ct_f0 = float(mm.f0);
                  }},
              m);
   return u;
@@ -138,6 +146,11 @@ void setMaterialUniforms(GLuint p, const Draw& d) {
   glUniform3f(loc("u_c2"), mu.c2.x, mu.c2.y, mu.c2.z);
   glUniform3f(loc("u_base"), d.base.x, d.base.y, d.base.z);
   glUniform1i(loc("u_texture"), d.texture_mode);
+  glUniform1i(loc("u_ct_distribution"), mu.ct_distribution);
+  glUniform1i(loc("u_ct_geometry"), mu.ct_geometry);
+  glUniform1i(loc("u_ct_fresnel"), mu.ct_fresnel);
+  glUniform1f(loc("u_ct_alpha"), mu.ct_alpha);
+  glUniform1f(loc("u_ct_f0"), mu.ct_f0);
 }
 
 struct GlScene::Impl {

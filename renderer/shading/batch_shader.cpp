@@ -312,6 +312,7 @@ std::optional<BatchShading> batchShading(const Scene& scene, const Texture* text
     case ModelId::Hemispherical:
     case ModelId::BiDirectional:
     case ModelId::Trilight: return std::nullopt;
+    case ModelId::CookTorrance: return std::nullopt;  // shaded by Shader<float>, one hit at a time
   }
   prepareLights<float>(scene.lights, s.ambient, s.lights, eye);
   s.ambient_luma = models::lightLuma(s.ambient);

@@ -12,6 +12,8 @@
 //     F  = C + (Y Dl + S - luma_offset - Y) (1,1,1)
 //   lambert / wrap_around / hemispherical / bidirectional / trilight:
 //     F = C (x) (A + sum_l att Lc (x) forsyth(N.L))
+//   cook_torrance (S = pi F D G / (4 N.V), models::cookTorranceSpecular):
+//     F = C (x) (A + kd sum_l att Lc clamp(N.L)) + ks sum_l att Lc S
 // A is the summed colour of the ambient lights; [lit] is 0 outside a spot
 // cone, where (except course's per-light ambient) a light adds nothing.
 // R = 2 (N.L) N - L is not gated by N.L (the listing does not gate it).
@@ -127,6 +129,18 @@ template <class T> class Shader {
         }
         return c * acc;
       }
+      case ModelId::CookTorrance: {
+        V diff(0), spec(0);
+        for (const auto& l : lights_) {
+          LightSample<T> s = sampleLight(l, p);
+          if (!s.lit) continue;
+          V w = s.att * l.color;
+          diff += w * clamp0(glm::dot(n, s.L));
+          if (specular_) spec += w * cookTorranceSpecular(n, s.L, v, ct_.distribution, ct_.geometry, ct_.fresnel,
+                                                          T(ct_.roughness), T(ct_.f0));
+        }
+        return c * (ambient_ + kd_ * diff) + ks_ * spec;
+      }
     }
     return V(0);  // unreachable: the switch covers every ModelId
   }
@@ -148,7 +162,8 @@ template <class T> class Shader {
       case ModelId::BiDirectional: return biDirectional(x, c0_, c2_);
       case ModelId::Trilight: return trilight(x, c0_, c1_, c2_);
       case ModelId::ClassicPhong:
-      case ModelId::YiqLuma: break;  // not of Forsyth's family: shade() does not call this
+      case ModelId::YiqLuma:
+      case ModelId::CookTorrance: break;  // not of Forsyth's family: shade() does not call this
     }
     return V(0);
   }
@@ -171,6 +186,12 @@ template <class T> class Shader {
   void setParams(const BiDirectional& m) { kind_ = ModelId::BiDirectional, c0_ = V(m.c0), c2_ = V(m.c2); }
   void setParams(const Trilight& m) { kind_ = ModelId::Trilight, c0_ = V(m.c0), c1_ = V(m.c1), c2_ = V(m.c2); }
 
+  void setParams(const CookTorrance& m) {
+    kind_ = ModelId::CookTorrance, ct_ = m;
+    kd_ = T(m.kd), ks_ = T(m.ks);
+    specular_ = m.ks != 0.0;
+  }
+
   ModelId kind_ = ModelId::ClassicPhong;
   glm::dvec3 origin_{0};
   std::vector<PreparedLight<T>> lights_;
@@ -179,6 +200,7 @@ template <class T> class Shader {
   bool course_ = false, specular_ = false, unit_reflection_ = false;
   T ka_ = 1, kd_ = 1, ks_ = 1, n_ = 55, offset_ = T(0.1), factor_ = 0;
   V c0_{1}, c1_{0}, c2_{0};
+  CookTorrance ct_;  // its choices, roughness and f0
 };
 
 }  // namespace xval

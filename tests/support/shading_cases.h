@@ -105,6 +105,14 @@ inline std::vector<std::pair<std::string, LightingModel>> lightingModels(CaseRng
   m.push_back({"hemispherical", Hemispherical{r.colour(0.3, 1.0), r.colour(0.0, 0.5)}});
   m.push_back({"bidirectional", BiDirectional{r.colour(0.3, 1.0), r.colour(0.0, 0.5)}});
   m.push_back({"trilight", Trilight{r.colour(0.3, 1.0), r.colour(0.0, 0.4), r.colour(0.0, 0.5)}});
+  {  // cook_torrance: fixed numbers (no draws, so the cases above keep their random numbers)
+    using D = models::MicrofacetD;
+    using G = models::MicrofacetG;
+    using F = models::MicrofacetF;
+    m.push_back({"ct_ggx_smith", CookTorrance{D::Ggx, G::Smith, F::None, 0.04, 0.3, 0.7, 0.6}});
+    m.push_back({"ct_beckmann_vgroove", CookTorrance{D::Beckmann, G::VGroove, F::Schlick, 0.5, 0.35, 0.5, 0.8}});
+    m.push_back({"ct_beckmann_smith", CookTorrance{D::Beckmann, G::Smith, F::Schlick, 0.9, 0.2, 0.6, 0.5}});
+  }
   return m;
 }
 

@@ -186,8 +186,10 @@ TEST(LightingModels, TheBlenderHarnessBuildsEveryModel) {
   std::set<std::string> known = pythonTuple(text.str(), "PHONG_MODELS");
   const std::set<std::string> forsyth = pythonTuple(text.str(), "FORSYTH_MODELS");
   known.insert(forsyth.begin(), forsyth.end());
+  const std::set<std::string> microfacet = pythonTuple(text.str(), "MICROFACET_MODELS");
+  known.insert(microfacet.begin(), microfacet.end());
   const std::set<std::string> registry(kModelNames.begin(), kModelNames.end());
-  EXPECT_EQ(known, registry) << path << ": PHONG_MODELS + FORSYTH_MODELS";
+  EXPECT_EQ(known, registry) << path << ": PHONG_MODELS + FORSYTH_MODELS + MICROFACET_MODELS";
 }
 
 TEST(LightingModels, TheShadingCasesCoverEveryModel) {

@@ -25,6 +25,7 @@
 
 #include "shading/model/bidirectional.h"
 #include "shading/model/classic_phong.h"
+#include "shading/model/cook_torrance.h"
 #include "shading/model/hemispherical.h"
 #include "shading/model/lambert.h"
 #include "shading/model/trilight.h"
@@ -38,7 +39,8 @@
   X(WrapAround)                 \
   X(Hemispherical)              \
   X(BiDirectional)              \
-  X(Trilight)
+  X(Trilight)                   \
+  X(CookTorrance)
 
 namespace xval {
 
