@@ -361,7 +361,7 @@ def cook_torrance_specular(g, k, lt, N, V, NV):
         c = g.vmath("CROSS_PRODUCT", N, X)
         return g.vmath("DOT_PRODUCT", c, c)
 
-    alpha = k["alpha"]
+    alpha = k["roughness"]  # alpha itself (docs/models.md)
     a2 = alpha * alpha
     ggx = k["distribution"] == "ggx"
     c2 = g.mul(nh, nh)

@@ -79,7 +79,7 @@ struct ModelConstants {
     j["distribution"] = std::get<0>(p).nameOf(m.distribution);
     j["geometry"] = std::get<1>(p).nameOf(m.geometry);
     j["fresnel"] = std::get<2>(p).nameOf(m.fresnel);
-    j["f0"] = m.f0, j["alpha"] = m.roughness;
+    j["f0"] = m.f0, j["roughness"] = m.roughness;  // alpha
     j["vgroove_min_vh"] = models::kVGrooveMinVh<double>;
   }
 };

@@ -25,7 +25,7 @@
 //     cook_torrance  ambient = A, kd, ks, specular (ks != 0), distribution
 //                    ("ggx" | "beckmann"), geometry ("smith" |
 //                    "cook_torrance"), fresnel ("none" | "schlick"), f0,
-//                    alpha (= roughness), vgroove_min_vh (models.h)
+//                    roughness (alpha), vgroove_min_vh (models.h)
 //   lights          the non-ambient lights, in scene order:
 //     kind          "point" | "spot" | "directional"
 //     colour, luma  Lc and Y(Lc) (normalised luma, models::lightLuma)
