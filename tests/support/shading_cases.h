@@ -112,6 +112,7 @@ inline std::vector<std::pair<std::string, LightingModel>> lightingModels(CaseRng
     m.push_back({"ct_ggx_smith", CookTorrance{D::Ggx, G::Smith, F::None, 0.04, 0.3, 0.7, 0.6}});
     m.push_back({"ct_beckmann_vgroove", CookTorrance{D::Beckmann, G::VGroove, F::Schlick, 0.5, 0.35, 0.5, 0.8}});
     m.push_back({"ct_beckmann_smith", CookTorrance{D::Beckmann, G::Smith, F::Schlick, 0.9, 0.2, 0.6, 0.5}});
+    m.push_back({"ct_ks0", CookTorrance{D::Ggx, G::Smith, F::None, 0.04, 0.25, 0.8, 0.0}});
   }
   return m;
 }
