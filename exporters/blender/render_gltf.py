@@ -90,6 +90,7 @@ from the scene is evaluated or formatted into code.
 import argparse
 import array
 import json
+import math
 import os
 import sys
 
@@ -322,11 +323,13 @@ class LightTerm:
 PHONG_MODELS = ("classic_phong", "yiq_luma")
 FORSYTH_MODELS = ("lambert", "wrap_around", "hemispherical", "bidirectional", "trilight")
 ISSUE33_DIFFUSE_BLINN_MODELS = ("minnaert", "blinn_phong", "oren_nayar")
+MICROFACET_MODELS = ("cook_torrance",)
 
 
 def unknown_model(t):
     fail("lighting model %r: this harness builds no node graph for it (it knows %s)"
-         % (t, ", ".join(PHONG_MODELS + FORSYTH_MODELS + ISSUE33_DIFFUSE_BLINN_MODELS)))
+         % (t, ", ".join(PHONG_MODELS + FORSYTH_MODELS + ISSUE33_DIFFUSE_BLINN_MODELS
+                              + MICROFACET_MODELS)))
 
 
 def forsyth(g, k, x):
@@ -394,6 +397,74 @@ def issue33_colour(g, k, lights, NV, C):
     return g.vmul(C, g.vadd(tuple(k["ambient"]), g.scale(acc, k["kd"])))
 
 
+def cook_torrance_specular(g, k, lt, N, V, NV):
+    """S = pi F D G / (4 N.V) of shading/models.h cookTorranceSpecular, 0
+    unless N.L, N.V, N.H and V.H are > 0. Blender's Divide gives 0 for a
+    zero divisor and its Square Root 0 for a negative argument, so the
+    gated-off branches stay finite (and are multiplied by the gate's 0)."""
+    nl, nv = lt.x, NV
+    H = g.vmath("NORMALIZE", g.vadd(lt.L, V))
+    nh = g.vmath("DOT_PRODUCT", N, H)
+    vh = g.vmath("DOT_PRODUCT", V, H)
+
+    def sin2(X):  # |N x X|^2, without the cancellation of 1 - (N.X)^2
+        c = g.vmath("CROSS_PRODUCT", N, X)
+        return g.vmath("DOT_PRODUCT", c, c)
+
+    alpha = k["roughness"]  # alpha itself (docs/models.md)
+    a2 = alpha * alpha
+    ggx = k["distribution"] == "ggx"
+    c2 = g.mul(nh, nh)
+    s2 = sin2(H)
+    if ggx:
+        q = g.add(g.mul(c2, a2), s2)
+        D = g.math("DIVIDE", a2, g.mul(math.pi, g.mul(q, q)))
+    else:
+        e = g.math("EXPONENT", g.mul(-1.0, g.math("DIVIDE", s2, g.mul(c2, a2))))
+        D = g.math("DIVIDE", e, g.mul(math.pi * a2, g.mul(c2, c2)))
+
+    def g1_over_cos(x, X):
+        if ggx:
+            root = g.math("SQRT", g.add(g.mul(x, x), g.mul(a2, sin2(X))))
+            return g.math("DIVIDE", 2.0, g.add(x, root))
+        a_s = g.mul(alpha, g.math("SQRT", sin2(X)))
+        a = g.math("DIVIDE", x, a_s)
+        num = g.add(3.535, g.mul(2.181, a))
+        den = g.mul(g.add(1.0, g.add(g.mul(2.276, a), g.mul(2.577, g.mul(a, a)))), a_s)
+        flat = g.at_least(x, g.mul(1.6, a_s))  # G1 = 1
+        return g.add(g.mul(flat, g.math("DIVIDE", 1.0, x)),
+                     g.mul(g.math("SUBTRACT", 1.0, flat), g.math("DIVIDE", num, den)))
+
+    if k["geometry"] == "smith":
+        G = g.mul(nl, g.mul(g1_over_cos(nl, lt.L), g1_over_cos(nv, V)))
+    else:
+        kk = g.math("DIVIDE", g.mul(2.0, nh), g.math("MAXIMUM", vh, k["vgroove_min_vh"]))
+        G = g.math("MINIMUM", g.math("DIVIDE", 1.0, nv),
+                   g.math("MINIMUM", kk, g.math("DIVIDE", g.mul(kk, nl), nv)))
+    S = g.mul(math.pi * 0.25, g.mul(D, G))
+    if k["fresnel"] == "schlick":
+        m = g.math("SUBTRACT", 1.0, vh)
+        m2 = g.mul(m, m)
+        f0 = k["f0"]
+        S = g.mul(S, g.add(f0, g.mul(1.0 - f0, g.mul(g.mul(m2, m2), m))))
+    gate = g.mul(g.mul(g.math("GREATER_THAN", nl, 0.0), g.math("GREATER_THAN", nv, 0.0)),
+                 g.mul(g.math("GREATER_THAN", nh, 0.0), g.math("GREATER_THAN", vh, 0.0)))
+    return g.mul(gate, S)
+
+
+def cook_torrance(g, k, lights, N, V, NV, C):
+    """C (x) (A + kd sum att Lc clamp(N.L)) + ks sum att Lc S."""
+    diff = (0.0, 0.0, 0.0)
+    spec = (0.0, 0.0, 0.0)
+    for lt in lights:
+        diff = g.vadd(diff, g.scale(lt.light["colour"], lt.weighted(g.clamp0(lt.x))))
+        if k["specular"]:
+            s = lt.weighted(cook_torrance_specular(g, k, lt, N, V, NV))
+            spec = g.vadd(spec, g.scale(lt.light["colour"], s))
+    out = g.vmul(C, g.vadd(tuple(k["ambient"]), g.scale(diff, k["kd"])))
+    return g.vadd(out, g.scale(spec, k["ks"])) if k["specular"] else out
+
+
 def model_colour(g, k, P, N, V, C):
     """The colour of docs/models.md as nodes, from the constants k."""
     NV = g.vmath("DOT_PRODUCT", N, V)
@@ -402,10 +473,12 @@ def model_colour(g, k, P, N, V, C):
         for lt in lights:
             lt.unit_r_of = N
     t = k["model"]
-    if t not in PHONG_MODELS + FORSYTH_MODELS + ISSUE33_DIFFUSE_BLINN_MODELS:
+    if t not in PHONG_MODELS + FORSYTH_MODELS + ISSUE33_DIFFUSE_BLINN_MODELS + MICROFACET_MODELS:
         unknown_model(t)
     if t in ISSUE33_DIFFUSE_BLINN_MODELS:
         return issue33_colour(g, k, lights, NV, C)
+    if t == "cook_torrance":
+        return cook_torrance(g, k, lights, N, V, NV, C)
     if t == "classic_phong":
         ka, kd, ks, n = k["ka"], k["kd"], k["ks"], k["shininess"]
         if k["course"]:

@@ -88,6 +88,16 @@ struct ModelConstants {
     const models::OrenNayarAB ab = cycles ? models::orenNayarCyclesAB(m.sigma) : models::orenNayarQualitativeAB(m.sigma);
     j["kd"] = m.kd, j["sigma"] = m.sigma, j["cycles"] = cycles, j["a"] = ab.a, j["b"] = ab.b;
   }
+  void operator()(const CookTorrance& m) const {
+    ambient();
+    const auto p = CookTorrance::params();
+    j["kd"] = m.kd, j["ks"] = m.ks, j["specular"] = shader.usesSpecular();
+    j["distribution"] = std::get<0>(p).nameOf(m.distribution);
+    j["geometry"] = std::get<1>(p).nameOf(m.geometry);
+    j["fresnel"] = std::get<2>(p).nameOf(m.fresnel);
+    j["f0"] = m.f0, j["roughness"] = m.roughness;  // alpha
+    j["vgroove_min_vh"] = models::kVGrooveMinVh<double>;
+  }
 };
 
 }  // namespace

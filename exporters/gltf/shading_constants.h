@@ -26,6 +26,10 @@
 //     blinn_phong    ka, kd, ks, shininess, specular (ks != 0), ka_ambient = ka A
 //     oren_nayar     ambient = A, kd, sigma, cycles (variant cycles), a and b
 //                    (models::orenNayarQualitativeAB / orenNayarCyclesAB)
+//     cook_torrance  ambient = A, kd, ks, specular (ks != 0), distribution
+//                    ("ggx" | "beckmann"), geometry ("smith" |
+//                    "cook_torrance"), fresnel ("none" | "schlick"), f0,
+//                    roughness (alpha), vgroove_min_vh (models.h)
 //   lights          the non-ambient lights, in scene order:
 //     kind          "point" | "spot" | "directional"
 //     colour, luma  Lc and Y(Lc) (normalised luma, models::lightLuma)

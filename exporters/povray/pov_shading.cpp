@@ -107,6 +107,19 @@ std::vector<std::pair<double, dvec3>> diffuseBreakpoints(const LightingModel& mo
                 "oren_nayar: its term x (A + B t) divides L.V - (N.L)(N.V) by max(N.L, N.V), a quotient of "
                 "two slope patterns; POV-Ray's pigments form only piecewise-linear maps, products and powers "
                 "of pattern values in [0, 1) (pigment_pattern wraps 1 and above), so it cannot be expressed");
+          },
+          [](const CookTorrance& m) {
+            // kd clamp(N.L); the microfacet term only when ks is 0.
+            if (m.ks != 0.0)
+              throw ExportError(
+                  "cook_torrance with ks = " + num(m.ks) +
+                  " (not 0): POV-Ray 3.7 cannot express its microfacet term S = pi F D G / (4 N.V), a "
+                  "non-linear function of N.H, N.L, N.V and V.H together: its finishes have no microfacet D "
+                  "or G (phong and specular are powers of one cosine), and its pigment maps compose one slope "
+                  "pattern at a time (a product of two only as nested piecewise-bilinear maps, in single "
+                  "precision), so D's exponential or GGX lobe and G / N.V would be piecewise-linear "
+                  "approximations with an error of their own; ks = 0 (kd clamp(N.L) only) is expressible");
+            return P{{-1, dvec3(0)}, {0, dvec3(0)}, {1, dvec3(m.kd)}};
           }},
       model);
 }

@@ -61,6 +61,9 @@ struct ModelUniforms {
   glm::vec3 c0{1}, c1{0}, c2{0};
   bool on_cycles = false;    // oren_nayar: variant cycles
   float on_a = 1, on_b = 0;  // oren_nayar: A, B (models::orenNayar*AB)
+  // cook_torrance: the enums' values (models::Microfacet*), alpha, f0.
+  int ct_distribution = 0, ct_geometry = 0, ct_fresnel = 0;
+  float ct_alpha = 0.25f, ct_f0 = 0.04f;
 };
 
 // u_model is the registry's id (glsl_models.cpp's MODEL_<NAME> constants).
@@ -95,6 +98,11 @@ ModelUniforms modelUniforms(const LightingModel& m) {
                    const models::OrenNayarAB ab = u.on_cycles ? models::orenNayarCyclesAB(mm.sigma)
                                                               : models::orenNayarQualitativeAB(mm.sigma);
                    u.on_a = float(ab.a), u.on_b = float(ab.b);
+                 },
+                 [&u](const CookTorrance& mm) {
+                   u.kd = float(mm.kd), u.ks = float(mm.ks), u.specular = mm.ks != 0.0;
+                   u.ct_distribution = int(mm.distribution), u.ct_geometry = int(mm.geometry);
+                   u.ct_fresnel = int(mm.fresnel), u.ct_alpha = float(mm.roughness), u.ct_f0 = float(mm.f0);
                  }},
              m);
   return u;
@@ -155,6 +163,11 @@ void setMaterialUniforms(GLuint p, const Draw& d) {
   glUniform1f(loc("u_on_b"), mu.on_b);
   glUniform3f(loc("u_base"), d.base.x, d.base.y, d.base.z);
   glUniform1i(loc("u_texture"), d.texture_mode);
+  glUniform1i(loc("u_ct_distribution"), mu.ct_distribution);
+  glUniform1i(loc("u_ct_geometry"), mu.ct_geometry);
+  glUniform1i(loc("u_ct_fresnel"), mu.ct_fresnel);
+  glUniform1f(loc("u_ct_alpha"), mu.ct_alpha);
+  glUniform1f(loc("u_ct_f0"), mu.ct_f0);
 }
 
 struct GlScene::Impl {

@@ -147,6 +147,53 @@ float blinnSpecular(vec3 N, vec3 L, vec3 V) {
   return nh > 0.0 ? pow(nh, u_n) : 0.0;
 }
 
+// ---- Cook-Torrance (shading/models.h cookTorranceSpecular) -------------
+// u_ct_distribution 0 Beckmann, 1 GGX; u_ct_geometry 0 V-groove, 1 Smith;
+// u_ct_fresnel 0 none, 1 Schlick (the models::Microfacet* enums' values).
+uniform int u_ct_distribution, u_ct_geometry, u_ct_fresnel;
+uniform float u_ct_alpha, u_ct_f0;
+float ctD(float c, float s2) {
+  float a2 = u_ct_alpha * u_ct_alpha, c2 = c * c;
+  if (u_ct_distribution == 0) {
+    float e = exp(-s2 / (c2 * a2));
+    return e > 0.0 ? e / (3.14159265358979 * a2 * c2 * c2) : 0.0;
+  }
+  float q = c2 * a2 + s2;
+  return a2 / (3.14159265358979 * q * q);
+}
+float ctG1OverCos(float x, float s2) {  // Smith's G1(x) / x
+  if (u_ct_distribution == 1) return 2.0 / (x + sqrt(x * x + u_ct_alpha * u_ct_alpha * s2));
+  float as = u_ct_alpha * sqrt(s2);
+  if (x >= 1.6 * as) return 1.0 / x;
+  float a = x / as;
+  return (3.535 + 2.181 * a) / ((1.0 + 2.276 * a + 2.577 * a * a) * as);
+}
+// S = pi F D G / (4 N.V)
+float cookTorranceSpecular(vec3 n, vec3 l, vec3 v) {
+  float nl = dot(n, l), nv = dot(n, v);
+  if (!(nl > 0.0) || !(nv > 0.0)) return 0.0;
+  vec3 sum = l + v;
+  float len = length(sum);
+  if (!(len > 0.0)) return 0.0;
+  vec3 h = sum / len;
+  float nh = dot(n, h), vh = dot(v, h);
+  if (!(nh > 0.0) || !(vh > 0.0)) return 0.0;
+  vec3 nxh = cross(n, h);
+  float d = ctD(nh, dot(nxh, nxh));
+  if (!(d > 0.0)) return 0.0;
+  float g;
+  if (u_ct_geometry == 1) {
+    vec3 nxl = cross(n, l), nxv = cross(n, v);
+    g = nl * ctG1OverCos(nl, dot(nxl, nxl)) * ctG1OverCos(nv, dot(nxv, nxv));
+  } else {
+    float k = 2.0 * nh / max(vh, 1.0 / 1024.0);
+    g = min(1.0 / nv, min(k, k * nl / nv));
+  }
+  float m = 1.0 - vh, m2 = m * m;
+  float f = u_ct_fresnel == 1 ? u_ct_f0 + (1.0 - u_ct_f0) * (m2 * m2 * m) : 1.0;
+  return 3.14159265358979 * f * d * g * 0.25;
+}
+
 // ---- the model at one point (shading/shader.h), unsaturated -------------
 // p: relative to the eye, n: unit normal, v: unit towards the eye, c: C.
 vec3 shade(vec3 p, vec3 n, vec3 v, vec3 c) {
@@ -220,6 +267,18 @@ vec3 shade(vec3 p, vec3 n, vec3 v, vec3 c) {
       if (u_specular) spec += w * blinnSpecular(n, L, v);
     }
     return c * (u_ka * u_ambient + u_kd * diff) + u_ks * spec;
+  }
+  if (u_model == MODEL_COOK_TORRANCE) {
+    vec3 diff = vec3(0.0), spec = vec3(0.0);
+    for (int i = 0; i < u_light_count; ++i) {
+      vec3 L; float att; bool lit;
+      sampleLight(u_lights[i], p, L, att, lit);
+      if (!lit) continue;
+      vec3 w = att * u_lights[i].colour_luma.rgb;
+      diff += w * clamp0(dot(n, L));
+      if (u_specular) spec += w * cookTorranceSpecular(n, L, v);
+    }
+    return c * (u_ambient + u_kd * diff) + u_ks * spec;
   }
   vec3 acc = u_ambient;
   for (int i = 0; i < u_light_count; ++i) {

@@ -159,9 +159,15 @@ Bound shadingFactors(const Scene& s, const Material& mat, const std::string& pre
         glm::dvec3 f_sum(0.0);
         double f_top = 0.0;
         const char* f_field = "c0";
+        // A Specular number multiplies a term that may exceed 1: by the
+        // model's specularGain() where it has one (cook_torrance's
+        // microfacet peak, ~1 / alpha^3), else 1 (clamp(R.V)^n <= 1).
+        double gain = 1.0;
+        if constexpr (requires { mm.specularGain(); }) gain = mm.specularGain();
         model::forEachParam(mm, model::Overloaded{
                                     [&](const model::NumberParam<M>& p, double v) {
                                       if (p.role == model::Role::None) return;
+                                      if (p.role == model::Role::Specular) v *= gain;
                                       k_sum += std::abs(v);
                                       if (!k_field || std::abs(v) > k_top) k_field = p.name, k_top = std::abs(v);
                                     },

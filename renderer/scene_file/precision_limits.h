@@ -28,7 +28,10 @@
 //                  C = max(1, largest surface colour: base_color, or
 //                      kMaxTexelValue for an image texture, 1 for brick),
 //                  K = max(1, ka + kd + ks) (classic Phong),
-//                      max(1, kd + ks + |luma_offset|) (YIQ), 1 otherwise,
+//                      max(1, kd + ks + |luma_offset|) (YIQ),
+//                      max(1, kd + ks g) (cook_torrance, g its
+//                      specularGain(): the bound of its microfacet term
+//                      S, ~1 / roughness^3), 1 otherwise,
 //                  F = max(1, largest channel of c0 + c1 + c2) (Forsyth's
 //                      family), 1 otherwise,
 //                  L = sum over lights of (largest channel of its colour)

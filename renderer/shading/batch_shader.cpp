@@ -314,7 +314,8 @@ std::optional<BatchShading> batchShading(const Scene& scene, const Texture* text
     case ModelId::Trilight:
     case ModelId::Minnaert:     // issue #33's models: shaded one hit at a
     case ModelId::BlinnPhong:   // time by Shader<float>, the fast path's
-    case ModelId::OrenNayar: return std::nullopt;  // scalar form
+    case ModelId::OrenNayar:    // scalar form
+    case ModelId::CookTorrance: return std::nullopt;
   }
   prepareLights<float>(scene.lights, s.ambient, s.lights, eye);
   s.ambient_luma = models::lightLuma(s.ambient);

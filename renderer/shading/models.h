@@ -185,4 +185,106 @@ template <class T> vec3<T> yiqLuma(vec3<T> c, T dl, T s, T offset) {
   return c + vec3<T>(dy);
 }
 
+// ---- Cook-Torrance (cook_torrance; docs/models.md) -----------------------
+// A microfacet specular term. Per light, in the convention of the other
+// models (Lambert's term is C Lc clamp(N.L): pi x the BRDF C/pi x N.L),
+// the specular term is pi x the BRDF x N.L:
+//   S = pi F D G / (4 nl nv) x nl = pi F D G / (4 nv),
+// nl = N.L, nv = N.V, H = normalize(L + V), nh = N.H, vh = V.H, alpha the
+// distribution's width (Beckmann: the rms slope m; GGX: alpha; NOT Cycles'
+// Roughness socket, whose alpha is Roughness^2).
+//   D Beckmann = exp(-tan^2 / alpha^2) / (pi alpha^2 nh^4)
+//   D GGX      = alpha^2 / (pi nh^4 (alpha^2 + tan^2)^2),  tan^2 = tan^2 of angle(N, H)
+// both normalised: the integral of D nh over the hemisphere is 1.
+//   G V-groove (Cook & Torrance 1982) = min(1, 2 nh nv / vh, 2 nh nl / vh)
+//   G Smith    = G1(nl) G1(nv), separable, with the distribution's own G1:
+//     GGX      G1(x) = 2 x / (x + sqrt(x^2 + alpha^2 (1 - x^2)))   (exact)
+//     Beckmann a = x / (alpha sqrt(1 - x^2)); G1 = 1 for a >= 1.6, else
+//              (3.535 a + 2.181 a^2) / (1 + 2.276 a + 2.577 a^2)
+//              (Walter et al. 2007's rational approximation, as Cycles)
+//   F Schlick  = f0 + (1 - f0) (1 - vh)^5;  none: F = 1.
+//
+// Numerics. The BRDF's 1 / (nl nv) is never formed: its nl cancels against
+// the cosine of the light (S above), and what divides by nv is formed as
+// G / nv, finite as nv -> 0:
+//   Smith:    G1(nv) / nv = 2 / (nv + sqrt(nv^2 + alpha^2 s_v^2)) <= 2 / alpha
+//             (GGX), (3.535 + 2.181 a) / ((1 + 2.276 a + 2.577 a^2) alpha s_v)
+//             <= 3.6 / alpha (Beckmann, a < 1.6) or 1 / nv < 1.2 / alpha
+//             (a >= 1.6);
+//   V-groove: G / nv = min(1 / nv, 2 nh / vh, 2 nh nl / (vh nv)), which
+//             grows without bound as L -> -V with both at grazing angles
+//             (vh = cos(angle(L, V) / 2) -> 0, nh anything): there vh is
+//             taken as max(vh, 2^-10), so G / nv <= 2^11. This departs from
+//             the 1982 formula only where angle(L, V) > 179.89 degrees, and
+//             keeps S bounded (CookTorrance::specularGain), which float's
+//             rounding of a vh near 0 would otherwise not.
+// S is 0 unless nl > 0, nv > 0 (strict, as Cycles) and vh > 0 (vh = |L + V| / 2,
+// 0 only for L = -V). sin^2 and tan^2 are formed from cross products
+// (|N x H|^2 = 1 - nh^2 for unit vectors), not as 1 - nh^2, which cancels
+// near the highlight's centre where tan^2 ~ alpha^2 (alpha = 0.01 in float:
+// a relative error of 1e-3 in the exponent's argument). Beckmann's D is 0
+// where its exponential underflows (the nh^4 below it could be 0 too).
+// (The gl renderer's u_ct_* uniforms are these values.)
+enum class MicrofacetD { Beckmann = 0, Ggx = 1 };
+enum class MicrofacetG { VGroove = 0, Smith = 1 };
+enum class MicrofacetF { None = 0, Schlick = 1 };
+
+// D from c = nh > 0 and s2 = |N x H|^2 = sin^2 of angle(N, H).
+template <class T> T microfacetD(MicrofacetD d, T c, T s2, T alpha) {
+  constexpr T pi = T(3.14159265358979323846);
+  const T a2 = alpha * alpha, c2 = c * c;
+  if (d == MicrofacetD::Beckmann) {
+    const T e = std::exp(-s2 / (c2 * a2));
+    return e > T(0) ? e / (pi * a2 * c2 * c2) : T(0);
+  }
+  // alpha^2 / (pi (c^2 alpha^2 + s^2)^2): c^4 (alpha^2 + tan^2)^2 with tan^2 = s^2 / c^2.
+  const T q = c2 * a2 + s2;
+  return a2 / (pi * q * q);
+}
+// Smith's G1(x) / x for x = N.X > 0, s2 = |N x X|^2.
+template <class T> T smithG1OverCos(MicrofacetD d, T x, T s2, T alpha) {
+  if (d == MicrofacetD::Ggx) return T(2) / (x + std::sqrt(x * x + alpha * alpha * s2));
+  const T as = alpha * std::sqrt(s2);  // x / a
+  if (x >= T(1.6) * as) return T(1) / x;
+  const T a = x / as;
+  return (T(3.535) + T(2.181) * a) / ((T(1) + T(2.276) * a + T(2.577) * a * a) * as);
+}
+// G / nv, V-groove (vh at least 2^-10, above).
+template <class T> inline constexpr T kVGrooveMinVh = T(1.0 / 1024.0);
+template <class T> T vGrooveGOverNv(T nl, T nv, T nh, T vh) {
+  const T k = T(2) * nh / std::max(vh, kVGrooveMinVh<T>);
+  return std::min(T(1) / nv, std::min(k, k * nl / nv));
+}
+template <class T> T schlickFresnel(T f0, T vh) {
+  const T m = T(1) - vh, m2 = m * m;
+  return f0 + (T(1) - f0) * (m2 * m2 * m);
+}
+// S = pi F D G / (4 nv) for unit n, l, v (above).
+template <class T>
+T cookTorranceSpecular(vec3<T> n, vec3<T> l, vec3<T> v, MicrofacetD d, MicrofacetG g, MicrofacetF f, T alpha,
+                       T f0) {
+  constexpr T pi = T(3.14159265358979323846);
+  const T nl = glm::dot(n, l), nv = glm::dot(n, v);
+  if (!(nl > T(0)) || !(nv > T(0))) return T(0);
+  const vec3<T> sum = l + v;
+  const T len = glm::length(sum);
+  if (!(len > T(0))) return T(0);
+  const vec3<T> h = sum / len;
+  const T nh = glm::dot(n, h), vh = glm::dot(v, h);
+  if (!(nh > T(0)) || !(vh > T(0))) return T(0);
+  const vec3<T> nxh = glm::cross(n, h);
+  const T dist = microfacetD(d, nh, glm::dot(nxh, nxh), alpha);
+  if (!(dist > T(0))) return T(0);
+  T g_over_nv;
+  if (g == MicrofacetG::Smith) {
+    const vec3<T> nxl = glm::cross(n, l), nxv = glm::cross(n, v);
+    g_over_nv = nl * smithG1OverCos(d, nl, glm::dot(nxl, nxl), alpha) *
+                smithG1OverCos(d, nv, glm::dot(nxv, nxv), alpha);
+  } else {
+    g_over_nv = vGrooveGOverNv(nl, nv, nh, vh);
+  }
+  const T fres = f == MicrofacetF::Schlick ? schlickFresnel(f0, vh) : T(1);
+  return pi * fres * dist * g_over_nv * T(0.25);
+}
+
 }  // namespace xval::models

@@ -19,6 +19,8 @@
 //   oren_nayar (O = models::orenNayarQualitative or orenNayarCycles of N.L,
 //   N.V, L.V):
 //     F = C (x) (A + kd sum_l att Lc O)
+//   cook_torrance (S = pi F D G / (4 N.V), models::cookTorranceSpecular):
+//     F = C (x) (A + kd sum_l att Lc clamp(N.L)) + ks sum_l att Lc S
 // A is the summed colour of the ambient lights; [lit] is 0 outside a spot
 // cone, where (except course's per-light ambient) a light adds nothing.
 // R = 2 (N.L) N - L is not gated by N.L (the listing does not gate it).
@@ -160,6 +162,18 @@ template <class T> class Shader {
         }
         return c * (ka_ * ambient_ + kd_ * diff) + ks_ * spec;
       }
+      case ModelId::CookTorrance: {
+        V diff(0), spec(0);
+        for (const auto& l : lights_) {
+          LightSample<T> s = sampleLight(l, p);
+          if (!s.lit) continue;
+          V w = s.att * l.color;
+          diff += w * clamp0(glm::dot(n, s.L));
+          if (specular_) spec += w * cookTorranceSpecular(n, s.L, v, ct_.distribution, ct_.geometry, ct_.fresnel,
+                                                          T(ct_.roughness), T(ct_.f0));
+        }
+        return c * (ambient_ + kd_ * diff) + ks_ * spec;
+      }
     }
     return V(0);  // unreachable: the switch covers every ModelId
   }
@@ -184,7 +198,8 @@ template <class T> class Shader {
       case ModelId::YiqLuma:
       case ModelId::Minnaert:
       case ModelId::BlinnPhong:
-      case ModelId::OrenNayar: break;  // not of Forsyth's family: shade() does not call this
+      case ModelId::OrenNayar:
+      case ModelId::CookTorrance: break;  // not of Forsyth's family: shade() does not call this
     }
     return V(0);
   }
@@ -221,6 +236,11 @@ template <class T> class Shader {
         on_cycles_ ? models::orenNayarCyclesAB(m.sigma) : models::orenNayarQualitativeAB(m.sigma);
     on_a_ = T(ab.a), on_b_ = T(ab.b);
   }
+  void setParams(const CookTorrance& m) {
+    kind_ = ModelId::CookTorrance, ct_ = m;
+    kd_ = T(m.kd), ks_ = T(m.ks);
+    specular_ = m.ks != 0.0;
+  }
 
   ModelId kind_ = ModelId::ClassicPhong;
   glm::dvec3 origin_{0};
@@ -232,6 +252,7 @@ template <class T> class Shader {
   V c0_{1}, c1_{0}, c2_{0};
   bool on_cycles_ = false;  // oren_nayar: its variant and constants
   T on_a_ = 1, on_b_ = 0;
+  CookTorrance ct_;  // its choices, roughness and f0
 };
 
 }  // namespace xval

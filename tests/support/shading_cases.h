@@ -113,6 +113,15 @@ inline std::vector<std::pair<std::string, LightingModel>> lightingModels(CaseRng
                                          r33.uniform(5, 80)}});
   m.push_back({"oren_nayar_q", OrenNayar{OrenNayar::Variant::Qualitative, r33.uniform(0.5, 1.0), r33.uniform(0.2, 1.0)}});
   m.push_back({"oren_nayar_c", OrenNayar{OrenNayar::Variant::Cycles, r33.uniform(0.5, 1.0), r33.uniform(0.2, 1.0)}});
+  {  // cook_torrance: fixed numbers (no draws, so the cases above keep their random numbers)
+    using D = models::MicrofacetD;
+    using G = models::MicrofacetG;
+    using F = models::MicrofacetF;
+    m.push_back({"ct_ggx_smith", CookTorrance{D::Ggx, G::Smith, F::None, 0.04, 0.3, 0.7, 0.6}});
+    m.push_back({"ct_beckmann_vgroove", CookTorrance{D::Beckmann, G::VGroove, F::Schlick, 0.5, 0.35, 0.5, 0.8}});
+    m.push_back({"ct_beckmann_smith", CookTorrance{D::Beckmann, G::Smith, F::Schlick, 0.9, 0.2, 0.6, 0.5}});
+    m.push_back({"ct_ks0", CookTorrance{D::Ggx, G::Smith, F::None, 0.04, 0.25, 0.8, 0.0}});
+  }
   return m;
 }
 

@@ -173,11 +173,13 @@ TEST_P(TracedGeometry, PovMesh2HoldsTheTracedAttributes) {
     const fs::path dir = fs::temp_directory_path() / ("xval_traced_pov_" + file.stem().string());
     fs::remove_all(dir);
     // The mesh2 geometry does not depend on the lighting model: the scene is
-    // exported with lambert, so that the geometry of a scene whose model
-    // POV-Ray refuses (oren_nayar, cook_torrance: docs/models.md) is checked
-    // too.
+    // exported with every material's model replaced by lambert, so that the
+    // geometry of a scene whose model POV-Ray refuses (oren_nayar,
+    // cook_torrance: docs/models.md) is checked too.
     Scene pov_scene = scene;
     pov_scene.material.model = Lambert{};
+    for (auto& o : pov_scene.objects)
+      if (o.material) o.material->model = Lambert{};
     std::optional<PovExport> exported;
     try {
       exported = exportPov(pov_scene, dir);

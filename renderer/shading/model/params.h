@@ -36,7 +36,9 @@ enum class Unit {
 // A number's part in the precision bound (scene_file/precision_limits.cpp): the
 // model coefficients K sum the |value| of Coefficient and Specular numbers;
 // Specular is also the ks of the specular weight; the Forsyth colours F sum
-// the colours.
+// the colours. A model whose specular term can exceed 1 per unit ks has
+// `double specularGain() const`, its bound, which multiplies its Specular
+// number in K (cook_torrance).
 enum class Role { None, Coefficient, Specular };
 
 template <class M> struct NumberParam {

@@ -25,6 +25,7 @@
 
 #include "shading/model/bidirectional.h"
 #include "shading/model/classic_phong.h"
+#include "shading/model/cook_torrance.h"
 #include "shading/model/hemispherical.h"
 #include "shading/model/lambert.h"
 #include "shading/model/trilight.h"
@@ -45,7 +46,8 @@
   X(Trilight)                   \
   X(Minnaert)                   \
   X(BlinnPhong)                 \
-  X(OrenNayar)
+  X(OrenNayar)                  \
+  X(CookTorrance)
 
 namespace xval {
 

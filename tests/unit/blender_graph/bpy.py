@@ -5,12 +5,12 @@ of Blender 3.4's Cycles SVM nodes (intern/cycles/kernel/svm/math_util.h):
 
   Math      ADD a+b, SUBTRACT a-b, MULTIPLY a*b, DIVIDE b != 0 ? a/b : 0,
             POWER: 0 for a < 0 with b not whole, else a^b (0^0 = 1),
-            MAXIMUM fmax, ABSOLUTE |a|, LESS_THAN a < b, GREATER_THAN a > b
-            (1 or 0: both 0 at equality); use_clamp: the result clamped to
-            [0, 1]
+            MAXIMUM fmax, MINIMUM fmin, ABSOLUTE |a|, LESS_THAN a < b,
+            GREATER_THAN a > b (1 or 0: both 0 at equality), EXPONENT e^a,
+            SQRT sqrt(max(a, 0)); use_clamp: the result clamped to [0, 1]
   Vector Math  ADD, SUBTRACT, MULTIPLY (per component), SCALE a * Scale,
             DOT_PRODUCT (x x + y y) + z z, LENGTH sqrt(a.a),
-            NORMALIZE a / |a| (0 stays 0)
+            NORMALIZE a / |a| (0 stays 0), CROSS_PRODUCT a x b
   Combine XYZ, Emission (Color x Strength), Material Output.
 Inputs of the render come from an evaluation context (Context): Geometry >
 Position (Blender frame), named attributes, the Image Texture's colour.
@@ -102,6 +102,9 @@ MATH = {
     "ABSOLUTE": lambda a, b: abs(a),
     "LESS_THAN": lambda a, b: 1.0 if a < b else 0.0,
     "GREATER_THAN": lambda a, b: 1.0 if a > b else 0.0,
+    "MINIMUM": lambda a, b: min(a, b),
+    "EXPONENT": lambda a, b: math.exp(a),
+    "SQRT": lambda a, b: math.sqrt(a) if a > 0.0 else 0.0,
 }
 
 VMATH = {
@@ -112,6 +115,8 @@ VMATH = {
     "DOT_PRODUCT": lambda a, b, s: ("Value", dot(a, b)),
     "LENGTH": lambda a, b, s: ("Value", math.sqrt(dot(a, a))),
     "NORMALIZE": lambda a, b, s: ("Vector", normalize(a)),
+    "CROSS_PRODUCT": lambda a, b, s: ("Vector", (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                                                 a[0] * b[1] - a[1] * b[0])),
 }
 
 
