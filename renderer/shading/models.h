@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "colour/yiq.h"
+#include "shading/model/microfacet.h"
 
 namespace xval::models {
 
@@ -224,10 +225,7 @@ template <class T> vec3<T> yiqLuma(vec3<T> c, T dl, T s, T offset) {
 // near the highlight's centre where tan^2 ~ alpha^2 (alpha = 0.01 in float:
 // a relative error of 1e-3 in the exponent's argument). Beckmann's D is 0
 // where its exponential underflows (the nh^4 below it could be 0 too).
-// (The gl renderer's u_ct_* uniforms are these values.)
-enum class MicrofacetD { Beckmann = 0, Ggx = 1 };
-enum class MicrofacetG { VGroove = 0, Smith = 1 };
-enum class MicrofacetF { None = 0, Schlick = 1 };
+// The choices of D, G and F: shading/model/microfacet.h.
 
 // D from c = nh > 0 and s2 = |N x H|^2 = sin^2 of angle(N, H).
 template <class T> T microfacetD(MicrofacetD d, T c, T s2, T alpha) {

@@ -20,7 +20,7 @@
 #pragma once
 
 #include "shading/model/params.h"
-#include "shading/models.h"
+#include "shading/model/microfacet.h"
 
 namespace xval {
 
