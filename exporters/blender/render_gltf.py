@@ -322,13 +322,13 @@ class LightTerm:
 # checks these lists against the registry.
 PHONG_MODELS = ("classic_phong", "yiq_luma")
 FORSYTH_MODELS = ("lambert", "wrap_around", "hemispherical", "bidirectional", "trilight")
-ISSUE33_DIFFUSE_BLINN_MODELS = ("minnaert", "blinn_phong", "oren_nayar")
+MINNAERT_BLINN_OREN_NAYAR_MODELS = ("minnaert", "blinn_phong", "oren_nayar")
 MICROFACET_MODELS = ("cook_torrance",)
 
 
 def unknown_model(t):
     fail("lighting model %r: this harness builds no node graph for it (it knows %s)"
-         % (t, ", ".join(PHONG_MODELS + FORSYTH_MODELS + ISSUE33_DIFFUSE_BLINN_MODELS
+         % (t, ", ".join(PHONG_MODELS + FORSYTH_MODELS + MINNAERT_BLINN_OREN_NAYAR_MODELS
                               + MICROFACET_MODELS)))
 
 
@@ -349,7 +349,7 @@ def forsyth(g, k, x):
     return out
 
 
-def issue33_colour(g, k, lights, NV, C):
+def minnaert_blinn_oren_nayar_colour(g, k, lights, NV, C):
     """minnaert, blinn_phong and oren_nayar (docs/models.md) as nodes."""
     t = k["model"]
     if t == "blinn_phong":
@@ -473,10 +473,10 @@ def model_colour(g, k, P, N, V, C):
         for lt in lights:
             lt.unit_r_of = N
     t = k["model"]
-    if t not in PHONG_MODELS + FORSYTH_MODELS + ISSUE33_DIFFUSE_BLINN_MODELS + MICROFACET_MODELS:
+    if t not in PHONG_MODELS + FORSYTH_MODELS + MINNAERT_BLINN_OREN_NAYAR_MODELS + MICROFACET_MODELS:
         unknown_model(t)
-    if t in ISSUE33_DIFFUSE_BLINN_MODELS:
-        return issue33_colour(g, k, lights, NV, C)
+    if t in MINNAERT_BLINN_OREN_NAYAR_MODELS:
+        return minnaert_blinn_oren_nayar_colour(g, k, lights, NV, C)
     if t == "cook_torrance":
         return cook_torrance(g, k, lights, N, V, NV, C)
     if t == "classic_phong":

@@ -187,12 +187,12 @@ TEST(LightingModels, TheBlenderHarnessBuildsEveryModel) {
   const std::set<std::string> forsyth = pythonTuple(text.str(), "FORSYTH_MODELS");
   known.insert(forsyth.begin(), forsyth.end());
   // issue #33's minnaert, blinn_phong, oren_nayar; cook_torrance
-  const std::set<std::string> issue33 = pythonTuple(text.str(), "ISSUE33_DIFFUSE_BLINN_MODELS");
+  const std::set<std::string> issue33 = pythonTuple(text.str(), "MINNAERT_BLINN_OREN_NAYAR_MODELS");
   known.insert(issue33.begin(), issue33.end());
   const std::set<std::string> microfacet = pythonTuple(text.str(), "MICROFACET_MODELS");
   known.insert(microfacet.begin(), microfacet.end());
   const std::set<std::string> registry(kModelNames.begin(), kModelNames.end());
-  EXPECT_EQ(known, registry) << path << ": PHONG_MODELS + FORSYTH_MODELS + ISSUE33_DIFFUSE_BLINN_MODELS + MICROFACET_MODELS";
+  EXPECT_EQ(known, registry) << path << ": PHONG_MODELS + FORSYTH_MODELS + MINNAERT_BLINN_OREN_NAYAR_MODELS + MICROFACET_MODELS";
 }
 
 TEST(LightingModels, TheShadingCasesCoverEveryModel) {

@@ -23,6 +23,7 @@
 #include <stdexcept>
 
 #include "geometry/mesh.h"
+#include "shading/model/registry.h"
 
 namespace xval::extremes {
 
@@ -62,7 +63,7 @@ J plane(glm::dvec3 centre, glm::dvec3 normal, double side, double uv_repeat = 1.
 J brick() { return {{"source", "brick"}, {"filter", "bilinear"}}; }
 
 J phong(double n, bool textured = true, glm::dvec3 base = {0.8, 0.6, 0.4}) {
-  J m = {{"model", {{"type", "classic_phong"}, {"variant", "paper"}, {"ka", 1}, {"kd", 1},
+  J m = {{"model", {{"type", ClassicPhong::kName}, {"variant", "paper"}, {"ka", 1}, {"kd", 1},
                     {"ks", 1}, {"shininess", n}}}};
   if (textured) m["texture"] = brick();
   else m["base_color"] = v3(base);
@@ -70,13 +71,13 @@ J phong(double n, bool textured = true, glm::dvec3 base = {0.8, 0.6, 0.4}) {
 }
 
 J yiq(double n = 55, J texture = brick()) {
-  return {{"model", {{"type", "yiq_luma"}, {"kd", 1}, {"ks", 1}, {"shininess", n},
+  return {{"model", {{"type", YiqLuma::kName}, {"kd", 1}, {"ks", 1}, {"shininess", n},
                      {"luma_offset", 0.1}}},
           {"texture", std::move(texture)}};
 }
 
 J trilight(glm::dvec3 base) {
-  return {{"model", {{"type", "trilight"}, {"c0", v3(1.0, 0.85, 0.7)}, {"c1", v3(0.35, 0.5, 0.3)},
+  return {{"model", {{"type", Trilight::kName}, {"c0", v3(1.0, 0.85, 0.7)}, {"c1", v3(0.35, 0.5, 0.3)},
                      {"c2", v3(0.2, 0.3, 0.6)}}},
           {"base_color", v3(base)}};
 }
@@ -360,7 +361,7 @@ std::vector<Case> extremesMatrix(const MatrixOptions& options) {
     c.group = "spot";
     c.what = "hard spot cone whose edge passes exactly through the pixel centres of both image "
              "diagonals (x > 0): lit or not is decided by the last bit";
-    J mat = {{"model", {{"type", "hemispherical"}, {"c0", v3(1, 1, 1)}, {"c2", v3(0.2, 0.2, 0.2)}}},
+    J mat = {{"model", {{"type", Hemispherical::kName}, {"c0", v3(1, 1, 1)}, {"c2", v3(0.2, 0.2, 0.2)}}},
              {"base_color", v3(0.9, 0.7, 0.5)}};
     J spot = {{"type", "spot"}, {"position", v3(0, 0, 0)}, {"direction", v3(1, 0, 0)},
               {"cutoff_deg", 45}};
@@ -391,15 +392,15 @@ std::vector<Case> extremesMatrix(const MatrixOptions& options) {
         sphereCase(std::string("oren_nayar_") + variant + "_sigma" + (sigma == 0.0 ? "0" : "1"),
                    std::string("oren_nayar ") + variant + ", sigma " + (sigma == 0.0 ? "0 (Lambert)" : "1") +
                        ", lit from the side: N.L and N.V -> 0 at the terminator and the silhouette",
-                   {{"type", "oren_nayar"}, {"variant", variant}, {"kd", 1}, {"sigma", sigma}}, side);
+                   {{"type", OrenNayar::kName}, {"variant", variant}, {"kd", 1}, {"sigma", sigma}}, side);
     sphereCase("minnaert_k1e-3",
                "minnaert k = 1e-3, lit from the front: clamp(N.V)^(k-1) ~ 1 / N.V grows towards the "
                "silhouette",
-               {{"type", "minnaert"}, {"kd", 1}, {"k", 1e-3}}, point(kFront));
+               {{"type", Minnaert::kName}, {"kd", 1}, {"k", 1e-3}}, point(kFront));
     sphereCase("blinn_phong_grazing",
                "blinn_phong n = 55, lit from behind: H = normalize(L + V) near the silhouette, where L "
                "and V are nearly opposite and |L + V| -> 0",
-               {{"type", "blinn_phong"}, {"ka", 1}, {"kd", 1}, {"ks", 1}, {"shininess", 55}}, point(kBehind));
+               {{"type", BlinnPhong::kName}, {"ka", 1}, {"kd", 1}, {"ks", 1}, {"shininess", 55}}, point(kBehind));
   }
   return out;
 }
