@@ -141,4 +141,38 @@ inline std::vector<ShadingCase> shadingCases(unsigned seed = 13) {
   return out;
 }
 
+// The luma-only mode (shading/luma_only.h) on every model and each luma
+// space: the light set with several coloured lights and ambients (where the
+// grey lights differ most from the coloured ones), each shading mode, every
+// third case textured. A case's name ends in its space.
+inline std::vector<ShadingCase> lumaOnlyCases(unsigned seed = 33) {
+  CaseRng r(seed);
+  std::vector<ShadingCase> out;
+  const auto ms = lightingModels(r);
+  int k = 0;
+  for (const auto& [mname, model] : ms)
+    for (LumaSpace space : {LumaSpace::Yiq, LumaSpace::CieLstar})
+      for (ShadingMode mode : {ShadingMode::Phong, ShadingMode::Flat, ShadingMode::Gouraud}) {
+        Scene s;
+        s.name = mname + "_several_" + toString(mode) + "_luma_only_" + toString(space);
+        s.camera.position = r.unit() * r.uniform(2.5, 5.0);
+        s.camera.width = s.camera.height = 16;
+        UvSphere sphere;
+        sphere.segments_longitude = 8, sphere.segments_latitude = 4;
+        s.objects.push_back(sphere);
+        s.material.model = model;
+        s.material.base_color = r.colour(0.2, 1.0);
+        s.material.luma_only = space;
+        if (k++ % 3 == 1) {
+          TextureSpec t;
+          t.filter = (k / 3) % 2 ? TextureFilter::Nearest : TextureFilter::Bilinear;
+          s.material.texture = t;
+        }
+        s.lights = lightSets(r).back().second;  // "several"
+        s.shading = mode;
+        out.push_back({s.name, s});
+      }
+  return out;
+}
+
 }  // namespace xval::test
