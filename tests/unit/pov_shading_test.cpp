@@ -256,6 +256,21 @@ std::vector<test::ShadingCase> formerRefusalCases() {
   return out;
 }
 
+// A sample point: x in the box [-1, 1]^3, a normal facing the eye (N.V >
+// 0.05), C the material's colour or (textured) a random one; none where
+// x is near a spot light's cone (where the two sides' arithmetic may differ).
+std::optional<Point> samplePoint(test::CaseRng& r, dvec3 eye, const Shader<double>& shader, const Material& m) {
+  Point q;
+  q.x = r.inBox(1.0);
+  q.eye = eye;
+  const dvec3 v = glm::normalize(eye - q.x);
+  do q.n = r.unit();
+  while (!(glm::dot(q.n, v) > 0.05));
+  if (nearCone(shader.lights(), q.x)) return std::nullopt;
+  q.c = m.texture ? r.colour() : m.base_color;
+  return q;
+}
+
 // Compares case c's POV-Ray shading, evaluated with POV-Ray's semantics,
 // with Shader<double> at 100 sampled points, normals and surface colours
 // (relative 1e-9), counting the samples and the spot lights' sides in n.
@@ -267,16 +282,11 @@ void expectPovAgrees(const test::ShadingCase& c, const PovShading& pov, test::Ca
   const Scene& s = c.scene;
   const Shader<double> shader(s.material, s.lights);
   const dvec3 eye = CameraRays(s.camera).origin;
-  const bool textured = s.material.texture.has_value();
   for (int k = 0; k < 100; ++k) {
-    Point q;
-    q.x = r.inBox(1.0);
-    q.eye = eye;
+    const auto sample = samplePoint(r, eye, shader, s.material);
+    if (!sample) continue;
+    const Point& q = *sample;
     const dvec3 v = glm::normalize(eye - q.x);
-    do q.n = r.unit();
-    while (!(glm::dot(q.n, v) > 0.05));
-    if (nearCone(shader.lights(), q.x)) continue;
-    q.c = textured ? r.colour() : s.material.base_color;
     const dvec3 want = shader.shade(q.x, q.n, v, q.c);
     dvec3 got = evaluate(pov.emission, q) + phong(pov.specular, q);
     if (pov.texture_filter_layer) {
@@ -417,14 +427,10 @@ TEST(PovShading, EachObjectsMaterialEvaluatesToItsReferenceShader) {
       const Shader<double> shader(mat, s.lights);
       bool differs = false;
       for (int i = 0; i < 50; ++i) {
-        Point q;
-        q.x = r.inBox(1.0);
-        q.eye = eye;
+        const auto sample = samplePoint(r, eye, shader, mat);
+        if (!sample) continue;
+        const Point& q = *sample;
         const dvec3 v = glm::normalize(eye - q.x);
-        do q.n = r.unit();
-        while (!(glm::dot(q.n, v) > 0.05));
-        if (nearCone(shader.lights(), q.x)) continue;
-        q.c = mat.texture ? r.colour() : mat.base_color;
         const dvec3 want = shader.shade(q.x, q.n, v, q.c);
         dvec3 got = evaluate(pov.emission, q) + phong(pov.specular, q);
         if (pov.texture_filter_layer) got *= evaluateLeaf(*affine(glm::dmat3(1.0), dvec3(0.0)), q);
