@@ -523,6 +523,44 @@ def model_colour(g, k, P, N, V, C):
     return g.vmul(C, acc)
 
 
+def luma_only_colour(g, k, P, N, V, C):
+    """The material's colour: the model's, or in the luma-only mode
+    (renderer/shading/luma_only.h) the model lit in grey (k's lights and
+    ambients are the greys already) with its luma replacing C's, C's chroma
+    kept: yiq F = C + (Y_out - Y_C)(1,1,1); cie_lstar the relative XYZ t of C
+    with f(t) + f(Y_out) - f(Y_C) in each of its three f."""
+    space = k.get("luma_only")
+    if space is None:
+        return model_colour(g, k, P, N, V, C)
+    lc = k["luma_only_constants"]
+    yc = g.vmath("DOT_PRODUCT", C, tuple(lc["surface_row"]))
+    grey = model_colour(g, k, P, N, V, g.vec(yc, yc, yc))
+    yout = g.vmath("DOT_PRODUCT", grey, tuple(lc["light_row"]))
+    if space == "yiq":
+        dy = g.math("SUBTRACT", yout, yc)
+        return g.vadd(C, g.vec(dy, dy, dy))
+    if space != "cie_lstar":
+        fail("luma_only %r: this harness knows yiq and cie_lstar" % (space,))
+
+    def select(cond, a, b):  # cond in {0, 1}: a where 1, else b
+        return g.add(g.mul(cond, a), g.mul(g.math("SUBTRACT", 1.0, cond), b))
+
+    def lab_f(t):  # t > knee: cube root (of a positive t), else the line
+        above = g.math("GREATER_THAN", t, lc["knee"])
+        root = g.math("POWER", g.clamp0(t), 1.0 / 3.0)
+        return select(above, root, g.add(g.mul(t, lc["slope"]), lc["offset"]))
+
+    def lab_f_inverse(u):
+        above = g.math("GREATER_THAN", u, lc["inverse_knee"])
+        cube = g.mul(g.mul(u, u), u)
+        return select(above, cube, g.math("DIVIDE", g.math("SUBTRACT", u, lc["offset"]), lc["slope"]))
+
+    d = g.math("SUBTRACT", lab_f(yout), lab_f(yc))
+    t = [g.vmath("DOT_PRODUCT", C, tuple(row)) for row in lc["to_relative_xyz"]]
+    moved = g.vec(*(lab_f_inverse(g.add(lab_f(ti), d)) for ti in t))
+    return g.vec(*(g.vmath("DOT_PRODUCT", moved, tuple(row)) for row in lc["from_relative_xyz"]))
+
+
 def float_copy(image):
     """The image's stored values in a float32 image of the same size (EEVEE
     uploads it as float32 and mip-maps it in float)."""
@@ -611,7 +649,7 @@ def build_model_material(nt, k, image, bilinear_from_closest=False):
             C = it.outputs["Color"]
         else:
             C = g.const(k["base_colour"])
-        colour = model_colour(g, k, P, N, V, C)
+        colour = luma_only_colour(g, k, P, N, V, C)
     em = nt.nodes.new("ShaderNodeEmission")
     em.inputs["Strength"].default_value = 1.0
     g._set(em.inputs["Color"], colour)

@@ -100,6 +100,34 @@ struct ModelConstants {
   }
 };
 
+// The luma-only mode's constants (shading/luma_only.h; colour/cie.h,
+// colour/yiq.h): the rows of Y_C (surface_row) and of Y(G) (light_row);
+// for cie_lstar also relative XYZ's rows, their inverse's, and f's knee,
+// slope, offset 4/29 and its inverse's knee 6/29. The lights and ambients
+// above are then already the greys (the Shader prepares greyLights).
+ordered_json lumaOnlyConstants(LumaSpace s) {
+  ordered_json j;
+  auto row = [](auto f) { return ordered_json::array({f(0), f(1), f(2)}); };
+  if (s == LumaSpace::Yiq) {
+    const double white = colour::kRgbToYiq[0][0] + colour::kRgbToYiq[0][1] + colour::kRgbToYiq[0][2];
+    j["surface_row"] = row([](int k) { return colour::kRgbToYiq[0][k]; });
+    j["light_row"] = row([&](int k) { return colour::kRgbToYiq[0][k] / white; });
+    return j;
+  }
+  ordered_json to = ordered_json::array(), from = ordered_json::array();
+  for (int r = 0; r < 3; ++r) {
+    to.push_back(row([r](int k) { return colour::kRgbToXyz[r][k] / colour::kWhiteXyz[r]; }));
+    from.push_back(row([r](int k) { return colour::kXyzToRgb.m[r][k] * colour::kWhiteXyz[k]; }));
+  }
+  j["surface_row"] = to[1];
+  j["light_row"] = to[1];
+  j["to_relative_xyz"] = to;
+  j["from_relative_xyz"] = from;
+  j["knee"] = colour::kLabKnee, j["slope"] = colour::kLabSlope, j["offset"] = 4.0 / 29.0;
+  j["inverse_knee"] = colour::kLabDelta;
+  return j;
+}
+
 }  // namespace
 
 ordered_json shadingConstants(const Scene& scene) { return shadingConstants(scene, scene.material); }
@@ -120,6 +148,10 @@ ordered_json shadingConstants(const Scene& scene, const Material& material) {
     j["texture_filter"] = nullptr;
   j["model"] = modelName(material.model);
   std::visit(ModelConstants{shader, j}, material.model);
+  if (material.luma_only) {
+    j["luma_only"] = toString(*material.luma_only);
+    j["luma_only_constants"] = lumaOnlyConstants(*material.luma_only);
+  }
   ordered_json lights = ordered_json::array();
   for (const auto& l : shader.lights()) lights.push_back(lightConstants(l));
   j["lights"] = lights;

@@ -9,6 +9,7 @@
 #include "camera/camera.h"
 #include "common/export_common.h"
 #include "povray/sdl.h"
+#include "shading/lights.h"
 #include "shading/models.h"
 
 namespace xval::pov {
@@ -417,9 +418,64 @@ Specular specular(const Scene& s, const std::vector<LightInfo>& lights, bool fil
   return sp;
 }
 
+// The luma-only mode, yiq (shading/luma_only.h): with the grey lights and
+// C = 1 the model's emission tree (emissionLinear) is the lit grey factor
+// K, and every leaf's luma k gives the rank-one leaf k Y_C (1,1,1) (Y_C =
+// w . C, the listing's row); one more term C - Y_C (1,1,1) makes
+//   F = C + (Y_C K_Y - Y_C)(1,1,1), K_Y = Y(K),
+// which is the mode's C + (Y_out - Y_C)(1,1,1) for the models whose result
+// is C (x) K (+ a highlight independent of C: POV-Ray's phong with the grey
+// light sources adds ks S Y(Lc) (1,1,1), its luma). Refused: cie_lstar
+// (below), yiq_luma (its Dl's saturate of Y_C's factor: emissionYiq is
+// written for a coloured C with its own leaves) and classic_phong course
+// with a highlight (C (x) Lc ks S: its highlight scales with C).
+Pigment emissionLumaOnlyYiq(const Scene& grey, const std::vector<LightInfo>& lights) {
+  const dvec3 w(models::kRgbToYiq[0][0], models::kRgbToYiq[0][1], models::kRgbToYiq[0][2]);
+  const bool textured = grey.material.texture.has_value();
+  const dvec3 base = grey.material.base_color;
+  auto luma_leaf = [&](double k) {  // k Y_C (1,1,1)
+    glm::dmat3 mm(0.0);
+    for (int ch = 0; ch < 3; ++ch) mm[ch] = dvec3(k * w[ch]);
+    return textured ? affine(mm, dvec3(0.0)) : constant(mm * base);
+  };
+  Pigment k = mapLeaves(emissionLinear(grey, lights, true), [&](const PigmentNode& leaf) {
+    return luma_leaf(luma_only::lightLuma(LumaSpace::Yiq, leaf.b));
+  });
+  return sum({k, textured ? [&] {
+    glm::dmat3 mm(1.0);
+    for (int ch = 0; ch < 3; ++ch) mm[ch] -= dvec3(w[ch]);
+    return affine(mm, dvec3(0.0));
+  }()
+                          : constant(base - dvec3(glm::dot(w, base)))});
+}
+
+void checkLumaOnlyExpressible(const Material& m) {
+  if (!m.luma_only) return;
+  if (*m.luma_only == LumaSpace::CieLstar)
+    throw ExportError(
+        "luma_only cie_lstar is not expressible: its colour f^-1(f(t_C) + f(Y_out) - f(Y_C)) per XYZ channel "
+        "combines the texture colour and the lit luma through cube roots and cubes, and the POV-Ray export's "
+        "pigment trees are sums of maps over patterns with leaves affine in C (a function pigment has pow but "
+        "no surface normal, on which Y_out depends)");
+  if (std::holds_alternative<YiqLuma>(m.model))
+    throw ExportError("luma_only yiq with the yiq_luma model is not expressible: the POV-Ray export writes "
+                      "yiq_luma's saturated Dl for the coloured surface colour only");
+  if (auto* p = std::get_if<ClassicPhong>(&m.model); p && p->variant == ClassicPhong::Variant::Course && p->ks != 0.0)
+    throw ExportError("luma_only yiq with classic_phong course and ks > 0 is not expressible: its highlight "
+                      "Y_C Y(Lc) ks S scales with the surface colour's luma, which POV-Ray's phong cannot");
+}
+
 }  // namespace
 
-PovShading povShading(const Scene& scene) {
+PovShading povShading(const Scene& in) {
+  // The luma-only mode shades with the grey lights (emissionLumaOnlyYiq).
+  checkLumaOnlyExpressible(in.material);
+  Scene grey;
+  if (in.material.luma_only) {
+    grey = in;
+    grey.lights = greyLights(in.lights, *in.material.luma_only);
+  }
+  const Scene& scene = in.material.luma_only ? grey : in;
   std::vector<LightInfo> lights;
   for (const auto& l : scene.lights)
     if (!std::holds_alternative<AmbientLight>(l)) lights.push_back(info(l));
@@ -429,9 +485,9 @@ PovShading povShading(const Scene& scene) {
   const auto* phong = std::get_if<ClassicPhong>(&scene.material.model);
   p.texture_filter_layer = phong && phong->variant == ClassicPhong::Variant::Course &&
                            phong->ks != 0.0 && scene.material.texture.has_value();
-  p.emission = std::holds_alternative<YiqLuma>(scene.material.model)
-                   ? emissionYiq(scene, lights)
-                   : emissionLinear(scene, lights, p.texture_filter_layer);
+  p.emission = scene.material.luma_only                            ? emissionLumaOnlyYiq(scene, lights)
+               : std::holds_alternative<YiqLuma>(scene.material.model) ? emissionYiq(scene, lights)
+                                                                    : emissionLinear(scene, lights, p.texture_filter_layer);
   std::vector<Pigment> highlights;
   p.specular = specular(scene, lights, p.texture_filter_layer, highlights);
   if (!highlights.empty()) {

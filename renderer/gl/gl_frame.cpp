@@ -4,6 +4,7 @@
 #include <GL/glcorearb.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -140,6 +141,15 @@ struct Draw {
   glm::vec3 base{1};
   int texture_mode = 0;  // 0 none, 1 nearest, 2 bilinear, 3 trilinear
   GLuint texture = 0;
+  // The luma-only mode (shading/luma_only.h): 0 off, else 1 + LumaSpace;
+  // also the draw's light set (the lights, or their greys in that space).
+  int luma_only = 0;
+};
+
+// One set of lights as the shaders read them: the buffer and the ambient.
+struct LightSet {
+  GLuint ssbo = 0;
+  glm::vec3 ambient{0};
 };
 
 // The draw's material as the shaders' uniforms (the program in use).
@@ -168,11 +178,14 @@ void setMaterialUniforms(GLuint p, const Draw& d) {
   glUniform1i(loc("u_ct_fresnel"), mu.ct_fresnel);
   glUniform1f(loc("u_ct_alpha"), mu.ct_alpha);
   glUniform1f(loc("u_ct_f0"), mu.ct_f0);
+  glUniform1i(loc("u_luma_only"), d.luma_only);
 }
 
 struct GlScene::Impl {
   std::optional<EglContext> context;
-  GLuint program = 0, vao = 0, vbo = 0, ssbo = 0;
+  GLuint program = 0, vao = 0, vbo = 0;
+  // By Draw::luma_only: the scene's lights, their greys in yiq, in cie_lstar.
+  std::array<LightSet, 1 + kLumaSpaceNames.size()> light_sets;
   FrameTargets targets;
   std::vector<GLuint> textures;
   std::vector<Draw> draws;
@@ -183,7 +196,7 @@ struct GlScene::Impl {
     if (!context) return;
     deleteFrameTargets(targets);
     if (!textures.empty()) glDeleteTextures(GLsizei(textures.size()), textures.data());
-    glDeleteBuffers(1, &ssbo);
+    for (const LightSet& l : light_sets) glDeleteBuffers(1, &l.ssbo);
     glDeleteBuffers(1, &vbo);
     glDeleteVertexArrays(1, &vao);
     glDeleteProgram(program);
@@ -248,15 +261,21 @@ GlScene::GlScene(const Scene& input) : impl_(new Impl) {
   }
   checkGl("uploading the vertices");
 
-  // Lights, relative to the eye (shading/lights.h prepareLights).
-  glm::vec3 ambient(0);
-  std::vector<PreparedLight<float>> lights;
-  prepareLights<float>(scene.lights, ambient, lights, cam.origin);
-  std::vector<LightBlock> blocks;
-  for (const auto& l : lights) blocks.push_back(lightBlock(l));
-  if (blocks.empty()) blocks.push_back(LightBlock{});  // a buffer may not be empty; u_light_count says 0
-  glCreateBuffers(1, &d.ssbo);
-  glNamedBufferStorage(d.ssbo, GLsizeiptr(blocks.size() * sizeof(LightBlock)), blocks.data(), 0);
+  // Lights, relative to the eye (shading/lights.h prepareLights): the
+  // scene's, and for the luma-only mode their greys in each luma space
+  // (greyLights), so that every model's GLSL reads the lights it is given.
+  size_t light_count = 0;
+  for (size_t set = 0; set < d.light_sets.size(); ++set) {
+    std::vector<PreparedLight<float>> lights;
+    prepareLights<float>(set == 0 ? scene.lights : greyLights(scene.lights, LumaSpace(set - 1)),
+                         d.light_sets[set].ambient, lights, cam.origin);
+    light_count = lights.size();
+    std::vector<LightBlock> blocks;
+    for (const auto& l : lights) blocks.push_back(lightBlock(l));
+    if (blocks.empty()) blocks.push_back(LightBlock{});  // a buffer may not be empty; u_light_count says 0
+    glCreateBuffers(1, &d.light_sets[set].ssbo);
+    glNamedBufferStorage(d.light_sets[set].ssbo, GLsizeiptr(blocks.size() * sizeof(LightBlock)), blocks.data(), 0);
+  }
   checkGl("uploading the lights");
 
   // Per material slot: its uniforms and texture (RGBA32F, one level, read
@@ -272,6 +291,7 @@ GlScene::GlScene(const Scene& input) : impl_(new Impl) {
     d.draws[i].base = glm::vec3(mat.base_color);
     d.draws[i].texture = slot_texture[draw_slot[i]];
     d.draws[i].texture_mode = slot_texture_mode[draw_slot[i]];
+    d.draws[i].luma_only = mat.luma_only ? 1 + int(*mat.luma_only) : 0;
   }
 
   // Targets.
@@ -288,15 +308,12 @@ GlScene::GlScene(const Scene& input) : impl_(new Impl) {
   glUniform2f(loc("u_scale"), float(1.0 / (cam.tan_half_fov * cam.aspect)), float(1.0 / cam.tan_half_fov));
   glUniform1f(loc("u_near"), float(near));
   glUniform1i(loc("u_shading"), scene.shading == ShadingMode::Flat ? 0 : scene.shading == ShadingMode::Gouraud ? 1 : 2);
-  glUniform3f(loc("u_ambient"), ambient.x, ambient.y, ambient.z);
-  glUniform1f(loc("u_ambient_luma"), models::lightLuma(ambient));
   glUniform1i(loc("u_normalize_normal"), scene.normalize_normal);
-  glUniform1i(loc("u_light_count"), GLint(lights.size()));
+  glUniform1i(loc("u_light_count"), GLint(light_count));
   checkGl("setting the uniforms");
 
   // Fixed state: reversed Z, the whole frame, no culling or blending.
   setDrawState(GL_GREATER, d.targets, d.width, d.height, d.vao);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightsBinding, d.ssbo);
   checkGl("setting the state");
   d.setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -312,6 +329,10 @@ void GlScene::draw() {
   for (const Draw& dr : d.draws) {
     if (dr.count == 0) continue;
     setMaterialUniforms(d.program, dr);
+    const LightSet& ls = d.light_sets[size_t(dr.luma_only)];
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightsBinding, ls.ssbo);
+    glUniform3f(glGetUniformLocation(d.program, "u_ambient"), ls.ambient.x, ls.ambient.y, ls.ambient.z);
+    glUniform1f(glGetUniformLocation(d.program, "u_ambient_luma"), models::lightLuma(ls.ambient));
     if (dr.texture) glBindTextureUnit(kTextureUnit, dr.texture);
     glDrawArrays(GL_TRIANGLES, dr.first, dr.count);
   }

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "colour/cie.h"
 #include "colour/yiq.h"
 
 namespace xval::gl {
@@ -34,12 +35,13 @@ uniform float u_ka, u_kd, u_ks, u_n, u_offset, u_factor;
 uniform vec3 u_c0, u_c1, u_c2;
 uniform bool u_on_cycles;  // oren_nayar's variant cycles
 uniform float u_on_a, u_on_b;  // oren_nayar's A, B
-uniform vec3 u_ambient;    // A: the ambient lights' summed colour
+uniform vec3 u_ambient;    // A: the ambient lights' summed colour (of the draw's light set)
 uniform float u_ambient_luma;  // A_Y = lightLuma(A)
 uniform vec3 u_base;
 uniform int u_texture;
 uniform bool u_normalize_normal;  // phong: re-normalise the interpolated normal
 uniform int u_light_count;
+uniform int u_luma_only;   // the luma-only mode: 0 off, 1 yiq, 2 cie_lstar (LumaSpace + 1)
 layout(binding = 0) uniform sampler2D u_tex;  // RGBA32F, row 0 = the image's top, read by texelFetch
 
 struct Light {
@@ -196,7 +198,7 @@ float cookTorranceSpecular(vec3 n, vec3 l, vec3 v) {
 
 // ---- the model at one point (shading/shader.h), unsaturated -------------
 // p: relative to the eye, n: unit normal, v: unit towards the eye, c: C.
-vec3 shade(vec3 p, vec3 n, vec3 v, vec3 c) {
+vec3 shadeModel(vec3 p, vec3 n, vec3 v, vec3 c) {
   if (u_model == MODEL_CLASSIC_PHONG) {
     if (u_course) {
       vec3 acc = u_ka * u_ambient;
@@ -288,6 +290,21 @@ vec3 shade(vec3 p, vec3 n, vec3 v, vec3 c) {
     acc += att * u_lights[i].colour_luma.rgb * forsyth(dot(n, L));
   }
   return c * acc;
+}
+
+// ---- the luma-only mode (shading/luma_only.h) ---------------------------
+// The model lit in grey (the draw's light set is then greyLights'), its
+// luma replacing C's, C's chroma kept.
+vec3 shade(vec3 p, vec3 n, vec3 v, vec3 c) {
+  if (u_luma_only == 0) return shadeModel(p, n, v, c);
+  bool cie = u_luma_only == 2;
+  float yc = cie ? relativeXyz(c).y : rgbToYiq(c).x;
+  vec3 g = shadeModel(p, n, v, vec3(yc));
+  float yout = cie ? relativeXyz(g).y : yiqLightLuma(g);
+  if (!cie) return c + vec3(yout - yc);
+  vec3 t = relativeXyz(c);
+  float d = labF(yout) - labF(yc);
+  return rgbOfRelativeXyz(vec3(labFInverse(labF(t.x) + d), labFInverse(labF(t.y) + d), labFInverse(labF(t.z) + d)));
 }
 
 // ---- the texture (texture/texture.h): wrap, nearest or bilinear ---------
@@ -398,6 +415,31 @@ std::string yiqFunctions() {
   return s;
 }
 
+// The luma-only mode's colour functions in GLSL, from colour/cie.h and
+// colour/yiq.h (the same double constants, printed to 9 significant
+// digits, float's round trip): relativeXyz, rgbOfRelativeXyz, labF,
+// labFInverse (cube root as pow(t, 1/3) for t > the knee, where t > 0),
+// and yiqLightLuma (shading/luma_only.h lightLuma for yiq).
+std::string lumaOnlyFunctions() {
+  std::string s = "// ---- CIE XYZ and L* (colour/cie.h) ----\n";
+  auto matrix = [&](const char* name, const char* arg, auto entry) {
+    s += fmt::format("vec3 {}(vec3 {}) {{\n  return vec3(", name, arg);
+    for (int r = 0; r < 3; ++r)
+      s += fmt::format("{}({:.9g} * {}.x + {:.9g} * {}.y) + {:.9g} * {}.z{}", r ? "              " : "", entry(r, 0), arg,
+                       entry(r, 1), arg, entry(r, 2), arg, r < 2 ? ",\n" : ");\n}\n");
+  };
+  matrix("relativeXyz", "c", [](int r, int k) { return colour::kRgbToXyz[r][k] / colour::kWhiteXyz[r]; });
+  matrix("rgbOfRelativeXyz", "t", [](int r, int k) { return colour::kXyzToRgb.m[r][k] * colour::kWhiteXyz[k]; });
+  s += fmt::format("float labF(float t) {{ return t > {:.9g} ? pow(t, 1.0 / 3.0) : t * {:.9g} + {:.9g}; }}\n",
+                   colour::kLabKnee, colour::kLabSlope, 4.0 / 29.0);
+  s += fmt::format("float labFInverse(float u) {{ return u > {:.9g} ? u * u * u : (u - {:.9g}) / {:.9g}; }}\n",
+                   colour::kLabDelta, 4.0 / 29.0, colour::kLabSlope);
+  const double white = colour::kRgbToYiq[0][0] + colour::kRgbToYiq[0][1] + colour::kRgbToYiq[0][2];
+  s += fmt::format("float yiqLightLuma(vec3 c) {{ return {:.9g} * c.r + {:.9g} * c.g + {:.9g} * c.b; }}\n\n",
+                   colour::kRgbToYiq[0][0] / white, colour::kRgbToYiq[0][1] / white, colour::kRgbToYiq[0][2] / white);
+  return s;
+}
+
 // const int MODEL_<NAME> = <id>; for every model of the registry.
 std::string modelIdConstants() {
   std::string s;
@@ -415,12 +457,12 @@ std::string glslModelConstant(ModelId id) {
 }
 
 const char* vertexShaderSource() {
-  static const std::string s = std::string(kVersion) + modelIdConstants() + kCommon + yiqFunctions() + kCommonModels + kVertex;
+  static const std::string s = std::string(kVersion) + modelIdConstants() + kCommon + yiqFunctions() + lumaOnlyFunctions() + kCommonModels + kVertex;
   return s.c_str();
 }
 
 const char* fragmentShaderSource() {
-  static const std::string s = std::string(kVersion) + modelIdConstants() + kCommon + yiqFunctions() + kCommonModels + kFragment;
+  static const std::string s = std::string(kVersion) + modelIdConstants() + kCommon + yiqFunctions() + lumaOnlyFunctions() + kCommonModels + kFragment;
   return s.c_str();
 }
 

@@ -132,9 +132,17 @@ struct Factor {
 };
 
 struct Bound {
-  Factor C, K, F, L;
-  double value() const { return 4.0 * C.value * K.value * F.value * std::max(1.0, L.value); }
+  Factor C, K, F, L, M;
+  double value() const { return 4.0 * C.value * K.value * F.value * std::max(1.0, L.value) * M.value; }
 };
+
+// M, the luma-only mode's factor (shading/luma_only.h): the model runs on
+// grey inputs no larger than the colours (a luma is a convex combination
+// of the channels), so its lit grey is within the bound; then yiq forms
+// C + (Y_out - Y_C): at most 2 x that; cie_lstar forms
+// f^-1(f(t) + f(Y_out) - f(Y_C)), at most (2 cbrt(B))^3 = 8 B, and the XYZ->RGB
+// rows' |entries| times the white point sum to < 8: 64 x.
+constexpr double kLumaOnlyFactor[2] = {2.0, 64.0};
 
 // The bound for one material (named `prefix` in messages).
 Bound shadingFactors(const Scene& s, const Material& mat, const std::string& prefix) {
@@ -180,6 +188,7 @@ Bound shadingFactors(const Scene& s, const Material& mat, const std::string& pre
         if (maxChannel(f_sum) > 1.0) b.F = {maxChannel(f_sum), m + "." + f_field};
       },
       mat.model);
+  if (mat.luma_only) b.M = {kLumaOnlyFactor[size_t(*mat.luma_only)], prefix + ".luma_only"};
   double top = -1.0;
   b.L.value = 0.0;
   for (size_t k = 0; k < s.lights.size(); ++k) {
@@ -298,7 +307,8 @@ void checkPrecision(const Scene& scene, Precision p) {
     throw SceneError(file + ": " + (lead->field.empty() ? "lights" : lead->field) +
                      ": the shading could reach " + num(B) + " = 4 x " + part("surface colour", b.C) + " x " +
                      part("model coefficients", b.K) + " x " + part("Forsyth colours", b.F) + " x " +
-                     part("light (colour / attenuation constant, summed)", b.L) + ", beyond " +
+                     part("light (colour / attenuation constant, summed)", b.L) + " x " +
+                     part("luma-only mode", b.M) + ", beyond " +
                      num(lim.max_shading) + ", the limit of " + prec + fix);
   }
   const double W = specularWeight(scene);

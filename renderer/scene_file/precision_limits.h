@@ -24,7 +24,7 @@
 //                becomes 0, whose power is 1 everywhere).
 //   shading      B <= 1e36 / 1e306, where B bounds every value the shader
 //                forms (shading/shader.h):
-//                  B = 4 C K F max(1, L),
+//                  B = 4 C K F max(1, L) M,
 //                  C = max(1, largest surface colour: base_color, or
 //                      kMaxTexelValue for an image texture, 1 for brick),
 //                  K = max(1, ka + kd + ks) (classic Phong),
@@ -37,6 +37,8 @@
 //                  L = sum over lights of (largest channel of its colour)
 //                      x (1 / attenuation.constant when attenuated): each
 //                      light's att(d) <= 1 / constant for d >= 0;
+//                  M = 2 (luma_only yiq), 64 (luma_only cie_lstar), 1
+//                      otherwise (precision_limits.cpp kLumaOnlyFactor);
 //                  4 covers the ambient, diffuse and specular sums.
 //                Every intermediate of every model is at most B in
 //                magnitude, so none overflows (inf x 0 would be NaN).

@@ -64,6 +64,7 @@ J material(const Material& m, const std::string* texture_path) {
     mat["texture"] = tex;
   }
   if (!m.texture || m.texture->source == TextureSpec::Source::Model) mat["base_color"] = v3(m.base_color);
+  if (m.luma_only) mat["luma_only"] = toString(*m.luma_only);
   return mat;
 }
 

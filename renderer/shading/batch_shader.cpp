@@ -288,6 +288,7 @@ std::optional<BatchShading> batchShading(const Scene& scene, const Texture* text
   if (scene.shading != ShadingMode::Phong) return std::nullopt;
   if (scene.material.texture && scene.material.texture->filter == TextureFilter::Trilinear) return std::nullopt;
   if (!scene.normalize_normal) return std::nullopt;  // the listing's normalize(R) is the scalar path's
+  if (scene.material.luma_only) return std::nullopt;  // the luma-only mode is Shader<float>'s
   BatchShading s;
   // The kernel's models; the others are shaded one hit at a time.
   switch (modelId(scene.material.model)) {

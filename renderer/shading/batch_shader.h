@@ -17,9 +17,9 @@
 // paper); point, directional and spot lights with or without attenuation;
 // texture (nearest or bilinear; not trilinear, whose level needs each hit's
 // footprint) or base colour; the normal re-normalised (not the scene
-// option normalize_normal false, with its normalize(R)). Anything else (flat,
-// gouraud, course variant, Forsyth's family, minnaert, blinn_phong,
-// oren_nayar) is not built: batchShading()
+// option normalize_normal false, with its normalize(R)); not the material's
+// luma_only mode. Anything else (flat, gouraud, course variant, Forsyth's
+// family, minnaert, blinn_phong, oren_nayar, cook_torrance) is not built: batchShading()
 // returns nothing and the renderer shades one hit at a time.
 #pragma once
 

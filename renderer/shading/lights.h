@@ -121,4 +121,15 @@ void prepareLights(const std::vector<Light>& lights, glm::vec<3, T>& ambient,
   }
 }
 
+// The luma-only mode's lights (shading/luma_only.h, step 1): every light,
+// ambient included, with its colour replaced by the grey of its luma in
+// space s (white stays white), in double. Every backend shades a
+// luma-only material with these.
+inline std::vector<Light> greyLights(const std::vector<Light>& lights, LumaSpace s) {
+  std::vector<Light> out = lights;
+  for (auto& l : out)
+    std::visit([s](auto& x) { x.color = glm::dvec3(luma_only::lightLuma(s, x.color)); }, l);
+  return out;
+}
+
 }  // namespace xval

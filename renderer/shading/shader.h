@@ -31,6 +31,11 @@
 // once (the paper's render target did), so the listing's YIQtoRGB saturate
 // is that same single saturate.
 //
+// With the material's luma_only (shading/luma_only.h) the model above is
+// evaluated with the grey lights (greyLights) and the grey Y_C (1,1,1), and
+// its result G gives the luma Y_out = Y(G) that replaces C's
+// (luma_only::withLuma); no model has code of its own for it.
+//
 // Only what the scene uses is computed: no specular term when ks = 0, no
 // attenuation when it is (1,0,0), no texture fetch without a texture (the
 // caller passes C).
@@ -46,6 +51,7 @@
 
 #include <glm/glm.hpp>
 
+#include <optional>
 #include <vector>
 
 #include "scene/scene.h"
@@ -61,8 +67,8 @@ template <class T> class Shader {
   // origin: the point shading positions are relative to (see above).
   explicit Shader(const Material& m, const std::vector<Light>& lights,
                   glm::dvec3 origin = glm::dvec3(0))
-      : origin_(origin) {
-    prepareLights<T>(lights, ambient_, lights_, origin);
+      : origin_(origin), luma_only_(m.luma_only) {
+    prepareLights<T>(luma_only_ ? greyLights(lights, *luma_only_) : lights, ambient_, lights_, origin);
     ambient_luma_ = models::lightLuma(ambient_);
     std::visit([this](const auto& mm) { this->setParams(mm); }, m.model);  // sets kind_
   }
@@ -79,6 +85,16 @@ template <class T> class Shader {
   // p: surface point (relative to origin()), n: unit normal, v: unit
   // direction to the eye, c: the surface colour (texture or base colour).
   V shade(V p, V n, V v, V c) const {
+    if (!luma_only_) return shadeModel(p, n, v, c);
+    const LumaSpace s = *luma_only_;
+    const T y_c = luma_only::surfaceLuma(s, c);
+    const T y_out = luma_only::lightLuma(s, shadeModel(p, n, v, V(y_c)));
+    return luma_only::withLuma(s, c, y_c, y_out);
+  }
+
+ private:
+  // The material's model as it is (the formulas above).
+  V shadeModel(V p, V n, V v, V c) const {
     using namespace models;
     switch (kind_) {
       case ModelId::ClassicPhong: {
@@ -178,7 +194,6 @@ template <class T> class Shader {
     return V(0);  // unreachable: the switch covers every ModelId
   }
 
- private:
   V mirror(V n, V L, T x) const {
     const V r = models::reflect(n, L, x);
     if (!unit_reflection_) return r;
@@ -244,6 +259,7 @@ template <class T> class Shader {
 
   ModelId kind_ = ModelId::ClassicPhong;
   glm::dvec3 origin_{0};
+  std::optional<LumaSpace> luma_only_;
   std::vector<PreparedLight<T>> lights_;
   V ambient_{0};
   T ambient_luma_ = 0;

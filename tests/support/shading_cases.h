@@ -125,6 +125,30 @@ inline std::vector<std::pair<std::string, LightingModel>> lightingModels(CaseRng
   return m;
 }
 
+// A small sphere lit by `model`, its eye position and base colour drawn
+// from r; no lights yet.
+inline Scene sphereScene(CaseRng& r, const std::string& name, const LightingModel& model) {
+  Scene s;
+  s.name = name;
+  s.camera.position = r.unit() * r.uniform(2.5, 5.0);
+  s.camera.width = s.camera.height = 16;
+  UvSphere sphere;
+  sphere.segments_longitude = 8, sphere.segments_latitude = 4;
+  s.objects.push_back(sphere);
+  s.material.model = model;
+  s.material.base_color = r.colour(0.2, 1.0);
+  return s;
+}
+
+// Case k of a list textured when k % every == 1: the brick, nearest and
+// bilinear in turn.
+inline void brickEvery(Scene& s, int k, int every) {
+  if (k % every != 1) return;
+  TextureSpec t;
+  t.filter = ((k + 1) / every) % 2 ? TextureFilter::Nearest : TextureFilter::Bilinear;
+  s.material.texture = t;
+}
+
 // Every model x light set x shading mode, a sixth of them textured (the
 // brick, nearest and bilinear in turn), each with its own eye position; a small sphere as the object.
 inline std::vector<ShadingCase> shadingCases(unsigned seed = 13) {
@@ -135,23 +159,33 @@ inline std::vector<ShadingCase> shadingCases(unsigned seed = 13) {
   for (const auto& [mname, model] : ms)
     for (const auto& [lname, lights] : lightSets(r))
       for (ShadingMode mode : {ShadingMode::Phong, ShadingMode::Flat, ShadingMode::Gouraud}) {
-        Scene s;
-        s.name = mname + "_" + lname + "_" + toString(mode);
-        s.camera.position = r.unit() * r.uniform(2.5, 5.0);
-        s.camera.width = s.camera.height = 16;
-        UvSphere sphere;
-        sphere.segments_longitude = 8, sphere.segments_latitude = 4;
-        s.objects.push_back(sphere);
-        s.material.model = model;
-        s.material.base_color = r.colour(0.2, 1.0);
+        Scene s = sphereScene(r, mname + "_" + lname + "_" + toString(mode), model);
         // Every sixth case textured (C then comes from the texture node;
         // exporting the texture is the slow part of the Blender check).
-        if (k++ % 6 == 1) {
-          TextureSpec t;
-          t.filter = (k / 6) % 2 ? TextureFilter::Nearest : TextureFilter::Bilinear;
-          s.material.texture = t;
-        }
+        brickEvery(s, k++, 6);
         s.lights = lights;
+        s.shading = mode;
+        out.push_back({s.name, s});
+      }
+  return out;
+}
+
+// The luma-only mode (shading/luma_only.h) on every model and each luma
+// space: the light set with several coloured lights and ambients (where the
+// grey lights differ most from the coloured ones), each shading mode, every
+// third case textured. A case's name ends in its space.
+inline std::vector<ShadingCase> lumaOnlyCases(unsigned seed = 33) {
+  CaseRng r(seed);
+  std::vector<ShadingCase> out;
+  const auto ms = lightingModels(r);
+  int k = 0;
+  for (const auto& [mname, model] : ms)
+    for (LumaSpace space : {LumaSpace::Yiq, LumaSpace::CieLstar})
+      for (ShadingMode mode : {ShadingMode::Phong, ShadingMode::Flat, ShadingMode::Gouraud}) {
+        Scene s = sphereScene(r, mname + "_several_" + toString(mode) + "_luma_only_" + toString(space), model);
+        s.material.luma_only = space;
+        brickEvery(s, k++, 3);
+        s.lights = lightSets(r).back().second;  // "several"
         s.shading = mode;
         out.push_back({s.name, s});
       }

@@ -265,13 +265,64 @@ std::vector<test::ShadingCase> formerRefusalCases() {
   return out;
 }
 
+// A sample point: x in the box [-1, 1]^3, a normal facing the eye (N.V >
+// 0.05), C the material's colour or (textured) a random one; none where
+// x is near a spot light's cone (where the two sides' arithmetic may differ).
+std::optional<Point> samplePoint(test::CaseRng& r, dvec3 eye, const Shader<double>& shader, const Material& m) {
+  Point q;
+  q.x = r.inBox(1.0);
+  q.eye = eye;
+  const dvec3 v = glm::normalize(eye - q.x);
+  do q.n = r.unit();
+  while (!(glm::dot(q.n, v) > 0.05));
+  if (nearCone(shader.lights(), q.x)) return std::nullopt;
+  q.c = m.texture ? r.colour() : m.base_color;
+  return q;
+}
+
+// Compares case c's POV-Ray shading, evaluated with POV-Ray's semantics,
+// with Shader<double> at 100 sampled points, normals and surface colours
+// (relative 1e-9), counting the samples and the spot lights' sides in n.
+struct SampleCounts {
+  int samples = 0, spot_lit = 0, spot_unlit = 0;
+  double worst = 0.0;
+};
+void expectPovAgrees(const test::ShadingCase& c, const PovShading& pov, test::CaseRng& r, SampleCounts& n) {
+  const Scene& s = c.scene;
+  const Shader<double> shader(s.material, s.lights);
+  const dvec3 eye = CameraRays(s.camera).origin;
+  for (int k = 0; k < 100; ++k) {
+    const auto sample = samplePoint(r, eye, shader, s.material);
+    if (!sample) continue;
+    const Point& q = *sample;
+    const dvec3 v = glm::normalize(eye - q.x);
+    const dvec3 want = shader.shade(q.x, q.n, v, q.c);
+    dvec3 got = evaluate(pov.emission, q) + phong(pov.specular, q);
+    if (pov.texture_filter_layer) {
+      // filterLayerSdl's leaf: the texture colour, evaluated as written.
+      got *= evaluateLeaf(*affine(glm::dmat3(1.0), dvec3(0.0)), q);
+      ++seen.filter_layer;
+    }
+    for (const auto& l : shader.lights())
+      if (l.kind == PreparedLight<double>::Kind::Spot) ++(sampleLight(l, q.x).lit ? n.spot_lit : n.spot_unlit);
+    for (int ch = 0; ch < 3; ++ch) {
+      const double err = std::abs(got[ch] - want[ch]) / std::max(1.0, std::abs(want[ch]));
+      n.worst = std::max(n.worst, err);
+      ASSERT_LE(err, 1e-9) << c.name << ": POV-Ray evaluates channel " << ch << " at x = ("
+                           << q.x.x << ", " << q.x.y << ", " << q.x.z << "), N = (" << q.n.x
+                           << ", " << q.n.y << ", " << q.n.z << ") to " << got[ch]
+                           << ", the reference shader to " << want[ch];
+    }
+    ++n.samples;
+  }
+}
+
 TEST(PovShading, EvaluatesToTheReferenceShaderForEveryModelAndLight) {
   test::CaseRng r(4242);
-  int evaluated = 0, refused = 0, samples = 0, spot_unlit = 0, spot_lit = 0, oren_nayar_refused = 0;
+  int evaluated = 0, refused = 0, oren_nayar_refused = 0, model_refused = 0;
+  SampleCounts n;
   std::map<std::string, int> per_model;
   std::vector<std::string> refusals;
-  int model_refused = 0;
-  double worst = 0.0;
   seen = {};
   std::vector<test::ShadingCase> cases = test::shadingCases();
   for (auto& c : formerRefusalCases()) cases.push_back(std::move(c));
@@ -297,37 +348,8 @@ TEST(PovShading, EvaluatesToTheReferenceShaderForEveryModelAndLight) {
     }
     ++evaluated;
     ++per_model[modelName(s.material.model)];
-    const Shader<double> shader(s.material, s.lights);
-    const dvec3 eye = CameraRays(s.camera).origin;
-    const bool textured = s.material.texture.has_value();
-    for (int k = 0; k < 100; ++k) {
-      Point q;
-      q.x = r.inBox(1.0);
-      q.eye = eye;
-      const dvec3 v = glm::normalize(eye - q.x);
-      do q.n = r.unit();
-      while (!(glm::dot(q.n, v) > 0.05));
-      if (nearCone(shader.lights(), q.x)) continue;
-      q.c = textured ? r.colour() : s.material.base_color;
-      const dvec3 want = shader.shade(q.x, q.n, v, q.c);
-      dvec3 got = evaluate(pov.emission, q) + phong(pov.specular, q);
-      if (pov.texture_filter_layer) {
-        // filterLayerSdl's leaf: the texture colour, evaluated as written.
-        got *= evaluateLeaf(*affine(glm::dmat3(1.0), dvec3(0.0)), q);
-        ++seen.filter_layer;
-      }
-      for (const auto& l : shader.lights())
-        if (l.kind == PreparedLight<double>::Kind::Spot) ++(sampleLight(l, q.x).lit ? spot_lit : spot_unlit);
-      for (int ch = 0; ch < 3; ++ch) {
-        const double err = std::abs(got[ch] - want[ch]) / std::max(1.0, std::abs(want[ch]));
-        worst = std::max(worst, err);
-        ASSERT_LE(err, 1e-9) << c.name << ": POV-Ray evaluates channel " << ch << " at x = ("
-                             << q.x.x << ", " << q.x.y << ", " << q.x.z << "), N = (" << q.n.x
-                             << ", " << q.n.y << ", " << q.n.z << ") to " << got[ch]
-                             << ", the reference shader to " << want[ch];
-      }
-      ++samples;
-    }
+    expectPovAgrees(c, pov, r, n);
+    if (HasFatalFailure()) return;
   }
   // Not vacuous: every model evaluated, most cases exportable, both sides
   // of the spot cones sampled.
@@ -337,8 +359,8 @@ TEST(PovShading, EvaluatesToTheReferenceShaderForEveryModelAndLight) {
   EXPECT_EQ(oren_nayar_refused, 2 * 7 * 2);
   EXPECT_GT(model_refused, 0);
   EXPECT_GT(evaluated, 3 * refused);
-  EXPECT_GT(spot_lit, 100);
-  EXPECT_GT(spot_unlit, 100);
+  EXPECT_GT(n.spot_lit, 100);
+  EXPECT_GT(n.spot_unlit, 100);
   // The constructs of the former refusal classes were evaluated.
   EXPECT_GT(seen.grey, 500);
   EXPECT_GT(seen.filter_layer, 500);
@@ -350,8 +372,52 @@ TEST(PovShading, EvaluatesToTheReferenceShaderForEveryModelAndLight) {
   EXPECT_EQ(seen.grey_outside, 0);
   // Nothing of these light sets is refused any more.
   for (const auto& msg : refusals) ADD_FAILURE() << "refused: " << msg;
-  std::cout << evaluated << " cases (" << refused << " refused by the exporter), " << samples
-            << " samples, largest relative error " << worst << "\n";
+  std::cout << evaluated << " cases (" << refused << " refused by the exporter), " << n.samples
+            << " samples, largest relative error " << n.worst << "\n";
+}
+
+// The luma-only mode (test::lumaOnlyCases: every model, each luma space,
+// coloured lights and ambients): yiq evaluates to the reference shader for
+// every model POV-Ray expresses in it; the rest are refused with their
+// reasons (pov_shading.cpp checkLumaOnlyExpressible): cie_lstar always,
+// yiq with yiq_luma and with classic_phong course with a highlight.
+TEST(PovShading, LumaOnlyYiqEvaluatesToTheReferenceShaderAndTheRestIsRefused) {
+  test::CaseRng r(3333);
+  SampleCounts n;
+  int evaluated = 0, refused = 0;
+  seen = {};
+  for (const auto& c : test::lumaOnlyCases()) {
+    const Scene& s = c.scene;
+    if (s.shading == ShadingMode::Gouraud) continue;  // its image holds the reference's vertex colours
+    const auto* phong = std::get_if<ClassicPhong>(&s.material.model);
+    const bool expressible = *s.material.luma_only == LumaSpace::Yiq &&
+                             !std::holds_alternative<YiqLuma>(s.material.model) &&
+                             !(phong && phong->variant == ClassicPhong::Variant::Course && phong->ks != 0.0);
+    PovShading pov;
+    try {
+      pov = povShading(s);
+    } catch (const ExportError& e) {
+      EXPECT_FALSE(expressible) << c.name << ": refused: " << e.what();
+      EXPECT_NE(std::string(e.what()).find(std::string("luma_only ") + toString(*s.material.luma_only)),
+                std::string::npos)
+          << c.name << ": " << e.what();
+      ++refused;
+      continue;
+    }
+    EXPECT_TRUE(expressible) << c.name << ": exported, though POV-Ray cannot express it";
+    ++evaluated;
+    expectPovAgrees(c, pov, r, n);
+    if (HasFatalFailure()) return;
+  }
+  // Not vacuous: 12 models x 2 spaces x {phong, flat}; yiq evaluated for
+  // the 9 models POV-Ray expresses in it (not yiq, yiq_bright, phong_course),
+  // both sides of the spot cones.
+  EXPECT_EQ(evaluated, 18);
+  EXPECT_EQ(refused, 30);
+  EXPECT_GT(n.spot_lit, 100);
+  EXPECT_GT(n.spot_unlit, 100);
+  std::cout << evaluated << " luma-only cases (" << refused << " refused), " << n.samples
+            << " samples, largest relative error " << n.worst << "\n";
 }
 
 // Objects with materials of their own (pov_exporter.cpp writes each object
@@ -383,14 +449,10 @@ TEST(PovShading, EachObjectsMaterialEvaluatesToItsReferenceShader) {
       const Shader<double> shader(mat, s.lights);
       bool differs = false;
       for (int i = 0; i < 50; ++i) {
-        Point q;
-        q.x = r.inBox(1.0);
-        q.eye = eye;
+        const auto sample = samplePoint(r, eye, shader, mat);
+        if (!sample) continue;
+        const Point& q = *sample;
         const dvec3 v = glm::normalize(eye - q.x);
-        do q.n = r.unit();
-        while (!(glm::dot(q.n, v) > 0.05));
-        if (nearCone(shader.lights(), q.x)) continue;
-        q.c = mat.texture ? r.colour() : mat.base_color;
         const dvec3 want = shader.shade(q.x, q.n, v, q.c);
         dvec3 got = evaluate(pov.emission, q) + phong(pov.specular, q);
         if (pov.texture_filter_layer) got *= evaluateLeaf(*affine(glm::dmat3(1.0), dvec3(0.0)), q);

@@ -176,10 +176,12 @@ TEST_P(TracedGeometry, PovMesh2HoldsTheTracedAttributes) {
     // exported with every material's model replaced by lambert, so that the
     // geometry of a scene whose model POV-Ray refuses (oren_nayar,
     // cook_torrance: docs/models.md) is checked too.
+    // The luma-only mode is off for the same reason (cie_lstar).
     Scene pov_scene = scene;
     pov_scene.material.model = Lambert{};
+    pov_scene.material.luma_only.reset();
     for (auto& o : pov_scene.objects)
-      if (o.material) o.material->model = Lambert{};
+      if (o.material) o.material->model = Lambert{}, o.material->luma_only.reset();
     std::optional<PovExport> exported;
     try {
       exported = exportPov(pov_scene, dir);

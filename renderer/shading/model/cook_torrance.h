@@ -34,7 +34,7 @@ struct CookTorrance {
   double kd = 1.0, ks = 1.0;
 
   // The largest S (above) per unit ks, over every geometry (the precision
-  // limits' bound, scene/precision_limits.cpp: it multiplies ks). With
+  // limits' bound, scene_file/precision_limits.cpp: it multiplies ks). With
   // alpha <= 1 and F <= 1: D <= 1.5 / (pi alpha^2) (GGX: 1 / (pi alpha^2) at
   // N.H = 1; Beckmann: the same for alpha^2 <= 1/2, 4/e / (pi alpha^2) at
   // alpha = 1); G / N.V <= 7.1 / alpha (Smith: G1(N.L) <= 1 and G1(x)/x <=

@@ -1,5 +1,5 @@
 // Writes the cases of the Blender node-graph check (check_graph.py): for
-// every scene of test::shadingCases(), its glTF export and sample points
+// every scene of test::shadingCases() and test::lumaOnlyCases(), its glTF export and sample points
 // with the colour Shader<double> gives there, as the reference renderer
 // shades a hit:
 //   phong    N = normalize(N_attr) for a normal N_attr given to the graph's
@@ -160,6 +160,7 @@ int main(int argc, char** argv) {
     test::CaseRng r(1313);
     json cases = json::array();
     for (const auto& c : test::shadingCases()) cases.push_back(writeCase(c, dir, r));
+    for (const auto& c : test::lumaOnlyCases()) cases.push_back(writeCase(c, dir, r));
     std::ofstream f(dir / "cases.json");
     f << json{{"cases", cases}}.dump();
     if (!f) throw std::runtime_error((dir / "cases.json").string() + ": cannot write");
