@@ -525,7 +525,7 @@ def model_colour(g, k, P, N, V, C):
 
 def luma_only_colour(g, k, P, N, V, C):
     """The material's colour: the model's, or in the luma-only mode
-    (renderer/shading/luma_only.h) the model lit in grey (k's lights and
+    (renderer/colour/luma_only.h) the model lit in grey (k's lights and
     ambients are the greys already) with its luma replacing C's, C's chroma
     kept: yiq F = C + (Y_out - Y_C)(1,1,1); cie_lstar the relative XYZ t of C
     with f(t) + f(Y_out) - f(Y_C) in each of its three f."""

@@ -100,7 +100,7 @@ struct ModelConstants {
   }
 };
 
-// The luma-only mode's constants (shading/luma_only.h; colour/cie.h,
+// The luma-only mode's constants (colour/luma_only.h; colour/cie.h,
 // colour/yiq.h): the rows of Y_C (surface_row) and of Y(G) (light_row);
 // for cie_lstar also relative XYZ's rows, their inverse's, and f's knee,
 // slope, offset 4/29 and its inverse's knee 6/29. The lights and ambients

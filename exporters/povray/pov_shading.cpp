@@ -418,7 +418,7 @@ Specular specular(const Scene& s, const std::vector<LightInfo>& lights, bool fil
   return sp;
 }
 
-// The luma-only mode, yiq (shading/luma_only.h): with the grey lights and
+// The luma-only mode, yiq (colour/luma_only.h): with the grey lights and
 // C = 1 the model's emission tree (emissionLinear) is the lit grey factor
 // K, and every leaf's luma k gives the rank-one leaf k Y_C (1,1,1) (Y_C =
 // w . C, the listing's row); one more term C - Y_C (1,1,1) makes

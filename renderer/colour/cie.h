@@ -1,5 +1,5 @@
 // CIE XYZ and the CIE lightness L*, for the luma-only mode's CIE L* space
-// (shading/luma_only.h, docs/models.md "Luma-only lighting").
+// (colour/luma_only.h, docs/models.md "Luma-only lighting").
 //
 // The renderer's RGB is taken as linear light in the sRGB / Rec. 709
 // primaries (its light arithmetic is linear: colours add and multiply), so

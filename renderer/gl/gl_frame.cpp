@@ -141,7 +141,7 @@ struct Draw {
   glm::vec3 base{1};
   int texture_mode = 0;  // 0 none, 1 nearest, 2 bilinear, 3 trilinear
   GLuint texture = 0;
-  // The luma-only mode (shading/luma_only.h): 0 off, else 1 + LumaSpace;
+  // The luma-only mode (colour/luma_only.h): 0 off, else 1 + LumaSpace;
   // also the draw's light set (the lights, or their greys in that space).
   int luma_only = 0;
 };

@@ -292,7 +292,7 @@ vec3 shadeModel(vec3 p, vec3 n, vec3 v, vec3 c) {
   return c * acc;
 }
 
-// ---- the luma-only mode (shading/luma_only.h) ---------------------------
+// ---- the luma-only mode (colour/luma_only.h) ---------------------------
 // The model lit in grey (the draw's light set is then greyLights'), its
 // luma replacing C's, C's chroma kept.
 vec3 shade(vec3 p, vec3 n, vec3 v, vec3 c) {
@@ -419,7 +419,7 @@ std::string yiqFunctions() {
 // colour/yiq.h (the same double constants, printed to 9 significant
 // digits, float's round trip): relativeXyz, rgbOfRelativeXyz, labF,
 // labFInverse (cube root as pow(t, 1/3) for t > the knee, where t > 0),
-// and yiqLightLuma (shading/luma_only.h lightLuma for yiq).
+// and yiqLightLuma (colour/luma_only.h lightLuma for yiq).
 std::string lumaOnlyFunctions() {
   std::string s = "// ---- CIE XYZ and L* (colour/cie.h) ----\n";
   auto matrix = [&](const char* name, const char* arg, auto entry) {

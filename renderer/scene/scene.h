@@ -11,7 +11,7 @@
 
 #include <glm/glm.hpp>
 
-#include "shading/luma_only.h"
+#include "colour/luma_only.h"
 #include "shading/model/registry.h"
 
 #include <array>
@@ -138,7 +138,7 @@ struct Material {
   // Without a texture: the colour of every point; with source model: of
   // the primitives whose material assigns no texture.
   dvec3 base_color{1.0};
-  // The luma-only mode (shading/luma_only.h): the model lights only the
+  // The luma-only mode (colour/luma_only.h): the model lights only the
   // luma of this space, C's chroma kept. None: the model as it is.
   std::optional<LumaSpace> luma_only;
 };

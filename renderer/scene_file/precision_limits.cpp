@@ -136,7 +136,7 @@ struct Bound {
   double value() const { return 4.0 * C.value * K.value * F.value * std::max(1.0, L.value) * M.value; }
 };
 
-// M, the luma-only mode's factor (shading/luma_only.h): the model runs on
+// M, the luma-only mode's factor (colour/luma_only.h): the model runs on
 // grey inputs no larger than the colours (a luma is a convex combination
 // of the channels), so its lit grey is within the bound; then yiq forms
 // C + (Y_out - Y_C): at most 2 x that; cie_lstar forms

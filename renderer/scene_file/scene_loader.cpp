@@ -235,7 +235,7 @@ Material readMaterial(JsonReader r, const std::filesystem::path& scene_dir) {
   if (r.has("base_color") && m.texture && m.texture->source != TextureSpec::Source::Model)
     r.fail("base_color", "is not used when material.texture is set; remove one of them");
   m.base_color = r.vec3("base_color", m.base_color, Range::nonNegative());
-  // The luma-only mode, for any model (shading/luma_only.h); absent: off.
+  // The luma-only mode, for any model (colour/luma_only.h); absent: off.
   if (r.has("luma_only")) {
     const std::string space = r.requireChoice("luma_only", kLumaSpaceNames);
     for (size_t k = 0; k < kLumaSpaceNames.size(); ++k)

@@ -121,7 +121,7 @@ void prepareLights(const std::vector<Light>& lights, glm::vec<3, T>& ambient,
   }
 }
 
-// The luma-only mode's lights (shading/luma_only.h, step 1): every light,
+// The luma-only mode's lights (colour/luma_only.h, step 1): every light,
 // ambient included, with its colour replaced by the grey of its luma in
 // space s (white stays white), in double. Every backend shades a
 // luma-only material with these.

@@ -31,7 +31,7 @@
 // once (the paper's render target did), so the listing's YIQtoRGB saturate
 // is that same single saturate.
 //
-// With the material's luma_only (shading/luma_only.h) the model above is
+// With the material's luma_only (colour/luma_only.h) the model above is
 // evaluated with the grey lights (greyLights) and the grey Y_C (1,1,1), and
 // its result G gives the luma Y_out = Y(G) that replaces C's
 // (luma_only::withLuma); no model has code of its own for it.

@@ -170,7 +170,7 @@ inline std::vector<ShadingCase> shadingCases(unsigned seed = 13) {
   return out;
 }
 
-// The luma-only mode (shading/luma_only.h) on every model and each luma
+// The luma-only mode (colour/luma_only.h) on every model and each luma
 // space: the light set with several coloured lights and ambients (where the
 // grey lights differ most from the coloured ones), each shading mode, every
 // third case textured. A case's name ends in its space.

@@ -1,4 +1,4 @@
-// The luma-only mode (shading/luma_only.h, docs/models.md "Luma-only
+// The luma-only mode (colour/luma_only.h, docs/models.md "Luma-only
 // lighting"): its identities with the paper's listing and the yiq_luma
 // model, the chroma it keeps in each space, its parse errors, and the
 // YUV-vs-YIQ difference the docs quote.
