@@ -72,7 +72,7 @@ struct ModelConstants {
     ambient();
     j["c0"] = vec(m.c0), j["c1"] = vec(m.c1), j["c2"] = vec(m.c2);
   }
-  // issue #33's models
+  // minnaert, blinn_phong, oren_nayar
   void operator()(const Minnaert& m) const {
     ambient();
     j["kd"] = m.kd, j["k"] = m.k;

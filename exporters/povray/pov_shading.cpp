@@ -100,7 +100,7 @@ std::vector<std::pair<double, dvec3>> diffuseBreakpoints(const LightingModel& mo
           [](const Hemispherical& m) { return P{{-1, m.c2}, {1, m.c0}}; },
           [](const BiDirectional& m) { return P{{-1, m.c2}, {0, dvec3(0)}, {1, m.c0}}; },
           [](const Trilight& m) { return P{{-1, m.c2}, {0, m.c1}, {1, m.c0}}; },
-          // issue #33's models
+          // minnaert, blinn_phong, oren_nayar
           [](const Minnaert&) { return P{}; },  // not piecewise linear: minnaertTerm's
           [](const BlinnPhong& m) { return P{{-1, dvec3(0)}, {0, dvec3(0)}, {1, dvec3(m.kd)}}; },
           [](const OrenNayar&) -> P {
@@ -162,8 +162,8 @@ Pigment emissionLinear(const Scene& s, const std::vector<LightInfo>& lights, boo
   const LightingModel& model = s.material.model;
   dvec3 ambient = ambientSum(s);
   const auto* phong = std::get_if<ClassicPhong>(&model);
-  const auto* blinn = std::get_if<BlinnPhong>(&model);  // issue #33
-  const auto* minnaert = std::get_if<Minnaert>(&model);  // issue #33
+  const auto* blinn = std::get_if<BlinnPhong>(&model);
+  const auto* minnaert = std::get_if<Minnaert>(&model);
   std::vector<Pigment> terms;
   terms.push_back(constant(phong ? phong->ka * ambient : blinn ? blinn->ka * ambient : ambient));
   auto points = diffuseBreakpoints(model);

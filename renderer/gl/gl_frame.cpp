@@ -88,7 +88,7 @@ ModelUniforms modelUniforms(const LightingModel& m) {
                  [&u](const Trilight& mm) {
                    u.c0 = glm::vec3(mm.c0), u.c1 = glm::vec3(mm.c1), u.c2 = glm::vec3(mm.c2);
                  },
-                 // issue #33's models
+                 // minnaert, blinn_phong, oren_nayar
                  [&u](const Minnaert& mm) { u.kd = float(mm.kd), u.n = float(mm.k); },
                  [&u](const BlinnPhong& mm) {
                    u.ka = float(mm.ka), u.kd = float(mm.kd), u.ks = float(mm.ks), u.n = float(mm.shininess);

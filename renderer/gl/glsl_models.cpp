@@ -120,7 +120,7 @@ vec3 forsyth(float x) {
   return vec3(0.0);  // not of Forsyth's family: shade() does not call this
 }
 
-// ---- issue #33's models, per unit light colour (shading/models.h) ------
+// ---- minnaert, oren_nayar, blinn_phong, per unit light colour (shading/models.h) ------
 // Minnaert: clamp(x)^k clamp(y)^(k-1); 0 where x <= 0; x where k = 1; 0
 // where y <= 0 otherwise (GLSL's pow is undefined for a zero base and a
 // non-positive exponent: those cases never reach it).
@@ -258,7 +258,9 @@ vec3 shadeModel(vec3 p, vec3 n, vec3 v, vec3 c) {
     }
     return c * (u_ambient + u_kd * diff);
   }
-  if (u_model == MODEL_BLINN_PHONG) {
+  // A Lambert diffuse and a highlight: blinn_phong's or cook_torrance's
+  // (u_ka is 1 for cook_torrance).
+  if ((u_model == MODEL_BLINN_PHONG) || (u_model == MODEL_COOK_TORRANCE)) {
     vec3 diff = vec3(0.0), spec = vec3(0.0);
     for (int i = 0; i < u_light_count; ++i) {
       vec3 L; float att; bool lit;
@@ -266,21 +268,10 @@ vec3 shadeModel(vec3 p, vec3 n, vec3 v, vec3 c) {
       if (!lit) continue;
       vec3 w = att * u_lights[i].colour_luma.rgb;
       diff += w * clamp0(dot(n, L));
-      if (u_specular) spec += w * blinnSpecular(n, L, v);
+      if (u_specular)
+        spec += w * ((u_model == MODEL_BLINN_PHONG) ? blinnSpecular(n, L, v) : cookTorranceSpecular(n, L, v));
     }
     return c * (u_ka * u_ambient + u_kd * diff) + u_ks * spec;
-  }
-  if (u_model == MODEL_COOK_TORRANCE) {
-    vec3 diff = vec3(0.0), spec = vec3(0.0);
-    for (int i = 0; i < u_light_count; ++i) {
-      vec3 L; float att; bool lit;
-      sampleLight(u_lights[i], p, L, att, lit);
-      if (!lit) continue;
-      vec3 w = att * u_lights[i].colour_luma.rgb;
-      diff += w * clamp0(dot(n, L));
-      if (u_specular) spec += w * cookTorranceSpecular(n, L, v);
-    }
-    return c * (u_ambient + u_kd * diff) + u_ks * spec;
   }
   vec3 acc = u_ambient;
   for (int i = 0; i < u_light_count; ++i) {

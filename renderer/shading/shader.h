@@ -152,7 +152,7 @@ template <class T> class Shader {
         }
         return c * acc;
       }
-      // issue #33's models
+      // Lambert-like diffuse terms of N.L and N.V: Minnaert, Oren-Nayar.
       case ModelId::Minnaert:
       case ModelId::OrenNayar: {
         V diff(0);
@@ -167,17 +167,9 @@ template <class T> class Shader {
         }
         return c * (ambient_ + kd_ * diff);
       }
-      case ModelId::BlinnPhong: {
-        V diff(0), spec(0);
-        for (const auto& l : lights_) {
-          LightSample<T> s = sampleLight(l, p);
-          if (!s.lit) continue;
-          V w = s.att * l.color;
-          diff += w * clamp0(glm::dot(n, s.L));
-          if (specular_) spec += w * phongSpecular(halfVector(s.L, v), n, n_);
-        }
-        return c * (ka_ * ambient_ + kd_ * diff) + ks_ * spec;
-      }
+      // A Lambert diffuse and a highlight: blinn_phong's clamp(N.H)^n or
+      // cook_torrance's microfacet S (its ka is 1).
+      case ModelId::BlinnPhong:
       case ModelId::CookTorrance: {
         V diff(0), spec(0);
         for (const auto& l : lights_) {
@@ -185,10 +177,13 @@ template <class T> class Shader {
           if (!s.lit) continue;
           V w = s.att * l.color;
           diff += w * clamp0(glm::dot(n, s.L));
-          if (specular_) spec += w * cookTorranceSpecular(n, s.L, v, ct_.distribution, ct_.geometry, ct_.fresnel,
-                                                          T(ct_.roughness), T(ct_.f0));
+          if (specular_)
+            spec += w * (kind_ == ModelId::BlinnPhong
+                             ? phongSpecular(halfVector(s.L, v), n, n_)
+                             : cookTorranceSpecular(n, s.L, v, ct_.distribution, ct_.geometry, ct_.fresnel,
+                                                    T(ct_.roughness), T(ct_.f0)));
         }
-        return c * (ambient_ + kd_ * diff) + ks_ * spec;
+        return c * (ka_ * ambient_ + kd_ * diff) + ks_ * spec;
       }
     }
     return V(0);  // unreachable: the switch covers every ModelId
@@ -237,7 +232,7 @@ template <class T> class Shader {
   void setParams(const BiDirectional& m) { kind_ = ModelId::BiDirectional, c0_ = V(m.c0), c2_ = V(m.c2); }
   void setParams(const Trilight& m) { kind_ = ModelId::Trilight, c0_ = V(m.c0), c1_ = V(m.c1), c2_ = V(m.c2); }
 
-  // issue #33's models (n_ carries Minnaert's k).
+  // minnaert, blinn_phong, oren_nayar (n_ carries Minnaert's k).
   void setParams(const Minnaert& m) { kind_ = ModelId::Minnaert, kd_ = T(m.kd), n_ = T(m.k); }
   void setParams(const BlinnPhong& m) {
     kind_ = ModelId::BlinnPhong;
@@ -253,7 +248,7 @@ template <class T> class Shader {
   }
   void setParams(const CookTorrance& m) {
     kind_ = ModelId::CookTorrance, ct_ = m;
-    kd_ = T(m.kd), ks_ = T(m.ks);
+    ka_ = 1, kd_ = T(m.kd), ks_ = T(m.ks);
     specular_ = m.ks != 0.0;
   }
 
