@@ -22,6 +22,7 @@
 
 #include "image/image_header.h"
 #include "scene/scene.h"
+#include "scene/scene_limits.h"
 
 namespace xval {
 
@@ -95,7 +96,7 @@ Texture loadTexture(const TextureSpec& spec);
 // The texture limits of scene/scene_limits.h (kMaxTextureSide,
 // kMaxTexturePixels) as image/image_header.h checks them: the loader checks
 // a texture's header with them, and loadTextureImage again.
-ImageLimits textureLimits();
+inline ImageLimits textureLimits() { return {kMaxTextureSide, kMaxTexturePixels, "texels"}; }
 
 // Writes an RGB PNG holding exactly the texture's code values: 8-bit for
 // textures with 8-bit codes, 16-bit for those with 16-bit codes (others

@@ -24,8 +24,6 @@ namespace xval {
 
 namespace OIIO = OIIO_NAMESPACE;
 
-ImageLimits textureLimits() { return {kMaxTextureSide, kMaxTexturePixels, "texels"}; }
-
 namespace {
 // The file name OpenImageIO chooses an embedded image's reader by: from
 // its first bytes (JPEG's FF D8 FF, else PNG: a PNG reader refuses
