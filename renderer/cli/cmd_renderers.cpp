@@ -26,7 +26,8 @@ void addRenderersCommand(CLI::App& app, std::function<int()>& run) {
           "on this machine and, if not, why.");
   cmd->add_flag("--json", *json,
                 "Print JSON instead: {\"renderers\": [{id, display_name, summary, reference, every_scene, "
-                "geometry_passes, validate (run by `xval validate` by default), precision {position_steps, uv_steps, "
+                "geometry_passes, validate (run by `xval validate` by default on every scene it can take; a "
+                "restricted renderer runs on the scenes that name it), precision {position_steps, uv_steps, "
                 "normal_steps, relative, quantum_16bit, basis}, version, available, reason}]}");
   auto renderer_files = addRendererFileOption(cmd);
   cmd->callback([json, renderer_files, &run]() {
@@ -64,6 +65,9 @@ void addRenderersCommand(CLI::App& app, std::function<int()>& run) {
                     : r.every_scene ? ""
                     : r.geometry_passes
                         ? " (a geometry check: validate runs it on the scenes it can take, against the reference's passes)"
+                    : r.restricted()
+                        ? " (for the scenes that name it: validate runs it on the scenes whose `renderers` field names "
+                          "it; crosscheck and render take any scene)"
                     : validation::runsWhenNamed(r.id)
                         ? " (validate runs it only when --renderers names it; crosscheck and render take it)"
                         : " (for some scenes only: crosscheck and render, not validate)");

@@ -126,7 +126,10 @@ struct Renderer {
   bool reference = false;
   // True: it renders every scene of the format, so `xval validate` renders
   // each scene with it and compares it with every other such renderer.
-  // False: a check for a restricted class of scenes, run by crosscheck.
+  // False: a check for a restricted class of scenes (restricted() below
+  // when it is neither a geometry check nor a golden set): `xval validate`
+  // renders exactly the scenes whose `renderers` field names it, and
+  // `xval crosscheck --renderer ID` any scene.
   bool every_scene = true;
   // True: its image is geometry passes (render/geometry_passes.h), not a
   // render: crosscheck and validate compare it with the reference's passes
@@ -192,6 +195,9 @@ struct Renderer {
   // takes the set in its place (meantFor, registry.h).
   std::string images_of;
 
+  // A renderer for the scenes that name it (a native tier: blender-native):
+  // neither every scene's, nor a geometry check, nor a golden set.
+  bool restricted() const { return !every_scene && !geometry_passes && images_of.empty(); }
   const std::string& sentenceSubject() const { return subject.empty() ? display_name : subject; }
   bool external() const { return !version_command.empty(); }
 };

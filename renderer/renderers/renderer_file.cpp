@@ -94,9 +94,17 @@ Image renderDefined(const Definition& d, const Scene& scene, const RenderRequest
   const fs::path work = fs::absolute(request.work_dir).lexically_normal();
   fs::create_directories(work / "scratch");
   const std::string token = attemptToken();
-  // The resolved scene (paths absolute) for {scene} and input "scene".
+  // The resolved scene (paths absolute) for {scene} and input "scene",
+  // without the fields of comparisons (`tolerances`, `renderers`,
+  // `findings`): they name renderers the program's own reader need not
+  // know (a scene meant for this renderer names it), and say nothing about
+  // what to draw.
   const fs::path scene_json = work / "scene.json";
-  writeFileAtomically(scene_json, sceneToJson(scene).dump(2) + "\n");
+  Scene drawn = scene;
+  drawn.tolerances.clear();
+  drawn.renderers.clear();
+  drawn.findings.clear();
+  writeFileAtomically(scene_json, sceneToJson(drawn).dump(2) + "\n");
   fs::path input = scene_json;
   if (const std::optional<RendererExport> ex = definedExport(d.input)) {
     // The export refuseOrExport wrote (request.exported), else the cache's or a new one.

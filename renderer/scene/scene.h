@@ -219,7 +219,21 @@ struct Scene {
   // The renderers the scene is meant for (registry ids); empty: every one.
   // `xval validate` renders it with no other (validate/validation/plan.h).
   std::vector<std::string> renderers;
+  // Known differences (`findings`: renderer id -> why, in registry order): the
+  // renderer's built-in model is known to differ from the scene's model
+  // (a native tier against the textbook), so its pairs with the renderers
+  // that declare none are expected to differ: such a pair that fails its
+  // tolerance is a finding, measured and shown; one that passes fails
+  // ("the finding no longer holds"). Used only by comparisons.
+  std::vector<std::pair<std::string, std::string>> findings;
 };
+
+// The scene's finding for the renderer (Scene::findings), null when none.
+inline const std::string* findingOf(const Scene& s, const std::string& renderer) {
+  for (const auto& [id, why] : s.findings)
+    if (id == renderer) return &why;
+  return nullptr;
+}
 
 // The material object k is shaded with: its own, else the scene's.
 inline const Material& materialOf(const Scene& s, size_t k) {

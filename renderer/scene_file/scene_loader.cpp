@@ -359,6 +359,30 @@ std::vector<DeclaredTolerance> readTolerances(JsonReader& r) {
   return out;
 }
 
+// `findings`: {renderer: why}, each a renderer compared against the
+// reference (as `tolerances`), named by `renderers` when the scene has it,
+// with a written reason.
+std::vector<std::pair<std::string, std::string>> readFindings(JsonReader& r, const std::vector<std::string>& meant_for) {
+  std::vector<std::pair<std::string, std::string>> out;
+  auto o = r.object("findings");
+  if (!o) return out;
+  if (!toleranceRenderers())
+    r.fail("findings", "cannot be checked: this program has no renderer registry (renderers/registry.h)");
+  for (const std::string& renderer : toleranceRenderers()()) {
+    if (!o->has(renderer)) continue;
+    if (!meant_for.empty() && std::find(meant_for.begin(), meant_for.end(), renderer) == meant_for.end())
+      o->fail(renderer, "the scene is not meant for " + renderer + " (its `renderers` field does not name it)");
+    const std::string why = o->requireString(renderer);
+    if (why.size() < 20)
+      o->fail(renderer, "a finding needs a written reason (at least a sentence: what differs and why), got " +
+                            describeJson(json(why)));
+    out.emplace_back(renderer, why);
+  }
+  o->finish();
+  if (out.empty()) r.fail("findings", "expected at least one renderer's finding, got {}");
+  return out;
+}
+
 std::function<std::vector<std::string>()>& sceneRenderers() {
   static std::function<std::vector<std::string>()> ids;
   return ids;
@@ -467,6 +491,7 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file, con
   if (auto rs = r.object("render")) s.render = readRender(*rs);
   s.tolerances = readTolerances(r);
   s.renderers = readRenderers(r);
+  s.findings = readFindings(r, s.renderers);
   r.finish();
   // Numbers its own precision cannot compute with (scene_file/precision_limits.h).
   checkPrecision(s, s.render.precision);

@@ -123,6 +123,7 @@ J sceneToJson(const Scene& s, const std::string* texture_path) {
     j["tolerances"] = t;
   }
   if (!s.renderers.empty()) j["renderers"] = s.renderers;
+  for (const auto& [id, why] : s.findings) j["findings"][id] = why;
   return j;
 }
 

@@ -100,5 +100,47 @@ TEST(Results, AStoredVerdictTheFieldsContradictIsRefusedNamingTheField) {
   EXPECT_THROW(results::readResults(f), std::runtime_error);
 }
 
+// A pair held to a scene's finding: outside the tolerance it is a
+// `finding` (read, written back, valid against the schema); the verdict
+// its fields imply is the stored one's check, as for any pair.
+TEST(Results, AFindingPairIsReadWrittenAndChecked) {
+  Json j = Json::parse(text(fs::path(XVAL_TESTS_DIR) / "fuzz/seeds/results/pass.json"));
+  Json& p = j["cases"][0]["pairs"][0];
+  ASSERT_TRUE(p["pass"].get<bool>());
+  p["pass"] = false;
+  p["failed"] = Json::array({{{"key", "fraction"}, {"text", "fraction within tolerance 50% < 99.9%"}, {"brief", "50% < 99.9% within"}}});
+  p["finding"] = {{"renderer", "povray"}, {"why", "its phong highlight is gated by N.L"}};
+  p["verdict"] = "finding";
+  j["cases"][0]["pass"] = true;
+  const fs::path f = dir() / "finding.json";
+  std::ofstream(f) << j.dump(2);
+  const results::Results r = results::readResults(f);
+  const results::Pair& read = r.cases[0].pairs[0];
+  EXPECT_EQ(read.verdict, results::PairVerdict::Finding);
+  ASSERT_TRUE(read.finding.has_value());
+  EXPECT_EQ(read.finding->renderer, "povray");
+  const fs::path written = dir() / "finding_written.json";
+  results::writeResults(written, r);
+  EXPECT_TRUE(results::readResults(written) == r);
+  // Within the tolerance, a finding no longer holds: the fields say fail.
+  p["pass"] = true;
+  p["failed"] = Json::array();
+  std::ofstream(f) << j.dump(2);
+  try {
+    results::readResults(f);
+    FAIL() << "a finding within the tolerance was read as a finding";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("pairs[0].verdict: \"finding\" but the pair's fields say \"fail\""),
+              std::string::npos)
+        << e.what();
+  }
+  // A finding without one: the fields say fail.
+  p["pass"] = false;
+  p["failed"] = Json::array({{{"key", "fraction"}, {"text", "t"}, {"brief", "b"}}});
+  p.erase("finding");
+  std::ofstream(f) << j.dump(2);
+  EXPECT_THROW(results::readResults(f), std::runtime_error);
+}
+
 }  // namespace
 }  // namespace xval

@@ -294,6 +294,36 @@ TEST(SceneLoader, RenderersNameKnownRenderersOnceAtLeastTwo) {
   EXPECT_EQ(parseScene(sceneToJson(s).dump(), "scene.json").renderers, s.renderers);
 }
 
+// `findings`: a renderer compared against the reference, one the scene is
+// meant for, with a written reason; read, checked, written back.
+TEST(SceneLoader, FindingsNameAComparedRendererWithAReason) {
+  const std::string why = "its built-in model is Fujii's, not the 1994 one";
+  expectError("\"name\": \"t\"", "\"name\": \"t\", \"findings\": {\"reference\": \"" + why + "\"}",
+              {"findings.reference", "unknown field"});
+  expectError("\"name\": \"t\"", "\"name\": \"t\", \"findings\": {\"mitsuba\": \"" + why + "\"}",
+              {"findings.mitsuba", "unknown field"});
+  expectError("\"name\": \"t\"", "\"name\": \"t\", \"findings\": {\"blender\": \"differs\"}",
+              {"findings.blender", "written reason"});
+  expectError("\"name\": \"t\"", "\"name\": \"t\", \"findings\": {\"blender\": 3}", {"findings.blender"});
+  expectError("\"name\": \"t\"", "\"name\": \"t\", \"findings\": {}", {"findings", "at least one"});
+  expectError("\"name\": \"t\"",
+              "\"name\": \"t\", \"renderers\": [\"reference\", \"povray\"], \"findings\": {\"blender\": \"" + why +
+                  "\"}",
+              {"findings.blender", "not meant for blender"});
+  std::string text = kValid;
+  text.replace(text.find("\"name\": \"t\""), 11,
+               "\"name\": \"t\", \"renderers\": [\"reference\", \"blender\"], \"findings\": {\"blender\": \"" + why +
+                   "\"}");
+  const Scene s = parseScene(text, "scene.json");
+  ASSERT_EQ(s.findings.size(), 1u);
+  EXPECT_EQ(s.findings[0], (std::pair<std::string, std::string>{"blender", why}));
+  ASSERT_NE(findingOf(s, "blender"), nullptr);
+  EXPECT_EQ(*findingOf(s, "blender"), why);
+  EXPECT_EQ(findingOf(s, "povray"), nullptr);
+  EXPECT_TRUE(parseScene(kValid, "scene.json").findings.empty());
+  EXPECT_EQ(parseScene(sceneToJson(s).dump(), "scene.json").findings, s.findings);
+}
+
 // The paper's listing's own choices: read, checked, written back.
 TEST(SceneLoader, ListingOptionsNormalizeNormalAndTrilinear) {
   std::string text = kValid;

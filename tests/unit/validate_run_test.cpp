@@ -3,6 +3,9 @@
 // written, and --plan-only writes the plan and renders nothing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <fstream>
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -80,7 +83,7 @@ TEST(ValidateRun, PlanOnlyWritesThePlanAndRendersNothing) {
 
 // A crosscheck's run (validate/validation/crosscheck.h) is validate's with the
 // reference and one renderer, any the registry has but the reference:
-// blender-native, which validate's --renderers refuses, too; its plan is
+// blender-native too; its plan is
 // read back (readPlan: planRenderers) and runs as any.
 TEST(ValidateRun, ACrosscheckPlansTheReferenceAndAnyOneRenderer) {
   EXPECT_EQ(v::crosscheckRenderers("blender-native"), (std::vector<std::string>{"reference", "blender-native"}));
@@ -89,7 +92,9 @@ TEST(ValidateRun, ACrosscheckPlansTheReferenceAndAnyOneRenderer) {
   EXPECT_THROW(v::crosscheckRenderers("no-such-renderer"), std::runtime_error);
   EXPECT_EQ(v::planRenderers({"reference", "blender-native"}),
             (std::vector<std::string>{"reference", "blender-native"}));
-  EXPECT_THROW(v::planRenderers({"reference", "blender-native", "povray"}), std::runtime_error);
+  // validate's --renderers takes blender-native too, for the scenes that name it.
+  EXPECT_EQ(v::planRenderers({"reference", "blender-native", "povray"}),
+            (std::vector<std::string>{"reference", "povray", "blender-native"}));
 
   const fs::path d = test::freshTempDir("validate_run");
   v::ValidateRequest r;
@@ -121,6 +126,58 @@ TEST(ValidateRun, ACrosscheckRefusesASceneNotMeantForItsRenderer) {
   r.crosscheck_renderer.clear();
   r.renderers = {"reference", "povray"};
   EXPECT_EQ(v::run(r), 0);  // validate: left out, said on stderr
+}
+
+// A restricted renderer (Renderer::restricted: a native tier such as
+// blender-native) renders exactly the scenes that name it: validate
+// without --renderers takes it when a scene names it, leaves it out of the
+// others (recorded in the plan, since the jobs follow from it, but not
+// said), and a run given its renderers takes it only when named.
+TEST(ValidateRun, ARestrictedRendererRendersTheScenesThatNameIt) {
+  const fs::path d = test::freshTempDir("validate_run");
+  fs::create_directories(d / "set");
+  const std::string plain = test::fileText(fs::path(XVAL_REFERENCE_DIR) / "../tests/cli/scenes/tiny.json");
+  std::string named = plain;
+  const std::string key = "\"format\": \"xval-scene/1\",";
+  ASSERT_NE(named.find(key), std::string::npos);
+  named.replace(named.find(key), key.size(),
+                key + " \"renderers\": [\"reference\", \"blender-native\"],");
+  named.replace(named.find("\"tiny\""), 6, "\"native\"");
+  std::ofstream(d / "set" / "a_plain.json") << plain;
+  std::ofstream(d / "set" / "b_native.json") << named;
+  v::ValidateRequest r;
+  r.inputs = {(d / "set").string()};
+  r.output = (d / "out").string();
+  r.plan_only = true;
+  r.export_cache = false;
+  ASSERT_EQ(v::run(r), 0);
+  v::Plan plan = v::readPlan(d / "out" / "jobs.json");
+  ASSERT_NE(std::find(plan.renderers.begin(), plan.renderers.end(), "blender-native"), plan.renderers.end());
+  ASSERT_EQ(plan.scenes.size(), 2u);
+  std::map<std::string, std::vector<std::string>> jobs;
+  for (const v::RenderJob& job : plan.jobs) jobs[job.scene].push_back(job.renderer);
+  EXPECT_EQ(jobs["native"], (std::vector<std::string>{"reference", "blender-native"}));
+  EXPECT_EQ(std::count(jobs["tiny"].begin(), jobs["tiny"].end(), "blender-native"), 0);
+  EXPECT_GE(jobs["tiny"].size(), 2u);
+  const auto& plain_left = plan.scenes[0].left_out;
+  ASSERT_EQ(plain_left.size(), 1u);
+  EXPECT_EQ(plain_left[0].renderer, "blender-native");
+  EXPECT_TRUE(v::leftOutUnsaid(plain_left[0]));
+
+  // Given its renderers, a run takes blender-native only when named.
+  r.output = (d / "out2").string();
+  r.renderers = {"reference", "povray"};
+  ASSERT_EQ(v::run(r), 0);
+  plan = v::readPlan(d / "out2" / "jobs.json");
+  EXPECT_EQ(plan.renderers, (std::vector<std::string>{"reference", "povray"}));
+  r.output = (d / "out3").string();
+  r.renderers = {"reference", "blender-native"};
+  ASSERT_EQ(v::run(r), 0);
+  plan = v::readPlan(d / "out3" / "jobs.json");
+  jobs.clear();
+  for (const v::RenderJob& job : plan.jobs) jobs[job.scene].push_back(job.renderer);
+  EXPECT_EQ(jobs["native"], (std::vector<std::string>{"reference", "blender-native"}));
+  EXPECT_EQ(jobs["tiny"], (std::vector<std::string>{"reference"}));
 }
 
 // A crosscheck's folder holds that one crosscheck: an earlier run there

@@ -119,11 +119,21 @@ std::string junitXml(const results::Results& results, const std::string& suite_n
           body += props.empty() ? "/>\n" : ">\n" + props + "    </testcase>\n";
           break;
         }
+        case PairVerdict::Finding:  // passes: the difference the scene declares, measured
+          body += ">\n" + metricProperties(p) + "      <system-out>" +
+                  xmlEscape("finding of " + p.finding->renderer + ": " + p.finding->why + "; outside the tolerance as "
+                            "declared: " + failedText(p.failed) + "; " + describeMetrics(*p.metrics)) +
+                  "</system-out>\n    </testcase>\n";
+          break;
         case PairVerdict::Fail:  // a compared pair: the reader requires its metrics
           ++n.failures;
           body += ">\n" + metricProperties(p) + "      <failure message=\"" +
-                  xmlEscape("outside the tolerance: " + failedText(p.failed) + "; " + describeMetrics(*p.metrics)) +
-                  "\" type=\"outside_tolerance\"/>\n    </testcase>\n";
+                  xmlEscape(p.failed.empty() && p.finding
+                                ? "the finding of " + p.finding->renderer + " no longer holds (within the tolerance): " +
+                                      p.finding->why + "; " + describeMetrics(*p.metrics)
+                                : "outside the tolerance: " + failedText(p.failed) + "; " + describeMetrics(*p.metrics)) +
+                  "\" type=\"" + (p.failed.empty() ? "finding_no_longer_holds" : "outside_tolerance") +
+                  "\"/>\n    </testcase>\n";
           break;
       }
     }
@@ -147,6 +157,7 @@ std::string junitXml(const results::Results& results, const std::string& suite_n
           body += ">\n      <error message=\"" + xmlEscape(reason) + "\" type=\"error\">" + xmlEscape(renderErrors(c)) +
                   "</error>\n    </testcase>\n";
           break;
+        case PairVerdict::Finding:  // the reader refuses it for a check
         case PairVerdict::Fail:  // a compared check: the reader requires its metrics and bounds
           ++n.failures;
           body += ">\n      <failure message=\"" +

@@ -192,10 +192,16 @@ mu::data pairCell(const results::Pair& p) {
   return d;
 }
 
-// How bad a pair's verdict is: error, fail, pass, not expressible.
+// How bad a pair's verdict is: error, fail, finding, pass, not expressible.
 int severity(const results::Pair& p) {
-  const std::string v = pairVerdict(p);
-  return v == "error" ? 3 : v == "fail" ? 2 : v == "pass" ? 1 : 0;
+  switch (p.verdict) {
+    case results::PairVerdict::Error: return 4;
+    case results::PairVerdict::Fail: return 3;
+    case results::PairVerdict::Finding: return 2;
+    case results::PairVerdict::Pass: return 1;
+    case results::PairVerdict::NotExpressible: return 0;
+  }
+  return 4;
 }
 
 double maxUnexplained(const results::Pair& p) {
@@ -432,6 +438,10 @@ std::string renderPage(mu::data& page) {
 
 std::string pairSummary(const results::Pair& p) {
   std::string text = upperCase(pairVerdict(p));
+  if (p.verdict == results::PairVerdict::Finding && p.metrics)
+    return text + " of " + p.finding->renderer + ", p99.9 " + fixed(p.metrics->p999_abs_16bit, 2);
+  if (p.finding && p.failed.empty() && p.verdict == results::PairVerdict::Fail)
+    return text + " the finding of " + p.finding->renderer + " no longer holds";
   if (!p.failed.empty()) return text + " " + p.failed[0].brief;
   if (p.metrics) text += " " + fixed(p.metrics->max_unexplained_16bit, 2);
   return text;

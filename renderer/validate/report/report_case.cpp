@@ -226,8 +226,17 @@ mu::data caseSection(const results::Case& c, const std::vector<std::string>& run
     n.set("text", text);
     notes << n;
   };
-  for (const results::Pair& p : c.pairs)
-    if (!p.failed.empty()) note(p.pair, "fails", failedText(p.failed));
+  for (const results::Pair& p : c.pairs) {
+    if (p.verdict == results::PairVerdict::Finding)
+      note(p.pair, "finding", p.finding->renderer + ": " + p.finding->why + " Measured: p99.9 " +
+                                  fixed(p.metrics->p999_abs_16bit, 2) + ", max " + fixed(p.metrics->max_abs_16bit, 2) +
+                                  " (1/65535); outside the tolerance as declared: " + failedText(p.failed));
+    else if (p.finding && p.failed.empty())
+      note(p.pair, "finding no longer holds", p.finding->renderer + " agrees within the tolerance, but the scene "
+                                              "declares: " + p.finding->why);
+    else if (!p.failed.empty())
+      note(p.pair, "fails", failedText(p.failed));
+  }
   for (const results::Pair& p : c.pairs)
     if (p.metrics && !p.metrics->tolerance_reason.empty()) note(p.pair, "tolerance", p.metrics->tolerance_reason);
   d.set("notes", notes);

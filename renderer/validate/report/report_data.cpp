@@ -13,7 +13,7 @@ namespace xval::page {
 namespace mu = kainjow::mustache;
 
 std::string verdictClass(const std::string& v) {
-  return v == "pass" ? "pass" : v == "fail" ? "fail" : v == "error" ? "err" : "nexp";
+  return v == "pass" ? "pass" : v == "fail" ? "fail" : v == "error" ? "err" : v == "finding" ? "find" : "nexp";
 }
 
 std::string upperCase(const std::string& s) {

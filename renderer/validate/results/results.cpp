@@ -15,7 +15,7 @@ namespace xval::results {
 namespace {
 
 constexpr PairVerdict kPairVerdicts[] = {PairVerdict::Pass, PairVerdict::Fail, PairVerdict::Error,
-                                         PairVerdict::NotExpressible};
+                                         PairVerdict::NotExpressible, PairVerdict::Finding};
 
 // The members of one object, read with errors naming the field; whatever
 // is not taken is its remainder.
@@ -191,6 +191,7 @@ ShownPixel readShown(const Json& j, const std::string& where) {
 PairVerdict impliedVerdict(const Pair& p) {
   if (p.error) return PairVerdict::Error;
   if (p.not_expressible) return PairVerdict::NotExpressible;
+  if (p.pass && p.finding) return *p.pass ? PairVerdict::Fail : PairVerdict::Finding;
   if (p.pass) return *p.pass ? PairVerdict::Pass : PairVerdict::Fail;
   return PairVerdict::Error;
 }
@@ -214,6 +215,12 @@ Pair readPair(const Json& j, const std::string& where) {
   if (const Json* m = f.takeOptional("metrics")) p.metrics = readMetrics(*m, f.at("metrics"));
   if (f.has("pass")) p.pass = f.boolean("pass");
   if (const Json* failed = f.takeOptional("failed")) p.failed = failedFromJson(*failed, f.at("failed"));
+  if (const Json* finding = f.takeOptional("finding")) {
+    Fields ff(*finding, f.at("finding"));
+    p.finding = PairFinding{ff.str("renderer"), ff.str("why")};
+    refuseRest(ff);
+    if (!p.pass) throw std::runtime_error(f.at("finding") + ": only a compared pair (with \"pass\") holds a finding");
+  }
   p.classification = f.json("classification");
   const PairVerdict implied = impliedVerdict(p);
   if (f.has("verdict")) {
@@ -224,7 +231,8 @@ Pair readPair(const Json& j, const std::string& where) {
   } else {
     p.verdict = implied;  // a file from before pairs carried their verdict
   }
-  if ((p.verdict == PairVerdict::Pass || p.verdict == PairVerdict::Fail) && !p.metrics)
+  if ((p.verdict == PairVerdict::Pass || p.verdict == PairVerdict::Fail || p.verdict == PairVerdict::Finding) &&
+      !p.metrics)
     throw std::runtime_error(where + ": no \"metrics\" field (a compared pair has them)");
   p.rest = f.rest();
   return p;
@@ -236,6 +244,8 @@ GeometryCheck readCheck(const Json& j, const std::string& where) {
   g.renderer = f.str("renderer");
   g.against = f.str("against");
   g.verdict = parsePairVerdict(f.str("verdict"), f.at("verdict"));
+  if (g.verdict == PairVerdict::Finding)
+    throw std::runtime_error(f.at("verdict") + ": \"finding\": a verdict of image pairs, not of geometry checks");
   g.reason = f.optStr("reason");
   if (const Json* mj = f.takeOptional("metrics")) {
     Fields m(*mj, f.at("metrics"));
@@ -382,6 +392,7 @@ Json pairJson(const Pair& p) {
   if (p.metrics) j["metrics"] = metricsJson(*p.metrics);
   if (p.pass) j["pass"] = *p.pass;
   if (p.pass || !p.failed.empty()) j["failed"] = Json::parse(failedJson(p.failed).dump());
+  if (p.finding) j["finding"] = {{"renderer", p.finding->renderer}, {"why", p.finding->why}};
   if (!p.classification.is_null()) j["classification"] = p.classification;
   j.update(p.rest);
   return j;
@@ -453,6 +464,7 @@ const char* pairVerdictName(PairVerdict v) {
     case PairVerdict::Fail: return "fail";
     case PairVerdict::Error: return "error";
     case PairVerdict::NotExpressible: return "not_expressible";
+    case PairVerdict::Finding: return "finding";
   }
   throw std::logic_error("pairVerdictName: not a PairVerdict");
 }
@@ -460,7 +472,7 @@ const char* pairVerdictName(PairVerdict v) {
 PairVerdict parsePairVerdict(const std::string& word, const std::string& where) {
   for (PairVerdict v : kPairVerdicts)
     if (word == pairVerdictName(v)) return v;
-  throw std::runtime_error(where + ": \"" + word + "\": expected pass, fail, error or not_expressible");
+  throw std::runtime_error(where + ": \"" + word + "\": expected pass, fail, error, not_expressible or finding");
 }
 
 const Render* Case::render(const std::string& id) const {

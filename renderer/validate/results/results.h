@@ -47,10 +47,17 @@ using Json = nlohmann::ordered_json;
 //   error             not compared: a render failed or the images cannot
 //                     be compared;
 //   not_expressible   not compared: a renderer cannot express the scene (a
-//                     verdict, not an error).
-enum class PairVerdict { Pass, Fail, Error, NotExpressible };
+//                     verdict, not an error);
+//   finding           compared, outside the tolerance, as the scene declares
+//                     for one of its renderers (Scene::findings: its
+//                     built-in model differs from the scene's): the known
+//                     difference, measured; no failure. A pair with a
+//                     finding that is within the tolerance is a fail (the
+//                     finding no longer holds). Pairs only.
+enum class PairVerdict { Pass, Fail, Error, NotExpressible, Finding };
 
-const char* pairVerdictName(PairVerdict v);  // "pass", "fail", "error", "not_expressible"
+// "pass", "fail", "error", "not_expressible", "finding"
+const char* pairVerdictName(PairVerdict v);
 // Throws std::runtime_error "WHERE: "word": expected ..." for another word.
 PairVerdict parsePairVerdict(const std::string& word, const std::string& where);
 
@@ -110,9 +117,18 @@ struct PairCrops {
   bool operator==(const PairCrops&) const = default;
 };
 
+// The scene's finding a compared pair is held to (Scene::findings): the
+// renderer that declares it and why. It holds when the pair is outside its
+// tolerance (`pass` false).
+struct PairFinding {
+  std::string renderer, why;
+  bool operator==(const PairFinding&) const = default;
+};
+
 struct Pair {
   std::string pair;  // "<a>-<b>"
   PairVerdict verdict = PairVerdict::Error;
+  std::optional<PairFinding> finding;
   std::optional<std::string> error, not_expressible, heat_map, bound_map;
   std::optional<bool> pass;            // compared pairs only
   std::vector<PairFailure> failed;     // the criteria it fails (compared pairs)

@@ -114,10 +114,12 @@ J renderJson(const RenderJob& job, const Render& r) {
 // express: not compared, and no error). -3: both renders are there but
 // cannot be compared (images of different sizes: one was replaced after
 // its record said ok), an error of the case that compareCase passes on to
-// renderers::attribute as not compared.
+// renderers::attribute as not compared. -4: a finding (outside the
+// tolerance, as the scene declares: results.h PairVerdict::Finding), which
+// renderers::attribute takes as not compared.
 constexpr int kPass = renderers::kPairPasses, kFail = renderers::kPairFails,
               kFailOnlyFraction = renderers::kPairFailsOnlyOnFraction, kRenderError = -1, kNotExpressible = -2,
-              kCompareError = -3;
+              kCompareError = -3, kFinding = -4;
 
 // The pair's verdict results.json stores (results/results.h), once.
 results::PairVerdict pairVerdict(int verdict) {
@@ -126,6 +128,7 @@ results::PairVerdict pairVerdict(int verdict) {
     case kFail:
     case kFailOnlyFraction: return results::PairVerdict::Fail;
     case kNotExpressible: return results::PairVerdict::NotExpressible;
+    case kFinding: return results::PairVerdict::Finding;
     default: return results::PairVerdict::Error;  // kRenderError, kCompareError
   }
 }
@@ -191,6 +194,15 @@ J comparePair(const CompareContext& cx, const Scene& scene, const renderers::Ren
     return jp;
   }
   verdict = failed.empty() ? kPass : failsOnlyOnFraction(failed) ? kFailOnlyFraction : kFail;
+  // A finding of one renderer of the pair (Scene::findings): the pair is
+  // expected outside its tolerance. Declared by both, nothing is expected.
+  const std::string* finding_a = findingOf(scene, ra.id);
+  const std::string* finding_b = findingOf(scene, rb.id);
+  if ((finding_a != nullptr) != (finding_b != nullptr)) {
+    const std::string& id = finding_a ? ra.id : rb.id;
+    jp["finding"] = {{"renderer", id}, {"why", finding_a ? *finding_a : *finding_b}};
+    verdict = failed.empty() ? kFail : kFinding;
+  }
   return jp;
 }
 
@@ -336,10 +348,8 @@ J compareCase(const CompareContext& cx, size_t k, std::vector<std::string>& remo
     renders[job.renderer] = loadRender(plan, job, cx.images);
     jc["renders"][job.renderer] = renderJson(job, renders[job.renderer]);
   }
-  if (!ps.left_out.empty()) {
-    jc["left_out"] = J::object();
-    for (const LeftOut& l : ps.left_out) jc["left_out"][l.renderer] = l.reason;
-  }
+  for (const LeftOut& l : ps.left_out)
+    if (!leftOutUnsaid(l)) jc["left_out"][l.renderer] = l.reason;
   // The scene's warnings (lint/scene_lint.h): recorded, never part of the verdict.
   for (const SceneWarning& w : lintScene(scene))
     jc["warnings"].push_back({{"code", w.code}, {"subject", w.subject}, {"message", w.message}});
@@ -364,7 +374,15 @@ J compareCase(const CompareContext& cx, size_t k, std::vector<std::string>& remo
   // failed (it says nothing about the image renderers: it checks what they
   // all read, the loaded model, against Blender's own import).
   std::vector<std::string> blamed;
-  std::string who = attribution(rs, verdict, renders, blamed);
+  // A finding's pair differs as declared: for who deviates, a failure.
+  std::vector<int> differ = verdict;
+  std::replace(differ.begin(), differ.end(), kFinding, kFail);
+  std::string who = attribution(rs, differ, renders, blamed);
+  for (const auto& [id, why] : scene.findings)
+    if (std::any_of(jpairs.begin(), jpairs.end(), [&](const J& p) {
+          return p.value("verdict", "") == "finding" && p["finding"]["renderer"] == id;
+        }))
+      who += "; " + renderers::registry().at(id).display_name + " differs as the scene's finding declares";
   const std::string nothing = "nothing to compare";
   if (who.rfind(nothing, 0) == 0 && geometryChecksWith(checks, "pass") + geometryChecksWith(checks, "fail") > 0)
     who = "no image pair to compare" + who.substr(nothing.size());
@@ -383,7 +401,10 @@ J compareCase(const CompareContext& cx, size_t k, std::vector<std::string>& remo
   tally.failed = static_cast<int>(std::count(verdict.begin(), verdict.end(), kFail) +
                                   std::count(verdict.begin(), verdict.end(), kFailOnlyFraction)) +
                  geometryChecksWith(checks, "fail");
-  tally.passed = static_cast<int>(std::count(verdict.begin(), verdict.end(), kPass)) + geometryChecksWith(checks, "pass");
+  // A finding that holds is the outcome the scene declares: it counts as passed.
+  tally.passed = static_cast<int>(std::count(verdict.begin(), verdict.end(), kPass) +
+                                  std::count(verdict.begin(), verdict.end(), kFinding)) +
+                 geometryChecksWith(checks, "pass");
   const CaseVerdict v = caseVerdict(tally);
   jc["verdict"] = verdictName(v);
   jc["pass"] = v == CaseVerdict::Pass;

@@ -59,16 +59,21 @@ double orInfinity(const std::optional<double>& v) { return v ? *v : std::numeric
 void printPair(const results::Case& c, const results::Pair& p, const std::string& ref, const std::string& id) {
   const results::PairMetrics& m = *p.metrics;
   const bool pass = p.verdict == results::PairVerdict::Pass;
+  const char* word = pass ? "PASS" : p.verdict == results::PairVerdict::Finding ? "FINDING (differs as declared)" : "FAIL";
   std::printf(
       "%s vs %s: %s  max %.2f  p99.9 %.2f  RMSE %.3f (x/65535)  within %.6g: %.4f%% (need "
       "%.6g%%)  masks: %lld off (%lld explained by edges)  over tolerance: %lld (%s; max unexplained %.2f, "
       "cap %.6g)  time: reference %.2f s, %s %.2f s\n",
-      c.scene.c_str(), id.c_str(), pass ? "PASS" : "FAIL", m.max_abs_16bit, m.p999_abs_16bit, m.rmse_16bit,
+      c.scene.c_str(), id.c_str(), word, m.max_abs_16bit, m.p999_abs_16bit, m.rmse_16bit,
       m.tolerance.max_abs_16bit, 100 * m.fraction_within, 100 * m.tolerance.fraction, m.mask_disagree,
       m.mask_disagree_explained, overTotal(m), classCountsText(m).c_str(), orInfinity(m.max_unexplained_16bit),
       m.tolerance.max_unexplained_16bit, secondsOf(c, ref), id.c_str(), secondsOf(c, id));
   for (const PairFailure& f : p.failed) std::printf("  fails: %s\n", f.text.c_str());
   if (!m.tolerance_reason.empty()) std::printf("  declared tolerance: %s\n", m.tolerance_reason.c_str());
+  if (p.finding)
+    std::printf("  %s: %s: %s\n", p.finding->renderer.c_str(),
+                p.verdict == results::PairVerdict::Finding ? "finding" : "finding no longer holds (within the tolerance)",
+                p.finding->why.c_str());
 }
 
 // The verdict line of a compared geometry check.
@@ -95,9 +100,10 @@ int report(const results::Case& c, results::PairVerdict verdict, const std::stri
       std::fprintf(stderr, "xval crosscheck: error: %s\n", why.c_str());
       return 2;
     case results::PairVerdict::Pass:
+    case results::PairVerdict::Finding:  // the difference the scene declares
     case results::PairVerdict::Fail:
       print_compared();
-      return verdict == results::PairVerdict::Pass ? 0 : 1;
+      return verdict == results::PairVerdict::Fail ? 1 : 0;
   }
   return 2;
 }

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <exception>
 #include <map>
+#include <set>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -68,13 +69,41 @@ void checkCaseFolder(const fs::path& folder, const fs::path& scene_file) {
 // The run's renderers the scene is not meant for (renderers::meantFor: its
 // `renderers` field names neither them nor, for a golden set, the renderer
 // whose images it stores).
-std::vector<LeftOut> leftOut(const Scene& scene, const std::vector<std::string>& run) {
+// A restricted renderer (Renderer::restricted: a native tier) renders only
+// the scenes that name it: left out of every other, with kNotNamed.
+const char* const kNotNamed = "it renders only the scenes whose `renderers` field names it";
+
+bool names(const Scene& scene, const std::string& id) {
+  return std::find(scene.renderers.begin(), scene.renderers.end(), id) != scene.renderers.end();
+}
+
+std::vector<LeftOut> leftOut(const Scene& scene, const std::vector<std::string>& run, NotMeantFor mode) {
   std::vector<LeftOut> out;
-  for (const std::string& r : run)
-    if (!renderers::meantFor(scene.renderers, renderers::registry().at(r)))
+  for (const std::string& r : run) {
+    const renderers::Renderer& renderer = renderers::registry().at(r);
+    if (mode == NotMeantFor::LeaveOut && renderer.restricted() && !names(scene, r))
+      out.push_back({r, kNotNamed});
+    else if (!renderers::meantFor(scene.renderers, renderer))
       out.push_back({r, "the scene is meant for " + renderers::joinNames(scene.renderers) +
                             " only (its `renderers` field)"});
+  }
   return out;
+}
+
+// Adds to `run` (kept in registry order) the restricted renderers the
+// scene names that it lacks.
+void addNamedRestricted(const Scene& scene, std::vector<std::string>& run) {
+  bool added = false;
+  for (const std::string& id : scene.renderers)
+    if (renderers::registry().at(id).restricted() && std::find(run.begin(), run.end(), id) == run.end()) {
+      run.push_back(id);
+      added = true;
+    }
+  if (!added) return;
+  std::vector<std::string> ordered;
+  for (const std::string& id : renderers::registry().ids())
+    if (std::find(run.begin(), run.end(), id) != run.end()) ordered.push_back(id);
+  run = ordered;
 }
 
 bool isLeftOut(const std::vector<LeftOut>& left_out, const std::string& renderer) {
@@ -280,15 +309,18 @@ std::vector<std::string> jobRenderers() { return renderers::registry().validateI
 
 bool runsWhenNamed(const std::string& id) {
   const renderers::Renderer* r = renderers::registry().find(id);
-  return r && !r->images_of.empty();
+  return r && (!r->images_of.empty() || r->restricted());
 }
+
+bool leftOutUnsaid(const LeftOut& l) { return l.reason == kNotNamed; }
 
 std::vector<std::string> runRenderers(const std::vector<std::string>& names) {
   const std::vector<std::string> every = jobRenderers();
   if (names.empty()) return every;
   // Besides validate's renderers (the every-scene ones and the geometry
   // checks: a run leaves a check out by not naming it), the golden sets when named
-  // (renderers/golden.cpp: `golden`, `golden-NAME`, also spelled golden:NAME).
+  // (renderers/golden.cpp: `golden`, `golden-NAME`, also spelled golden:NAME)
+  // and the restricted renderers (native tiers) when named.
   std::vector<std::string> named = names;
   for (std::string& n : named)
     if (const std::string id = renderers::goldenAlias(n); !id.empty()) n = id;
@@ -358,7 +390,9 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
   plan.timeout_seconds = timeout_seconds;
   plan.budget = budget;
   plan.renderers = planRenderers(run_renderers);
-  plan.renderer_files = rendererFiles(plan.renderers);
+  // The default run takes each restricted renderer a scene names (a native
+  // tier runs on its scenes); a run given its renderers takes those only.
+  const bool add_named = not_meant_for == NotMeantFor::LeaveOut && plan.renderers == jobRenderers();
   std::map<std::string, std::string> seen;  // scene name -> file
   // Every invalid scene is reported, not only the first: a folder of
   // scenes is mended in one pass. Nothing renders until all are valid.
@@ -370,7 +404,7 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
       scene = loadScene(f, plan.budget);
       checkSceneName(scene.name, f.string());
       if (not_meant_for == NotMeantFor::Refuse)
-        for (const LeftOut& l : leftOut(scene, plan.renderers))
+        for (const LeftOut& l : leftOut(scene, plan.renderers, not_meant_for))
           throw std::runtime_error(f.string() + ": renderers: the scene is meant for " +
                                    renderers::joinNames(scene.renderers) + " only, not " + l.renderer);
       checkCaseFolder(plan.dir / scene.name, f);
@@ -384,11 +418,13 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
       if (!first_invalid) first_invalid = std::current_exception();
       continue;
     }
+    if (add_named) addNamedRestricted(scene, plan.renderers);
     PlannedScene planned{scene.name, f.string(), fs::absolute(f).lexically_normal(),
-                         leftOut(scene, plan.renderers)};
+                         leftOut(scene, plan.renderers, not_meant_for)};
     for (const LeftOut& l : planned.left_out)
-      std::fprintf(stderr, "xval validate: %s: %s left out: %s\n", scene.name.c_str(), l.renderer.c_str(),
-                   l.reason.c_str());
+      if (!leftOutUnsaid(l))
+        std::fprintf(stderr, "xval validate: %s: %s left out: %s\n", scene.name.c_str(), l.renderer.c_str(),
+                     l.reason.c_str());
     for (const std::string& r : plan.renderers) {
       if (isLeftOut(planned.left_out, r)) continue;
       RenderJob job;
@@ -409,6 +445,15 @@ Plan makePlan(const std::vector<std::string>& inputs, const std::string& toleran
     for (const std::string& why : invalid) all += "\n  " + why;
     throw std::runtime_error(all);
   }
+  // A restricted renderer a later scene added to the run: left out of the
+  // scenes planned before it that do not name it.
+  std::set<std::pair<std::string, std::string>> jobs;  // (scene, renderer)
+  for (const RenderJob& j : plan.jobs) jobs.emplace(j.scene, j.renderer);
+  for (PlannedScene& ps : plan.scenes)
+    for (const std::string& r : plan.renderers)
+      if (renderers::registry().at(r).restricted() && !isLeftOut(ps.left_out, r) && !jobs.count({ps.name, r}))
+        ps.left_out.push_back({r, kNotNamed});
+  plan.renderer_files = rendererFiles(plan.renderers);
   plan.created_unix = nowUnix();
   return plan;
 }

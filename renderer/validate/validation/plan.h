@@ -116,8 +116,16 @@ std::vector<std::string> jobRenderers();
 
 // Whether `validate --renderers` takes the renderer only when it is named:
 // a golden set (`golden`, `golden-NAME`; renderers/golden.cpp), which a
-// scene set may not have.
+// scene set may not have, or a restricted renderer (a native tier,
+// Renderer::restricted). Without --renderers, validate takes a restricted
+// renderer when a scene names it; either way it renders only the scenes
+// whose `renderers` field names it.
 bool runsWhenNamed(const std::string& id);
+
+// A left-out renderer nobody needs told about: a restricted renderer left
+// out of a scene that does not name it. The plan records it (its jobs
+// follow from it); the console and results.json do not.
+bool leftOutUnsaid(const LeftOut& l);
 
 // The run's renderers from `validate --renderers` (empty: jobRenderers()),
 // in registry order: jobRenderers() and, when named, the golden sets
