@@ -23,7 +23,7 @@ namespace xval {
 
 enum class BlenderMode {
   Model,          // the scene's lighting model as shader nodes (emission)
-  NativeLambert,  // Blender's own Diffuse BSDF, diffuse-direct pass
+  Native,  // Blender's own Diffuse / Glossy BSDFs (blender/native_bsdf.h), their direct passes
 };
 
 enum class BlenderEngine {
