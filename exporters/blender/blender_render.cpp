@@ -117,15 +117,15 @@ PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& work
   return p;
 }
 
-// Blender's image of a prepared scene (model mode), or one direct pass of
-// it (native mode, `pass` "DiffDir" or "GlossDir"), read back, checked and
-// box-filtered.
+// Blender's image of a prepared scene (`pass` empty: the combined image;
+// Cycles' native mode: "DiffDir" or "GlossDir", one direct pass), read
+// back, checked and box-filtered.
 Image readBack(const PreparedScene& p, BlenderMode mode, BlenderEngine engine, const std::string& pass = "") {
   const std::string tool = toolName(engine);
   const SubpixelGrid& g = p.grid;
   Image fine;
   try {
-    fine = mode == BlenderMode::Model ? readImage(p.out, g.width, g.height) : readPass(p.out, g.width, g.height, pass);
+    fine = pass.empty() ? readImage(p.out, g.width, g.height) : readPass(p.out, g.width, g.height, pass);
   } catch (const std::exception& e) {
     throw ExternalToolError(tool + " wrote an unusable image: " + e.what());
   }
@@ -159,8 +159,6 @@ std::vector<std::string> blenderCommand() {
 Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_dir,
                         double timeout_seconds, ExternalRenderInfo* info, BlenderMode mode,
                         BlenderEngine engine, const ExportThrough& through) {
-  if (engine == BlenderEngine::Eevee && mode != BlenderMode::Model)
-    throw std::invalid_argument("renderWithBlender: EEVEE renders the model mode only");
   // Native mode: the scene's built-in BSDF, checked before anything is
   // written (throws std::runtime_error with the reason).
   const std::optional<NativeBsdf> native =
@@ -172,15 +170,18 @@ Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_di
         std::string("--mode"), std::string(mode == BlenderMode::Model ? "model" : "native"),
         std::string("--engine"), std::string(engine == BlenderEngine::Eevee ? "eevee" : "cycles")})
     argv.push_back(a);
+  const NativeColours colours = native && engine == BlenderEngine::Eevee ? eeveeColours(*native) : NativeColours{};
   if (native)
     for (const std::string& a :
          {std::string("--diffuse-roughness"), exactDecimal(native->diffuse_roughness), std::string("--glossy"),
           std::string(glossyName(native->glossy)), std::string("--glossy-roughness"),
-          exactDecimal(native->glossy_roughness)})
+          exactDecimal(native->glossy_roughness), std::string("--diffuse-colour"), exactDecimal(colours.diffuse),
+          std::string("--glossy-colour"), exactDecimal(colours.glossy)})
       argv.push_back(a);
   ProcessResult r = runProcess(argv, work_dir, p.log, timeout_seconds);
   if (info) *info = {r.seconds, p.log, renderTimeFromLog(p.log)};
   requireToolOutput(toolName(engine), p.gltf, r, p.out);
+  if (native && engine == BlenderEngine::Eevee) return scaleNativeCombined(colours.scale, readBack(p, mode, engine));
   if (native)
     return combineNativePasses(*native, readBack(p, mode, engine, "DiffDir"), readBack(p, mode, engine, "GlossDir"));
   return readBack(p, mode, engine);

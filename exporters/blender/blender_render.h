@@ -28,7 +28,7 @@ enum class BlenderMode {
 
 enum class BlenderEngine {
   Cycles,  // the path tracer, one sample per pixel centre
-  Eevee,   // the rasteriser, headless on surfaceless EGL (Model mode only)
+  Eevee,   // the rasteriser, headless on surfaceless EGL
 };
 
 // The render_gltf.py script: $XVAL_BLENDER_SCRIPT, else the copy beside the

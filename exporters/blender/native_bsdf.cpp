@@ -107,6 +107,24 @@ NativeBsdf nativeBsdf(const Scene& s) {
   return n;
 }
 
+NativeColours eeveeColours(const NativeBsdf& n) {
+  NativeColours c;
+  c.scale = std::max(n.diffuse_weight, n.glossy_weight);
+  if (!(c.scale > 0.0)) return {0.0, 0.0, 1.0};  // kd = ks = 0: black either way
+  c.diffuse = n.diffuse_weight / c.scale;
+  c.glossy = n.glossy_weight / c.scale;
+  return c;
+}
+
+Image scaleNativeCombined(double scale, const Image& combined) {
+  Image out = combined;
+  out.raw.clear();
+  const float k = float(scale);
+  for (size_t i = 0; i < out.rgba.size(); i += 4)
+    for (size_t c = 0; c < 3; ++c) out.rgba[i + c] = std::clamp(k * combined.rgba[i + c], 0.0f, 1.0f);
+  return out;
+}
+
 Image combineNativePasses(const NativeBsdf& n, const Image& diffdir, const Image& glossdir) {
   if (diffdir.width != glossdir.width || diffdir.height != glossdir.height)
     throw std::invalid_argument("combineNativePasses: DiffDir and GlossDir differ in size");

@@ -54,6 +54,17 @@ NativeBsdf nativeBsdf(const Scene& scene);
 // channel; both images of one size; alpha from diffdir.
 Image combineNativePasses(const NativeBsdf& bsdf, const Image& diffdir, const Image& glossdir);
 
+// EEVEE (eevee-native) has no direct passes that exclude its BSDFs' colours
+// as Cycles' do (its Specular Light pass is divided by the split-sum colour,
+// not the node's): it renders the Combined image, with each BSDF's grey
+// colour its weight / scale, scale the larger weight (colours <= 1).
+struct NativeColours {
+  double diffuse = 1.0, glossy = 1.0, scale = 1.0;  // ours = saturate(scale Combined)
+};
+NativeColours eeveeColours(const NativeBsdf& bsdf);
+// ours = saturate(scale combined) per channel; alpha kept.
+Image scaleNativeCombined(double scale, const Image& combined);
+
 const char* glossyName(NativeBsdf::Glossy g);  // "none", "ggx", "beckmann": the harness's --glossy
 
 }  // namespace xval

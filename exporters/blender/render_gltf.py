@@ -5,6 +5,7 @@ lighting model evaluated as shader-node math.
         --gltf DIR/scene.gltf --out OUT.exr [--mode model|native]
         [--engine cycles|eevee] [--diffuse-roughness R]
         [--glossy none|ggx|beckmann] [--glossy-roughness R]
+        [--diffuse-colour G] [--glossy-colour G]
     blender -b --factory-startup -P render_gltf.py -- \
         --batch JOBS.json --results RESULTS.jsonl
 
@@ -81,8 +82,10 @@ mode native: Blender's own BSDFs (blender/native_bsdf.h chooses them): a
 white Diffuse BSDF of Roughness --diffuse-roughness, plus a white Glossy
 BSDF (--glossy ggx|beckmann, Roughness --glossy-roughness) unless --glossy
 none, lit by the imported point light (radius 0), direct light only;
-writes the diffuse- and glossy-direct passes (DiffDir, GlossDir) to a
-multilayer EXR (render_native).
+Cycles writes the diffuse- and glossy-direct passes (DiffDir, GlossDir; the
+BSDFs white) to a multilayer EXR; EEVEE, whose passes do not exclude its
+BSDFs' colours as Cycles' do, writes the combined image with the BSDFs'
+grey colours --diffuse-colour and --glossy-colour (render_native).
 
 The scene description is read as data only: json.loads of the glTF scene
 extras ("xval", "xval_shading") and of the .gltf file, array.frombytes of
@@ -118,6 +121,8 @@ def parse_args():
     p.add_argument("--diffuse-roughness", type=float, default=0.0)
     p.add_argument("--glossy", choices=["none", "ggx", "beckmann"], default="none")
     p.add_argument("--glossy-roughness", type=float, default=0.0)
+    p.add_argument("--diffuse-colour", type=float, default=1.0)
+    p.add_argument("--glossy-colour", type=float, default=1.0)
     p.add_argument("--engine", choices=["cycles", "eevee"], default="cycles")
     p.add_argument("--batch")
     p.add_argument("--results")
@@ -127,8 +132,6 @@ def parse_args():
             fail("--batch needs --results, and takes no --gltf or --out")
     elif args.gltf is None or args.out is None:
         fail("--gltf and --out are required (or --batch)")
-    if args.engine == "eevee" and args.mode != "model":
-        fail("--engine eevee renders only --mode model")
     return args
 
 
@@ -780,10 +783,10 @@ def setup_render(scene, width, height, out, multilayer):
 
 
 def build_native_material(nt, args, blender_to_world):
-    """Fills nt with Blender's own BSDFs (native mode): a white Diffuse BSDF
-    of Roughness args.diffuse_roughness, plus, unless args.glossy is
-    "none", a white Glossy BSDF (GGX or Beckmann) of Roughness
-    args.glossy_roughness, added; each BSDF's Normal the exact glTF normal
+    """Fills nt with Blender's own BSDFs (native mode): a Diffuse BSDF of
+    Roughness args.diffuse_roughness and grey colour args.diffuse_colour,
+    plus, unless args.glossy is "none", a Glossy BSDF (GGX or Beckmann) of
+    Roughness args.glossy_roughness and colour args.glossy_colour, added; each BSDF's Normal the exact glTF normal
     (xval_normal, in the scene's world frame) taken to Blender's frame by
     the transpose of the export's blender_to_world rotation and normalised,
     not the importer's compressed custom normals. The C++ side
@@ -800,14 +803,16 @@ def build_native_material(nt, args, blender_to_world):
     rows = [g.scale(g.const(row), sep.outputs[i]) for i, row in enumerate(blender_to_world)]
     N = g.vmath("NORMALIZE", g.vadd(g.vadd(rows[0], rows[1]), rows[2]))
     diffuse = nt.nodes.new("ShaderNodeBsdfDiffuse")
-    diffuse.inputs["Color"].default_value = (1.0, 1.0, 1.0, 1.0)
+    dc = args.diffuse_colour
+    diffuse.inputs["Color"].default_value = (dc, dc, dc, 1.0)
     diffuse.inputs["Roughness"].default_value = args.diffuse_roughness
     nt.links.new(N, diffuse.inputs["Normal"])
     surface = diffuse.outputs[0]
     if args.glossy != "none":
         glossy = nt.nodes.new("ShaderNodeBsdfGlossy")
         glossy.distribution = {"ggx": "GGX", "beckmann": "BECKMANN"}[args.glossy]
-        glossy.inputs["Color"].default_value = (1.0, 1.0, 1.0, 1.0)
+        gc = args.glossy_colour
+        glossy.inputs["Color"].default_value = (gc, gc, gc, 1.0)
         glossy.inputs["Roughness"].default_value = args.glossy_roughness
         nt.links.new(N, glossy.inputs["Normal"])
         add = nt.nodes.new("ShaderNodeAddShader")
@@ -821,12 +826,20 @@ def build_native_material(nt, args, blender_to_world):
 def render_native(args, scene, data, meshes, width, height):
     """Native mode: Blender's own BSDFs lit by the imported point light
     (radius 0: a point, as the reference's; no shadows: local illumination),
-    direct light only; writes the diffuse- and glossy-direct passes (DiffDir,
-    GlossDir; both without the BSDFs' white colour) to a multilayer EXR."""
+    direct light only. Cycles writes the diffuse- and glossy-direct passes
+    (DiffDir, GlossDir; both without the BSDFs' colour) to a multilayer
+    EXR; EEVEE the combined image (its light's radius is at least 0.001
+    whatever is set, a factor 1 / (1 + r^2 / d^2) on its Lambert: 1 - 3e-7
+    at d = 1.8; its influence distance is made huge so that it cuts no
+    light off)."""
     for o in scene.objects:
         if o.type == "LIGHT":
             o.data.shadow_soft_size = 0.0  # a point, not the importer's 0.25 sphere
             o.data.cycles.cast_shadow = False  # local illumination, as the reference
+            o.data.use_shadow = False  # EEVEE's
+            o.data.use_contact_shadow = False
+            o.data.use_custom_distance = True  # EEVEE's influence cut-off, out of reach
+            o.data.cutoff_distance = 1e6
     docs = data.doc.get("materials", [])
     if not docs or "xval_shading" not in docs[0].get("extras", {}):
         fail("no xval_shading constants in the extras of glTF material 0")
@@ -844,9 +857,14 @@ def render_native(args, scene, data, meshes, width, height):
         me.attributes.new("xval_normal", "FLOAT_VECTOR", domain).data.foreach_set("vector", values)
         me.materials.clear()
         me.materials.append(mat)
-    bpy.context.view_layer.use_pass_diffuse_direct = True
-    bpy.context.view_layer.use_pass_glossy_direct = True
-    setup_render(scene, width, height, args.out, True)
+    if args.engine == "eevee":
+        fit_clip_range(scene.camera, meshes)
+        setup_output(scene, width, height, args.out, False)
+        setup_eevee(scene)
+    else:
+        bpy.context.view_layer.use_pass_diffuse_direct = True
+        bpy.context.view_layer.use_pass_glossy_direct = True
+        setup_render(scene, width, height, args.out, True)
     bpy.ops.render.render(write_still=True)
 
 

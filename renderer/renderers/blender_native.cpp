@@ -24,12 +24,12 @@
 namespace xval::renderers {
 
 
-Renderer blenderNativeRenderer() {
+Renderer nativeBsdfRenderer(BlenderEngine engine, const std::string& id, const std::string& display_name,
+                            const std::string& summary) {
   Renderer r;
-  r.id = "blender-native";
-  r.display_name = "Blender native BSDFs";
-  r.summary = "Blender 3.4 Cycles' own Diffuse BSDF (with roughness) and Glossy BSDF (GGX, Beckmann); "
-              "white untextured, one point light scenes only";
+  r.id = id;
+  r.display_name = display_name;
+  r.summary = summary;
   r.every_scene = false;
   r.version_command = {"blender", "--version"};
   r.version_marker = "Blender";
@@ -42,14 +42,20 @@ Renderer blenderNativeRenderer() {
     }
     return blenderRefusal(scene);
   };
-  r.render = [](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
+  r.render = [engine](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
     ExternalRenderInfo tool;
     Image image =
-        renderWithBlender(scene, request.work_dir, request.timeout_seconds, &tool, BlenderMode::Native);
+        renderWithBlender(scene, request.work_dir, request.timeout_seconds, &tool, BlenderMode::Native, engine);
     setInfo(info, tool);
     return image;
   };
   return r;
+}
+
+Renderer blenderNativeRenderer() {
+  return nativeBsdfRenderer(BlenderEngine::Cycles, "blender-native", "Blender native BSDFs",
+                            "Blender 3.4 Cycles' own Diffuse BSDF (with roughness) and Glossy BSDF (GGX, Beckmann); "
+                            "white untextured, one point light scenes only");
 }
 
 }  // namespace xval::renderers

@@ -202,3 +202,24 @@ TEST(NativeBsdf, CombineWeighsBothPassesAndSaturates) {
   for (size_t i = 0; i < want.size(); ++i) EXPECT_NEAR(out.rgba[i], want[i], 1e-6f) << i;
   EXPECT_THROW(combineNativePasses(n, d, Image(1, 1, false)), std::invalid_argument);
 }
+
+// EEVEE renders the combined image: the BSDFs' grey colours carry the
+// weights relative to the larger one, which scales the image back.
+TEST(NativeBsdf, EeveeColoursCarryTheWeightsBelowOne) {
+  const NativeBsdf n = nativeBsdf(sceneWith(cyclesSet(models::MicrofacetD::Ggx, 0.25, 0.5, 0.1)));
+  const NativeColours c = eeveeColours(n);
+  EXPECT_DOUBLE_EQ(c.scale, n.diffuse_weight);
+  EXPECT_DOUBLE_EQ(c.diffuse, 1.0);
+  EXPECT_DOUBLE_EQ(c.glossy * c.scale, n.glossy_weight);
+  EXPECT_DOUBLE_EQ(c.glossy, 0.2);
+  const NativeColours black = eeveeColours(nativeBsdf(sceneWith(cyclesSet(models::MicrofacetD::Ggx, 0.25, 0.0, 0.0))));
+  EXPECT_EQ(black.diffuse, 0.0);
+  EXPECT_EQ(black.glossy, 0.0);
+  Image combined(1, 1, false);
+  combined.rgba = {0.01f, 0.02f, 0.5f, 1.0f};
+  const Image out = scaleNativeCombined(10.0, combined);
+  EXPECT_NEAR(out.rgba[0], 0.1f, 1e-6f);
+  EXPECT_NEAR(out.rgba[1], 0.2f, 1e-6f);
+  EXPECT_EQ(out.rgba[2], 1.0f);
+  EXPECT_EQ(out.rgba[3], 1.0f);
+}
