@@ -2,6 +2,8 @@
 
 
 #include <atomic>
+#include <charconv>
+#include <optional>
 #include <thread>
 #include <chrono>
 #include <exception>
@@ -12,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "blender/multilayer_exr.h"
+#include "blender/native_bsdf.h"
 #include "files/atomic_write.h"
 #include "process/run_process.h"
 #include "scene/json_reader.h"
@@ -27,15 +30,22 @@ std::filesystem::path blenderScript() {
 
 namespace {
 
-// The diffuse-direct pass of a multilayer EXR (channels "<layer>.DiffDir.R"
+// A direct pass of a multilayer EXR ("DiffDir": channels "<layer>.DiffDir.R"
 // ...), with alpha from the combined pass.
-Image readDiffDir(const std::filesystem::path& file, int width, int height) {
+Image readPass(const std::filesystem::path& file, int width, int height, const std::string& pass) {
   const MultilayerChannels in =
-      readMultilayerChannels(file, width, height, {"DiffDir.R", "DiffDir.G", "DiffDir.B", "Combined.A"});
+      readMultilayerChannels(file, width, height, {pass + ".R", pass + ".G", pass + ".B", "Combined.A"});
   Image img(in.width, in.height, false);
   for (size_t i = 0; i < size_t(in.width) * size_t(in.height); ++i)
     for (size_t c = 0; c < 4; ++c) img.rgba[i * 4 + c] = in.at(i, c);
   return img;
+}
+
+// The shortest decimal that reads back as v (Python's float() reads it).
+std::string exactDecimal(double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
 }
 
 // Blender prints " Time: MM:SS.ss (Saving: ...)" after a render.
@@ -107,13 +117,15 @@ PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& work
   return p;
 }
 
-// Blender's image of a prepared scene, read back, checked and box-filtered.
-Image readBack(const PreparedScene& p, BlenderMode mode, BlenderEngine engine) {
+// Blender's image of a prepared scene (`pass` empty: the combined image;
+// Cycles' native mode: "DiffDir" or "GlossDir", one direct pass), read
+// back, checked and box-filtered.
+Image readBack(const PreparedScene& p, BlenderMode mode, BlenderEngine engine, const std::string& pass = "") {
   const std::string tool = toolName(engine);
   const SubpixelGrid& g = p.grid;
   Image fine;
   try {
-    fine = mode == BlenderMode::Model ? readImage(p.out, g.width, g.height) : readDiffDir(p.out, g.width, g.height);
+    fine = pass.empty() ? readImage(p.out, g.width, g.height) : readPass(p.out, g.width, g.height, pass);
   } catch (const std::exception& e) {
     throw ExternalToolError(tool + " wrote an unusable image: " + e.what());
   }
@@ -127,8 +139,8 @@ Image readBack(const PreparedScene& p, BlenderMode mode, BlenderEngine engine) {
   // Model: each sample saturated, as the reference renderer's, then
   // averaged (boxFilter).
   Image img = boxFilter(fine, g.n);
-  if (mode == BlenderMode::NativeLambert) {
-    // The diffuse-direct pass is compared unsaturated (a physical
+  if (mode == BlenderMode::Native) {
+    // A direct pass is weighted unsaturated (a physical
     // quantity): the unsaturated mean.
     for (size_t i = 0; i < size_t(img.width) * img.height; ++i)
       for (int c = 0; c < 3; ++c) img.rgba[i * 4 + c] = img.raw[i * 3 + c];
@@ -147,18 +159,31 @@ std::vector<std::string> blenderCommand() {
 Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_dir,
                         double timeout_seconds, ExternalRenderInfo* info, BlenderMode mode,
                         BlenderEngine engine, const ExportThrough& through) {
-  if (engine == BlenderEngine::Eevee && mode != BlenderMode::Model)
-    throw std::invalid_argument("renderWithBlender: EEVEE renders the model mode only");
+  // Native mode: the scene's built-in BSDF, checked before anything is
+  // written (throws std::runtime_error with the reason).
+  const std::optional<NativeBsdf> native =
+      mode == BlenderMode::Native ? std::optional<NativeBsdf>(nativeBsdf(scene)) : std::nullopt;
   const PreparedScene p = prepareScene(scene, work_dir, engine, through);
   std::vector<std::string> argv = blenderCommand();
   for (const std::string& a :
        {std::string("--gltf"), std::filesystem::absolute(p.gltf).string(), std::string("--out"), p.out.string(),
-        std::string("--mode"), std::string(mode == BlenderMode::Model ? "model" : "native-lambert"),
+        std::string("--mode"), std::string(mode == BlenderMode::Model ? "model" : "native"),
         std::string("--engine"), std::string(engine == BlenderEngine::Eevee ? "eevee" : "cycles")})
     argv.push_back(a);
+  const NativeColours colours = native && engine == BlenderEngine::Eevee ? eeveeColours(*native) : NativeColours{};
+  if (native)
+    for (const std::string& a :
+         {std::string("--diffuse-roughness"), exactDecimal(native->diffuse_roughness), std::string("--glossy"),
+          std::string(glossyName(native->glossy)), std::string("--glossy-roughness"),
+          exactDecimal(native->glossy_roughness), std::string("--diffuse-colour"), exactDecimal(colours.diffuse),
+          std::string("--glossy-colour"), exactDecimal(colours.glossy)})
+      argv.push_back(a);
   ProcessResult r = runProcess(argv, work_dir, p.log, timeout_seconds);
   if (info) *info = {r.seconds, p.log, renderTimeFromLog(p.log)};
   requireToolOutput(toolName(engine), p.gltf, r, p.out);
+  if (native && engine == BlenderEngine::Eevee) return scaleNativeCombined(colours.scale, readBack(p, mode, engine));
+  if (native)
+    return combineNativePasses(*native, readBack(p, mode, engine, "DiffDir"), readBack(p, mode, engine, "GlossDir"));
   return readBack(p, mode, engine);
 }
 

@@ -23,12 +23,12 @@ namespace xval {
 
 enum class BlenderMode {
   Model,          // the scene's lighting model as shader nodes (emission)
-  NativeLambert,  // Blender's own Diffuse BSDF, diffuse-direct pass
+  Native,  // Blender's own Diffuse / Glossy BSDFs (blender/native_bsdf.h), their direct passes
 };
 
 enum class BlenderEngine {
   Cycles,  // the path tracer, one sample per pixel centre
-  Eevee,   // the rasteriser, headless on surfaceless EGL (Model mode only)
+  Eevee,   // the rasteriser, headless on surfaceless EGL
 };
 
 // The render_gltf.py script: $XVAL_BLENDER_SCRIPT, else the copy beside the

@@ -2,8 +2,10 @@
 lighting model evaluated as shader-node math.
 
     blender -b --factory-startup -P render_gltf.py -- \
-        --gltf DIR/scene.gltf --out OUT.exr [--mode model|native-lambert]
-        [--engine cycles|eevee]
+        --gltf DIR/scene.gltf --out OUT.exr [--mode model|native]
+        [--engine cycles|eevee] [--diffuse-roughness R]
+        [--glossy none|ggx|beckmann] [--glossy-roughness R]
+        [--diffuse-colour G] [--glossy-colour G]
     blender -b --factory-startup -P render_gltf.py -- \
         --batch JOBS.json --results RESULTS.jsonl
 
@@ -76,10 +78,14 @@ Mesa's surfaceless EGL, no X server). What makes its output exact:
   - nothing asks the GPU module anything before the first render (in -b
     mode Blender 3.4 crashes when gpu.platform is queried that early).
 
-mode native-lambert: Blender's own Lambert, for checking geometry, camera
-and light conversion against Blender's shading: a white Diffuse BSDF lit by
-the imported point light (radius 0), direct light only; writes the
-diffuse-direct pass (DiffDir) as R, G, B, A.
+mode native: Blender's own BSDFs (blender/native_bsdf.h chooses them): a
+white Diffuse BSDF of Roughness --diffuse-roughness, plus a white Glossy
+BSDF (--glossy ggx|beckmann, Roughness --glossy-roughness) unless --glossy
+none, lit by the imported point light (radius 0), direct light only;
+Cycles writes the diffuse- and glossy-direct passes (DiffDir, GlossDir; the
+BSDFs white) to a multilayer EXR; EEVEE, whose passes do not exclude its
+BSDFs' colours as Cycles' do, writes the combined image with the BSDFs'
+grey colours --diffuse-colour and --glossy-colour (render_native).
 
 The scene description is read as data only: json.loads of the glTF scene
 extras ("xval", "xval_shading") and of the .gltf file, array.frombytes of
@@ -111,7 +117,12 @@ def parse_args():
     p = argparse.ArgumentParser(prog="render_gltf.py")
     p.add_argument("--gltf")
     p.add_argument("--out")
-    p.add_argument("--mode", choices=["model", "native-lambert"], default="model")
+    p.add_argument("--mode", choices=["model", "native"], default="model")
+    p.add_argument("--diffuse-roughness", type=float, default=0.0)
+    p.add_argument("--glossy", choices=["none", "ggx", "beckmann"], default="none")
+    p.add_argument("--glossy-roughness", type=float, default=0.0)
+    p.add_argument("--diffuse-colour", type=float, default=1.0)
+    p.add_argument("--glossy-colour", type=float, default=1.0)
     p.add_argument("--engine", choices=["cycles", "eevee"], default="cycles")
     p.add_argument("--batch")
     p.add_argument("--results")
@@ -121,8 +132,6 @@ def parse_args():
             fail("--batch needs --results, and takes no --gltf or --out")
     elif args.gltf is None or args.out is None:
         fail("--gltf and --out are required (or --batch)")
-    if args.engine == "eevee" and args.mode != "model":
-        fail("--engine eevee renders only --mode model")
     return args
 
 
@@ -773,6 +782,92 @@ def setup_render(scene, width, height, out, multilayer):
     c.light_sampling_threshold = 0.0  # no stochastic culling of weak lights
 
 
+def build_native_material(nt, args, blender_to_world):
+    """Fills nt with Blender's own BSDFs (native mode): a Diffuse BSDF of
+    Roughness args.diffuse_roughness and grey colour args.diffuse_colour,
+    plus, unless args.glossy is "none", a Glossy BSDF (GGX or Beckmann) of
+    Roughness args.glossy_roughness and colour args.glossy_colour, added; each BSDF's Normal the exact glTF normal
+    (xval_normal, in the scene's world frame) taken to Blender's frame by
+    the transpose of the export's blender_to_world rotation and normalised,
+    not the importer's compressed custom normals. The C++ side
+    (blender/native_bsdf.h) chose the values and weighs the passes; nothing
+    is derived here."""
+    nt.nodes.clear()
+    g = Nodes(nt)
+    a = nt.nodes.new("ShaderNodeAttribute")
+    a.attribute_type = "GEOMETRY"
+    a.attribute_name = "xval_normal"
+    sep = nt.nodes.new("ShaderNodeSeparateXYZ")
+    nt.links.new(a.outputs["Vector"], sep.inputs[0])
+    # N_blender = sum_i N_world[i] row_i (the rotation's transpose)
+    rows = [g.scale(g.const(row), sep.outputs[i]) for i, row in enumerate(blender_to_world)]
+    N = g.vmath("NORMALIZE", g.vadd(g.vadd(rows[0], rows[1]), rows[2]))
+    diffuse = nt.nodes.new("ShaderNodeBsdfDiffuse")
+    dc = args.diffuse_colour
+    diffuse.inputs["Color"].default_value = (dc, dc, dc, 1.0)
+    diffuse.inputs["Roughness"].default_value = args.diffuse_roughness
+    nt.links.new(N, diffuse.inputs["Normal"])
+    surface = diffuse.outputs[0]
+    if args.glossy != "none":
+        glossy = nt.nodes.new("ShaderNodeBsdfGlossy")
+        glossy.distribution = {"ggx": "GGX", "beckmann": "BECKMANN"}[args.glossy]
+        gc = args.glossy_colour
+        glossy.inputs["Color"].default_value = (gc, gc, gc, 1.0)
+        glossy.inputs["Roughness"].default_value = args.glossy_roughness
+        nt.links.new(N, glossy.inputs["Normal"])
+        add = nt.nodes.new("ShaderNodeAddShader")
+        nt.links.new(surface, add.inputs[0])
+        nt.links.new(glossy.outputs[0], add.inputs[1])
+        surface = add.outputs[0]
+    out = nt.nodes.new("ShaderNodeOutputMaterial")
+    nt.links.new(surface, out.inputs["Surface"])
+
+
+def render_native(args, scene, data, meshes, width, height):
+    """Native mode: Blender's own BSDFs lit by the imported point light
+    (radius 0: a point, as the reference's; no shadows: local illumination),
+    direct light only. Cycles writes the diffuse- and glossy-direct passes
+    (DiffDir, GlossDir; both without the BSDFs' colour) to a multilayer
+    EXR; EEVEE the combined image (its light's radius is at least 0.001
+    whatever is set, a factor 1 / (1 + r^2 / d^2) on its Lambert: 1 - 3e-7
+    at d = 1.8; its influence distance is made huge so that it cuts no
+    light off)."""
+    for o in scene.objects:
+        if o.type == "LIGHT":
+            o.data.shadow_soft_size = 0.0  # a point, not the importer's 0.25 sphere
+            o.data.cycles.cast_shadow = False  # local illumination, as the reference
+            o.data.use_shadow = False  # EEVEE's
+            o.data.use_contact_shadow = False
+            o.data.use_custom_distance = True  # EEVEE's influence cut-off, out of reach
+            o.data.cutoff_distance = 1e6
+    docs = data.doc.get("materials", [])
+    if not docs or "xval_shading" not in docs[0].get("extras", {}):
+        fail("no xval_shading constants in the extras of glTF material 0")
+    k = json.loads(docs[0]["extras"]["xval_shading"])
+    mat = bpy.data.materials.new("xval_native")
+    mat.use_nodes = True
+    build_native_material(mat.node_tree, args, k["blender_to_world"])
+    for o in meshes:
+        me = o.data
+        attrs, corners = mesh_attributes(data, data.primitive(me.name), "phong")
+        if len(me.loops) != corners:
+            fail("mesh %s: %d corners in Blender, %d indices in the glTF (Blender's importer changed the mesh)"
+                 % (me.name, len(me.loops), corners))
+        domain, values = attrs["xval_normal"]
+        me.attributes.new("xval_normal", "FLOAT_VECTOR", domain).data.foreach_set("vector", values)
+        me.materials.clear()
+        me.materials.append(mat)
+    if args.engine == "eevee":
+        fit_clip_range(scene.camera, meshes)
+        setup_output(scene, width, height, args.out, False)
+        setup_eevee(scene)
+    else:
+        bpy.context.view_layer.use_pass_diffuse_direct = True
+        bpy.context.view_layer.use_pass_glossy_direct = True
+        setup_render(scene, width, height, args.out, True)
+    bpy.ops.render.render(write_still=True)
+
+
 def render_scene(args):
     """Renders one scene (args: gltf, out, mode, engine) from factory
     settings."""
@@ -799,26 +894,8 @@ def render_scene(args):
         centre_samples(cams[0], width, height)
 
     meshes = [o for o in scene.objects if o.type == "MESH"]
-    if args.mode == "native-lambert":
-        for o in scene.objects:
-            if o.type == "LIGHT":
-                o.data.shadow_soft_size = 0.0  # a point, not the importer's 0.25 sphere
-                o.data.cycles.cast_shadow = False  # local illumination, as the reference
-        mat = bpy.data.materials.new("xval_native_lambert")
-        mat.use_nodes = True
-        nt = mat.node_tree
-        nt.nodes.clear()
-        bsdf = nt.nodes.new("ShaderNodeBsdfDiffuse")
-        bsdf.inputs["Color"].default_value = (1.0, 1.0, 1.0, 1.0)
-        bsdf.inputs["Roughness"].default_value = 0.0
-        out = nt.nodes.new("ShaderNodeOutputMaterial")
-        nt.links.new(bsdf.outputs[0], out.inputs["Surface"])
-        for o in meshes:
-            o.data.materials.clear()
-            o.data.materials.append(mat)
-        bpy.context.view_layer.use_pass_diffuse_direct = True
-        setup_render(scene, width, height, args.out, True)
-        bpy.ops.render.render(write_still=True)
+    if args.mode == "native":
+        render_native(args, scene, data, meshes, width, height)
         return
 
     # Model mode: lights are evaluated in the nodes; Blender's lights go.

@@ -23,6 +23,12 @@ struct BlenderEngineFacts {
 // node-tree rebuild of the model, batches in one Blender process.
 Renderer blenderEngineRenderer(const BlenderEngineFacts& facts);
 
+// A native tier (renderers/blender_native.cpp): Blender's own BSDFs
+// (blender/native_bsdf.h) rendered by that engine, for the scenes that name
+// it (every_scene false).
+Renderer nativeBsdfRenderer(BlenderEngine engine, const std::string& id, const std::string& display_name,
+                            const std::string& summary);
+
 // Why the harness cannot run on this machine ("" when it can): its script.
 std::string blenderScriptMissing();
 // The Cycles harness's refusal of a scene, "" when it can render it.

@@ -10,6 +10,7 @@
 
 #include "shading/model/cook_torrance.h"
 #include "shading/shader.h"
+#include "unit/cycles_closures.h"
 
 namespace {
 
@@ -51,31 +52,10 @@ TEST(CookTorrance, TheCyclesSetAtHandComputedAngles) {
   EXPECT_NEAR(spec(cycles(MicrofacetD::Beckmann, 0.25), n, l, v), 8.0, 1e-12);
 }
 
-// Cycles 3.4's bsdf_microfacet_{ggx,beckmann}_eval, isotropic, as written
-// there (tan^2 from 1 - cos^2; G1 from 1 / a), times pi (a point light of
-// power 4 pi^2 Lc: docs/models.md) at random angles.
-double cyclesEval(bool ggx, double alpha, dvec3 n, dvec3 l, dvec3 v) {
-  const double cosNO = glm::dot(n, v), cosNI = glm::dot(n, l);
-  if (!(cosNO > 0 && cosNI > 0)) return 0;
-  const dvec3 m = glm::normalize(l + v);
-  const double c = glm::dot(n, m), t2 = (1 - c * c) / (c * c), a2 = alpha * alpha;
-  double D, G1o, G1i;
-  if (ggx) {
-    D = a2 / (kPi * c * c * c * c * (a2 + t2) * (a2 + t2));
-    auto g1 = [&](double x) { return 2 / (1 + std::sqrt(1 + a2 * (1 - x * x) / (x * x))); };
-    G1o = g1(cosNO), G1i = g1(cosNI);
-  } else {
-    D = std::exp(-t2 / a2) / (kPi * a2 * c * c * c * c);
-    auto g1 = [&](double x) {
-      const double invA = alpha * std::sqrt((1 - x * x) / (x * x));
-      if (invA < 0.625) return 1.0;
-      const double a = 1 / invA;
-      return (3.535 * a + 2.181 * a * a) / (1 + 2.276 * a + 2.577 * a * a);
-    };
-    G1o = g1(cosNO), G1i = g1(cosNI);
-  }
-  return G1o * G1i * D * 0.25 / cosNO;
-}
+// Cycles 3.4's Glossy eval as written there (unit/cycles_closures.h),
+// times pi (a point light of power 4 pi^2 Lc: docs/models.md) at random
+// angles.
+using test::cyclesGlossyEval;
 
 TEST(CookTorrance, TheCyclesSetIsCyclesGlossyTimesPi) {
   std::mt19937 rng(5);
@@ -85,7 +65,7 @@ TEST(CookTorrance, TheCyclesSetIsCyclesGlossyTimesPi) {
     const double alpha = 0.05 + 0.95 * u(rng);
     const dvec3 l = dir(std::acos(u(rng)), 2 * kPi * u(rng)), v = dir(std::acos(u(rng)), 2 * kPi * u(rng));
     for (bool ggx : {true, false}) {
-      const double want = kPi * cyclesEval(ggx, alpha, n, l, v);
+      const double want = kPi * cyclesGlossyEval(ggx, alpha, n, l, v);
       const double got = spec(cycles(ggx ? MicrofacetD::Ggx : MicrofacetD::Beckmann, alpha), n, l, v);
       EXPECT_NEAR(got, want, 1e-9 * std::max(1.0, want)) << "alpha " << alpha << " ggx " << ggx;
     }

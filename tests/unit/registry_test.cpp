@@ -55,6 +55,8 @@ TEST(Registry, BuiltInOrderAndRoles) {
   EXPECT_EQ(reg.comparedIds(), compared);
   ASSERT_NE(reg.find("blender-native"), nullptr);
   EXPECT_FALSE(reg.find("blender-native")->every_scene);
+  ASSERT_NE(reg.find("eevee-native"), nullptr);
+  EXPECT_FALSE(reg.find("eevee-native")->every_scene);
   EXPECT_EQ(reg.find("mitsuba"), nullptr);
   try {
     reg.at("mitsuba");
