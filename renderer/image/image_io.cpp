@@ -33,8 +33,17 @@ inline constexpr int kStripRows = 64;
 // strip in order and hands each to use(first_row, rows, pixels): rows x
 // width x nchannels floats, interleaved. False when a read fails
 // (in->geterror() says why).
+// A tiled file (another tool's EXR) is read whole, as one strip:
+// OpenImageIO 2.4's read_scanlines stops such a process with a division by
+// zero.
 template <class Use> bool forEachStrip(OIIO::ImageInput& in, Use&& use) {
   const OIIO::ImageSpec& spec = in.spec();
+  if (spec.tile_width > 0) {
+    std::vector<float> all(size_t(spec.width) * spec.height * spec.nchannels);
+    if (!in.read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data())) return false;
+    use(0, spec.height, all.data());
+    return true;
+  }
   std::vector<float> strip(size_t(std::min(kStripRows, spec.height)) * spec.width * spec.nchannels);
   for (int y = 0; y < spec.height; y += kStripRows) {
     const int rows = std::min(kStripRows, spec.height - y);
