@@ -19,6 +19,41 @@ std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
   return s;
 }
+
+// Images are written and read in strips of this many rows through one
+// buffer of a strip, not through a copy of the whole image: a render's EXR
+// (up to 20 float channels, 41 MB at 720x720) would otherwise be a second
+// and, read back, a third copy of the image in fresh memory, each page of
+// it a page fault (docs/performance.md, "Where the time goes"). A multiple
+// of every EXR compression's chunk height (PIZ: 32 rows), so each strip is
+// whole chunks, which OpenEXR compresses on its threads side by side.
+inline constexpr int kStripRows = 64;
+
+// Reads the open image `in` (subimage 0, every channel, as float) strip by
+// strip in order and hands each to use(first_row, rows, pixels): rows x
+// width x nchannels floats, interleaved. False when a read fails
+// (in->geterror() says why).
+// A tiled file (another tool's EXR) is read whole, as one strip:
+// OpenImageIO 2.4's read_scanlines stops such a process with a division by
+// zero.
+template <class Use> bool forEachStrip(OIIO::ImageInput& in, Use&& use) {
+  const OIIO::ImageSpec& spec = in.spec();
+  if (spec.tile_width > 0) {
+    std::vector<float> all(size_t(spec.width) * spec.height * spec.nchannels);
+    if (!in.read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data())) return false;
+    use(0, spec.height, all.data());
+    return true;
+  }
+  std::vector<float> strip(size_t(std::min(kStripRows, spec.height)) * spec.width * spec.nchannels);
+  for (int y = 0; y < spec.height; y += kStripRows) {
+    const int rows = std::min(kStripRows, spec.height - y);
+    if (!in.read_scanlines(0, 0, spec.y + y, spec.y + y + rows, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT,
+                           strip.data()))
+      return false;
+    use(y, rows, strip.data());
+  }
+  return true;
+}
 }  // namespace
 
 void requireDecodable(const std::filesystem::path& file, int width, int height) {
@@ -28,9 +63,8 @@ void requireDecodable(const std::filesystem::path& file, int width, int height) 
   if (spec.width != width || spec.height != height)
     throw std::runtime_error("written as " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
                              ", expected " + std::to_string(width) + "x" + std::to_string(height));
-  std::vector<float> buf(size_t(spec.width) * spec.height * spec.nchannels);
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, buf.data()))
-    throw std::runtime_error("written incompletely: " + in->geterror());
+  const bool whole = forEachStrip(*in, [&](int, int, const float*) {});
+  if (!whole) throw std::runtime_error("written incompletely: " + in->geterror());
 }
 
 void writeImage(const Image& img, const std::filesystem::path& file, const char* exr_compression, Image* read_back) {
@@ -82,23 +116,31 @@ void writeImage(const Image& img, const std::filesystem::path& file, const char*
     // oiiotool --attrib oiio:ColorSpace sRGB): the encoding is said in
     // xval:encoding, which every EXR and PNG xval writes carries.
     spec.attribute("xval:encoding", kColourEncoding);
-    std::vector<float> buf(n * spec.nchannels);
-    for (size_t i = 0; i < n; ++i) {
-      std::copy_n(&img.rgba[i * 4], 4, &buf[i * spec.nchannels]);
-      if (raw) std::copy_n(&img.raw[i * 3], 3, &buf[i * spec.nchannels + 4]);
-      if (diag) {
-        buf[i * spec.nchannels + spec.z_channel] = img.depth[i];
-        buf[i * spec.nchannels + spec.z_channel + 1] = img.backfacing[i];
-        buf[i * spec.nchannels + spec.z_channel + 2] = img.incidence[i];
-        if (albedo)
-          for (int c = 0; c < 3; ++c) buf[i * spec.nchannels + spec.z_channel + 3 + c] = img.albedo[i * 3 + c];
-        if (texel) buf[i * spec.nchannels + spec.z_channel + 3 + (albedo ? 3 : 0)] = img.texel_edge[i];
-        if (edge) buf[i * spec.nchannels + spec.z_channel + 3 + (albedo ? 3 : 0) + (texel ? 1 : 0)] = img.triangle_edge[i];
-        const size_t first_probe = i * spec.nchannels + spec.nchannels - probes.size();
-        for (size_t k = 0; k < probes.size(); ++k) buf[first_probe + k] = (*probes[k])[i];
+    // Strip by strip (kStripRows): pixel i's channels at buf[(i - first) * nc].
+    const size_t nc = size_t(spec.nchannels);
+    std::vector<float> buf(size_t(std::min(kStripRows, img.height)) * img.width * nc);
+    ok = out->open(tmp, spec);
+    for (int y = 0; ok && y < img.height; y += kStripRows) {
+      const int rows = std::min(kStripRows, img.height - y);
+      const size_t first = size_t(y) * img.width;
+      for (size_t i = first; i < first + size_t(rows) * img.width; ++i) {
+        float* px = &buf[(i - first) * nc];
+        std::copy_n(&img.rgba[i * 4], 4, px);
+        if (raw) std::copy_n(&img.raw[i * 3], 3, px + 4);
+        if (diag) {
+          px[spec.z_channel] = img.depth[i];
+          px[spec.z_channel + 1] = img.backfacing[i];
+          px[spec.z_channel + 2] = img.incidence[i];
+          if (albedo)
+            for (int c = 0; c < 3; ++c) px[spec.z_channel + 3 + c] = img.albedo[i * 3 + c];
+          if (texel) px[spec.z_channel + 3 + (albedo ? 3 : 0)] = img.texel_edge[i];
+          if (edge) px[spec.z_channel + 3 + (albedo ? 3 : 0) + (texel ? 1 : 0)] = img.triangle_edge[i];
+          float* first_probe = px + nc - probes.size();
+          for (size_t k = 0; k < probes.size(); ++k) first_probe[k] = (*probes[k])[i];
+        }
       }
+      ok = out->write_scanlines(y, y + rows, 0, OIIO::TypeDesc::FLOAT, buf.data());
     }
-    ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::FLOAT, buf.data());
   } else {
     // RGBA, 16 bits. PNG's alpha is unassociated: the stored colour is
     // the premultiplied colour divided by the coverage (0 where nothing is
@@ -199,9 +241,6 @@ Image readImage(const std::filesystem::path& file, int expect_width, int expect_
                                                  readImageLimits(expect_width, expect_height));
   if (!problem.empty()) throw std::runtime_error(name + ": the image " + problem);
   const int nc = spec.nchannels;
-  std::vector<float> buf(size_t(spec.width) * spec.height * nc);
-  if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, buf.data()))
-    throw std::runtime_error(name + ": cannot read image: " + in->geterror());
   auto channel = [&spec](const char* c) {
     for (int i = 0; i < spec.nchannels; ++i)
       if (spec.channelnames[i] == c) return i;
@@ -233,24 +272,29 @@ Image readImage(const std::filesystem::path& file, int expect_width, int expect_
     (img.*c.member).assign(diag && pc >= 0 ? img.depth.size() : 0, 0.0f);
     if (diag && pc >= 0) probes.emplace_back(pc, &(img.*c.member));
   }
-  for (size_t i = 0; i < size_t(spec.width) * spec.height; ++i) {
-    if (diag) {
-      img.depth[i] = buf[i * nc + zc];
-      img.backfacing[i] = buf[i * nc + bc];
-      img.incidence[i] = buf[i * nc + ic];
-      if (albedo)
-        for (int c = 0; c < 3; ++c) img.albedo[i * 3 + c] = buf[i * nc + ac[c]];
-      if (!img.texel_edge.empty()) img.texel_edge[i] = buf[i * nc + tc];
-      if (!img.triangle_edge.empty()) img.triangle_edge[i] = buf[i * nc + ec];
-      for (const auto& [pc, v] : probes) (*v)[i] = buf[i * nc + pc];
+  // Strip by strip (forEachStrip): pixel i's channels at px.
+  const bool whole = forEachStrip(*in, [&](int y, int rows, const float* strip) {
+    const size_t first = size_t(y) * spec.width;
+    for (size_t i = first; i < first + size_t(rows) * spec.width; ++i) {
+      const float* px = strip + (i - first) * size_t(nc);
+      if (diag) {
+        img.depth[i] = px[zc];
+        img.backfacing[i] = px[bc];
+        img.incidence[i] = px[ic];
+        if (albedo)
+          for (int c = 0; c < 3; ++c) img.albedo[i * 3 + c] = px[ac[c]];
+        if (!img.texel_edge.empty()) img.texel_edge[i] = px[tc];
+        if (!img.triangle_edge.empty()) img.triangle_edge[i] = px[ec];
+        for (const auto& [pc, v] : probes) (*v)[i] = px[pc];
+      }
+      for (int c = 0; c < 4; ++c) img.rgba[i * 4 + c] = ch[c] >= 0 ? px[ch[c]] : 1.0f;
+      if (unassociated)
+        for (int c = 0; c < 3; ++c) img.rgba[i * 4 + c] *= img.rgba[i * 4 + 3];
+      if (has_raw)
+        for (int c = 0; c < 3; ++c) img.raw[i * 3 + c] = px[raw[c]];
     }
-    for (int c = 0; c < 4; ++c)
-      img.rgba[i * 4 + c] = ch[c] >= 0 ? buf[i * nc + ch[c]] : 1.0f;
-    if (unassociated)
-      for (int c = 0; c < 3; ++c) img.rgba[i * 4 + c] *= img.rgba[i * 4 + 3];
-    if (has_raw)
-      for (int c = 0; c < 3; ++c) img.raw[i * 3 + c] = buf[i * nc + raw[c]];
-  }
+  });
+  if (!whole) throw std::runtime_error(name + ": cannot read image: " + in->geterror());
   return img;
 }
 

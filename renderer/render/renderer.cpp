@@ -749,11 +749,23 @@ void edgeFractionPass(const std::vector<TriangleMesh>& meshes, const CameraRays&
   const OpenPixelTriangles binned = openPixelTriangles(meshes, projected, cam, img);
   std::atomic<int> next_row{0};
   auto worker = [&]() {
-    std::vector<std::pair<uint32_t, uint32_t>> seen, hit;
+    std::vector<std::pair<uint32_t, uint32_t>> seen;
     std::vector<ProjectedTriangle> near;
     std::vector<glm::dvec2> samples(size_t(n) * n);
     for (int j = next_row++; j < H; j = next_row++)
       for (int i = 0; i < W; ++i) {
+        seen.clear(), near.clear();
+        for (int y = std::max(0, j - 1); y <= std::min(H - 1, j + 1); ++y)
+          for (int x = std::max(0, i - 1); x <= std::min(W - 1, i + 1); ++x) {
+            const PixelTriangles& t = triangles[size_t(y) * W + x];
+            for (int k = 0; k < t.count; ++k) seen.emplace_back(t.mesh[size_t(k)], t.triangle[size_t(k)]);
+          }
+        if (const int32_t k = binned.index[size_t(j) * W + i]; k >= 0)
+          seen.insert(seen.end(), binned.triangles[size_t(k)].begin(), binned.triangles[size_t(k)].end());
+        if (seen.empty()) {  // no candidate: no sample is near an edge (the background away from the objects)
+          img.edge_fraction[size_t(j) * W + i] = 0.0f;
+          continue;
+        }
         glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
         for (int sy = 0; sy < n; ++sy)
           for (int sx = 0; sx < n; ++sx) {
@@ -762,15 +774,6 @@ void edgeFractionPass(const std::vector<TriangleMesh>& meshes, const CameraRays&
             lo = glm::min(lo, p), hi = glm::max(hi, p);
           }
         lo -= within, hi += within;
-        seen.clear(), near.clear(), hit.clear();
-        for (int y = std::max(0, j - 1); y <= std::min(H - 1, j + 1); ++y)
-          for (int x = std::max(0, i - 1); x <= std::min(W - 1, i + 1); ++x) {
-            const PixelTriangles& t = triangles[size_t(y) * W + x];
-            for (int k = 0; k < t.count; ++k) hit.emplace_back(t.mesh[size_t(k)], t.triangle[size_t(k)]);
-          }
-        seen = hit;
-        if (const int32_t k = binned.index[size_t(j) * W + i]; k >= 0)
-          seen.insert(seen.end(), binned.triangles[size_t(k)].begin(), binned.triangles[size_t(k)].end());
         std::sort(seen.begin(), seen.end());
         seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
         for (const std::pair<uint32_t, uint32_t>& key : seen) {

@@ -1,6 +1,7 @@
 # xval bench prints, beside the frames, the validate-style frames (with and
 # without the precision probes), the whole process of `xval render` with
-# its stages, and one line per performance target (docs/performance.md,
+# its stages, validate's reference job of the scene with and without the
+# probes and their share of it, and one line per performance target (docs/performance.md,
 # "Targets") with the measured figure; --json holds the same.
 # Arguments: XVAL, SCENE (a small scene file), WORK.
 foreach(_v XVAL SCENE WORK)
@@ -23,14 +24,23 @@ expect("${_o}" "stages: scene load [0-9.]+ ms, set-up [0-9.]+ ms, frame with dia
        "the render's stages")
 expect("${_o}" "reference float frame <= 3 ms \\(wall median, 1 spp as asked\\) +[0-9.]+ ms +(met|not met)"
        "the float frame target")
+expect("${_o}" "validate ref. job +with probes +[0-9.]+ ms .*CPU time +[0-9.]+ ms" "validate's reference job")
+expect("${_o}" "without probes +[0-9.]+ ms .*CPU time +[0-9.]+ ms" "validate's reference job without probes")
+expect("${_o}" "the probes' share of the job: -?[0-9]+% of its CPU time, -?[0-9]+% of its wall time" "the probes' share")
+expect("${_o}" "precision probes <= 10% of validate's reference job \\(CPU\\) +-?[0-9]+% of its CPU time +(met|not met)"
+       "the reference job's probes target")
 # POV-Ray was not asked for: the process target says why it has no figure.
 expect("${_o}" "5x faster than POV-Ray's +not measured: needs reference and povray" "the process target")
 file(READ ${WORK}/bench.json _j)
 string(JSON _n LENGTH "${_j}" targets)
-if(NOT _n EQUAL 4)
-  message(FATAL_ERROR "bench.json: ${_n} targets, expected 4:\n${_j}")
+if(NOT _n EQUAL 5)
+  message(FATAL_ERROR "bench.json: ${_n} targets, expected 5:\n${_j}")
 endif()
 string(JSON _s GET "${_j}" xval_render process_median_s)
 if(NOT _s GREATER 0)
   message(FATAL_ERROR "bench.json: xval_render.process_median_s is ${_s}, expected > 0")
+endif()
+string(JSON _s GET "${_j}" validate_reference_job_no_probes cpu_median_s)
+if(NOT _s GREATER 0)
+  message(FATAL_ERROR "bench.json: validate_reference_job_no_probes.cpu_median_s is ${_s}, expected > 0")
 endif()

@@ -99,6 +99,53 @@ TEST(ImageIo, EveryExrCompressionReadsBackBitForBit) {
   }
 }
 
+// Images are written and read in strips of rows (image_io.cpp kStripRows,
+// 64): an image of several strips, the last one partial, reads back bit for
+// bit, every channel, as EXR; and its PNG decodes to the same size.
+TEST(ImageIo, ImagesOfSeveralStripsReadBackWhole) {
+  Image a(3, 150, true);
+  for (auto* v : {&a.rgba, &a.raw, &a.depth, &a.backfacing, &a.incidence, &a.albedo, &a.texel_edge, &a.triangle_edge})
+    for (size_t i = 0; i < v->size(); ++i) (*v)[i] = float(i) * 0.25f + float(v->size());
+  for (const DiagnosticsChannel& c : kProbeChannels)
+    for (size_t i = 0; i < (a.*c.member).size(); ++i) (a.*c.member)[i] = float(i) + 0.5f;
+  writeImage(a, tmp("xval_strips.exr"));
+  const Image b = readImage(tmp("xval_strips.exr"));
+  EXPECT_EQ(a.rgba, b.rgba);
+  EXPECT_EQ(a.raw, b.raw);
+  EXPECT_EQ(a.depth, b.depth);
+  EXPECT_EQ(a.albedo, b.albedo);
+  EXPECT_EQ(a.triangle_edge, b.triangle_edge);
+  for (const DiagnosticsChannel& c : kProbeChannels) EXPECT_EQ(a.*c.member, b.*c.member) << c.name;
+  writeImage(a, tmp("xval_strips.png"));
+  const Image p = readImage(tmp("xval_strips.png"));
+  EXPECT_EQ(p.width, 3);
+  EXPECT_EQ(p.height, 150);
+}
+
+// A tiled EXR (another tool's; xval writes scanlines) is read whole: the
+// strips' read_scanlines stopped the process on one (SIGFPE in
+// OpenImageIO 2.4).
+TEST(ImageIo, TiledExrReadsBack) {
+  const std::filesystem::path f = tmp("xval_tiled.exr");
+  const int w = 20, h = 70;
+  std::vector<float> px(size_t(w) * h * 4);
+  for (size_t i = 0; i < px.size(); ++i) px[i] = float(i % 97) / 97.0f;
+  {
+    auto out = OIIO::ImageOutput::create(f.string());
+    ASSERT_TRUE(out);
+    OIIO::ImageSpec spec(w, h, 4, OIIO::TypeDesc::FLOAT);
+    spec.tile_width = spec.tile_height = 16;
+    spec.alpha_channel = 3;
+    ASSERT_TRUE(out->open(f.string(), spec));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px.data()));
+    ASSERT_TRUE(out->close());
+  }
+  const Image b = readImage(f);
+  EXPECT_EQ(b.width, w);
+  EXPECT_EQ(b.height, h);
+  EXPECT_EQ(b.rgba, px);
+}
+
 // PNG keeps the coverage: 16-bit RGBA, the colour stored unassociated
 // (colour / alpha) and associated again on reading. Alpha and fully covered
 // pixels come back within half a step; a partly covered pixel's colour

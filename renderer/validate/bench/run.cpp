@@ -20,6 +20,7 @@
 #include "renderers/registry.h"
 #include "scene_file/scene_loader.h"
 #include "validate/common/frame_timing.h"
+#include "validate/common/reference_job.h"
 
 namespace xval::bench {
 
@@ -54,6 +55,15 @@ std::string fmt(const char* f, double a, double b = 0) {
   char buf[160];
   std::snprintf(buf, sizeof buf, f, a, b);
   return buf;
+}
+
+// The precision probes' share of a figure: (with - without) / with, the
+// medians under `with` and `with` + "_no_probes"; -1 when either was not
+// measured.
+double probesShare(const std::map<std::string, double>& medians, const std::string& with) {
+  const auto a = medians.find(with), b = medians.find(with + "_no_probes");
+  if (a == medians.end() || b == medians.end() || a->second <= 0) return -1.0;
+  return (a->second - b->second) / a->second;
 }
 
 // Runs `argv` `runs` times (no shell; xval itself), each with its own
@@ -196,6 +206,42 @@ int runBench(const BenchRequest& request) {
                           {"startup_process_median_s", start.median}, {"runs", whole.n},
                           {"stages", {{"load_s", load_s}, {"setup_s", setup_s}, {"frame_s", frame_s},
                                       {"exr_write_s", write_s}}}};
+    // Validate's reference job of this scene, as a validate run does it
+    // (validation/run_job.cpp): the render with its options
+    // (referenceJobOptions: double, one thread, every diagnostic channel),
+    // its EXR with the read-back handed to the compare, its preview PNG;
+    // with the precision probes and without them, alternating, `runs`
+    // times each. The probes' share: (with - without) / with, of the
+    // medians.
+    std::map<bool, std::vector<double>> job_wall, job_cpu;
+    for (int k = 0; k < request.runs; ++k)
+      for (const bool probes : {true, false}) {
+        renderers::RenderRequest job;
+        job.timeout_seconds = request.timeout_seconds;
+        job.options = referenceJobOptions(loaded);
+        job.options->precision_probes = probes;
+        const double c0 = processCpuSeconds();
+        t0 = Clock::now();
+        const Image image = registry.reference().render(loaded, job, nullptr);
+        Image read_back;
+        writeImage(image, dir / "job.exr", kRenderExrCompression, &read_back);
+        writePreviewPng(image, dir / "job.png", kPreviewSide);
+        job_wall[probes].push_back(since(t0));
+        job_cpu[probes].push_back(processCpuSeconds() - c0);
+      }
+    for (const bool probes : {true, false}) {
+      const Spread w = spread(job_wall[probes]), c = spread(job_cpu[probes]);
+      const std::string key = std::string("validate_reference_job") + (probes ? "" : "_no_probes");
+      medians[key] = w.median;
+      cpu_medians[key] = c.median;
+      std::printf("  %-18s %s %s   CPU time %s\n", probes ? "validate ref. job" : "", probes ? "with probes   " : "without probes",
+                  ms(w).c_str(), ms(c).c_str());
+      out[key] = {{"median_s", w.median}, {"min_s", w.min}, {"max_s", w.max}, {"cpu_median_s", c.median},
+                  {"runs", w.n}};
+    }
+    std::printf("  %-18s the probes' share of the job: %.0f%% of its CPU time, %.0f%% of its wall time\n", "",
+                probesShare(cpu_medians, "validate_reference_job") * 100.0,
+                probesShare(medians, "validate_reference_job") * 100.0);
   }
   for (const renderers::Renderer& renderer : registry.all()) {
     if (renderer.reference || !wants(renderer.id) || !renderer.prepare_frames) continue;
@@ -269,16 +315,24 @@ int runBench(const BenchRequest& request) {
     targets.push_back(t);
   }
   for (const char* p : {"float", "double"}) {
-    const std::string with = reference_id + "_" + p + "_diagnostics", without = with + "_no_probes";
+    const std::string with = reference_id + "_" + p + "_diagnostics";
     Target t{p[0] == 'f' ? "precision probes <= 10% of the validate-style float frame"
                          : "precision probes <= 10% of the validate-style double frame",
              "", false, ""};
-    if (cpu_medians.count(with) && cpu_medians.count(without) && cpu_medians[with] > 0) {
-      const double share = (cpu_medians[with] - cpu_medians[without]) / cpu_medians[with];
+    if (const double share = probesShare(cpu_medians, with); share >= 0) {
       t.measured = fmt("%.0f%% of its CPU time", share * 100.0);
       t.met = share <= 0.10;
     } else
       t.why_not = "this path was not timed (--precision, --renderers)";
+    targets.push_back(t);
+  }
+  {
+    Target t{"precision probes <= 10% of validate's reference job (CPU)", "", false, ""};
+    if (const double share = probesShare(cpu_medians, "validate_reference_job"); share >= 0) {
+      t.measured = fmt("%.0f%% of its CPU time", share * 100.0);
+      t.met = share <= 0.10;
+    } else
+      t.why_not = "needs reference in --renderers";
     targets.push_back(t);
   }
   printTargets(targets, out);

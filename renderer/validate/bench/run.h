@@ -25,7 +25,11 @@
 // --no-diagnostics, and `xval --version` (start-up and exit), each `runs`
 // times, run as child processes of this xval (/proc/self/exe); and that
 // render's stages timed once in this process (scene load, set-up, frame,
-// EXR write with its read-back). Last, one line per target of
+// EXR write with its read-back); and validate's reference job of the
+// scene (validate/common/reference_job.h: double, one thread, every
+// diagnostic channel, its EXR with the read-back and its preview PNG) with
+// the precision probes and without them, alternating, `runs` times each,
+// wall and CPU, and the probes' share of it. Last, one line per target of
 // docs/performance.md ("Targets"): the target, the measured figure, met or
 // not, or why it was not measured.
 // Every figure is the median over the repetitions with its spread

@@ -19,6 +19,7 @@
 #include "geometry/scene_meshes.h"
 #include "render/geometry_passes.h"
 #include "render/renderer.h"
+#include "validate/common/reference_job.h"
 #include "validate/validation/job_cost.h"
 #include "renderers/job_export.h"
 #include "renderers/registry.h"
@@ -31,8 +32,6 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-constexpr int kPreviewSide = 360;  // report images: 8-bit, at most 360 px
-
 // The render request of a job; an outside tool's work folder is made
 // fresh: nothing planted or left there by an earlier attempt is read or
 // written through.
@@ -41,10 +40,7 @@ renderers::RenderRequest requestFor(const Plan& plan, const RenderJob& job, cons
   renderers::RenderRequest request;
   request.timeout_seconds = plan.timeout_seconds;
   if (renderer.reference) {
-    RenderOptions o = defaultOptions(scene);
-    o.precision = Precision::Double;
-    o.threads = 1;  // parallelism comes from running jobs side by side
-    request.options = o;
+    request.options = referenceJobOptions(scene);
   }
   if (renderer.external()) {
     request.export_key = exportInputsKey(scene, job.path);
