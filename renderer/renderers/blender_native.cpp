@@ -11,7 +11,7 @@
 // reference's units (DiffDir * 4 pi^2, saturated at 1).
 //
 // Parameters (RenderRequest), as the blender renderer's:
-//   work_dir         the glTF export, blender.log and the raw multilayer EXR
+//   work_dir         the glTF export, blender-native.log and the raw multilayer EXR
 //   timeout_seconds  default kDefaultToolTimeoutSeconds (600)
 // Needs what the blender renderer needs; same version line.
 #include "blender/blender_render.h"
@@ -38,10 +38,10 @@ Renderer blenderNativeRenderer() {
     }
     return blenderRefusal(scene);
   };
-  r.render = [](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
+  r.render = [id = r.id](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
     ExternalRenderInfo tool;
     Image image =
-        renderWithBlender(scene, request.work_dir, request.timeout_seconds, &tool, BlenderMode::NativeLambert);
+        renderWithBlender(id, scene, request.work_dir, request.timeout_seconds, &tool, BlenderMode::NativeLambert);
     scaleNativeLambert(scene, image);
     setInfo(info, tool);
     return image;
