@@ -396,7 +396,9 @@ Specular specular(const Scene& s, const std::vector<LightInfo>& lights, bool fil
       sp.light_sources.push_back(src);
       continue;
     }
-    for (const LightSource& src : *lightSourcesOf(*l.light, colour(l))) sp.light_sources.push_back(src);
+    // Only the general case above has no light sources (realRoots).
+    const std::vector<LightSource> sources = *lightSourcesOf(*l.light, colour(l));
+    sp.light_sources.insert(sp.light_sources.end(), sources.begin(), sources.end());
   }
   return sp;
 }
