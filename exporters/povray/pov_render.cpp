@@ -9,8 +9,10 @@
 namespace xval {
 
 Image renderWithPovray(const std::string& renderer, const Scene& scene, const std::filesystem::path& work_dir,
-                       double timeout_seconds, ExternalRenderInfo* info, const ExportThrough& through) {
-  exportThrough(through, work_dir, [&](const std::filesystem::path& dir) { exportPov(scene, dir); });
+                       double timeout_seconds, ExternalRenderInfo* info, const ExportThrough& through,
+                       PovTier tier) {
+  exportThrough(through, work_dir,
+                [&](const std::filesystem::path& dir) { exportPov(scene, dir, "scene.png", tier); });
   const PovExport ex{work_dir / "scene.pov", work_dir / "scene.ini", work_dir,
                  // The image's name is this attempt's own (+O on the command
                  // line overrides the ini's): a POV-Ray left from an earlier

@@ -11,6 +11,7 @@
 
 #include "common/export_common.h"
 #include "image/image.h"
+#include "povray/pov_exporter.h"
 #include "scene/scene.h"
 
 namespace xval {
@@ -21,6 +22,6 @@ namespace xval {
 // command line, after the ini), the tool's log and its raw output.
 Image renderWithPovray(const std::string& renderer, const Scene& scene, const std::filesystem::path& work_dir,
                        double timeout_seconds, ExternalRenderInfo* info = nullptr,
-                       const ExportThrough& through = {});
+                       const ExportThrough& through = {}, PovTier tier = PovTier::Emission);
 
 }  // namespace xval
