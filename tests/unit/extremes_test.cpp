@@ -5,7 +5,10 @@
 //   - L and d without overflow of (p_light - p)^2 (towardsLight; case
 //     light_far_1e20);
 //   - camera-relative shading coordinates (Shader's origin; case
-//     offset_1e6).
+//     offset_1e6);
+//   - cook_torrance's V.H from |L + V| (case
+//     ct_beckmann_vgroove_schlick_grazing) and GGX's D as (alpha / q)^2 / pi
+//     (case ct_ggx_alpha_min), models::cookTorranceSpecular.
 // Then what the scene format cannot express, on hand-made data: zero-area
 // triangles through the intersector in both precisions, and a zero-length
 // normal and a NaN eye vector (the eye at the shaded point) through every
