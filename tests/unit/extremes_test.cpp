@@ -201,7 +201,10 @@ TEST(ExtremesFix, CookTorranceGgxPeakWithoutUnderflowInFloat) {
 
 // The alpha of the ct_*_alpha_min cases is the smallest float accepts (to
 // two digits): the case's scene passes float's precision limits, and the
-// same scene with alpha 2.2e-12 is refused.
+// same scene with alpha 2.2e-12 is refused, whatever ks: S (up to
+// specularGain ~ 2.66 / alpha^3) is formed before ks multiplies it, so a
+// small ks does not let a smaller alpha through (ks 1e-30 and alpha 3e-22
+// gave a raw Inf in float: S = 1 / (4 alpha^2 N.V) > FLT_MAX).
 TEST(Extremes, CookTorranceAlphaMinIsTheSmallestFloatAccepts) {
   for (const auto& c : extremes::extremesMatrix({40})) {
     if (c.name.find("_alpha_min") == std::string::npos) continue;
@@ -211,6 +214,10 @@ TEST(Extremes, CookTorranceAlphaMinIsTheSmallestFloatAccepts) {
     EXPECT_NO_THROW(checkPrecision(parseScene(j.dump(), c.name + ".json"), Precision::Float));
     j["material"]["model"]["roughness"] = 2.2e-12;
     EXPECT_THROW(checkPrecision(parseScene(j.dump(), c.name + ".json"), Precision::Float), SceneError);
+    for (double ks : {0.5, 1e-30}) {
+      j["material"]["model"]["ks"] = ks;
+      EXPECT_THROW(checkPrecision(parseScene(j.dump(), c.name + ".json"), Precision::Float), SceneError) << ks;
+    }
   }
 }
 
