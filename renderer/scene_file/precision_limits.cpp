@@ -172,14 +172,15 @@ Bound shadingFactors(const Scene& s, const Material& mat, const std::string& pre
         // microfacet peak, ~1 / alpha^3), else 1 (clamp(R.V)^n <= 1). The
         // term is formed before the number multiplies it, so a number
         // below 1 does not shrink what must fit: the gain counts at least
-        // once (ks 1e-30 let alpha 3e-22 through, whose S overflowed float).
+        // once (ks 1e-30 let alpha 3e-22 through, whose S overflowed float);
+        // with ks = 0 the term is not formed (Shader's specular_).
         double gain = 1.0;
         if constexpr (requires { mm.specularGain(); }) gain = mm.specularGain();
         model::forEachParam(mm, model::Overloaded{
                                     [&](const model::NumberParam<M>& p, double v) {
                                       if (p.role == model::Role::None) return;
                                       std::string field = m + "." + p.name;
-                                      if (p.role == model::Role::Specular && gain > 1.0) {
+                                      if (p.role == model::Role::Specular && gain > 1.0 && v != 0.0) {
                                         // Named by the larger of the two: ks, or the
                                         // parameter that sets the gain.
                                         if constexpr (requires { M::kSpecularGainParam; })
