@@ -243,18 +243,24 @@ Bound shadingFactors(const Scene& s) {
   return worst;
 }
 
-// The specular coefficient (Role::Specular), 0 for a model without one.
+// The specular coefficient (Role::Specular) of a power highlight, 0 for a
+// model without one: the weight below bounds the error of the power's
+// cut-off (models::phongSpecular), which only a model with a specular
+// power (a parameter of Unit::Exponent) has; cook_torrance's microfacet
+// term has no cut-off (its own bound is specularGain(), in K above).
 double ksOf(const Material& m) {
   double ks = 0.0;
+  bool power = false;
   std::visit(
       [&]<class M>(const M& mm) {
         model::forEachParam(mm, model::Overloaded{[&](const model::NumberParam<M>& p, double v) {
                                                     if (p.role == model::Role::Specular) ks = v;
+                                                    if (p.unit == model::Unit::Exponent) power = true;
                                                   },
                                                   [](const auto&, const auto&) {}});
       },
       m.model);
-  return ks;
+  return power ? ks : 0.0;
 }
 
 // The field of the largest ks ("objects[1].material.model.ks").
