@@ -86,19 +86,24 @@ void RasterBandImpl(const RasterBand& job) {
         const VD inv_z = wsum / sum;
         in = hn::And(in, inv_z > hn::LoadU(d, best_row + i));
         if (hn::AllFalse(d, in)) continue;
+        // The hit's barycentrics, b_k = w_k (1 / wsum), for every lane at
+        // once (the same two double roundings as one sample at a time); the
+        // lanes inside then written one by one, visiting only their bits.
+        const VD norm = hn::Set(d, 1.0) / wsum;
+        hn::BlendedStore(inv_z, in, d, best_row + i);
         alignas(64) double iz[HWY_MAX_BYTES / sizeof(double)], a1[HWY_MAX_BYTES / sizeof(double)],
-            a2[HWY_MAX_BYTES / sizeof(double)], ws[HWY_MAX_BYTES / sizeof(double)];
-        hn::Store(inv_z, d, iz), hn::Store(w1, d, a1), hn::Store(w2, d, a2), hn::Store(wsum, d, ws);
-        alignas(64) std::uint8_t bits[8] = {};
-        hn::StoreMaskBits(d, in, bits);
-        for (size_t k = 0; k < N; ++k) {
-          if (!((bits[k / 8] >> (k % 8)) & 1)) continue;
-          const int x = i + int(k);
-          best_row[x] = iz[k];
+            a2[HWY_MAX_BYTES / sizeof(double)];
+        hn::Store(w1 * norm, d, a1), hn::Store(w2 * norm, d, a2);
+        if (job.want_t) hn::Store(inv_z, d, iz);
+        static_assert(HWY_MAX_BYTES / sizeof(double) <= 8, "one byte of mask bits");
+        alignas(8) std::uint8_t bytes[8] = {};
+        hn::StoreMaskBits(d, in, bytes);
+        for (unsigned bits = bytes[0]; bits != 0; bits &= bits - 1) {  // at most 8 lanes of double
+          const int k = __builtin_ctz(bits);
+          const int x = i + k;
           Hit& h = out_row[x];
           h.mesh = m, h.triangle = t;
-          const double norm = 1.0 / ws[k];
-          h.b1 = a1[k] * norm, h.b2 = a2[k] * norm;
+          h.b1 = a1[k], h.b2 = a2[k];
           if (job.want_t) {
             const double sx = (2.0 * (x + ox) / W - 1.0) * cam.tan_half_fov * cam.aspect;
             const double sy = (1.0 - 2.0 * py / H) * cam.tan_half_fov;
