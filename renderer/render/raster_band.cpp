@@ -28,6 +28,7 @@ void RasterBandImpl(const RasterBand& job) {
   // accepts; the 1e-7 px slack covers the rounding of minx - ox.
   constexpr double kSlack = 1e-7;
   const VD zero = hn::Zero(d);
+  const hn::RebindToUnsigned<decltype(d)> du;
 
   for (std::uint64_t key : *job.bin) {
     const std::uint32_t m = std::uint32_t(key >> 32), t = std::uint32_t(key);
@@ -60,6 +61,7 @@ void RasterBandImpl(const RasterBand& job) {
       lx[k] = lo.x, ly[k] = lo.y, ex[k] = hi.x - lo.x, ey[k] = hi.y - lo.y;
       sign[k] = forward ? s : -s;
     }
+    const auto key_v = hn::Set(du, key);
     const VD lx0 = hn::Set(d, lx[0]), lx1 = hn::Set(d, lx[1]), lx2 = hn::Set(d, lx[2]);
     const VD ey0 = hn::Set(d, ey[0]), ey1 = hn::Set(d, ey[1]), ey2 = hn::Set(d, ey[2]);
     const VD sg0 = hn::Set(d, sign[0]), sg1 = hn::Set(d, sign[1]), sg2 = hn::Set(d, sign[2]);
@@ -70,8 +72,7 @@ void RasterBandImpl(const RasterBand& job) {
       const double py = j + oy;
       const VD r0 = hn::Set(d, ex[0] * (py - ly[0])), r1 = hn::Set(d, ex[1] * (py - ly[1])),
                r2 = hn::Set(d, ex[2] * (py - ly[2]));
-      double* best_row = job.best + size_t(j - row0) * W;
-      Hit* out_row = job.out + size_t(j - row0) * W;
+      const double* best_row = job.best + size_t(j - row0) * W;
       for (int i = i0; i <= i1; i += int(N)) {
         const VD px = hn::Iota(d, double(i)) + hn::Set(d, ox);  // i + ox, exactly
         const VD e0 = sg0 * (r0 - ey0 * (px - lx0));
@@ -87,27 +88,26 @@ void RasterBandImpl(const RasterBand& job) {
         in = hn::And(in, inv_z > hn::LoadU(d, best_row + i));
         if (hn::AllFalse(d, in)) continue;
         // The hit's barycentrics, b_k = w_k (1 / wsum), for every lane at
-        // once (the same two double roundings as one sample at a time); the
-        // lanes inside then written one by one, visiting only their bits.
+        // once (the same two double roundings as one sample at a time),
+        // written with 1/z and the triangle's key where the sample is inside
+        // and nearer.
         const VD norm = hn::Set(d, 1.0) / wsum;
-        hn::BlendedStore(inv_z, in, d, best_row + i);
-        alignas(64) double iz[HWY_MAX_BYTES / sizeof(double)], a1[HWY_MAX_BYTES / sizeof(double)],
-            a2[HWY_MAX_BYTES / sizeof(double)];
-        hn::Store(w1 * norm, d, a1), hn::Store(w2 * norm, d, a2);
-        if (job.want_t) hn::Store(inv_z, d, iz);
-        static_assert(HWY_MAX_BYTES / sizeof(double) <= 8, "one byte of mask bits");
-        alignas(8) std::uint8_t bytes[8] = {};
-        hn::StoreMaskBits(d, in, bytes);
-        for (unsigned bits = bytes[0]; bits != 0; bits &= bits - 1) {  // at most 8 lanes of double
-          const int k = __builtin_ctz(bits);
-          const int x = i + k;
-          Hit& h = out_row[x];
-          h.mesh = m, h.triangle = t;
-          h.b1 = a1[k], h.b2 = a2[k];
-          if (job.want_t) {
-            const double sx = (2.0 * (x + ox) / W - 1.0) * cam.tan_half_fov * cam.aspect;
+        const size_t at = size_t(j - row0) * W + size_t(i);
+        hn::BlendedStore(inv_z, in, d, job.best + at);
+        hn::BlendedStore(w1 * norm, in, d, job.b1 + at);
+        hn::BlendedStore(w2 * norm, in, d, job.b2 + at);
+        hn::BlendedStore(key_v, hn::RebindMask(du, in), du, job.key + at);
+        if (job.t) {
+          alignas(64) double iz[HWY_MAX_BYTES / sizeof(double)];
+          hn::Store(inv_z, d, iz);
+          static_assert(HWY_MAX_BYTES / sizeof(double) <= 8, "one byte of mask bits");
+          alignas(8) std::uint8_t bytes[8] = {};
+          hn::StoreMaskBits(d, in, bytes);
+          for (unsigned bits = bytes[0]; bits != 0; bits &= bits - 1) {
+            const int k = __builtin_ctz(bits);
+            const double sx = (2.0 * (i + k + ox) / W - 1.0) * cam.tan_half_fov * cam.aspect;
             const double sy = (1.0 - 2.0 * py / H) * cam.tan_half_fov;
-            h.t = glm::length(cam.forward + sx * cam.right + sy * cam.up) / iz[k];
+            job.t[at + size_t(k)] = glm::length(cam.forward + sx * cam.right + sy * cam.up) / iz[k];
           }
         }
       }

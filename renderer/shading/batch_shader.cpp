@@ -168,14 +168,17 @@ void ShadeBatchImpl(const BatchShading& s, const BatchMesh& m, size_t count, con
   const DF d;
   const DI di;
   const size_t N = hn::Lanes(d);
-  const std::int32_t* tri_i = reinterpret_cast<const std::int32_t*>(&m.triangles[0].x);
   const VF one = hn::Set(d, 1.0f), zero = hn::Zero(d);
   for (size_t k = 0; k < count; k += N) {
     // The hit: its triangle's vertices and the barycentrics.
-    const VI t3 = hn::BitCast(di, hn::LoadU(DU(), tri + k)) * hn::Set(di, 3);
-    const VI i0 = hn::GatherIndex(di, tri_i, t3);
-    const VI i1 = hn::GatherIndex(di, tri_i + 1, t3);
-    const VI i2 = hn::GatherIndex(di, tri_i + 2, t3);
+    // The vertex indices by scalar loads: a gather here would put its
+    // latency in front of every vertex gather below.
+    alignas(64) std::int32_t idx[3][kMaxLanes];
+    for (size_t q = 0; q < N; ++q) {
+      const glm::u32vec3& t = m.triangles[tri[k + q]];
+      idx[0][q] = std::int32_t(t.x), idx[1][q] = std::int32_t(t.y), idx[2][q] = std::int32_t(t.z);
+    }
+    const VI i0 = hn::Load(di, idx[0]), i1 = hn::Load(di, idx[1]), i2 = hn::Load(di, idx[2]);
     const VF b1 = hn::LoadU(d, b1p + k), b2 = hn::LoadU(d, b2p + k);
     const VF b0 = (one - b1) - b2;
     // Phong mode: p, normal (renormalised; 0 stays 0), uv, V.
