@@ -28,7 +28,7 @@ Rasteriser::Rasteriser(const std::vector<TriangleMesh>& meshes, const CameraRays
   const double sx = cam.tan_half_fov * cam.aspect, sy = cam.tan_half_fov;
   const double hw = 0.5 * cam.width, hh = 0.5 * cam.height;
   // Jobs of about kChunk vertices or triangles: (mesh, first, last).
-  constexpr size_t kChunk = 1 << 16;
+  constexpr size_t kChunk = 1 << 13;
   struct Range {
     size_t mesh, begin, end;
   };
