@@ -44,10 +44,29 @@ HWY_INLINE VF clamp0(DF d, VF x) { return hn::IfThenElseZero(x > hn::Zero(d), x)
 HWY_INLINE VF gather3(DF d, const float* base, VI idx3, int c) {
   return hn::GatherIndex(d, base + c, idx3);
 }
-// The three floats at offset `at` of the vertices at `row` (= index x 8).
-HWY_INLINE V3 gatherV3(DF d, const float* vertices, VI row, int at) {
-  return {hn::GatherIndex(d, vertices + at, row), hn::GatherIndex(d, vertices + at + 1, row),
-          hn::GatherIndex(d, vertices + at + 2, row)};
+// One vertex record (kBatchVertexFloats floats: p, n, u, v) of every lane.
+struct VertexV {
+  V3 p, n;
+  VF u, v;
+};
+// The records of the vertices `index`, by 64-bit gathers of float pairs
+// (p.x p.y, p.z n.x, n.y n.z, u v): half the elements of gathering each
+// float alone, split into floats again by ConcatEven/ConcatOdd (little
+// endian: a pair's first float is its even 32-bit lane).
+HWY_INLINE VertexV gatherVertex(DF d, const float* vertices, VI index) {
+  const hn::Half<DI> dh;
+  const hn::Rebind<std::int64_t, decltype(dh)> d64;  // half as many lanes, each a pair
+  static_assert(kBatchVertexFloats == 8, "a record is 4 pairs");
+  const VI pairs = hn::ShiftLeft<2>(index);  // the record's first pair
+  const auto lo = hn::PromoteTo(d64, hn::LowerHalf(dh, pairs)), hi = hn::PromoteTo(d64, hn::UpperHalf(dh, pairs));
+  const std::int64_t* base = reinterpret_cast<const std::int64_t*>(vertices);
+  VF even[4], odd[4];
+  for (int q = 0; q < 4; ++q) {
+    const VF flo = hn::BitCast(d, hn::GatherIndex(d64, base + q, lo));
+    const VF fhi = hn::BitCast(d, hn::GatherIndex(d64, base + q, hi));
+    even[q] = hn::ConcatEven(d, fhi, flo), odd[q] = hn::ConcatOdd(d, fhi, flo);
+  }
+  return {{even[0], odd[0], even[1]}, {odd[1], even[2], odd[2]}, even[3], odd[3]};
 }
 
 // Texture::texel for texel index `at` (y * width + x).
@@ -182,13 +201,10 @@ void ShadeBatchImpl(const BatchShading& s, const BatchMesh& m, size_t count, con
     const VF b1 = hn::LoadU(d, b1p + k), b2 = hn::LoadU(d, b2p + k);
     const VF b0 = (one - b1) - b2;
     // Phong mode: p, normal (renormalised; 0 stays 0), uv, V.
-    const float* vx = m.vertices.data();
-    const VI stride = hn::Set(di, kBatchVertexFloats);
-    const VI r0 = i0 * stride, r1 = i1 * stride, r2 = i2 * stride;
-    const V3 p = add(add(mul(b0, gatherV3(d, vx, r0, 0)), mul(b1, gatherV3(d, vx, r1, 0))),
-                     mul(b2, gatherV3(d, vx, r2, 0)));
-    V3 n = add(add(mul(b0, gatherV3(d, vx, r0, 3)), mul(b1, gatherV3(d, vx, r1, 3))),
-               mul(b2, gatherV3(d, vx, r2, 3)));
+    const VertexV A = gatherVertex(d, m.vertices.data(), i0), B = gatherVertex(d, m.vertices.data(), i1),
+                  C = gatherVertex(d, m.vertices.data(), i2);
+    const V3 p = add(add(mul(b0, A.p), mul(b1, B.p)), mul(b2, C.p));
+    V3 n = add(add(mul(b0, A.n), mul(b1, B.n)), mul(b2, C.n));
     const VF len = hn::Sqrt(dot(n, n));
     const MF has_len = len > zero;
     n = {hn::IfThenElseZero(has_len, n.x / len), hn::IfThenElseZero(has_len, n.y / len),
@@ -198,10 +214,7 @@ void ShadeBatchImpl(const BatchShading& s, const BatchMesh& m, size_t count, con
     const V3 v = mul(to_eye, V3{inv, inv, inv});
     V3 c;
     if (s.texture) {
-      const float* uv = vx + 6;
-      const VF u0 = hn::GatherIndex(d, uv, r0), v0 = hn::GatherIndex(d, uv + 1, r0);
-      const VF u1 = hn::GatherIndex(d, uv, r1), v1 = hn::GatherIndex(d, uv + 1, r1);
-      const VF u2 = hn::GatherIndex(d, uv, r2), v2 = hn::GatherIndex(d, uv + 1, r2);
+      const VF u0 = A.u, v0 = A.v, u1 = B.u, v1 = B.v, u2 = C.u, v2 = C.v;
       const VF u = ((u0 - hn::Floor(u0)) + b1 * (u1 - u0)) + b2 * (u2 - u0);
       const VF vv = ((v0 - hn::Floor(v0)) + b1 * (v1 - v0)) + b2 * (v2 - v0);
       c = lookup(d, *s.texture, s.filter, u, vv);
