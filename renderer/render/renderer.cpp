@@ -586,14 +586,18 @@ struct RasterBand {
     Rasteriser::BandHits band_hits;  // with it
     std::vector<PixelSums<float>> sums;
     BatchBuffers bb;
-    Buffers(int W, bool kernel)
-        : hits(kernel ? 0 : size_t(kBand) * W), sums(size_t(kBand) * W), bb(kernel ? size_t(kBand) * W : 0) {}
+    // sums: only for samples() (oneSample writes the pixels directly; its
+    // frame would otherwise spend about a tenth of its time filling them).
+    Buffers(int W, bool kernel, bool sums)
+        : hits(kernel ? 0 : size_t(kBand) * W), sums(sums ? size_t(kBand) * W : 0),
+          bb(kernel ? size_t(kBand) * W : 0) {}
   };
 
   // Band b's pixels.
+  bool oneSamplePerPixel() const { return n == 1 && !acc.diag; }
   void render(int b, Buffers& buf) const {
     const int row0 = b * kBand, rows = std::min(kBand, acc.img.height - row0);
-    if (n == 1 && !acc.diag)
+    if (oneSamplePerPixel())
       oneSample(b, row0, rows, buf);
     else
       samples(b, row0, rows, buf);
@@ -991,7 +995,7 @@ void PreparedScene::Impl::renderRasterised(const Shading<float>& sh, const Rende
   const RasterBand band{raster, acc, kernel, batch_meshes, cam, n};
   std::atomic<int> next_band{0}, bands_done{0};
   auto worker = [&]() {
-    RasterBand::Buffers buf(img.width, kernel != nullptr);
+    RasterBand::Buffers buf(img.width, kernel != nullptr, !band.oneSamplePerPixel());
     for (int b = next_band++; b < raster.bands(); b = next_band++) {
       band.render(b, buf);
       progress.report(++bands_done, raster.bands());
