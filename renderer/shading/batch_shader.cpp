@@ -51,20 +51,24 @@ struct VertexV {
 };
 // The records of the vertices `index`, by 64-bit gathers of float pairs
 // (p.x p.y, p.z n.x, n.y n.z, u v): half the elements of gathering each
-// float alone, split into floats again by ConcatEven/ConcatOdd (little
-// endian: a pair's first float is its even 32-bit lane).
+// float alone. The lower and the upper lanes' pairs are gathered apart (a
+// vector holds half as many 64-bit lanes) and split into floats again by
+// ConcatEven/ConcatOdd (little endian: a pair's first float is its even
+// 32-bit lane). Byte offsets in 64 bits (no overflow for a large mesh),
+// by GatherOffset (it copies bytes where it is emulated: no aliasing).
 HWY_INLINE VertexV gatherVertex(DF d, const float* vertices, VI index) {
+  static_assert(kBatchVertexFloats == 8, "a record is 4 pairs, 32 bytes");
   const hn::Half<DI> dh;
-  const hn::Rebind<std::int64_t, decltype(dh)> d64;  // half as many lanes, each a pair
-  static_assert(kBatchVertexFloats == 8, "a record is 4 pairs");
-  const VI pairs = hn::ShiftLeft<2>(index);  // the record's first pair
-  const auto lo = hn::PromoteTo(d64, hn::LowerHalf(dh, pairs)), hi = hn::PromoteTo(d64, hn::UpperHalf(dh, pairs));
-  const std::int64_t* base = reinterpret_cast<const std::int64_t*>(vertices);
+  const hn::Rebind<std::int64_t, decltype(dh)> d64;
+  const std::int64_t* words = reinterpret_cast<const std::int64_t*>(vertices);
+  const auto lo = hn::ShiftLeft<5>(hn::PromoteTo(d64, hn::LowerHalf(dh, index)));
+  const auto hi = hn::ShiftLeft<5>(hn::PromoteTo(d64, hn::UpperHalf(dh, index)));
   VF even[4], odd[4];
   for (int q = 0; q < 4; ++q) {
-    const VF flo = hn::BitCast(d, hn::GatherIndex(d64, base + q, lo));
-    const VF fhi = hn::BitCast(d, hn::GatherIndex(d64, base + q, hi));
-    even[q] = hn::ConcatEven(d, fhi, flo), odd[q] = hn::ConcatOdd(d, fhi, flo);
+    const auto at = hn::Set(d64, std::int64_t(8 * q));
+    const VF wlo = hn::BitCast(d, hn::GatherOffset(d64, words, lo + at));
+    const VF whi = hn::BitCast(d, hn::GatherOffset(d64, words, hi + at));
+    even[q] = hn::ConcatEven(d, whi, wlo), odd[q] = hn::ConcatOdd(d, whi, wlo);
   }
   return {{even[0], odd[0], even[1]}, {odd[1], even[2], odd[2]}, even[3], odd[3]};
 }
