@@ -95,7 +95,7 @@ Rasteriser::Rasteriser(const std::vector<TriangleMesh>& meshes, const CameraRays
 void Rasteriser::visibility(int band, double ox, double oy, bool want_t, BandHits& out) const {
   const int W = cam_->width, H = cam_->height;
   const int row0 = band * band_rows_, row1 = std::min(H, row0 + band_rows_);
-  const size_t n = size_t(row1 - row0) * W + kRasterPad;
+  const size_t n = size_t(row1 - row0 + 1) * W + kRasterPad;  // raster_band.h
   out.best.assign(n, 0.0);  // only best is read before it is written
   for (auto* v : {&out.b1, &out.b2}) v->resize(n);
   out.key.resize(n);
