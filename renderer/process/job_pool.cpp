@@ -32,8 +32,11 @@ void runJobPool(size_t count, int workers, const std::function<void(size_t)>& jo
     }
   };
   const size_t threads = std::clamp<size_t>(size_t(std::max(1, workers)), 1, std::max<size_t>(1, count));
+  // This thread is one of them: a frame's short passes (a few ms on two
+  // cores) would otherwise pay for starting a thread it then waits on.
   std::vector<std::thread> pool;
-  for (size_t w = 0; w < threads; ++w) pool.emplace_back(worker);
+  for (size_t w = 1; w < threads; ++w) pool.emplace_back(worker);
+  worker();
   for (auto& t : pool) t.join();
   if (first_error) std::rethrow_exception(first_error);
 }

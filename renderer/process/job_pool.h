@@ -1,8 +1,8 @@
 // A pool of worker threads over a list of independent jobs.
 //
 // runJobPool(count, workers, job) calls job(i) once for every i in
-// [0, count), on min(workers, count) threads (at least one; this thread
-// waits), each thread taking the next index from a shared counter, so the
+// [0, count), on min(workers, count) threads (at least one; this thread is
+// one of them), each thread taking the next index from a shared counter, so the
 // jobs start in index order and a long job does not hold up the others.
 // It returns when every job has returned. An exception never leaves a
 // worker thread (that would be std::terminate): the first one thrown is

@@ -28,7 +28,7 @@ Rasteriser::Rasteriser(const std::vector<TriangleMesh>& meshes, const CameraRays
   const double sx = cam.tan_half_fov * cam.aspect, sy = cam.tan_half_fov;
   const double hw = 0.5 * cam.width, hh = 0.5 * cam.height;
   // Jobs of about kChunk vertices or triangles: (mesh, first, last).
-  constexpr size_t kChunk = 1 << 16;
+  constexpr size_t kChunk = 1 << 13;
   struct Range {
     size_t mesh, begin, end;
   };
@@ -92,14 +92,31 @@ Rasteriser::Rasteriser(const std::vector<TriangleMesh>& meshes, const CameraRays
   });
 }
 
-void Rasteriser::visibility(int band, double ox, double oy, bool want_t, std::vector<Hit>& out) const {
+void Rasteriser::visibility(int band, double ox, double oy, bool want_t, BandHits& out) const {
   const int W = cam_->width, H = cam_->height;
   const int row0 = band * band_rows_, row1 = std::min(H, row0 + band_rows_);
-  const size_t n = size_t(row1 - row0) * W;
-  thread_local std::vector<double> best;  // largest 1/z so far per sample; 0 = nothing
-  best.assign(n + kRasterPad, 0.0);
-  rasterBand({meshes_, &projected_, &bins_[band], cam_, row0, row1, ox, oy, want_t, out.data(), best.data()});
-  for (size_t k = 0; k < n; ++k) out[k].hit = best[k] > 0.0;
+  const size_t n = size_t(row1 - row0 + 1) * W + kRasterPad;  // raster_band.h
+  out.best.assign(n, 0.0);  // only best is read before it is written
+  for (auto* v : {&out.b1, &out.b2}) v->resize(n);
+  out.key.resize(n);
+  out.t.resize(want_t ? n : 0);
+  rasterBand({meshes_, &projected_, &bins_[band], cam_, row0, row1, ox, oy, out.best.data(), out.key.data(),
+              out.b1.data(), out.b2.data(), want_t ? out.t.data() : nullptr});
+}
+
+void Rasteriser::visibility(int band, double ox, double oy, bool want_t, std::vector<Hit>& out) const {
+  thread_local BandHits soa;
+  visibility(band, ox, oy, want_t, soa);
+  const int W = cam_->width, H = cam_->height;
+  const int row0 = band * band_rows_, row1 = std::min(H, row0 + band_rows_);
+  for (size_t k = 0; k < size_t(row1 - row0) * W; ++k) {
+    Hit& h = out[k];
+    h.hit = soa.hit(k);
+    if (!h.hit) continue;
+    h.mesh = std::uint32_t(soa.key[k] >> 32), h.triangle = std::uint32_t(soa.key[k]);
+    h.b1 = soa.b1[k], h.b2 = soa.b2[k];
+    if (want_t) h.t = soa.t[k];
+  }
 }
 
 }  // namespace xval

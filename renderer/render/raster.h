@@ -64,9 +64,20 @@ class Rasteriser {
   const std::vector<std::uint64_t>& bin(int band) const { return bins_[band]; }
   size_t culledTriangles() const { return culled_; }
 
+  // The first hits of a band's samples, one array per field (what the
+  // raster writes, render/raster_band.h): sample k is hit where best[k] > 0,
+  // by triangle key[k] = (mesh << 32) | triangle at b1[k], b2[k], ray length
+  // t[k] (when asked for). Sized for band_rows rows by visibility.
+  struct BandHits {
+    std::vector<double> best, b1, b2, t;
+    std::vector<std::uint64_t> key;
+    bool hit(size_t k) const { return best[k] > 0.0; }
+  };
+
   // The first hit of every sample (i + ox, j + oy) of band b's rows (ox, oy
-  // in [0, 1): the sample's offset inside its pixel), row-major, W per row;
-  // out.size() >= band_rows * W. No hit: Hit::hit = false.
+  // in [0, 1): the sample's offset inside its pixel), row-major, W per row.
+  void visibility(int band, double ox, double oy, bool want_t, BandHits& out) const;
+  // The same as Hits: out.size() >= band_rows * W. No hit: Hit::hit = false.
   void visibility(int band, double ox, double oy, bool want_t, std::vector<Hit>& out) const;
 
   struct Vertex {

@@ -28,6 +28,33 @@ void RasterBandImpl(const RasterBand& job) {
   // accepts; the 1e-7 px slack covers the rounding of minx - ox.
   constexpr double kSlack = 1e-7;
   const VD zero = hn::Zero(d);
+  const hn::RebindToUnsigned<decltype(d)> du;
+  // A vector covers C columns of kRows rows: with 8 lanes 4 x 2, as the
+  // bins' triangles are a few pixels wide (a row of 8 would leave most
+  // lanes outside); with fewer lanes one row. Lane q's sample is at
+  // column i + q % C, row j + q / C.
+  constexpr size_t kRows = hn::MaxLanes(d) >= 8 ? 2 : 1;
+  const size_t C = N / kRows;
+  alignas(64) double cols[hn::MaxLanes(d)], rows[hn::MaxLanes(d)];
+  for (size_t q = 0; q < N; ++q) cols[q] = double(q % C), rows[q] = double(q / C);
+  const VD lane_col = hn::Load(d, cols), lane_row = hn::Load(d, rows);
+  // A block's lanes in memory: one row, or two rows W apart (each half of
+  // the vector stored under its half of the mask).
+  const hn::Half<decltype(d)> dh;
+  auto load = [&](const double* p) {
+    if constexpr (kRows == 1) return hn::LoadU(d, p);
+    else return hn::Combine(d, hn::LoadU(dh, p + W), hn::LoadU(dh, p));
+  };
+  auto store = [&](auto dv, auto v, auto mask, auto* p) {
+    if constexpr (kRows == 1) {
+      hn::BlendedStore(v, mask, dv, p);
+    } else {
+      const hn::Half<decltype(dv)> half;
+      const auto m = hn::VecFromMask(dv, mask);
+      hn::BlendedStore(hn::LowerHalf(half, v), hn::MaskFromVec(hn::LowerHalf(half, m)), half, p);
+      hn::BlendedStore(hn::UpperHalf(half, v), hn::MaskFromVec(hn::UpperHalf(half, m)), half, p + W);
+    }
+  };
 
   for (std::uint64_t key : *job.bin) {
     const std::uint32_t m = std::uint32_t(key >> 32), t = std::uint32_t(key);
@@ -60,49 +87,59 @@ void RasterBandImpl(const RasterBand& job) {
       lx[k] = lo.x, ly[k] = lo.y, ex[k] = hi.x - lo.x, ey[k] = hi.y - lo.y;
       sign[k] = forward ? s : -s;
     }
+    const auto key_v = hn::Set(du, key);
     const VD lx0 = hn::Set(d, lx[0]), lx1 = hn::Set(d, lx[1]), lx2 = hn::Set(d, lx[2]);
     const VD ey0 = hn::Set(d, ey[0]), ey1 = hn::Set(d, ey[1]), ey2 = hn::Set(d, ey[2]);
     const VD sg0 = hn::Set(d, sign[0]), sg1 = hn::Set(d, sign[1]), sg2 = hn::Set(d, sign[2]);
     const VD iz0 = hn::Set(d, v[0].inv_z), iz1 = hn::Set(d, v[1].inv_z), iz2 = hn::Set(d, v[2].inv_z);
     // inside_k: e_k > 0, or e_k >= 0 where sign_k > 0 (the tie rule).
     auto inside = [&](VD e, double sg) { return sg > 0.0 ? e >= zero : e > zero; };
-    for (int j = j0; j <= j1; ++j) {
-      const double py = j + oy;
-      const VD r0 = hn::Set(d, ex[0] * (py - ly[0])), r1 = hn::Set(d, ex[1] * (py - ly[1])),
-               r2 = hn::Set(d, ex[2] * (py - ly[2]));
-      double* best_row = job.best + size_t(j - row0) * W;
-      Hit* out_row = job.out + size_t(j - row0) * W;
-      for (int i = i0; i <= i1; i += int(N)) {
-        const VD px = hn::Iota(d, double(i)) + hn::Set(d, ox);  // i + ox, exactly
+    for (int j = j0; j <= j1; j += kRows) {
+      // The block's samples: lane q at column i + q % C, row j + q / C.
+      const VD row = hn::Set(d, double(j)) + lane_row;  // whole numbers, exact
+      const VD py = row + hn::Set(d, oy);               // j + oy per lane, as one sample's
+      const VD r0 = hn::Set(d, ex[0]) * (py - hn::Set(d, ly[0]));
+      const VD r1 = hn::Set(d, ex[1]) * (py - hn::Set(d, ly[1]));
+      const VD r2 = hn::Set(d, ex[2]) * (py - hn::Set(d, ly[2]));
+      const auto rows_in = row <= hn::Set(d, double(j1));
+      const size_t row_at = size_t(j - row0) * W;
+      for (int i = i0; i <= i1; i += int(C)) {
+        const VD col = hn::Set(d, double(i)) + lane_col;
+        const VD px = col + hn::Set(d, ox);  // i + ox, exactly
         const VD e0 = sg0 * (r0 - ey0 * (px - lx0));
         const VD e1 = sg1 * (r1 - ey1 * (px - lx1));
         const VD e2 = sg2 * (r2 - ey2 * (px - lx2));
-        auto in = hn::And(hn::FirstN(d, size_t(i1 - i + 1)),
+        auto in = hn::And(hn::And(rows_in, col <= hn::Set(d, double(i1))),
                           hn::And(inside(e0, sign[0]), hn::And(inside(e1, sign[1]), inside(e2, sign[2]))));
         if (hn::AllFalse(d, in)) continue;
         const VD sum = (e0 + e1) + e2;
         const VD w0 = e0 * iz0, w1 = e1 * iz1, w2 = e2 * iz2;
         const VD wsum = (w0 + w1) + w2;
         const VD inv_z = wsum / sum;
-        in = hn::And(in, inv_z > hn::LoadU(d, best_row + i));
+        const size_t at = row_at + size_t(i);
+        in = hn::And(in, inv_z > load(job.best + at));
         if (hn::AllFalse(d, in)) continue;
-        alignas(64) double iz[HWY_MAX_BYTES / sizeof(double)], a1[HWY_MAX_BYTES / sizeof(double)],
-            a2[HWY_MAX_BYTES / sizeof(double)], ws[HWY_MAX_BYTES / sizeof(double)];
-        hn::Store(inv_z, d, iz), hn::Store(w1, d, a1), hn::Store(w2, d, a2), hn::Store(wsum, d, ws);
-        alignas(64) std::uint8_t bits[8] = {};
-        hn::StoreMaskBits(d, in, bits);
-        for (size_t k = 0; k < N; ++k) {
-          if (!((bits[k / 8] >> (k % 8)) & 1)) continue;
-          const int x = i + int(k);
-          best_row[x] = iz[k];
-          Hit& h = out_row[x];
-          h.mesh = m, h.triangle = t;
-          const double norm = 1.0 / ws[k];
-          h.b1 = a1[k] * norm, h.b2 = a2[k] * norm;
-          if (job.want_t) {
+        // The hit's barycentrics, b_k = w_k (1 / wsum), for every lane at
+        // once (the same two double roundings as one sample at a time),
+        // written with 1/z and the triangle's key where the sample is inside
+        // and nearer.
+        const VD norm = hn::Set(d, 1.0) / wsum;
+        store(d, inv_z, in, job.best + at);
+        store(d, w1 * norm, in, job.b1 + at);
+        store(d, w2 * norm, in, job.b2 + at);
+        store(du, key_v, hn::RebindMask(du, in), job.key + at);
+        if (job.t) {
+          alignas(64) double iz[HWY_MAX_BYTES / sizeof(double)];
+          hn::Store(inv_z, d, iz);
+          static_assert(HWY_MAX_BYTES / sizeof(double) <= 8, "one byte of mask bits");
+          alignas(8) std::uint8_t bytes[8] = {};
+          hn::StoreMaskBits(d, in, bytes);
+          for (unsigned bits = bytes[0]; bits != 0; bits &= bits - 1) {
+            const int q = __builtin_ctz(bits), x = i + q % int(C), y = j + q / int(C);
             const double sx = (2.0 * (x + ox) / W - 1.0) * cam.tan_half_fov * cam.aspect;
-            const double sy = (1.0 - 2.0 * py / H) * cam.tan_half_fov;
-            h.t = glm::length(cam.forward + sx * cam.right + sy * cam.up) / iz[k];
+            const double sy = (1.0 - 2.0 * (y + oy) / H) * cam.tan_half_fov;
+            job.t[size_t(y - row0) * W + size_t(x)] =
+                glm::length(cam.forward + sx * cam.right + sy * cam.up) / iz[q];
           }
         }
       }

@@ -23,13 +23,18 @@ struct RasterBand {
   const CameraRays* cam;
   int row0, row1;  // rows [row0, row1)
   double ox, oy;   // the sample's offset inside its pixel
-  bool want_t;
-  Hit* out;      // (row1 - row0) * width, row-major
-  double* best;  // as many, plus kRasterPad: largest 1/z so far, 0 = none
+    // Per sample of the band, row-major, (row1 - row0 + 1) * width + kRasterPad
+  // each (whole SIMD vectors of two rows are read at the band's end): the
+  // largest 1/z so far (0 = none; in: all 0), and where it is > 0 the hit's
+  // (mesh << 32) | triangle, b1, b2 and, when t is not null, its ray length.
+  double* best;
+  std::uint64_t* key;
+  double *b1, *b2, *t;
 };
 
-// Extra elements `best` must have past the band (whole SIMD vectors are
-// read at the end of a row).
+// Extra elements each per-sample array must have past the band's rows and
+// one more row (whole SIMD vectors of two rows are read at the end of a
+// row and of the band).
 inline constexpr size_t kRasterPad = 16;
 
 void rasterBand(const RasterBand& job);

@@ -455,19 +455,19 @@ struct BatchBuffers {
         g(n + kBatchPad), b(n + kBatchPad) {}
 };
 
-// Shades hits[0, count) with the kernel, one mesh at a time, and hands
-// each hit's saturated colour to emit(sample index, r, g, b): the same
-// numbers as saturate(shadeHit) in float (shading/batch_shader.h).
+// Shades the hit samples [0, count) of a band with the kernel, one mesh at
+// a time, and hands each hit's saturated colour to emit(sample index, r, g,
+// b): the same numbers as saturate(shadeHit) in float (shading/
+// batch_shader.h).
 template <class Emit>
-void shadeBatched(const BatchShading& kernel, const std::vector<BatchMesh>& meshes, const std::vector<Hit>& hits,
-                  size_t count, BatchBuffers& bb, Emit&& emit) {
+void shadeBatched(const BatchShading& kernel, const std::vector<BatchMesh>& meshes,
+                  const Rasteriser::BandHits& hits, size_t count, BatchBuffers& bb, Emit&& emit) {
   for (size_t mi = 0; mi < meshes.size(); ++mi) {
     size_t c = 0;
     for (size_t k = 0; k < count; ++k) {
-      const Hit& h = hits[k];
-      if (!h.hit || h.mesh != mi) continue;
-      bb.at[c] = std::uint32_t(k), bb.tri[c] = h.triangle;
-      bb.b1[c] = float(h.b1), bb.b2[c] = float(h.b2);  // as the scalar path's T(h.b1)
+      if (!hits.hit(k) || (hits.key[k] >> 32) != mi) continue;
+      bb.at[c] = std::uint32_t(k), bb.tri[c] = std::uint32_t(hits.key[k]);
+      bb.b1[c] = float(hits.b1[k]), bb.b2[c] = float(hits.b2[k]);  // as the scalar path's T(h.b1)
       ++c;
     }
     if (c == 0) continue;
@@ -582,17 +582,22 @@ struct RasterBand {
   int n;  // samples per pixel side
 
   struct Buffers {  // per thread
-    std::vector<Hit> hits;
+    std::vector<Hit> hits;           // without the kernel
+    Rasteriser::BandHits band_hits;  // with it
     std::vector<PixelSums<float>> sums;
     BatchBuffers bb;
-    Buffers(int W, bool kernel)
-        : hits(size_t(kBand) * W), sums(size_t(kBand) * W), bb(kernel ? size_t(kBand) * W : 0) {}
+    // sums: only for samples() (oneSample writes the pixels directly; its
+    // frame would otherwise spend about a tenth of its time filling them).
+    Buffers(int W, bool kernel, bool sums)
+        : hits(kernel ? 0 : size_t(kBand) * W), sums(sums ? size_t(kBand) * W : 0),
+          bb(kernel ? size_t(kBand) * W : 0) {}
   };
 
   // Band b's pixels.
+  bool oneSamplePerPixel() const { return n == 1 && !acc.diag; }
   void render(int b, Buffers& buf) const {
     const int row0 = b * kBand, rows = std::min(kBand, acc.img.height - row0);
-    if (n == 1 && !acc.diag)
+    if (oneSamplePerPixel())
       oneSample(b, row0, rows, buf);
     else
       samples(b, row0, rows, buf);
@@ -600,15 +605,16 @@ struct RasterBand {
 
   // One sample at the pixel centre, no diagnostics: straight to the pixels.
   void oneSample(int b, int row0, int rows, Buffers& buf) const {
-    raster.visibility(b, 0.5, 0.5, false, buf.hits);
     float* band = acc.img.pixel(0, row0);
     const size_t count = size_t(rows) * acc.img.width;
     if (!kernel) {
+      raster.visibility(b, 0.5, 0.5, false, buf.hits);
       for (size_t k = 0; k < count; ++k) acc.storeOne(buf.hits[k], band + k * 4);
       return;
     }
+    raster.visibility(b, 0.5, 0.5, false, buf.band_hits);
     std::fill(band, band + count * 4, 0.0f);
-    shadeBatched(*kernel, batch_meshes, buf.hits, count, buf.bb, [&](std::uint32_t at, float r, float g, float bl) {
+    shadeBatched(*kernel, batch_meshes, buf.band_hits, count, buf.bb, [&](std::uint32_t at, float r, float g, float bl) {
       float* px = band + size_t(at) * 4;
       px[0] = r, px[1] = g, px[2] = bl, px[3] = 1.0f;
     });
@@ -622,15 +628,16 @@ struct RasterBand {
     for (int sy = 0; sy < n; ++sy)
       for (int sx = 0; sx < n; ++sx) {
         const double ox = (sx + 0.5) / n, oy = (sy + 0.5) / n;
-        raster.visibility(b, ox, oy, acc.diag, buf.hits);
         if (kernel) {  // no diagnostics: add()'s final_sum += saturate(c) and ++hits
-          shadeBatched(*kernel, batch_meshes, buf.hits, size_t(rows) * W, buf.bb,
+          raster.visibility(b, ox, oy, false, buf.band_hits);
+          shadeBatched(*kernel, batch_meshes, buf.band_hits, size_t(rows) * W, buf.bb,
                        [&](std::uint32_t at, float r, float g, float bl) {
                          buf.sums[at].final_sum += glm::vec3(r, g, bl);
                          ++buf.sums[at].hits;
                        });
           continue;
         }
+        raster.visibility(b, ox, oy, acc.diag, buf.hits);
         for (int r = 0; r < rows; ++r)
           for (int i = 0; i < W; ++i) {
             const Hit& h = buf.hits[size_t(r) * W + i];
@@ -988,7 +995,7 @@ void PreparedScene::Impl::renderRasterised(const Shading<float>& sh, const Rende
   const RasterBand band{raster, acc, kernel, batch_meshes, cam, n};
   std::atomic<int> next_band{0}, bands_done{0};
   auto worker = [&]() {
-    RasterBand::Buffers buf(img.width, kernel != nullptr);
+    RasterBand::Buffers buf(img.width, kernel != nullptr, !band.oneSamplePerPixel());
     for (int b = next_band++; b < raster.bands(); b = next_band++) {
       band.render(b, buf);
       progress.report(++bands_done, raster.bands());

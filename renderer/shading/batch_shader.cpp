@@ -44,10 +44,33 @@ HWY_INLINE VF clamp0(DF d, VF x) { return hn::IfThenElseZero(x > hn::Zero(d), x)
 HWY_INLINE VF gather3(DF d, const float* base, VI idx3, int c) {
   return hn::GatherIndex(d, base + c, idx3);
 }
-// The three floats at offset `at` of the vertices at `row` (= index x 8).
-HWY_INLINE V3 gatherV3(DF d, const float* vertices, VI row, int at) {
-  return {hn::GatherIndex(d, vertices + at, row), hn::GatherIndex(d, vertices + at + 1, row),
-          hn::GatherIndex(d, vertices + at + 2, row)};
+// One vertex record (kBatchVertexFloats floats: p, n, u, v) of every lane.
+struct VertexV {
+  V3 p, n;
+  VF u, v;
+};
+// The records of the vertices `index`, by 64-bit gathers of float pairs
+// (p.x p.y, p.z n.x, n.y n.z, u v): half the elements of gathering each
+// float alone. The lower and the upper lanes' pairs are gathered apart (a
+// vector holds half as many 64-bit lanes) and split into floats again by
+// ConcatEven/ConcatOdd (little endian: a pair's first float is its even
+// 32-bit lane). Byte offsets in 64 bits (no overflow for a large mesh),
+// by GatherOffset (it copies bytes where it is emulated: no aliasing).
+HWY_INLINE VertexV gatherVertex(DF d, const float* vertices, VI index) {
+  static_assert(kBatchVertexFloats == 8, "a record is 4 pairs, 32 bytes");
+  const hn::Half<DI> dh;
+  const hn::Rebind<std::int64_t, decltype(dh)> d64;
+  const std::int64_t* words = reinterpret_cast<const std::int64_t*>(vertices);
+  const auto lo = hn::ShiftLeft<5>(hn::PromoteTo(d64, hn::LowerHalf(dh, index)));
+  const auto hi = hn::ShiftLeft<5>(hn::PromoteTo(d64, hn::UpperHalf(dh, index)));
+  VF even[4], odd[4];
+  for (int q = 0; q < 4; ++q) {
+    const auto at = hn::Set(d64, std::int64_t(8 * q));
+    const VF wlo = hn::BitCast(d, hn::GatherOffset(d64, words, lo + at));
+    const VF whi = hn::BitCast(d, hn::GatherOffset(d64, words, hi + at));
+    even[q] = hn::ConcatEven(d, whi, wlo), odd[q] = hn::ConcatOdd(d, whi, wlo);
+  }
+  return {{even[0], odd[0], even[1]}, {odd[1], even[2], odd[2]}, even[3], odd[3]};
 }
 
 // Texture::texel for texel index `at` (y * width + x).
@@ -168,24 +191,24 @@ void ShadeBatchImpl(const BatchShading& s, const BatchMesh& m, size_t count, con
   const DF d;
   const DI di;
   const size_t N = hn::Lanes(d);
-  const std::int32_t* tri_i = reinterpret_cast<const std::int32_t*>(&m.triangles[0].x);
   const VF one = hn::Set(d, 1.0f), zero = hn::Zero(d);
   for (size_t k = 0; k < count; k += N) {
     // The hit: its triangle's vertices and the barycentrics.
-    const VI t3 = hn::BitCast(di, hn::LoadU(DU(), tri + k)) * hn::Set(di, 3);
-    const VI i0 = hn::GatherIndex(di, tri_i, t3);
-    const VI i1 = hn::GatherIndex(di, tri_i + 1, t3);
-    const VI i2 = hn::GatherIndex(di, tri_i + 2, t3);
+    // The vertex indices by scalar loads: a gather here would put its
+    // latency in front of every vertex gather below.
+    alignas(64) std::int32_t idx[3][kMaxLanes];
+    for (size_t q = 0; q < N; ++q) {
+      const glm::u32vec3& t = m.triangles[tri[k + q]];
+      idx[0][q] = std::int32_t(t.x), idx[1][q] = std::int32_t(t.y), idx[2][q] = std::int32_t(t.z);
+    }
+    const VI i0 = hn::Load(di, idx[0]), i1 = hn::Load(di, idx[1]), i2 = hn::Load(di, idx[2]);
     const VF b1 = hn::LoadU(d, b1p + k), b2 = hn::LoadU(d, b2p + k);
     const VF b0 = (one - b1) - b2;
     // Phong mode: p, normal (renormalised; 0 stays 0), uv, V.
-    const float* vx = m.vertices.data();
-    const VI stride = hn::Set(di, kBatchVertexFloats);
-    const VI r0 = i0 * stride, r1 = i1 * stride, r2 = i2 * stride;
-    const V3 p = add(add(mul(b0, gatherV3(d, vx, r0, 0)), mul(b1, gatherV3(d, vx, r1, 0))),
-                     mul(b2, gatherV3(d, vx, r2, 0)));
-    V3 n = add(add(mul(b0, gatherV3(d, vx, r0, 3)), mul(b1, gatherV3(d, vx, r1, 3))),
-               mul(b2, gatherV3(d, vx, r2, 3)));
+    const VertexV A = gatherVertex(d, m.vertices.data(), i0), B = gatherVertex(d, m.vertices.data(), i1),
+                  C = gatherVertex(d, m.vertices.data(), i2);
+    const V3 p = add(add(mul(b0, A.p), mul(b1, B.p)), mul(b2, C.p));
+    V3 n = add(add(mul(b0, A.n), mul(b1, B.n)), mul(b2, C.n));
     const VF len = hn::Sqrt(dot(n, n));
     const MF has_len = len > zero;
     n = {hn::IfThenElseZero(has_len, n.x / len), hn::IfThenElseZero(has_len, n.y / len),
@@ -195,10 +218,7 @@ void ShadeBatchImpl(const BatchShading& s, const BatchMesh& m, size_t count, con
     const V3 v = mul(to_eye, V3{inv, inv, inv});
     V3 c;
     if (s.texture) {
-      const float* uv = vx + 6;
-      const VF u0 = hn::GatherIndex(d, uv, r0), v0 = hn::GatherIndex(d, uv + 1, r0);
-      const VF u1 = hn::GatherIndex(d, uv, r1), v1 = hn::GatherIndex(d, uv + 1, r1);
-      const VF u2 = hn::GatherIndex(d, uv, r2), v2 = hn::GatherIndex(d, uv + 1, r2);
+      const VF u0 = A.u, v0 = A.v, u1 = B.u, v1 = B.v, u2 = C.u, v2 = C.v;
       const VF u = ((u0 - hn::Floor(u0)) + b1 * (u1 - u0)) + b2 * (u2 - u0);
       const VF vv = ((v0 - hn::Floor(v0)) + b1 * (v1 - v0)) + b2 * (v2 - v0);
       c = lookup(d, *s.texture, s.filter, u, vv);
