@@ -17,8 +17,10 @@
 // (glGenerateTextureMipmap) and is read by texture() through the sampler,
 // LINEAR_MIPMAP_LINEAR, REPEAT, no anisotropy. The meshes are drawn in
 // scene order, one draw per run of meshes of one material, with that
-// material's uniforms and texture. No face culling, no blending, no
-// multisampling.
+// material's uniforms and texture, and a program specialised to its
+// switches (glsl_models.h ShaderVariant: model, variant, texture filter,
+// shading, luma-only mode, the lights' kinds), one per distinct variant.
+// No face culling, no blending, no multisampling.
 //
 // render.spp = n^2: the frame is n W x n H, one fragment on each pixel
 // centre (common/supersample.h), box-filtered as the external renderers'
