@@ -18,6 +18,7 @@
 #include "camera/camera.h"
 #include "common/export_common.h"
 #include "common/supersample.h"
+#include "geometry/front_faces.h"
 #include "geometry/mesh.h"
 #include "geometry/model_textures.h"
 #include "geometry/scene_meshes.h"
@@ -149,6 +150,9 @@ struct Draw {
   // Its uniforms are set in each frame: its program also draws others.
   bool uniforms_per_frame = false;
   GLuint texture = 0;
+  // Back faces culled: every object of the draw passes
+  // objectBackFacesNeverFirstHit (geometry/front_faces.h).
+  bool cull_back_faces = false;
 };
 
 // One set of lights as the shaders read them: the buffer and the ambient.
@@ -233,11 +237,32 @@ GlScene::GlScene(const Scene& input) : impl_(new Impl) {
         if (!faces[mi].empty()) put(v.face_normal, faces[mi][t]);
         vertices.push_back(v);
       });
+  // Draws: the runs of one material slot, split where the meshes' back-face
+  // rule changes (geometry/front_faces.h: a closed, untransformed knot or
+  // sphere seen from outside never shows a back face first, so culling
+  // them only skips fragments that a front face covers).
   std::vector<size_t> draw_slot;
-  for (const DrawRun& run : geometry.runs) {
-    d.draws.push_back(Draw{});
-    d.draws.back().first = run.first, d.draws.back().count = run.count;
-    draw_slot.push_back(run.slot);
+  {
+    std::vector<GLint> mesh_first(sm.meshes.size() + 1, 0);  // each mesh's corners, in walk order
+    for (size_t mi = 0; mi < sm.meshes.size(); ++mi)
+      mesh_first[mi + 1] = mesh_first[mi] + GLint(3 * sm.meshes[mi].triangles.size());
+    size_t mi = 0;
+    for (const DrawRun& run : geometry.runs) {
+      for (; mi < sm.meshes.size() && mesh_first[mi] < run.first + run.count; ++mi) {
+        if (mesh_first[mi + 1] == mesh_first[mi]) continue;  // no triangles
+        const bool cull = objectBackFacesNeverFirstHit(scene.objects[sm.object[mi]], sm.meshes[mi], cam.origin);
+        Draw* last = d.draws.empty() ? nullptr : &d.draws.back();
+        if (last && draw_slot.back() == run.slot && last->cull_back_faces == cull &&
+            last->first + last->count == mesh_first[mi]) {
+          last->count += mesh_first[mi + 1] - mesh_first[mi];
+          continue;
+        }
+        d.draws.push_back(Draw{});
+        d.draws.back().first = mesh_first[mi], d.draws.back().count = mesh_first[mi + 1] - mesh_first[mi];
+        d.draws.back().cull_back_faces = cull;
+        draw_slot.push_back(run.slot);
+      }
+    }
   }
   const double near = geometry.near;
 
@@ -345,7 +370,7 @@ GlScene::GlScene(const Scene& input) : impl_(new Impl) {
   }
   checkGl("setting the uniforms");
 
-  // Fixed state: reversed Z, the whole frame, no culling or blending.
+  // Fixed state: reversed Z, the whole frame, no blending; culling per draw.
   setDrawState(GL_GREATER, d.targets, d.width, d.height, d.vao);
   checkGl("setting the state");
   d.setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -367,6 +392,10 @@ void GlScene::draw() {
     if (dr.uniforms_per_frame) setMaterialUniforms(p, dr, ls);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightsBinding, ls.ssbo);
     if (dr.texture) glBindTextureUnit(kTextureUnit, dr.texture);
+    if (dr.cull_back_faces)
+      glEnable(GL_CULL_FACE);  // GL_BACK of GL_CCW: the mesh's winding normal faces the eye when counter-clockwise
+    else
+      glDisable(GL_CULL_FACE);
     glDrawArrays(GL_TRIANGLES, dr.first, dr.count);
   }
   glFinish();
