@@ -86,12 +86,10 @@ struct PreparedScene {
   std::filesystem::path gltf, out, log;
 };
 
-const char* toolName(BlenderEngine engine) { return engine == BlenderEngine::Eevee ? "eevee" : "blender"; }
-
 // Checks the scene and the paths, exports the glTF into work_dir and names
 // this attempt's image. Throws ExportError / ExternalToolError.
-PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& work_dir, BlenderEngine engine,
-                           const ExportThrough& through) {
+PreparedScene prepareScene(const std::string& renderer, const Scene& scene, const std::filesystem::path& work_dir,
+                           BlenderEngine engine, const ExportThrough& through) {
   PreparedScene p;
   // Checked before anything is written.
   checkBlenderScene(scene, engine);
@@ -111,17 +109,15 @@ PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& work
   p.gltf = work_dir / kGltfFileName;
   // The image's name is this attempt's own: a Blender left from an earlier
   // attempt cannot supply it.
-  const std::string tool = toolName(engine);
-  p.out = abs_work / (tool + "-" + attemptToken() + ".exr");
-  p.log = work_dir / (tool + ".log");
+  p.out = abs_work / (renderer + "-" + attemptToken() + ".exr");
+  p.log = work_dir / (renderer + ".log");
   return p;
 }
 
 // Blender's image of a prepared scene (`pass` empty: the combined image;
 // Cycles' native mode: "DiffDir" or "GlossDir", one direct pass), read
 // back, checked and box-filtered.
-Image readBack(const PreparedScene& p, BlenderMode mode, BlenderEngine engine, const std::string& pass = "") {
-  const std::string tool = toolName(engine);
+Image readBack(const std::string& tool, const PreparedScene& p, BlenderMode mode, const std::string& pass = "") {
   const SubpixelGrid& g = p.grid;
   Image fine;
   try {
@@ -156,14 +152,14 @@ std::vector<std::string> blenderCommand() {
 
 }  // namespace
 
-Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_dir,
+Image renderWithBlender(const std::string& renderer, const Scene& scene, const std::filesystem::path& work_dir,
                         double timeout_seconds, ExternalRenderInfo* info, BlenderMode mode,
                         BlenderEngine engine, const ExportThrough& through) {
   // Native mode: the scene's built-in BSDF, checked before anything is
   // written (throws std::runtime_error with the reason).
   const std::optional<NativeBsdf> native =
       mode == BlenderMode::Native ? std::optional<NativeBsdf>(nativeBsdf(scene)) : std::nullopt;
-  const PreparedScene p = prepareScene(scene, work_dir, engine, through);
+  const PreparedScene p = prepareScene(renderer, scene, work_dir, engine, through);
   std::vector<std::string> argv = blenderCommand();
   for (const std::string& a :
        {std::string("--gltf"), std::filesystem::absolute(p.gltf).string(), std::string("--out"), p.out.string(),
@@ -180,11 +176,11 @@ Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_di
       argv.push_back(a);
   ProcessResult r = runProcess(argv, work_dir, p.log, timeout_seconds);
   if (info) *info = {r.seconds, p.log, renderTimeFromLog(p.log)};
-  requireToolOutput(toolName(engine), p.gltf, r, p.out);
-  if (native && engine == BlenderEngine::Eevee) return scaleNativeCombined(colours.scale, readBack(p, mode, engine));
+  requireToolOutput(renderer, p.gltf, r, p.out);
+  if (native && engine == BlenderEngine::Eevee) return scaleNativeCombined(colours.scale, readBack(renderer, p, mode));
   if (native)
-    return combineNativePasses(*native, readBack(p, mode, engine, "DiffDir"), readBack(p, mode, engine, "GlossDir"));
-  return readBack(p, mode, engine);
+    return combineNativePasses(*native, readBack(renderer, p, mode, "DiffDir"), readBack(renderer, p, mode, "GlossDir"));
+  return readBack(renderer, p, mode);
 }
 
 namespace {
@@ -234,17 +230,18 @@ std::string logTail(const std::filesystem::path& log) {
 
 }  // namespace
 
-std::vector<BlenderBatchResult> renderBlenderBatch(const std::vector<BlenderBatchScene>& scenes,
+std::vector<BlenderBatchResult> renderBlenderBatch(const std::string& renderer,
+                                                   const std::vector<BlenderBatchScene>& scenes,
                                                    double timeout_seconds, BlenderEngine engine,
                                                    const BlenderSceneDone& done) {
   std::vector<BlenderBatchResult> results(scenes.size());
   if (scenes.empty()) return results;
-  const std::string tool = toolName(engine);
+  const std::string& tool = renderer;
   std::vector<std::optional<PreparedScene>> prepared(scenes.size());
   std::vector<size_t> pending;
   for (size_t i = 0; i < scenes.size(); ++i) {
     try {
-      prepared[i] = prepareScene(*scenes[i].scene, scenes[i].work_dir, engine, scenes[i].through);
+      prepared[i] = prepareScene(renderer, *scenes[i].scene, scenes[i].work_dir, engine, scenes[i].through);
       pending.push_back(i);
     } catch (const std::exception& e) {
       results[i].error = e.what();
@@ -282,7 +279,7 @@ std::vector<BlenderBatchResult> renderBlenderBatch(const std::vector<BlenderBatc
         if (!std::filesystem::exists(p.out))
           throw ExternalToolError(tool + " (" + p.gltf.string() + ") finished the scene but wrote no image " +
                                   p.out.string() + logTail(p.log));
-        out.image = readBack(p, BlenderMode::Model, engine);
+        out.image = readBack(renderer, p, BlenderMode::Model);
       } catch (const std::exception& e) {
         out.error = e.what();
       }

@@ -40,7 +40,11 @@ std::filesystem::path blenderScript();
 // may refuse more).
 void checkBlenderScene(const Scene& scene, BlenderEngine engine = BlenderEngine::Cycles);
 
-Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_dir,
+// `renderer` (here and in renderBlenderBatch): the id of the registry entry
+// rendering it (renderers/blender.cpp, eevee.cpp, blender_native.cpp): it
+// labels the errors and names the log (<work_dir>/<renderer>.log) and the
+// image.
+Image renderWithBlender(const std::string& renderer, const Scene& scene, const std::filesystem::path& work_dir,
                         double timeout_seconds, ExternalRenderInfo* info = nullptr,
                         BlenderMode mode = BlenderMode::Model,
                         BlenderEngine engine = BlenderEngine::Cycles,
@@ -49,7 +53,7 @@ Image renderWithBlender(const Scene& scene, const std::filesystem::path& work_di
 // The persistent worker: many scenes (model mode) rendered by one Blender
 // process (render_gltf.py --batch), each from factory settings, so each
 // image is the one a process of its own renders. Each scene's export, log
-// (<work_dir>/blender.log or eevee.log) and image are in its own work_dir;
+// (<work_dir>/<renderer>.log) and image are in its own work_dir;
 // the job list, the worker's results lines and its own log go in the first
 // scene's work_dir. Per scene:
 //   - a scene that fails (export refused, the harness's error, an unusable
@@ -78,7 +82,8 @@ struct BlenderBatchResult {
 };
 using BlenderSceneDone = std::function<void(size_t scene, const BlenderBatchResult&)>;
 inline constexpr double kBatchPollSeconds = 0.05;
-std::vector<BlenderBatchResult> renderBlenderBatch(const std::vector<BlenderBatchScene>& scenes,
+std::vector<BlenderBatchResult> renderBlenderBatch(const std::string& renderer,
+                                                   const std::vector<BlenderBatchScene>& scenes,
                                                    double timeout_seconds, BlenderEngine engine,
                                                    const BlenderSceneDone& done = {});
 

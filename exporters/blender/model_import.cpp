@@ -145,7 +145,7 @@ void checkModelImportScene(const Scene& scene) {
   }
 }
 
-GeometryPasses renderModelImport(const Scene& scene, const std::filesystem::path& work_dir, double timeout_seconds,
+GeometryPasses renderModelImport(const std::string& renderer, const Scene& scene, const std::filesystem::path& work_dir, double timeout_seconds,
                                  ExternalRenderInfo* info) {
   checkModelImportScene(scene);
   const std::filesystem::path script = modelImportScript();
@@ -156,15 +156,15 @@ GeometryPasses renderModelImport(const Scene& scene, const std::filesystem::path
   requireNoBackslash(std::filesystem::absolute(script), "the script");
   // This attempt's own names: nothing an earlier Blender left is read.
   const std::string token = attemptToken();
-  const std::filesystem::path out = abs_work / ("blender-import-" + token + ".exr");
-  const std::filesystem::path job = abs_work / ("blender-import-" + token + ".json");
-  const std::filesystem::path log = abs_work / "blender-import.log";
+  const std::filesystem::path out = abs_work / (renderer + "-" + token + ".exr");
+  const std::filesystem::path job = abs_work / (renderer + "-" + token + ".json");
+  const std::filesystem::path log = abs_work / (renderer + ".log");
   writeFileAtomically(job, jobOf(scene, out).dump(1) + "\n");
   const std::vector<std::string> argv = {"blender", "-b", "--factory-startup", "-noaudio", "-P",
                                          std::filesystem::absolute(script).string(), "--", "--job", job.string()};
   const ProcessResult r = runProcess(argv, work_dir, log, timeout_seconds);
   if (info) *info = {r.seconds, log, -1.0};
-  requireToolOutput("blender-import", job, r, out);
+  requireToolOutput(renderer, job, r, out);
   try {
     return readPasses(out, scene);
   } catch (const std::exception& e) {

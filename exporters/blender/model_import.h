@@ -46,11 +46,13 @@ std::filesystem::path modelImportScript();
 void checkModelImportScene(const Scene& scene);
 
 // Blender's passes of the scene (see above), at the camera's resolution.
-// The job, the log (blender-import.log) and the EXR go in work_dir. Throws
+// `renderer`: the id of the registry entry rendering it
+// (renderers/blender_import.cpp), which labels the errors and names the
+// files: the job, the log (<renderer>.log) and the EXR go in work_dir. Throws
 // ExportError (checkModelImportScene) or ExternalToolError (Blender
 // missing, failing, timing out after timeout_seconds, or writing an
 // unusable image).
-GeometryPasses renderModelImport(const Scene& scene, const std::filesystem::path& work_dir, double timeout_seconds,
+GeometryPasses renderModelImport(const std::string& renderer, const Scene& scene, const std::filesystem::path& work_dir, double timeout_seconds,
                                  ExternalRenderInfo* info = nullptr);
 
 }  // namespace xval

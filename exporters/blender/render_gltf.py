@@ -412,9 +412,12 @@ def cook_torrance_specular(g, k, lt, N, V, NV):
     zero divisor and its Square Root 0 for a negative argument, so the
     gated-off branches stay finite (and are multiplied by the gate's 0)."""
     nl, nv = lt.x, NV
-    H = g.vmath("NORMALIZE", g.vadd(lt.L, V))
+    LV = g.vadd(lt.L, V)
+    H = g.vmath("NORMALIZE", LV)
     nh = g.vmath("DOT_PRODUCT", N, H)
-    vh = g.vmath("DOT_PRODUCT", V, H)
+    # V.H = |L + V| / 2 for unit L and V, as models.h: dot(V, H) cancels to
+    # noise near L = -V.
+    vh = g.mul(0.5, g.vmath("LENGTH", LV))
 
     def sin2(X):  # |N x X|^2, without the cancellation of 1 - (N.X)^2
         c = g.vmath("CROSS_PRODUCT", N, X)

@@ -59,9 +59,17 @@ struct PovExport {
   SubpixelGrid grid;                       // the size POV-Ray renders (n W x n H)
 };
 
+// What the materials are written as: xval's model computed in emission
+// pigments (above; renderer povray), or POV-Ray's own finish (the native
+// tier, povray/pov_native.h; renderer povray-native): there the camera,
+// geometry, textures (a uv_mapping image_map pigment) and .ini are the
+// same, each material is `texture { pigment { C } nativeFinish }` and the
+// lights are light sources with ambient_light; no double_illuminate.
+enum class PovTier { Emission, Native };
+
 // `output_name`: the image POV-Ray is told to write (the render harness
 // names it per attempt, povray/pov_render.h).
 PovExport exportPov(const Scene& scene, const std::filesystem::path& dir,
-                    const std::string& output_name = "scene.png");
+                    const std::string& output_name = "scene.png", PovTier tier = PovTier::Emission);
 
 }  // namespace xval

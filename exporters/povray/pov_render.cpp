@@ -8,9 +8,11 @@
 
 namespace xval {
 
-Image renderWithPovray(const Scene& scene, const std::filesystem::path& work_dir,
-                       double timeout_seconds, ExternalRenderInfo* info, const ExportThrough& through) {
-  exportThrough(through, work_dir, [&](const std::filesystem::path& dir) { exportPov(scene, dir); });
+Image renderWithPovray(const std::string& renderer, const Scene& scene, const std::filesystem::path& work_dir,
+                       double timeout_seconds, ExternalRenderInfo* info, const ExportThrough& through,
+                       PovTier tier) {
+  exportThrough(through, work_dir,
+                [&](const std::filesystem::path& dir) { exportPov(scene, dir, "scene.png", tier); });
   const PovExport ex{work_dir / "scene.pov", work_dir / "scene.ini", work_dir,
                  // The image's name is this attempt's own (+O on the command
                  // line overrides the ini's): a POV-Ray left from an earlier
@@ -28,17 +30,17 @@ Image renderWithPovray(const Scene& scene, const std::filesystem::path& work_dir
                                                  : t.parse_seconds + t.bounding_seconds;
     *info = {r.seconds, log, t.trace_seconds, prep};
   }
-  requireToolOutput("povray", ex.pov, r, out);
+  requireToolOutput(renderer, ex.pov, r, out);
   const SubpixelGrid& g = ex.grid;
   Image fine;
   try {
     // Its header must claim the requested size before any pixel is allocated.
     fine = readImage(out, g.width, g.height);
   } catch (const std::exception& e) {
-    throw ExternalToolError(std::string("povray wrote an unusable image: ") + e.what());
+    throw ExternalToolError(renderer + " wrote an unusable image: " + e.what());
   }
-  requireImageSize("povray", fine, g.width, g.height);
-  requireFinite("povray", fine);
+  requireImageSize(renderer, fine, g.width, g.height);
+  requireFinite(renderer, fine);
   // Background: alpha 0, colour 0 (as the reference renderer's).
   for (size_t i = 0; i < fine.rgba.size(); i += 4)
     if (fine.rgba[i + 3] == 0.0f) fine.rgba[i] = fine.rgba[i + 1] = fine.rgba[i + 2] = 0.0f;

@@ -11,15 +11,17 @@
 
 #include "common/export_common.h"
 #include "image/image.h"
+#include "povray/pov_exporter.h"
 #include "scene/scene.h"
 
 namespace xval {
 
-// work_dir receives the export (through `through`: the export's scene.ini
+// `renderer`: the id of the registry entry rendering it (renderers/povray.cpp),
+// which labels the errors. work_dir receives the export (through `through`: the export's scene.ini
 // names scene.png; this attempt's own output name is given to povray on its
 // command line, after the ini), the tool's log and its raw output.
-Image renderWithPovray(const Scene& scene, const std::filesystem::path& work_dir,
+Image renderWithPovray(const std::string& renderer, const Scene& scene, const std::filesystem::path& work_dir,
                        double timeout_seconds, ExternalRenderInfo* info = nullptr,
-                       const ExportThrough& through = {});
+                       const ExportThrough& through = {}, PovTier tier = PovTier::Emission);
 
 }  // namespace xval

@@ -323,6 +323,25 @@ Pigment highlight(const LightInfo& l, dvec3 eye, double ks, double shininess, dv
   return perLight(l, s, true);
 }
 
+// The light source of l with colour `colour`, without its attenuation:
+// parallel, or at l's position (a hard-edged spotlight for a spot).
+LightSource sourceOf(const LightInfo& l, dvec3 colour) {
+  LightSource src;
+  src.colour = colour;
+  if (l.directional) {
+    src.location = -l.axis;
+    src.parallel = true;
+    return src;
+  }
+  src.location = l.position;
+  if (l.spot) {
+    src.spotlight = true;
+    src.point_at = l.position + l.axis;
+    src.cone_deg = l.cutoff_deg;
+  }
+  return src;
+}
+
 // The specular term: POV-Ray's phong through light sources, and for the
 // lights whose attenuation no light source gives, `highlights` (emission
 // terms, see highlight()).
@@ -369,51 +388,17 @@ Specular specular(const Scene& s, const std::vector<LightInfo>& lights, bool fil
       highlights.push_back(highlight(l, eye, sp.ks, sp.shininess, colour(l)));
       continue;
     }
-    LightSource src;
-    src.colour = colour(l);
-    if (l.directional) {
-      src.location = -l.axis;
-      src.parallel = true;
-    } else {
-      src.location = l.position;
-      if (l.spot) {
-        src.spotlight = true;
-        src.point_at = l.position + l.axis;
-        src.cone_deg = l.cutoff_deg;
-      }
-      if (l.has_att) {
-        const double c = l.att.constant, lin = l.att.linear, q = l.att.quadratic;
-        if (lin != 0.0 && q != 0.0) {
-          if (lights.size() == 1) {
-            src.colour /= c;
-            sp.att_texture_map = attPattern(l);
-          } else {
-            // 1/(q (d + r1)(d + r2)) = (1/(d + r1) - 1/(d + r2)) / (q (r2 - r1)),
-            // 1/(d + r) = (2/(1 + d/r)) / (2 r): two lights of fade_power 1,
-            // the second of negative colour.
-            const auto [r1, r2] = *realRoots(l.att);
-            const double k = 1.0 / (q * (r2 - r1));
-            LightSource far = src;
-            src.colour *= k / (2.0 * r1), src.fade_distance = r1, src.fade_power = 1;
-            far.colour *= -k / (2.0 * r2), far.fade_distance = r2, far.fade_power = 1;
-            sp.light_sources.push_back(src);
-            sp.light_sources.push_back(far);
-            continue;
-          }
-        } else if (lin != 0.0) {
-          // 2/(1 + d/fd) with fd = c/l is 2c/(c + l d).
-          src.colour /= 2.0 * c;
-          src.fade_distance = c / lin, src.fade_power = 1;
-        } else if (q != 0.0) {
-          // 2/(1 + (d/fd)^2) with fd = sqrt(c/q) is 2c/(c + q d^2).
-          src.colour /= 2.0 * c;
-          src.fade_distance = std::sqrt(c / q), src.fade_power = 2;
-        } else {
-          src.colour /= c;
-        }
-      }
+    if (lights.size() == 1 && l.has_att && l.att.linear != 0.0 && l.att.quadratic != 0.0) {
+      // The texture_map over the attenuation function: the light source
+      // carries 1/c.
+      LightSource src = sourceOf(l, colour(l) / l.att.constant);
+      sp.att_texture_map = attPattern(l);
+      sp.light_sources.push_back(src);
+      continue;
     }
-    sp.light_sources.push_back(src);
+    // Only the general case above has no light sources (realRoots).
+    const std::vector<LightSource> sources = *lightSourcesOf(*l.light, colour(l));
+    sp.light_sources.insert(sp.light_sources.end(), sources.begin(), sources.end());
   }
   return sp;
 }
@@ -466,6 +451,38 @@ void checkLumaOnlyExpressible(const Material& m) {
 }
 
 }  // namespace
+
+std::optional<std::vector<LightSource>> lightSourcesOf(const Light& light, dvec3 colour) {
+  const LightInfo l = info(light);
+  LightSource src = sourceOf(l, colour);
+  if (!l.has_att) return std::vector<LightSource>{src};
+  const double c = l.att.constant, lin = l.att.linear, q = l.att.quadratic;
+  if (lin != 0.0 && q != 0.0) {
+    const auto roots = realRoots(l.att);
+    if (!roots) return std::nullopt;
+    // 1/(q (d + r1)(d + r2)) = (1/(d + r1) - 1/(d + r2)) / (q (r2 - r1)),
+    // 1/(d + r) = (2/(1 + d/r)) / (2 r): two lights of fade_power 1, the
+    // second of negative colour.
+    const auto [r1, r2] = *roots;
+    const double k = 1.0 / (q * (r2 - r1));
+    LightSource far = src;
+    src.colour *= k / (2.0 * r1), src.fade_distance = r1, src.fade_power = 1;
+    far.colour *= -k / (2.0 * r2), far.fade_distance = r2, far.fade_power = 1;
+    return std::vector<LightSource>{src, far};
+  }
+  if (lin != 0.0) {
+    // 2/(1 + d/fd) with fd = c/l is 2c/(c + l d).
+    src.colour /= 2.0 * c;
+    src.fade_distance = c / lin, src.fade_power = 1;
+  } else if (q != 0.0) {
+    // 2/(1 + (d/fd)^2) with fd = sqrt(c/q) is 2c/(c + q d^2).
+    src.colour /= 2.0 * c;
+    src.fade_distance = std::sqrt(c / q), src.fade_power = 2;
+  } else {
+    src.colour /= c;
+  }
+  return std::vector<LightSource>{src};
+}
 
 PovShading povShading(const Scene& in) {
   // The luma-only mode shades with the grey lights (emissionLumaOnlyYiq).

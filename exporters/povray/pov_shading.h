@@ -30,6 +30,13 @@ struct LightSource {
   double cone_deg = 0;       // radius = falloff
 };
 std::string lightSourceSdl(const LightSource& l);
+// The light sources whose sum is `light` with colour `colour` and its
+// attenuation, exactly: none, constant (colour / c), 1/(c + l d) and
+// 1/(c + q d^2) by fade_power 1 and 2, 1/(c + l d + q d^2) with real
+// roots apart as two sources of fade_power 1 (the second of negative
+// colour); nullopt for any other attenuation (no sum of light sources
+// gives it). An ambient light has no light source: not for one.
+std::optional<std::vector<LightSource>> lightSourcesOf(const Light& light, glm::dvec3 colour);
 
 struct Specular {
   double ks = 0.0, shininess = 0.0;  // finish { phong ks phong_size shininess }

@@ -13,6 +13,7 @@
 #include "renderers/registry.h"
 #include "image/pair_failure.h"
 #include "image/image_header.h"
+#include "image/metric_criteria.h"
 #include "image/metric_table.h"
 #include "image/perceptual.h"
 #include "validate/tolerances.h"
@@ -91,12 +92,12 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
       const PerceptualMetrics& pm = measures.perceptual;
       if (args->json) {
         nlohmann::json j = pairJson(measures, t);
-        j["failed"] = failedJson(failedCriteria(m, t));
+        j["failed"] = failedJson(failedCriteria(measures, t));
         j["tolerance_source"] = tol_source;
         std::printf("%s\n", j.dump(2).c_str());
       } else {
-        std::printf("tolerance: %.6g/65535 on %.6g%%, %s\n", t.max_abs * 65535.0, 100.0 * t.fraction,
-                    tol_source.c_str());
+        std::printf("tolerance: %.6g/65535 on %.6g%%%s, %s\n", t.max_abs * 65535.0, 100.0 * t.fraction,
+                    t.metrics.empty() ? "" : (", " + metricCriteriaText(t.metrics)).c_str(), tol_source.c_str());
         std::printf("SSIM %.6f  CIEDE2000 mean %.4f max %.4f  YIQ delta mean %.3g max %.3g\n", pm.ssim,
                     pm.ciede2000_mean, pm.ciede2000_max, pm.yiq_mean, pm.yiq_max);
         std::printf("metrics: %s\n", metricValuesText(measures).c_str());
@@ -105,7 +106,7 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
             "max %.3f  p99.9 %.3f  RMSE %.4f (x/65535)  PSNR %.1f dB  within %.3g: %.5f%%  -> %s\n",
             m.covered_both, m.mask_disagree, m.mask_disagree_explained, m.max_abs * 65535,
             m.p999_abs * 65535, m.rmse * 65535, m.psnr_db, t.max_abs * 65535, 100 * m.fraction_within,
-            t.passes(m) ? "PASS" : "FAIL");
+            passes(measures, t) ? "PASS" : "FAIL");
         std::printf("pixels by error (x/65535):");
         const char* names[7] = {"<=0.5", "<=1", "<=2", "<=4", "<=16", "<=256", ">256"};
         for (int i = 0; i < 7; ++i) std::printf(" %s:%lld", names[i], m.histogram[i]);
@@ -114,9 +115,9 @@ void addCompareCommand(CLI::App& app, std::function<int()>& run) {
         std::printf("max unexplained %.3f (x/65535) at (%d, %d), cap %.6g\n", m.max_unexplained * 65535,
                     m.worst_unexplained_x, m.worst_unexplained_y, t.max_unexplained * 65535);
         std::printf("worst pixel (%d, %d)\n", m.worst_x, m.worst_y);
-        for (const PairFailure& f : failedCriteria(m, t)) std::printf("fails: %s\n", f.text.c_str());
+        for (const PairFailure& f : failedCriteria(measures, t)) std::printf("fails: %s\n", f.text.c_str());
       }
-      return t.passes(m) ? 0 : 1;
+      return passes(measures, t) ? 0 : 1;
      } catch (const std::exception& e) {
       std::fprintf(stderr, "xval compare: error: %s\n", e.what());
       return 2;

@@ -1,4 +1,4 @@
-// xval export pov|gltf SCENE.json -o DIR/
+// xval export pov|pov-native|gltf SCENE.json -o DIR/
 #include <cstdio>
 #include <memory>
 
@@ -20,9 +20,10 @@ void addExportCommand(CLI::App& app, std::function<int()>& run) {
       "export",
       "Write a scene for an external renderer.\n  pov: a self-contained POV-Ray 3.7 folder "
       "(scene.pov, scene.ini, texture.png, README.txt);\n       render it with `povray "
-      "scene.ini` from that folder.\n  gltf: glTF 2.0 (scene.gltf, scene.bin, texture.png) with the "
+      "scene.ini` from that folder.\n  pov-native: the same folder with POV-Ray's own finish instead "
+      "(renderer povray-native,\n       docs/povray-export.md \"Native tier\").\n  gltf: glTF 2.0 (scene.gltf, scene.bin, texture.png) with the "
       "lighting model in the scene's extras,\n       for exporters/blender/render_gltf.py.");
-  cmd->add_option("format", args->format, "Target format")->required()->check(CLI::IsMember({"pov", "gltf"}));
+  cmd->add_option("format", args->format, "Target format")->required()->check(CLI::IsMember({"pov", "pov-native", "gltf"}));
   cmd->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args->dir, "Output folder (created)")->required();
   addBudgetOptions(cmd, args->budget);
@@ -34,7 +35,8 @@ void addExportCommand(CLI::App& app, std::function<int()>& run) {
         std::fprintf(stderr, "xval export: wrote %s\n", ex.gltf.c_str());
         return 0;
       }
-      PovExport ex = exportPov(scene, args->dir);
+      PovExport ex = exportPov(scene, args->dir, "scene.png",
+                               args->format == "pov-native" ? PovTier::Native : PovTier::Emission);
       std::fprintf(stderr, "xval export: wrote %s and %s\n", ex.pov.c_str(), ex.ini.c_str());
       return 0;
     };

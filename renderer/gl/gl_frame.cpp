@@ -410,11 +410,11 @@ Image GlScene::drawAndRead() {
 std::string GlScene::device() const { return impl_->context->describe(); }
 double GlScene::setupSeconds() const { return impl_->setup_seconds; }
 
-Image renderWithGl(const Scene& scene, std::string* device) {
+Image renderWithGl(const std::string& renderer, const Scene& scene, std::string* device) {
   const SubpixelGrid g = subpixelGrid(scene);
   GlScene gl(scene);
   if (device) *device = gl.device();
-  return finishFrame(gl.drawAndRead(), g.n, "gl");
+  return finishFrame(gl.drawAndRead(), g.n, renderer);
 }
 
 }  // namespace xval::gl

@@ -73,6 +73,8 @@ class GlScene {
 // the box filter. Throws as GlScene; a NaN or infinite sample is an
 // ExternalToolError naming the first one (common/export_common.h
 // requireFinite). The render.spp grid is checked first (subpixelGrid).
-Image renderWithGl(const Scene& scene, std::string* device = nullptr);
+// `renderer`: the id of the registry entry rendering it (renderers/gl.cpp),
+// which labels the errors.
+Image renderWithGl(const std::string& renderer, const Scene& scene, std::string* device = nullptr);
 
 }  // namespace xval::gl

@@ -155,8 +155,8 @@ float ctD(float c, float s2) {
     float e = exp(-s2 / (c2 * a2));
     return e > 0.0 ? e / (3.14159265358979 * a2 * c2 * c2) : 0.0;
   }
-  float q = c2 * a2 + s2;
-  return a2 / (3.14159265358979 * q * q);
+  float q = c2 * a2 + s2, r = u_ct_alpha / q;  // (alpha / q)^2: q^2 underflows at small alpha
+  return r * r / 3.14159265358979;
 }
 float ctG1OverCos(float x, float s2) {  // Smith's G1(x) / x
   if (k_ct_distribution == 1) return 2.0 / (x + sqrt(x * x + u_ct_alpha * u_ct_alpha * s2));
@@ -173,8 +173,8 @@ float cookTorranceSpecular(vec3 n, vec3 l, vec3 v) {
   float len = length(sum);
   if (!(len > 0.0)) return 0.0;
   vec3 h = sum / len;
-  float nh = dot(n, h), vh = dot(v, h);
-  if (!(nh > 0.0) || !(vh > 0.0)) return 0.0;
+  float nh = dot(n, h), vh = 0.5 * len;  // V.H = |L + V| / 2: dot(v, h) cancels near L = -V
+  if (!(nh > 0.0)) return 0.0;
   vec3 nxh = cross(n, h);
   float d = ctD(nh, dot(nxh, nxh));
   if (!(d > 0.0)) return 0.0;

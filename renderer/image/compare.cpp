@@ -1,4 +1,5 @@
 #include "image/compare.h"
+#include "image/metric_criteria.h"
 #include "image/perceptual.h"
 
 #include <algorithm>
@@ -196,12 +197,18 @@ nlohmann::json metricsJson(const CompareMetrics& m) {
                           {"rmse_16bit", finite(m.rmse_either * 65535.0)}}}};
 }
 
+nlohmann::json toleranceJson(const Tolerance& t) {
+  nlohmann::json j = {{"max_abs_16bit", t.max_abs * 65535.0},
+                      {"fraction", t.fraction},
+                      {"exclude_backfacing", t.exclude_backfacing},
+                      {"max_unexplained_16bit", t.max_unexplained * 65535.0}};
+  if (!t.metrics.empty()) j["metrics"] = metricCriteriaJson(t.metrics);
+  return j;
+}
+
 std::string toJson(const CompareMetrics& m, const Tolerance& t, const PerceptualMetrics* pm) {
   nlohmann::json j = metricsJson(m);
-  j["tolerance"] = {{"max_abs_16bit", t.max_abs * 65535.0},
-                    {"fraction", t.fraction},
-                    {"exclude_backfacing", t.exclude_backfacing},
-                    {"max_unexplained_16bit", t.max_unexplained * 65535.0}};
+  j["tolerance"] = toleranceJson(t);
   j["pass"] = t.passes(m);
   if (pm) {
     j["ssim"] = pm->ssim;

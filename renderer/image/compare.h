@@ -21,6 +21,7 @@
 // the largest.
 #pragma once
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,7 @@
 #include "image/image.h"
 #include "image/pixel_classes.h"
 #include "image/precision_bound.h"
+#include "scene/metric_criterion.h"
 
 namespace xval {
 
@@ -82,7 +84,11 @@ double nearestRankPercentile(std::vector<double> values, double p);
 // by a cause within its bound (image/pixel_classes.h) on at least
 // `fraction` of the pixels both images cover, no unexplained pixel over
 // max_unexplained (the hard cap: whatever the fraction), and every mask
-// disagreement explained.
+// disagreement explained: the pixel criteria. With `metrics`, also every
+// declared bound on a metric of the table (scene/metric_criterion.h): those
+// need the pair's measures (image/metric_table.h), so the verdict with them
+// is passes(PairMeasures, Tolerance) there and failedCriteria
+// (image/pair_failure.h).
 // With exclude_backfacing, pixels whose shading normal faces away from the
 // eye are left out of the colour metrics (for a renderer that documents
 // turning such normals around); they are still counted.
@@ -93,9 +99,22 @@ struct Tolerance {
   double fraction = 1.0;
   bool exclude_backfacing = false;
   double max_unexplained = 0.0;
-  bool passes(const CompareMetrics& m) const {
+  std::vector<MetricCriterion> metrics;  // in metric table order
+  bool passesPixelCriteria(const CompareMetrics& m) const {
     return m.fraction_within >= fraction && m.max_unexplained <= max_unexplained &&
            m.mask_disagree == m.mask_disagree_explained && m.covered_both > 0;
+  }
+  // The verdict from the pixel measures alone: for a tolerance without
+  // metric criteria. Throws std::logic_error for one with them (deciding
+  // without them would pass what they fail).
+  bool passes(const CompareMetrics& m) const {
+    requireNoMetricCriteria("Tolerance::passes(CompareMetrics)");
+    return passesPixelCriteria(m);
+  }
+  void requireNoMetricCriteria(const char* who) const {
+    if (!metrics.empty())
+      throw std::logic_error(std::string(who) + ": the tolerance declares metric criteria; decide with the pair's "
+                             "measures (image/metric_table.h passes)");
   }
 };
 
@@ -138,9 +157,15 @@ Image differenceImage(const Image& a, const Image& b);
 // rmse_16bit}.
 nlohmann::json metricsJson(const CompareMetrics& m);
 
+// The tolerance's record: {max_abs_16bit, fraction, exclude_backfacing,
+// max_unexplained_16bit} in 1/65535, and "metrics" {id: {"max"|"min":
+// bound}} (image/metric_criteria.h) when it declares metric criteria.
+nlohmann::json toleranceJson(const Tolerance& t);
+
 struct PerceptualMetrics;
 // metricsJson(m) with the verdict: tolerance {max_abs_16bit, fraction,
-// exclude_backfacing, max_unexplained_16bit} and pass; with `pm`, also ssim, ciede2000 {mean, max}
+// exclude_backfacing, max_unexplained_16bit} and pass (t without metric
+// criteria: Tolerance::passes; with them image/metric_table.h's pairJson); with `pm`, also ssim, ciede2000 {mean, max}
 // and yiq_delta {mean, max}.
 std::string toJson(const CompareMetrics& m, const Tolerance& t,
                    const PerceptualMetrics* pm = nullptr);

@@ -1,4 +1,8 @@
-// The metric table (image/metric_table.h lists the entries and the rules).
+// The metric table (image/metric_table.h lists the entries and the rules):
+// the entries and their values of a measured pair. Measuring a pair is
+// image/pair_measures.cpp, so that a reader of metric ids (a scene's
+// declared metric criteria, image/metric_criteria.h) links without the
+// measurements.
 #include "image/metric_table.h"
 
 #include <algorithm>
@@ -52,34 +56,12 @@ std::string labelWithUnit(const MetricInfo& m) {
   return std::string(m.label) + (*m.unit ? std::string(" (") + m.unit + ")" : std::string());
 }
 
-MeasuredImage measuredImage(const Image& img) { return {perceptualImage(img), flipImage(img)}; }
-
-PairMeasures measurePair(const Image& a, const Image& b, const Tolerance& t, const PairPrecision& p,
-                         const MeasuredImage* ma, const MeasuredImage* mb) {
-  PairMeasures m;
-  m.compare = compareImages(a, b, t, p);  // first: it refuses images of different sizes
-  if (ma && mb) {
-    m.perceptual = perceptualMetrics(a, ma->perceptual, b, mb->perceptual);
-    m.flip = flipSummary(flipErrorMap(ma->flip, mb->flip), a, b);
-  } else {
-    m.perceptual = perceptualMetrics(a, b);
-    m.flip = flipMetrics(a, b);
-  }
-  return m;
-}
-
 nlohmann::json metricValuesJson(const PairMeasures& m) {
   nlohmann::json j = nlohmann::json::object();
   for (const MetricInfo& info : metricTable()) {
     const double v = info.value(m);
     j[info.id] = std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
   }
-  return j;
-}
-
-nlohmann::json pairJson(const PairMeasures& m, const Tolerance& t) {
-  nlohmann::json j = nlohmann::json::parse(toJson(m.compare, t, &m.perceptual));
-  j["values"] = metricValuesJson(m);
   return j;
 }
 
@@ -91,23 +73,6 @@ std::string metricValuesText(const PairMeasures& m) {
     s += (s.empty() ? "" : ", ") + std::string(info.label) + " " + v + (*info.unit ? std::string(" ") + info.unit : "");
   }
   return s;
-}
-
-std::pair<Image, Image> eitherCovered(const Image& a, const Image& b) {
-  if (a.width != b.width || a.height != b.height)
-    throw std::runtime_error("image sizes differ (" + std::to_string(a.width) + "x" + std::to_string(a.height) +
-                             " vs " + std::to_string(b.width) + "x" + std::to_string(b.height) + ")");
-  Image ea(a.width, a.height, false), eb(b.width, b.height, false);
-  const size_t n = size_t(a.width) * a.height;
-  for (size_t i = 0; i < n; ++i) {
-    const float alpha = a.rgba[i * 4 + 3] > 0.0f || b.rgba[i * 4 + 3] > 0.0f ? 1.0f : 0.0f;
-    for (int c = 0; c < 3; ++c) {
-      ea.rgba[i * 4 + c] = std::clamp(a.rgba[i * 4 + c], 0.0f, 1.0f);
-      eb.rgba[i * 4 + c] = std::clamp(b.rgba[i * 4 + c], 0.0f, 1.0f);
-    }
-    ea.rgba[i * 4 + 3] = eb.rgba[i * 4 + 3] = alpha;
-  }
-  return {std::move(ea), std::move(eb)};
 }
 
 }  // namespace xval

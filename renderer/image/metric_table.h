@@ -84,7 +84,9 @@ PairMeasures measurePair(const Image& a, const Image& b, const Tolerance& t, con
 // {id: value} over the table, a value that is not finite as null.
 nlohmann::json metricValuesJson(const PairMeasures& m);
 // The pair's JSON record: toJson(m.compare, t, &m.perceptual) (compare.h)
-// with "values": metricValuesJson(m).
+// with "values": metricValuesJson(m), the tolerance with its metric
+// criteria (toleranceJson) and "pass" on all of them (passes,
+// image/metric_criteria.h).
 nlohmann::json pairJson(const PairMeasures& m, const Tolerance& t);
 // "max 1.5 (1/65535), ..., mean FLIP 0.0123": every entry, for console
 // lines; %.6g.

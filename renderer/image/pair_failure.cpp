@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "image/metric_criteria.h"
 #include "text/number_text.h"
 
 namespace xval {
@@ -27,11 +28,10 @@ std::string plural(long long n, const char* one, const char* many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
-}  // namespace
-
-std::vector<PairFailure> failedCriteria(const CompareMetrics& m, const Tolerance& t) {
-  // Each test is the negation of Tolerance::passes' own comparison, so a
-  // NaN fails here exactly when it fails there.
+// The pixel criteria's failures.
+std::vector<PairFailure> failedPixelCriteria(const CompareMetrics& m, const Tolerance& t) {
+  // Each test is the negation of Tolerance::passesPixelCriteria's own
+  // comparison, so a NaN fails here exactly when it fails there.
   std::vector<PairFailure> out;
   if (!(m.covered_both > 0)) out.push_back({"nothing_covered", "no pixel covered by both", "nothing covered"});
   if (m.mask_disagree != m.mask_disagree_explained) {
@@ -57,6 +57,29 @@ std::vector<PairFailure> failedCriteria(const CompareMetrics& m, const Tolerance
     if (outside >= 0)
       text += " (" + std::to_string(outside) + " of " + std::to_string(m.covered_both) + " pixels outside)";
     out.push_back({"fraction", text, "fraction " + v + " < " + need});
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<PairFailure> failedCriteria(const CompareMetrics& m, const Tolerance& t) {
+  t.requireNoMetricCriteria("failedCriteria(CompareMetrics, Tolerance)");
+  return failedPixelCriteria(m, t);
+}
+
+std::vector<PairFailure> failedCriteria(const PairMeasures& m, const Tolerance& t) {
+  std::vector<PairFailure> out = failedPixelCriteria(m.compare, t);
+  for (const MetricCriterion& c : t.metrics) {
+    if (metricCriterionHolds(c, m)) continue;  // its negation: a NaN fails here as in passes()
+    const MetricInfo& info = metricById(c.metric);
+    const bool lower = info.better == Better::Lower;
+    const std::string unit = *info.unit ? std::string(" ") + info.unit : std::string();
+    const std::string v = beside(info.value(m), c.bound, !lower, 3);
+    const std::string cmp = lower ? " > " : " < ";
+    out.push_back({std::string("metric:") + info.id,
+                   std::string(info.label) + " " + v + unit + cmp + boundKey(info) + " " + significant(c.bound) + unit,
+                   std::string(info.id) + " " + v + cmp + significant(c.bound)});
   }
   return out;
 }

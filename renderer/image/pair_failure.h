@@ -9,9 +9,12 @@
 //   mask             mask disagreements no edge explains
 //   unexplained_cap  an unexplained pixel over the cap (max_unexplained)
 //   fraction         fewer covered pixels within the tolerance than `fraction`
+//   metric:ID        a declared metric criterion (image/metric_criteria.h)
+//                    that does not hold, one per metric, in table order
 // Errors are fractions of full scale, written in 1/65535.
 //
-// A failure is "hard" when a criterion other than the fraction fails (the
+// A failure is "hard" when a criterion other than the fraction fails
+// (a metric criterion too: it was declared to hold) (the
 // images differ where nothing explains it), "soft" when only the fraction
 // does (many small differences, each under the cap: rounding): who
 // deviates (renderers/registry.h attribute) weighs them differently.
@@ -24,18 +27,23 @@
 #include <nlohmann/json.hpp>
 
 #include "image/compare.h"
+#include "image/metric_table.h"
 
 namespace xval {
 
 struct PairFailure {
   bool operator==(const PairFailure&) const = default;
-  std::string key;    // nothing_covered, mask, unexplained_cap or fraction
+  std::string key;    // nothing_covered, mask, unexplained_cap, fraction or metric:ID
   std::string text;   // "fraction within tolerance 99.81% < 99.9% (8 of 4769 pixels outside)"
   std::string brief;  // for a table cell: "99.81% < 99.9% within"
 };
 
 // Every criterion of `t` that `m` fails, in the order above; empty exactly
-// when t.passes(m).
+// when passes(m, t) (image/metric_criteria.h).
+std::vector<PairFailure> failedCriteria(const PairMeasures& m, const Tolerance& t);
+// The same from the pixel measures, for a tolerance without metric
+// criteria (empty exactly when t.passes(m)); throws std::logic_error for
+// one with them.
 std::vector<PairFailure> failedCriteria(const CompareMetrics& m, const Tolerance& t);
 
 // Whether the failures are of the fraction alone (non-empty, every one

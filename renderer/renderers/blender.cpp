@@ -52,7 +52,7 @@ ExportThrough blenderThrough(const RenderRequest& request) {
 // Many scenes in one Blender process (blender/blender_render.h
 // renderBlenderBatch); the time-out is the first item's, per scene; each
 // scene's outcome handed to item_done as soon as the worker finished it.
-std::vector<BatchOutcome> blenderBatch(const std::vector<BatchItem>& items, BlenderEngine engine,
+std::vector<BatchOutcome> blenderBatch(const std::string& id, const std::vector<BatchItem>& items, BlenderEngine engine,
                                        const BatchItemDone& item_done) {
   std::vector<BlenderBatchScene> scenes;
   for (const BatchItem& item : items) scenes.push_back({item.scene, item.request.work_dir, blenderThrough(item.request)});
@@ -67,7 +67,7 @@ std::vector<BatchOutcome> blenderBatch(const std::vector<BatchItem>& items, Blen
   BlenderSceneDone scene_done;
   if (item_done) scene_done = [&](size_t i, const BlenderBatchResult& r) { item_done(i, outcome(r)); };
   std::vector<BatchOutcome> out;
-  for (const BlenderBatchResult& r : renderBlenderBatch(scenes, timeout, engine, scene_done)) out.push_back(outcome(r));
+  for (const BlenderBatchResult& r : renderBlenderBatch(id, scenes, timeout, engine, scene_done)) out.push_back(outcome(r));
   return out;
 }
 
@@ -92,15 +92,16 @@ Renderer blenderEngineRenderer(const BlenderEngineFacts& facts) {
   r.missing = blenderScriptMissing;
   r.exporter = blenderExport(facts.engine);
   r.cannot_express = [ex = *r.exporter](const Scene& scene) { return refusalOf(ex, scene); };
-  r.render = [engine = facts.engine](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
+  r.render = [engine = facts.engine, id = r.id](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
     ExternalRenderInfo tool;
-    Image image = renderWithBlender(scene, request.work_dir, request.timeout_seconds, &tool, BlenderMode::Model,
+    Image image = renderWithBlender(id, scene, request.work_dir, request.timeout_seconds, &tool, BlenderMode::Model,
                                     engine, blenderThrough(request));
     setInfo(info, tool);
     return image;
   };
-  r.render_batch = [engine = facts.engine](const std::vector<BatchItem>& items, const BatchItemDone& item_done) {
-    return blenderBatch(items, engine, item_done);
+  r.render_batch = [engine = facts.engine, id = r.id](const std::vector<BatchItem>& items,
+                                                      const BatchItemDone& item_done) {
+    return blenderBatch(id, items, engine, item_done);
   };
   return r;
 }

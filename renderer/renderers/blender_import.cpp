@@ -47,9 +47,9 @@ Renderer blenderImportRenderer() {
     }
     return "";
   };
-  r.render = [](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
+  r.render = [id = r.id](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
     ExternalRenderInfo tool;
-    const GeometryPasses passes = renderModelImport(scene, request.work_dir, request.timeout_seconds, &tool);
+    const GeometryPasses passes = renderModelImport(id, scene, request.work_dir, request.timeout_seconds, &tool);
     setInfo(info, tool);
     return toImage(passes);
   };

@@ -14,7 +14,7 @@
 // at 1).
 //
 // Parameters (RenderRequest), as the blender renderer's:
-//   work_dir         the glTF export, blender.log and the raw multilayer EXR
+//   work_dir         the glTF export, blender-native.log and the raw multilayer EXR
 //   timeout_seconds  default kDefaultToolTimeoutSeconds (600)
 // Needs what the blender renderer needs; same version line.
 #include "blender/blender_render.h"
@@ -42,10 +42,10 @@ Renderer nativeBsdfRenderer(BlenderEngine engine, const std::string& id, const s
     }
     return blenderRefusal(scene);
   };
-  r.render = [engine](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
+  r.render = [engine, id = r.id](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
     ExternalRenderInfo tool;
     Image image =
-        renderWithBlender(scene, request.work_dir, request.timeout_seconds, &tool, BlenderMode::Native, engine);
+        renderWithBlender(id, scene, request.work_dir, request.timeout_seconds, &tool, BlenderMode::Native, engine);
     setInfo(info, tool);
     return image;
   };

@@ -49,23 +49,23 @@ Renderer glRenderer() {
     }
     return "";
   };
-  r.render = [](const Scene& scene, const RenderRequest&, RenderInfo* info) {
+  r.render = [id = r.id](const Scene& scene, const RenderRequest&, RenderInfo* info) {
     const auto t0 = std::chrono::steady_clock::now();
     Image image;
     try {
-      image = gl::renderWithGl(scene);
+      image = gl::renderWithGl(id, scene);
     } catch (const gl::GlUnavailable& e) {
-      throw ExternalToolError(std::string("gl: unavailable: ") + e.what());
+      throw ExternalToolError(id + ": unavailable: " + e.what());
     }
     if (info) info->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return image;
   };
-  r.prepare_frames = [](const Scene& scene) {
+  r.prepare_frames = [id = r.id](const Scene& scene) {
     std::shared_ptr<gl::GlScene> prepared;
     try {
       prepared = std::make_shared<gl::GlScene>(scene);
     } catch (const gl::GlUnavailable& e) {
-      throw ExternalToolError(std::string("gl: unavailable: ") + e.what());
+      throw ExternalToolError(id + ": unavailable: " + e.what());
     }
     return FrameLoop{[prepared] { prepared->draw(); }, prepared->device(), prepared->setupSeconds()};
   };

@@ -42,9 +42,9 @@ Renderer povrayRenderer() {
   r.exporter =
       RendererExport{"pov", {}, [](const Scene& scene, const std::filesystem::path& dir) { exportPov(scene, dir); }, ""};
   r.cannot_express = [ex = *r.exporter](const Scene& scene) { return refusalOf(ex, scene); };
-  r.render = [name = r.exporter->name](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
+  r.render = [name = r.exporter->name, id = r.id](const Scene& scene, const RenderRequest& request, RenderInfo* info) {
     ExternalRenderInfo tool;
-    Image image = renderWithPovray(scene, request.work_dir, request.timeout_seconds, &tool,
+    Image image = renderWithPovray(id, scene, request.work_dir, request.timeout_seconds, &tool,
                                    request.exported ? exportedAlready() : cachedExport(name, request.export_key));
     setInfo(info, tool);
     return image;

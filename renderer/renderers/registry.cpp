@@ -15,7 +15,7 @@
 // of the pairs and of every listing). Adding a renderer: its file
 // renderers/<name>.cpp defining `Renderer <name>Renderer()`, and its name
 // on this line.
-#define XVAL_BUILTIN_RENDERERS(X) X(reference) X(povray) X(blender) X(blenderNative) X(blenderImport) X(eevee) X(eeveeNative) X(gl) X(golden)
+#define XVAL_BUILTIN_RENDERERS(X) X(reference) X(povray) X(povrayNative) X(blender) X(blenderNative) X(blenderImport) X(eevee) X(eeveeNative) X(gl) X(golden)
 
 namespace xval::renderers {
 

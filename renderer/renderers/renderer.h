@@ -4,8 +4,9 @@
 //
 // The renderers are listed in one place, the registry (renderers/registry.h);
 // each built-in renderer is one file beside it (reference.cpp, povray.cpp,
-// blender.cpp, blender_native.cpp, blender_import.cpp, eevee.cpp, gl.cpp) whose doc block says
-// what it is and its parameters and defaults.
+// povray_native.cpp, blender.cpp, blender_native.cpp, blender_import.cpp,
+// eevee.cpp, gl.cpp) whose doc block says what it is and its parameters and
+// defaults.
 #pragma once
 
 #include <filesystem>

@@ -13,6 +13,7 @@
 
 #include "colour/luma_only.h"
 #include "shading/model/registry.h"
+#include "scene/metric_criterion.h"
 
 #include <array>
 #include <concepts>
@@ -185,6 +186,7 @@ struct DeclaredTolerance {
   std::optional<double> fraction;       // share of covered pixels within it
   std::optional<double> max_unexplained_16bit;  // the cap on an unexplained pixel (image/compare.h)
   bool exclude_backfacing = false;
+  std::vector<MetricCriterion> metrics;  // each replaces the default's bound on its metric, if any
   std::string reason;
 };
 

@@ -163,28 +163,39 @@ Bound shadingFactors(const Scene& s, const Material& mat, const std::string& pre
   std::visit(
       [&]<class M>(const M& mm) {
         double k_sum = 0.0, k_top = 0.0;
-        const char* k_field = nullptr;
+        std::string k_field;
         glm::dvec3 f_sum(0.0);
         double f_top = 0.0;
         const char* f_field = "c0";
         // A Specular number multiplies a term that may exceed 1: by the
         // model's specularGain() where it has one (cook_torrance's
-        // microfacet peak, ~1 / alpha^3), else 1 (clamp(R.V)^n <= 1).
+        // microfacet peak, ~1 / alpha^3), else 1 (clamp(R.V)^n <= 1). The
+        // term is formed before the number multiplies it, so a number
+        // below 1 does not shrink what must fit: the gain counts at least
+        // once (ks 1e-30 let alpha 3e-22 through, whose S overflowed float);
+        // with ks = 0 the term is not formed (Shader's specular_).
         double gain = 1.0;
         if constexpr (requires { mm.specularGain(); }) gain = mm.specularGain();
         model::forEachParam(mm, model::Overloaded{
                                     [&](const model::NumberParam<M>& p, double v) {
                                       if (p.role == model::Role::None) return;
-                                      if (p.role == model::Role::Specular) v *= gain;
+                                      std::string field = m + "." + p.name;
+                                      if (p.role == model::Role::Specular && gain > 1.0 && v != 0.0) {
+                                        // Named by the larger of the two: ks, or the
+                                        // parameter that sets the gain.
+                                        if constexpr (requires { M::kSpecularGainParam; })
+                                          if (gain > std::abs(v)) field = m + "." + M::kSpecularGainParam;
+                                        v = std::max(std::abs(v), 1.0) * gain;
+                                      }
                                       k_sum += std::abs(v);
-                                      if (!k_field || std::abs(v) > k_top) k_field = p.name, k_top = std::abs(v);
+                                      if (k_field.empty() || std::abs(v) > k_top) k_field = field, k_top = std::abs(v);
                                     },
                                     [&](const model::ColourParam<M>& p, const glm::dvec3& c) {
                                       f_sum += glm::abs(c);
                                       if (maxChannel(c) > f_top) f_field = p.name, f_top = maxChannel(c);
                                     },
                                     [](const auto&, const auto&) {}});  // a choice: no number
-        if (k_sum > 1.0) b.K = {k_sum, m + "." + k_field};
+        if (k_sum > 1.0) b.K = {k_sum, k_field};
         if (maxChannel(f_sum) > 1.0) b.F = {maxChannel(f_sum), m + "." + f_field};
       },
       mat.model);

@@ -29,9 +29,10 @@
 //                      kMaxTexelValue for an image texture, 1 for brick),
 //                  K = max(1, ka + kd + ks) (classic Phong),
 //                      max(1, kd + ks + |luma_offset|) (YIQ),
-//                      max(1, kd + ks g) (cook_torrance, g its
+//                      max(1, kd + max(ks, 1) g) (cook_torrance, g its
 //                      specularGain(): the bound of its microfacet term
-//                      S, ~1 / roughness^3), 1 otherwise,
+//                      S, ~1 / roughness^3, which is formed before ks
+//                      multiplies it), 1 otherwise,
 //                  F = max(1, largest channel of c0 + c1 + c2) (Forsyth's
 //                      family), 1 otherwise,
 //                  L = sum over lights of (largest channel of its colour)

@@ -3,6 +3,7 @@
 #include "geometry/model_file.h"
 #include "geometry/transform.h"
 #include "image/image_header.h"
+#include "image/metric_criteria.h"
 #include "scene_file/precision_limits.h"
 #include "texture/texture.h"
 
@@ -348,6 +349,7 @@ std::vector<DeclaredTolerance> readTolerances(JsonReader& r) {
     if (t->has("max_unexplained_16bit"))
       d.max_unexplained_16bit = t->number("max_unexplained_16bit", 0, Range::nonNegative());
     d.exclude_backfacing = t->boolean("exclude_backfacing", false);
+    d.metrics = readMetricCriteria(*t, "metrics");
     d.reason = t->requireString("reason");
     if (d.reason.size() < 20)
       t->fail("reason", "a declared tolerance needs a written reason (at least a sentence), got " +

@@ -1,4 +1,5 @@
 #include "scene_file/scene_writer.h"
+#include "image/metric_criteria.h"
 
 namespace xval {
 
@@ -117,6 +118,7 @@ J sceneToJson(const Scene& s, const std::string* texture_path) {
       if (d.fraction) e["fraction"] = *d.fraction;
       if (d.max_unexplained_16bit) e["max_unexplained_16bit"] = *d.max_unexplained_16bit;
       if (d.exclude_backfacing) e["exclude_backfacing"] = true;
+      if (!d.metrics.empty()) e["metrics"] = metricCriteriaJson(d.metrics);
       e["reason"] = d.reason;
       t[d.renderer] = e;
     }

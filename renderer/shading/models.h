@@ -235,9 +235,14 @@ template <class T> T microfacetD(MicrofacetD d, T c, T s2, T alpha) {
     const T e = std::exp(-s2 / (c2 * a2));
     return e > T(0) ? e / (pi * a2 * c2 * c2) : T(0);
   }
-  // alpha^2 / (pi (c^2 alpha^2 + s^2)^2): c^4 (alpha^2 + tan^2)^2 with tan^2 = s^2 / c^2.
-  const T q = c2 * a2 + s2;
-  return a2 / (pi * q * q);
+  // alpha^2 / (pi (c^2 alpha^2 + s^2)^2): c^4 (alpha^2 + tan^2)^2 with
+  // tan^2 = s^2 / c^2, formed as (alpha / q)^2 / pi: at the peak (s = 0,
+  // c = 1) q = alpha^2, and q^2 = alpha^4 underflows float for alpha below
+  // ~1e-11 (to 0 below 6e-12, within the alpha float accepts: a^2 / 0 =
+  // inf; case ct_ggx_alpha_min), while alpha / q <= 1 / (alpha c^2) stays
+  // in range down to the smallest alpha the precision limits let through.
+  const T q = c2 * a2 + s2, r = alpha / q;
+  return r * r / pi;
 }
 // Smith's G1(x) / x for x = N.X > 0, s2 = |N x X|^2.
 template <class T> T smithG1OverCos(MicrofacetD d, T x, T s2, T alpha) {
@@ -268,8 +273,16 @@ T cookTorranceSpecular(vec3<T> n, vec3<T> l, vec3<T> v, MicrofacetD d, Microface
   const T len = glm::length(sum);
   if (!(len > T(0))) return T(0);
   const vec3<T> h = sum / len;
-  const T nh = glm::dot(n, h), vh = glm::dot(v, h);
-  if (!(nh > T(0)) || !(vh > T(0))) return T(0);
+  // V.H = (1 + L.V) / |L + V| = |L + V| / 2 for unit L and V: from the
+  // length, not as dot(v, h). Near L = -V (both grazing, on opposite
+  // sides) H is nearly orthogonal to V and dot(v, h) sums terms of size 1
+  // that cancel to V.H ~ 1e-4, each carrying H's rounding error divided by
+  // |L + V| (in float ~6e-8 / 3e-4): V.H came out as noise (case
+  // ct_beckmann_vgroove_schlick_grazing, 45000/65535 float vs double
+  // through the V-groove's 2 N.H / V.H), while |L + V| keeps float's
+  // relative precision.
+  const T nh = glm::dot(n, h), vh = T(0.5) * len;
+  if (!(nh > T(0))) return T(0);
   const vec3<T> nxh = glm::cross(n, h);
   const T dist = microfacetD(d, nh, glm::dot(nxh, nxh), alpha);
   if (!(dist > T(0))) return T(0);

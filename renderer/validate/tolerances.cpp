@@ -11,6 +11,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "image/metric_criteria.h"
 #include "scene/json_reader.h"
 #include "scene_file/scene_loader.h"
 
@@ -35,6 +36,7 @@ ToleranceTable loadTolerances(const fs::path& file) {
   table.default_tolerance.fraction = d.requireNumber("fraction", Range::closed(0.0, 1.0));
   table.default_tolerance.max_unexplained =
       d.requireNumber("max_unexplained_16bit", Range::nonNegative()) / 65535.0;
+  table.default_tolerance.metrics = readMetricCriteria(d, "metrics");
   d.finish();
   r.finish();
   return table;
@@ -50,6 +52,7 @@ Tolerance ToleranceTable::lookup(const Scene& scene, const std::string& renderer
     if (d.fraction) t.fraction = *d.fraction;
     if (d.max_unexplained_16bit) t.max_unexplained = *d.max_unexplained_16bit / 65535.0;
     t.exclude_backfacing = d.exclude_backfacing;
+    t.metrics = overriddenCriteria(t.metrics, d.metrics);
     if (reason) *reason = d.reason;
   }
   return t;
@@ -66,9 +69,18 @@ Tolerance ToleranceTable::lookupPair(const Scene& scene, const std::string& a, c
   t.fraction = std::max(0.0, t1.fraction + t2.fraction - 1.0);
   t.max_unexplained = t1.max_unexplained + t2.max_unexplained;
   t.exclude_backfacing = t1.exclude_backfacing || t2.exclude_backfacing;
-  if (reason)
+  // No metric criterion is derived (the rule in tolerances.h): t.metrics
+  // stays empty, and the reason says which were left to the reference pairs.
+  if (reason) {
     *reason = "derived: the sum of the " + a + " and " + b +
               " tolerances on f1 + f2 - 1 of the pixels (triangle inequality and union bound)";
+    std::string left;
+    for (const auto& [id, ti] : {std::pair{&a, &t1}, std::pair{&b, &t2}})
+      if (!ti->metrics.empty()) left += (left.empty() ? "" : "; ") + *id + ": " + metricCriteriaText(ti->metrics);
+    if (!left.empty())
+      *reason += "; the metric criteria (" + left + ") are not derived for this pair: no triangle inequality "
+                 "bounds them, they hold on each renderer's pair with " + reference;
+  }
   return t;
 }
 

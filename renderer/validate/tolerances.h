@@ -49,7 +49,8 @@ struct ToleranceTable {
 
   // The tolerance for the scene against `renderer` (compared with the
   // reference renderer): the default, with the fields the scene declares
-  // for that renderer replaced; `reason` is the declared reason ("" for the
+  // for that renderer replaced (a declared metric criterion replaces the
+  // default's on the same metric, the default's others stay); `reason` is the declared reason ("" for the
   // default).
   Tolerance lookup(const Scene& scene, const std::string& renderer,
                    std::string* reason = nullptr) const;
@@ -65,6 +66,16 @@ struct ToleranceTable {
   // class comes from the reference's diagnostics in all three pairs, so a
   // pixel unexplained between a and b is unexplained against the reference
   // in both.
+  // Metric criteria (image/metric_criteria.h) are not derived: a pair of
+  // two external renderers is held to none, whatever a and b declare. FLIP,
+  // SSIM, CIEDE2000, YIQ and the percentiles obey no triangle inequality
+  // (CIEDE2000 and FLIP are not metrics in that sense; a percentile of a sum
+  // is not bounded by the sum of percentiles over other pixels), and even
+  // max and RMSE are taken over each pair's own covered pixels, which
+  // differ between the three pairs; so no bound on a - b follows from bounds
+  // on a - ref and ref - b. Each declared criterion still decides its
+  // renderer's pair with the reference; `reason` names the criteria left
+  // out.
   Tolerance lookupPair(const Scene& scene, const std::string& a, const std::string& b,
                        std::string* reason = nullptr) const;
 };

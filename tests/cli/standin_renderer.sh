@@ -6,6 +6,7 @@
 #   --version        prints "standin 1.0"
 #   pass             the reference renderer's image of SCENE
 #   dim              that image at half its value (a renderer that disagrees)
+#   dim5             that image 5% darker (a small fault: an exposure slip)
 #   fail             complains and exits 3
 #   hang             never finishes (the time-out must stop it)
 #   no-image         exits 0 without writing OUTPUT
@@ -23,6 +24,8 @@ case "$mode" in
   pass) exec "$XVAL" render "$scene" -o "$output" -q ;;
   dim) "$XVAL" render "$scene" -o "$output.full.exr" -q
        exec oiiotool "$output.full.exr" --mulc 0.5,0.5,0.5,1 -o "$output" ;;
+  dim5) "$XVAL" render "$scene" -o "$output.full.exr" -q
+        exec oiiotool "$output.full.exr" --mulc 0.95,0.95,0.95,1 -o "$output" ;;
   fail) echo "standin: the engine crashed (simulated)"; exit 3 ;;
   hang) exec sleep 600 ;;
   no-image) exit 0 ;;

@@ -62,7 +62,7 @@ TEST(BlenderImportCross, WrongLoaderFailsWhereTheRightOnePasses) {
   // looks the same either way, only its uvs tell.
   const Scene box = referenceScene("mesh_boxtextured_gltf");
   fs::create_directories(dir / "box");
-  const GeometryPasses blender = renderModelImport(box, dir / "box", 600.0);
+  const GeometryPasses blender = renderModelImport("blender-import", box, dir / "box", 600.0);
   const auto right = againstBlender(box, blender);
   EXPECT_TRUE(right.pass) << validation::toJson(right, validation::kGeometryTolerance);
   EXPECT_GT(right.uv_compared, 10000);
@@ -96,7 +96,7 @@ TEST(BlenderImportCross, SkippedPrimitiveFails) {
   const fs::path dir = test::freshTempDir("xval_cross_blender_import_spider");
   const Scene spider = loadScene((fs::path(XVAL_REFERENCE_DIR) / "scenes/mesh_spider_obj.json").string());
   fs::create_directories(dir / "spider");
-  const GeometryPasses blender = renderModelImport(spider, dir / "spider", 600.0);
+  const GeometryPasses blender = renderModelImport("blender-import", spider, dir / "spider", 600.0);
   const auto right = againstBlender(spider, blender);
   EXPECT_TRUE(right.pass) << validation::toJson(right, validation::kGeometryTolerance);
   // The spider's largest primitive (by triangles) left out, as a loader
@@ -123,7 +123,7 @@ TEST(BlenderImportCross, ModelFileNamedWithPythonIsData) {
   j.erase("tolerances");
   const Scene s = parseScene(j.dump(), dir / "scene.json");
   fs::create_directories(dir / "work");
-  const auto m = againstBlender(s, renderModelImport(s, dir / "work", 600.0));
+  const auto m = againstBlender(s, renderModelImport("blender-import", s, dir / "work", 600.0));
   EXPECT_TRUE(m.pass) << validation::toJson(m, validation::kGeometryTolerance);
   EXPECT_GT(m.covered, 10000);
 }
@@ -134,7 +134,7 @@ TEST(BlenderImportCross, BackslashInWorkFolderIsRefused) {
   const fs::path dir = test::freshTempDir("xval_cross_blender_import_backslash");
   fs::create_directories(dir / "a\\b");
   try {
-    renderModelImport(referenceScene("mesh_wuson_stl"), dir / "a\\b", 600.0);
+    renderModelImport("blender-import", referenceScene("mesh_wuson_stl"), dir / "a\\b", 600.0);
     ADD_FAILURE() << "no error";
   } catch (const ExportError& e) {
     EXPECT_NE(std::string(e.what()).find("folder separator"), std::string::npos) << e.what();
@@ -166,7 +166,7 @@ struct FakeScript {
 std::string errorOf(const Scene& s, const fs::path& work, double timeout) {
   fs::create_directories(work);
   try {
-    renderModelImport(s, work, timeout);
+    renderModelImport("blender-import", s, work, timeout);
   } catch (const ExternalToolError& e) {
     return e.what();
   }

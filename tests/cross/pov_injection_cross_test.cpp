@@ -40,7 +40,7 @@ TEST(PovrayCross, HostileTexturePathAndNameRenderCorrectly) {
   const fs::path dir = test::freshTempDir("xval_cross_inject_pov");
   Scene s = hostileScene(dir);
   Image ref = renderScene(s, RenderOptions{});
-  Image pov = renderWithPovray(s, dir / "work", 600.0);
+  Image pov = renderWithPovray("povray", s, dir / "work", 600.0);
   // The default tolerance (reference/tolerances.json, the toolkit's own).
   const Tolerance t = loadTolerances(toolkitToleranceFile()).default_tolerance;
   CompareMetrics m = compareImages(ref, pov, t);
@@ -52,7 +52,7 @@ TEST(BlenderCross, HostileTexturePathAndNameRenderCorrectly) {
   const fs::path dir = test::freshTempDir("xval_cross_inject_blender");
   Scene s = hostileScene(dir);
   Image ref = renderScene(s, RenderOptions{});
-  Image bl = renderWithBlender(s, dir / "work", 600.0);
+  Image bl = renderWithBlender("blender", s, dir / "work", 600.0);
   // The default tolerance (reference/tolerances.json, the toolkit's own).
   const Tolerance t = loadTolerances(toolkitToleranceFile()).default_tolerance;
   CompareMetrics m = compareImages(ref, bl, t);

@@ -5,7 +5,10 @@
 //   - L and d without overflow of (p_light - p)^2 (towardsLight; case
 //     light_far_1e20);
 //   - camera-relative shading coordinates (Shader's origin; case
-//     offset_1e6).
+//     offset_1e6);
+//   - cook_torrance's V.H from |L + V| (case
+//     ct_beckmann_vgroove_schlick_grazing) and GGX's D as (alpha / q)^2 / pi
+//     (case ct_ggx_alpha_min), models::cookTorranceSpecular.
 // Then what the scene format cannot express, on hand-made data: zero-area
 // triangles through the intersector in both precisions, and a zero-length
 // normal and a NaN eye vector (the eye at the shaded point) through every
@@ -21,6 +24,7 @@
 
 #include "geometry/mesh.h"
 #include "render/accel.h"
+#include "scene_file/precision_limits.h"
 #include "scene_file/scene_loader.h"
 #include "shading/lights.h"
 #include "shading/models.h"
@@ -139,6 +143,82 @@ TEST(ExtremesFix, CameraRelativeShadingKeepsFloatPrecisionFarFromTheOrigin) {
   }
   EXPECT_GT(worst_world * 65535.0, 100.0) << "world coordinates in float (the bug the case showed)";
   EXPECT_LT(worst_relative * 65535.0, 1.0);
+}
+
+// --- cook_torrance: V.H at grazing, and GGX's peak at the smallest alpha ----------
+
+// L and V nearly opposite, both grazing over N = +z (case
+// ct_beckmann_vgroove_schlick_grazing: the light 2e-4 rad above the plane's
+// far side, the eye 1e-4 to 1e-2 rad above its near side): the float path's
+// L and V (unit in double, rounded to float: unit to ~6e-8) against the
+// double path's. V.H = |L + V| / 2 for unit L and V. The old form
+// dot(v, normalize(l + v)) = (L.V + |V|^2) / |L + V| turns the rounding of
+// |V|^2 - 1 (~1e-7) into an error of 1e-7 / |L + V| ~ 1e-3 of V.H ~ 1e-4.
+TEST(ExtremesFix, CookTorranceVdotHFromTheLengthOfLPlusV) {
+  const glm::dvec3 ld = glm::normalize(glm::dvec3(0.0, std::cos(2e-4), std::sin(2e-4))), nd(0, 0, 1);
+  const glm::vec3 l(ld), n(nd);
+  double worst_old = 0.0, worst_new = 0.0, worst_s = 0.0;
+  for (double ev = 1e-4; ev < 1e-2; ev *= 1.13)
+    for (double vx : {0.0, 1e-4, 3e-4, 1e-3}) {
+      const glm::dvec3 vd = glm::normalize(glm::dvec3(vx, -1.0, ev));
+      const glm::vec3 v(vd);
+      const double exact = 0.5 * glm::length(ld + vd);
+      const glm::vec3 sum = l + v;
+      const float len = glm::length(sum);
+      const float old_form = glm::dot(v, sum / len);
+      const float new_form = 0.5f * len;  // what models::cookTorranceSpecular forms
+      worst_old = std::max(worst_old, std::abs(old_form - exact) / exact);
+      worst_new = std::max(worst_new, std::abs(new_form - exact) / exact);
+      // Through S (the V-groove's 2 N.H / V.H, Schlick's (1 - V.H)^5).
+      const double want = m::cookTorranceSpecular(nd, ld, vd, m::MicrofacetD::Beckmann, m::MicrofacetG::VGroove,
+                                                  m::MicrofacetF::Schlick, 0.5, 0.04);
+      const float got = m::cookTorranceSpecular(n, l, v, m::MicrofacetD::Beckmann, m::MicrofacetG::VGroove,
+                                                m::MicrofacetF::Schlick, 0.5f, 0.04f);
+      if (want > 1e-6) worst_s = std::max(worst_s, std::abs(got - want) / want);
+    }
+  EXPECT_GT(worst_old, 1e-2) << "dot(v, h) in float (the bug the case showed)";
+  EXPECT_LT(worst_new, 1e-6);
+  EXPECT_LT(worst_s, 1e-5);
+}
+
+// GGX's D at its peak (sin^2(N, H) = 0, N.H = 1) is 1 / (pi alpha^2). At the
+// smallest alpha float accepts with ks = 1 (case ct_ggx_alpha_min) the old
+// form alpha^2 / (pi q^2), q = alpha^2, squares q below float's smallest
+// subnormal: inf. Formed as (alpha / q)^2 / pi it is finite and exact to
+// float's precision, at the peak and around it.
+TEST(ExtremesFix, CookTorranceGgxPeakWithoutUnderflowInFloat) {
+  const float alpha = 2.3e-12f, a2 = alpha * alpha, q = a2;
+  const float old_peak = a2 / (3.14159265f * q * q);
+  EXPECT_TRUE(std::isinf(old_peak)) << "the old form in float (the bug the case showed): " << old_peak;
+  for (double s2 : {0.0, 1e-25, 1e-23, 1e-21, 1e-12}) {
+    const double c = std::sqrt(1.0 - s2);
+    const double want = m::microfacetD(m::MicrofacetD::Ggx, c, s2, double(alpha));
+    const float got = m::microfacetD(m::MicrofacetD::Ggx, float(c), float(s2), alpha);
+    EXPECT_TRUE(std::isfinite(got)) << s2;
+    EXPECT_NEAR(got, want, 1e-6 * want) << s2;
+  }
+}
+
+// The alpha of the ct_*_alpha_min cases is the smallest float accepts (to
+// two digits): the case's scene passes float's precision limits, and the
+// same scene with alpha 2.2e-12 is refused, whatever ks: S (up to
+// specularGain ~ 2.66 / alpha^3) is formed before ks multiplies it, so a
+// small ks does not let a smaller alpha through (ks 1e-30 and alpha 3e-22
+// gave a raw Inf in float: S = 1 / (4 alpha^2 N.V) > FLT_MAX).
+TEST(Extremes, CookTorranceAlphaMinIsTheSmallestFloatAccepts) {
+  for (const auto& c : extremes::extremesMatrix({40})) {
+    if (c.name.find("_alpha_min") == std::string::npos) continue;
+    SCOPED_TRACE(c.name);
+    nlohmann::ordered_json j = c.scene;
+    EXPECT_EQ(j["material"]["model"]["roughness"].get<double>(), 2.3e-12);
+    EXPECT_NO_THROW(checkPrecision(parseScene(j.dump(), c.name + ".json"), Precision::Float));
+    j["material"]["model"]["roughness"] = 2.2e-12;
+    EXPECT_THROW(checkPrecision(parseScene(j.dump(), c.name + ".json"), Precision::Float), SceneError);
+    for (double ks : {0.5, 1e-30}) {
+      j["material"]["model"]["ks"] = ks;
+      EXPECT_THROW(checkPrecision(parseScene(j.dump(), c.name + ".json"), Precision::Float), SceneError) << ks;
+    }
+  }
 }
 
 // --- what the scene format cannot express --------------------------------------

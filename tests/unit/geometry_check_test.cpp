@@ -114,7 +114,7 @@ class ModelImportNames : public ::testing::Test {
     EXPECT_NE(why.find(field + ": '" + value + "'"), std::string::npos) << why;
     fs::create_directories(root_ / "work");
     try {
-      renderModelImport(s, root_ / "work", 30.0);
+      renderModelImport("blender-import", s, root_ / "work", 30.0);
       ADD_FAILURE() << "not refused: " << field << " " << value;
     } catch (const ExportError& e) {
       EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();

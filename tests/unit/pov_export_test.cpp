@@ -215,7 +215,7 @@ class FakeTool : public ::testing::Test {
   }
   std::string errorOf(double timeout = 30.0) {
     try {
-      renderWithPovray(smallScene(), freshDir("fakework_" + name_), timeout);
+      renderWithPovray("povray", smallScene(), freshDir("fakework_" + name_), timeout);
     } catch (const ExternalToolError& e) {
       return e.what();
     }
@@ -223,7 +223,7 @@ class FakeTool : public ::testing::Test {
   }
   std::string blenderErrorOf(double timeout = 30.0) {
     try {
-      renderWithBlender(smallScene(), freshDir("fakework_" + name_), timeout);
+      renderWithBlender("blender", smallScene(), freshDir("fakework_" + name_), timeout);
     } catch (const ExternalToolError& e) {
       return e.what();
     }

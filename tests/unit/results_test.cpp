@@ -35,7 +35,9 @@ fs::path dir() {
 std::vector<fs::path> samples() {
   return {fs::path(XVAL_SOURCE_DIR) / "results/validation/results.json",
           fs::path(XVAL_TESTS_DIR) / "fuzz/seeds/results/pass.json",
-          fs::path(XVAL_TESTS_DIR) / "fuzz/seeds/results/error.json"};
+          fs::path(XVAL_TESTS_DIR) / "fuzz/seeds/results/error.json",
+          // a pair failing a declared metric criterion (tolerance.metrics)
+          fs::path(XVAL_TESTS_DIR) / "fuzz/seeds/results/metric_fail.json"};
 }
 
 // `j` without the pairs' "verdict", unordered (order is no part of the format).

@@ -216,13 +216,13 @@ TEST_F(FakePovray, HarnessBoxFiltersTheSubpixelImage) {
   writeImage(fine, d / "fine.png");  // 16-bit codes, no alpha: read back as covered
   const Image want = boxFilter(readImage(d / "fine.png"), 4);
   installCopying(d / "fine.png");
-  const Image got = renderWithPovray(sphereScene(8, 16), d / "work", 30.0);
+  const Image got = renderWithPovray("povray", sphereScene(8, 16), d / "work", 30.0);
   ASSERT_EQ(got.width, 8);
   ASSERT_EQ(got.height, 8);
   EXPECT_EQ(got.rgba, want.rgba);
   try {
-    renderWithPovray(sphereScene(32, 1), d / "work1", 30.0);  // 32 x 32 is right at spp 1
-    renderWithPovray(sphereScene(32, 4), d / "work4", 30.0);  // but not at spp 4 (64 x 64)
+    renderWithPovray("povray", sphereScene(32, 1), d / "work1", 30.0);  // 32 x 32 is right at spp 1
+    renderWithPovray("povray", sphereScene(32, 4), d / "work4", 30.0);  // but not at spp 4 (64 x 64)
     FAIL() << "an image of the wrong size was accepted";
   } catch (const ExternalToolError& e) {
     EXPECT_NE(std::string(e.what()).find("64x64"), std::string::npos) << e.what();

@@ -40,6 +40,9 @@ struct CookTorrance {
   // alpha = 1); G / N.V <= 7.1 / alpha (Smith: G1(N.L) <= 1 and G1(x)/x <=
   // 2 / alpha for GGX, <= 7.1 / alpha for Beckmann's approximation) or
   // <= 2^11 (V-groove, with V.H >= 2^-10: models::vGrooveGOverNv).
+  // The parameter specularGain() depends on (named in the precision
+  // limits' message when the gain, not ks, is what exceeds them).
+  static constexpr const char* kSpecularGainParam = "roughness";
   double specularGain() const {
     const double a = roughness;
     const double g_over_nv = geometry == models::MicrofacetG::Smith ? 7.1 / a : 2048.0;

@@ -93,6 +93,14 @@ J ambient(double a = 0.1) { return {{"type", "ambient"}, {"color", v3(a, a, a)}}
 
 const glm::dvec3 kFront(-0.5, 2.0, 1.25), kBehind(0.5, -2.0, -1.25), kEye(0, 0, 4.2);
 
+// The smallest cook_torrance roughness (alpha) the float path accepts with
+// ks = 1, kd = 1 and the lights of the case ct_*_alpha_min (a point light
+// of colour 1 and the ambient 0.1: L = 1.1), to two digits: the shading
+// bound 4 x 1.1 x (1 + 2.6625 / alpha^3) <= 1e36 (scene_file/
+// precision_limits.h) gives alpha >= 2.27e-12; the unit test checks that
+// 2.2e-12 is refused.
+constexpr double kCookTorranceAlphaMin = 2.3e-12;
+
 // The specular sweep: a brick plane z = 0 seen from (-1,-1,4) with a light
 // at the mirror position (1,1,4), so the highlight's peak (R = V) is at
 // the image centre. The field of view shrinks with n so the highlight
@@ -401,6 +409,105 @@ std::vector<Case> extremesMatrix(const MatrixOptions& options) {
                "blinn_phong n = 55, lit from behind: H = normalize(L + V) near the silhouette, where L "
                "and V are nearly opposite and |L + V| -> 0",
                {{"type", BlinnPhong::kName}, {"ka", 1}, {"kd", 1}, {"ks", 1}, {"shininess", 55}}, point(kBehind));
+  }
+
+  // --- cook_torrance: alpha near 1 and near 0, grazing angles, Schlick ------
+  {
+    auto ct = [](const char* d, const char* g, const char* f, double alpha, double kd, double ks) {
+      return J{{"type", CookTorrance::kName}, {"distribution", d}, {"geometry", g}, {"fresnel", f},
+               {"f0", 0.04}, {"roughness", alpha}, {"kd", kd}, {"ks", ks}};
+    };
+    auto push = [&](const std::string& name, const std::string& what, J sc) {
+      out.push_back(Case{name, "issue #33 models", what, std::move(sc)});
+    };
+    auto mat = [](J model) { return J{{"model", std::move(model)}, {"base_color", v3(0.8, 0.7, 0.6)}}; };
+    const char* vgroove = "cook_torrance";
+    // alpha = 1, every D x G: the sphere lit from the side (L = +x), as
+    // oren_nayar's cases: N.L -> 0 at the terminator, N.V -> 0 at the
+    // silhouette, where the BRDF's 1 / (N.L N.V) would diverge and G / N.V
+    // is formed instead (Smith: <= 7.1 / alpha; V-groove: 2 N.H / V.H).
+    for (const char* d : {"ggx", "beckmann"})
+      for (const char* g : {"smith", vgroove}) {
+        const std::string gname = g == vgroove ? "vgroove" : g;
+        const std::string name = std::string("ct_") + d + "_" + gname + "_alpha1";
+        push(name,
+             std::string("cook_torrance ") + d + " / " + g + ", alpha 1, lit from the side: N.L and N.V -> 0 "
+                 "at the terminator and the silhouette (G / N.V formed, never 1 / (N.L N.V))",
+             scene(name, camera(kEye, {0, 0, 0}, 45, n), J::array({sphere()}), mat(ct(d, g, "none", 1.0, 1, 1)),
+                   J::array({directional({-1, 0, 0}), ambient()})));
+      }
+    // alpha near 0: the specular sweep's mirror plane (eye (-1,-1,4),
+    // light (1,1,4): H = N at the image centre), the field of view scaled
+    // so that the lobe (where tan(N, H) = 2 alpha D is 1/25 of its peak
+    // (GGX), e^-4 (Beckmann); on the plane ~ 4.24 x 2 alpha from the
+    // centre) fills the frame:
+    // tan(fov/2) = 3 alpha. ks = 0.9 x 4 alpha^2 N.V puts the peak
+    // S = 1 / (4 alpha^2 N.V) (D = 1 / (pi alpha^2), G ~ 1) at 0.9, below
+    // the saturation. tan^2 ~ alpha^2 = 1e-6 there: in float, 1 - (N.H)^2
+    // would cancel to an error of 1e-7 / 1e-6 (the cross product does not).
+    const double nv_mirror = 4.0 / std::sqrt(18.0), alpha_small = 1e-3;
+    for (const char* d : {"ggx", "beckmann"}) {
+      const std::string name = std::string("ct_") + d + "_alpha1e-3";
+      const double fov = 2.0 * std::atan(3.0 * alpha_small) * 180.0 / kPi;
+      J model = ct(d, "smith", "none", alpha_small, 0, 0.9 * 4.0 * alpha_small * alpha_small * nv_mirror);
+      push(name,
+           std::string("cook_torrance ") + d + " / smith, alpha 1e-3 (near 0): the peak's tan^2 ~ alpha^2 = 1e-6 "
+               "at the image centre, fov scaled to the lobe, ks so the peak is 0.9",
+           scene(name, camera({-1, -1, 4}, {0, 0, 0}, fov, n), J::array({plane({0, 0, 0}, {0, 0, 1}, 8.0, 4.0)}),
+                 mat(std::move(model)), J::array({point({1, 1, 4}), ambient()})));
+    }
+    // The smallest alpha float accepts with ks = 1 (scene_file/
+    // precision_limits.h: the shading bound B = 4 C K F L M <= 1e36 with
+    // K = kd + ks specularGain(), specularGain ~ 2.66 / alpha^3 for Smith,
+    // L = 1.1 here: alpha >= 2.3e-12), on a plane seen head-on with the
+    // light at the eye; the image is odd-sized, so the centre pixel's ray
+    // is -z and hits the origin: N = L = V exactly, sin^2(N, H) = 0, and D
+    // is at its peak 1 / (pi alpha^2) ~ 6e22 (GGX formed as alpha^2 /
+    // (pi q^2), q = alpha^2, squared q to 2.8e-47, below float's smallest
+    // subnormal: D = inf, a raw Inf pixel; models::microfacetD now forms
+    // (alpha / q)^2 / pi). Every other pixel is 0.005 rad or more off the
+    // lobe.
+    for (const char* d : {"ggx", "beckmann"}) {
+      const std::string name = std::string("ct_") + d + "_alpha_min";
+      push(name,
+           std::string("cook_torrance ") + d + " / smith, alpha 2.3e-12 (the smallest float accepts with "
+               "ks = 1), light at the eye: N = L = V at the centre pixel, "
+               "D = 1 / (pi alpha^2) ~ 6e22",
+           scene(name, camera({0, 0, 4}, {0, 0, 0}, 45, n + 1), J::array({plane({0, 0, 0}, {0, 0, 1}, 4.0)}),
+                 mat(ct(d, "smith", "none", kCookTorranceAlphaMin, 1, 1)),
+                 J::array({point({0, 0, 4}), ambient()})));
+    }
+    // Grazing on both sides, Schlick's F at grazing: a plane z = 0 seen
+    // from 0.01 above it, nearly along +y (fov 0.6 deg), with a directional
+    // light low over the far side (elevation 2e-4 rad, travelling towards
+    // -y): the forward-scattering peak, H ~ N, at the rows whose view
+    // elevation e_v is 2e-4. There N.L = 2e-4, N.V = e_v (5e-5 to 1e-2
+    // over the rows), V.H ~ (2e-4 + e_v) / 2 ~ 1e-4 .. 5e-3, so Schlick's
+    // F = f0 + (1 - f0)(1 - V.H)^5 ~ 1 and the V-groove's 2 N.H / V.H
+    // reaches its floor V.H >= 2^-10 (models::vGrooveGOverNv) in the rows
+    // nearest the horizon. H = (L + V) / |L + V| turns an error in V into
+    // one 1 / |L + V| (up to 5000) times larger in H: the plane is 2.5 wide
+    // (it still fills the 0.6 deg view) and 200 long, because the float
+    // path's hit point, interpolated over a triangle 200 wide, is off
+    // sideways by a few ulps of 200, and that, so amplified, moved the
+    // lobe's flanks by 150/65535 (alpha 0.25) against double: a precision
+    // limit of the float geometry, not of the model. alpha 0.5; ks puts
+    // the peaks near 0.7 (V-groove: G / N.V up to 2 / 2^-10 = 2048;
+    // Smith: G1(N.L) ~ 2 N.L / alpha keeps S near 3e-3 per unit ks).
+    const double e_light = 2e-4;
+    struct G { const char* d; const char* g; double ks; };
+    for (const G& k : {G{"beckmann", vgroove, 3e-4}, G{"ggx", "smith", 200.0}}) {
+      const std::string name = std::string("ct_") + k.d + "_" + (k.g == vgroove ? "vgroove" : k.g) + "_schlick_grazing";
+      push(name,
+           std::string("cook_torrance ") + k.d + " / " + k.g + " / schlick, alpha 0.5, eye and light 5e-5 to "
+               "1e-2 rad above a plane on opposite sides: N.L, N.V and V.H -> 0 together (the V-groove's V.H "
+               "floor 2^-10, Schlick's F -> 1)",
+           scene(name, camera({0, -10, 0.01}, {0, 90, 0.01 - 100 * 0.004}, 0.6, n),
+                 J::array({J{{"shape", "plane"}, {"center", v3(0, 90, 0)}, {"normal", v3(0, 0, 1)},
+                             {"size", J::array({2.5, 200.0})}}}),
+                 mat(ct(k.d, k.g, "schlick", 0.5, 0, k.ks)),
+                 J::array({directional({0, -std::cos(e_light), -std::sin(e_light)}), ambient()})));
+    }
   }
   return out;
 }

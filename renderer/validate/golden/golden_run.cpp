@@ -9,6 +9,7 @@
 #include "files/scratch_folder.h"
 #include "golden/golden_set.h"
 #include "image/compare.h"
+#include "image/metric_criteria.h"
 #include "image/pair_failure.h"
 #include "process/run_process.h"
 #include "process/shell_word.h"
@@ -156,18 +157,20 @@ int goldenCheck(const GoldenRequest& request) {
     // model of a float32 renderer declares.
     const PrecisionModel& p = renderers::precisionOf(r);
     const PrecisionModel fresh_p = precision == Precision::Float ? float32Precision() : p;
-    const CompareMetrics cm = compareImages(stored, fresh.image, tol, {p, fresh_p});
-    const bool pass = tol.passes(cm);
+    const PairMeasures measures = measurePair(stored, fresh.image, tol, {p, fresh_p});
+    const CompareMetrics& cm = measures.compare;
+    const bool pass = passes(measures, tol);
     const std::string figures =
         "max " + std::to_string(cm.max_abs * 65535.0) + "/65535 at (" + std::to_string(cm.worst_x) + "," +
         std::to_string(cm.worst_y) + "), " + std::to_string(cm.fraction_within * 100.0) + "% within " +
         std::to_string(tol.max_abs * 65535.0) + "/65535 (need " + std::to_string(tol.fraction * 100.0) +
         "%), mask disagreements no edge explains " + std::to_string(cm.mask_disagree - cm.mask_disagree_explained) +
+        (tol.metrics.empty() ? "" : ", " + metricValuesText(measures) + " (declared: " + metricCriteriaText(tol.metrics) + ")") +
         (reason.empty() ? "" : "; declared: " + reason);
     if (pass)
       std::printf("pass %s (%s): %s\n", file.string().c_str(), request.precision.c_str(), figures.c_str());
     else {
-      const std::string why = failedText(failedCriteria(cm, tol));
+      const std::string why = failedText(failedCriteria(measures, tol));
       fail("outside the tolerance against " + (folder / e.image).string() + " (stored " + e.date_utc + ", " +
            e.git_commit + "): " + why + "; " + figures);
     }

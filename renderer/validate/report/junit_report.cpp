@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "image/metric_criteria.h"
 #include "image/metric_table.h"
 #include "image/pair_failure.h"
 #include "validate/results/case_verdict.h"
@@ -43,6 +44,7 @@ std::string describeMetrics(const results::PairMetrics& m) {
                   num(100.0 * m.fraction_within) + "% within " + num(m.tolerance.max_abs_16bit) + "/65535 (needs " +
                   num(100.0 * m.tolerance.fraction) + "%)";
   s += ", " + num(double(m.mask_disagree - m.mask_disagree_explained)) + " mask disagreements no edge explains";
+  if (!m.tolerance.metrics.empty()) s += "; declared metric criteria: " + metricCriteriaText(m.tolerance.metrics);
   if (!m.tolerance_reason.empty()) s += "; declared tolerance: " + m.tolerance_reason;
   return s;
 }

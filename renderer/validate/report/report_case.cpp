@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "image/metric_criteria.h"
 #include "image/pair_failure.h"
 #include "image/pixel_classes.h"
 #include "render/geometry_passes.h"
@@ -155,6 +156,8 @@ mu::data pairRow(const results::Pair& p) {
     d.set("within", fixed(100.0 * m.fraction_within, 3));
     d.set("tolerance", significant(m.tolerance.max_abs_16bit));
     d.set("fraction", significant(100.0 * m.tolerance.fraction));
+    d.set("metric_criteria", maybe(m.tolerance.metrics.empty() ? std::nullopt
+                                                                : std::optional<std::string>(metricCriteriaText(m.tolerance.metrics))));
     d.set("masks_off", std::to_string(m.mask_disagree));
     d.set("masks_explained", std::to_string(m.mask_disagree_explained));
     mu::data classes = list();

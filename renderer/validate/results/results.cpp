@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "files/atomic_write.h"
+#include "image/metric_criteria.h"
 #include "scene/json_reader.h"
 #include "scene_file/scene_loader.h"
 #include "validate/results/results_shape.h"
@@ -148,6 +149,13 @@ PairMetrics readMetrics(const Json& j, const std::string& where) {
   m.tolerance.fraction = t.num("fraction");
   m.tolerance.exclude_backfacing = t.boolean("exclude_backfacing");
   m.tolerance.max_unexplained_16bit = t.num("max_unexplained_16bit");
+  if (const Json* criteria = t.takeOptional("metrics")) {
+    // Read as a tolerance file's: ids of the table, each under its better
+    // direction's key (image/metric_criteria.h).
+    const nlohmann::json holder = {{"metrics", nlohmann::json(*criteria)}};
+    JsonReader r(holder, "", f.at("tolerance"));
+    m.tolerance.metrics = readMetricCriteria(r, "metrics");
+  }
   refuseRest(t);
   m.tolerance_reason = f.has("tolerance_reason") ? f.str("tolerance_reason") : std::string();
   if (const Json* values = f.takeOptional("values"))
@@ -355,6 +363,7 @@ Json metricsJson(const PairMetrics& m) {
                     {"fraction", m.tolerance.fraction},
                     {"exclude_backfacing", m.tolerance.exclude_backfacing},
                     {"max_unexplained_16bit", m.tolerance.max_unexplained_16bit}};
+  if (!m.tolerance.metrics.empty()) j["tolerance"]["metrics"] = metricCriteriaJson(m.tolerance.metrics);
   j["tolerance_reason"] = m.tolerance_reason;
   if (m.values) {
     j["values"] = Json::object();

@@ -35,6 +35,7 @@
 #include <nlohmann/json.hpp>
 
 #include "image/pair_failure.h"
+#include "scene/metric_criterion.h"
 #include "validate/results/case_verdict.h"
 
 namespace xval::results {
@@ -76,6 +77,9 @@ struct Render {
 struct PairTolerance {
   double max_abs_16bit = 0, fraction = 0, max_unexplained_16bit = 0;
   bool exclude_backfacing = false;
+  // The declared metric criteria (image/metric_criteria.h; "metrics", absent
+  // when none and in files written before them).
+  std::vector<MetricCriterion> metrics;
   bool operator==(const PairTolerance&) const = default;
 };
 

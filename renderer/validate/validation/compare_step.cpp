@@ -21,6 +21,7 @@
 #include "files/output_folder.h"
 #include "image/compare.h"
 #include "image/heat_map.h"
+#include "image/metric_criteria.h"
 #include "image/metric_table.h"
 #include "image/image.h"
 #include "image/pair_failure.h"
@@ -232,8 +233,8 @@ std::vector<PairFailure> comparedPair(const CompareContext& cx, const Scene& sce
   jm["tolerance_reason"] = reason;
   jm["precision"] = {{"a", precisionJson(precision.a)}, {"b", precisionJson(precision.b)}};
   jp["metrics"] = jm;
-  jp["pass"] = tol.passes(m);
-  std::vector<PairFailure> failed = failedCriteria(m, tol);
+  jp["pass"] = passes(measures, tol);
+  std::vector<PairFailure> failed = failedCriteria(measures, tol);
   jp["failed"] = failedJson(failed);
   // Known differences are the classified ones and a declared reason.
   jp["classification"] = {{"known", m.over_tolerance - m.over_unexplained()},
