@@ -18,6 +18,7 @@
 #include "camera/camera.h"
 #include "common/export_common.h"
 #include "common/supersample.h"
+#include "geometry/front_faces.h"
 #include "geometry/mesh.h"
 #include "geometry/model_textures.h"
 #include "geometry/scene_meshes.h"
@@ -46,40 +47,41 @@ struct LightBlock {
 };
 
 LightBlock lightBlock(const PreparedLight<float>& l) {
-  using K = PreparedLight<float>::Kind;
-  const float kind = l.kind == K::Point ? 0.f : l.kind == K::Directional ? 1.f : 2.f;
-  return {{l.position.x, l.position.y, l.position.z, kind},
+  return {{l.position.x, l.position.y, l.position.z, 0.f},
           {l.direction.x, l.direction.y, l.direction.z, l.cos_cutoff},
           {l.color.x, l.color.y, l.color.z, l.color_luma},
-          {l.att_c, l.att_l, l.att_q, l.has_attenuation ? 1.f : 0.f}};
+          {l.att_c, l.att_l, l.att_q, 0.f}};
 }
 
-// The model's parameters as the shaders' uniforms.
+// The light's kind as the shaders' k_light_kind (glsl_models.cpp).
+int lightKind(const PreparedLight<float>& l) {
+  using K = PreparedLight<float>::Kind;
+  return l.kind == K::Point ? 0 : l.kind == K::Directional ? 1 : 2;
+}
+
+// The model's numbers as the shaders' uniforms (its switches are the
+// program's ShaderVariant).
 struct ModelUniforms {
-  int model = 0;
-  bool course = false, specular = false;
   float ka = 1, kd = 1, ks = 1, n = 55, offset = 0.1f, factor = 0;
   glm::vec3 c0{1}, c1{0}, c2{0};
-  bool on_cycles = false;    // oren_nayar: variant cycles
   float on_a = 1, on_b = 0;  // oren_nayar: A, B (models::orenNayar*AB)
-  // cook_torrance: the enums' values (models::Microfacet*), alpha, f0.
-  int ct_distribution = 0, ct_geometry = 0, ct_fresnel = 0;
-  float ct_alpha = 0.25f, ct_f0 = 0.04f;
+  float ct_alpha = 0.25f, ct_f0 = 0.04f;  // cook_torrance
 };
 
-// u_model is the registry's id (glsl_models.cpp's MODEL_<NAME> constants).
-ModelUniforms modelUniforms(const LightingModel& m) {
+// The model's uniforms, and its switches into `v` (k_model is the
+// registry's id: glsl_models.cpp's MODEL_<NAME> constants).
+ModelUniforms modelUniforms(const LightingModel& m, ShaderVariant& v) {
   ModelUniforms u;
-  u.model = int(modelId(m));
+  v.model = modelId(m);
   std::visit(model::Overloaded{
-                 [&u](const ClassicPhong& mm) {
-                   u.course = mm.variant == ClassicPhong::Variant::Course;
+                 [&u, &v](const ClassicPhong& mm) {
+                   v.course = mm.variant == ClassicPhong::Variant::Course;
                    u.ka = float(mm.ka), u.kd = float(mm.kd), u.ks = float(mm.ks), u.n = float(mm.shininess);
-                   u.specular = mm.ks != 0.0;
+                   v.specular = mm.ks != 0.0;
                  },
-                 [&u](const YiqLuma& mm) {
+                 [&u, &v](const YiqLuma& mm) {
                    u.kd = float(mm.kd), u.ks = float(mm.ks), u.n = float(mm.shininess);
-                   u.offset = float(mm.luma_offset), u.specular = mm.ks != 0.0;
+                   u.offset = float(mm.luma_offset), v.specular = mm.ks != 0.0;
                  },
                  [&u](const Lambert& mm) { u.c0 = glm::vec3(mm.c0); },
                  [&u](const WrapAround& mm) { u.c0 = glm::vec3(mm.c0), u.factor = float(mm.factor); },
@@ -90,27 +92,27 @@ ModelUniforms modelUniforms(const LightingModel& m) {
                  },
                  // minnaert, blinn_phong, oren_nayar
                  [&u](const Minnaert& mm) { u.kd = float(mm.kd), u.n = float(mm.k); },
-                 [&u](const BlinnPhong& mm) {
+                 [&u, &v](const BlinnPhong& mm) {
                    u.ka = float(mm.ka), u.kd = float(mm.kd), u.ks = float(mm.ks), u.n = float(mm.shininess);
-                   u.specular = mm.ks != 0.0;
+                   v.specular = mm.ks != 0.0;
                  },
-                 [&u](const OrenNayar& mm) {
-                   u.kd = float(mm.kd), u.on_cycles = mm.variant == OrenNayar::Variant::Cycles;
-                   const models::OrenNayarAB ab = u.on_cycles ? models::orenNayarCyclesAB(mm.sigma)
+                 [&u, &v](const OrenNayar& mm) {
+                   u.kd = float(mm.kd), v.on_cycles = mm.variant == OrenNayar::Variant::Cycles;
+                   const models::OrenNayarAB ab = v.on_cycles ? models::orenNayarCyclesAB(mm.sigma)
                                                               : models::orenNayarQualitativeAB(mm.sigma);
                    u.on_a = float(ab.a), u.on_b = float(ab.b);
                  },
-                 [&u](const CookTorrance& mm) {
-                   u.kd = float(mm.kd), u.ks = float(mm.ks), u.specular = mm.ks != 0.0;
-                   u.ct_distribution = int(mm.distribution), u.ct_geometry = int(mm.geometry);
-                   u.ct_fresnel = int(mm.fresnel), u.ct_alpha = float(mm.roughness), u.ct_f0 = float(mm.f0);
+                 [&u, &v](const CookTorrance& mm) {
+                   u.kd = float(mm.kd), u.ks = float(mm.ks), v.specular = mm.ks != 0.0;
+                   v.ct_distribution = int(mm.distribution), v.ct_geometry = int(mm.geometry);
+                   v.ct_fresnel = int(mm.fresnel), u.ct_alpha = float(mm.roughness), u.ct_f0 = float(mm.f0);
                  }},
              m);
   return u;
 }
 
 // Uploads `spec` as an RGBA32F texture of one level (appended to `owned`,
-// which deletes it); returns it and the shaders' u_texture mode (1 nearest, 3 trilinear,
+// which deletes it); returns it and the shaders' k_texture mode (1 nearest, 3 trilinear,
 // 2 bilinear).
 std::pair<GLuint, int> uploadTexture(const TextureSpec& spec, std::vector<GLuint>& owned) {
   // Trilinear: every level down to 1 x 1, made by the driver.
@@ -139,11 +141,18 @@ struct Draw {
   GLsizei count = 0;
   ModelUniforms model;
   glm::vec3 base{1};
-  int texture_mode = 0;  // 0 none, 1 nearest, 2 bilinear, 3 trilinear
+  // Its program's switches: ShaderVariant::texture 0 none, 1 nearest,
+  // 2 bilinear, 3 trilinear; ShaderVariant::luma_only (colour/luma_only.h)
+  // 0 off, else 1 + LumaSpace, also the draw's light set (the lights, or
+  // their greys in that space).
+  ShaderVariant variant;
+  size_t program = 0;  // GlScene::Impl::programs
+  // Its uniforms are set in each frame: its program also draws others.
+  bool uniforms_per_frame = false;
   GLuint texture = 0;
-  // The luma-only mode (colour/luma_only.h): 0 off, else 1 + LumaSpace;
-  // also the draw's light set (the lights, or their greys in that space).
-  int luma_only = 0;
+  // Back faces culled: every object of the draw passes
+  // objectBackFacesNeverFirstHit (geometry/front_faces.h).
+  bool cull_back_faces = false;
 };
 
 // One set of lights as the shaders read them: the buffer and the ambient.
@@ -152,13 +161,12 @@ struct LightSet {
   glm::vec3 ambient{0};
 };
 
-// The draw's material as the shaders' uniforms (the program in use).
-void setMaterialUniforms(GLuint p, const Draw& d) {
+// The draw's material and ambient light as the shaders' uniforms (the
+// program in use; a uniform the program does not read is at location -1,
+// which glUniform ignores).
+void setMaterialUniforms(GLuint p, const Draw& d, const LightSet& ls) {
   auto loc = [p](const char* name) { return glGetUniformLocation(p, name); };
   const ModelUniforms& mu = d.model;
-  glUniform1i(loc("u_model"), mu.model);
-  glUniform1i(loc("u_course"), mu.course);
-  glUniform1i(loc("u_specular"), mu.specular);
   glUniform1f(loc("u_ka"), mu.ka);
   glUniform1f(loc("u_kd"), mu.kd);
   glUniform1f(loc("u_ks"), mu.ks);
@@ -168,22 +176,19 @@ void setMaterialUniforms(GLuint p, const Draw& d) {
   glUniform3f(loc("u_c0"), mu.c0.x, mu.c0.y, mu.c0.z);
   glUniform3f(loc("u_c1"), mu.c1.x, mu.c1.y, mu.c1.z);
   glUniform3f(loc("u_c2"), mu.c2.x, mu.c2.y, mu.c2.z);
-  glUniform1i(loc("u_on_cycles"), mu.on_cycles);
   glUniform1f(loc("u_on_a"), mu.on_a);
   glUniform1f(loc("u_on_b"), mu.on_b);
   glUniform3f(loc("u_base"), d.base.x, d.base.y, d.base.z);
-  glUniform1i(loc("u_texture"), d.texture_mode);
-  glUniform1i(loc("u_ct_distribution"), mu.ct_distribution);
-  glUniform1i(loc("u_ct_geometry"), mu.ct_geometry);
-  glUniform1i(loc("u_ct_fresnel"), mu.ct_fresnel);
   glUniform1f(loc("u_ct_alpha"), mu.ct_alpha);
   glUniform1f(loc("u_ct_f0"), mu.ct_f0);
-  glUniform1i(loc("u_luma_only"), d.luma_only);
+  glUniform3f(loc("u_ambient"), ls.ambient.x, ls.ambient.y, ls.ambient.z);
+  glUniform1f(loc("u_ambient_luma"), models::lightLuma(ls.ambient));
 }
 
 struct GlScene::Impl {
   std::optional<EglContext> context;
-  GLuint program = 0, vao = 0, vbo = 0;
+  std::vector<GLuint> programs;  // one per distinct ShaderVariant of the draws
+  GLuint vao = 0, vbo = 0;
   // By Draw::luma_only: the scene's lights, their greys in yiq, in cie_lstar.
   std::array<LightSet, 1 + kLumaSpaceNames.size()> light_sets;
   FrameTargets targets;
@@ -199,7 +204,7 @@ struct GlScene::Impl {
     for (const LightSet& l : light_sets) glDeleteBuffers(1, &l.ssbo);
     glDeleteBuffers(1, &vbo);
     glDeleteVertexArrays(1, &vao);
-    glDeleteProgram(program);
+    for (GLuint p : programs) glDeleteProgram(p);
   }
 };
 
@@ -232,15 +237,34 @@ GlScene::GlScene(const Scene& input) : impl_(new Impl) {
         if (!faces[mi].empty()) put(v.face_normal, faces[mi][t]);
         vertices.push_back(v);
       });
+  // Draws: the runs of one material slot, split where the meshes' back-face
+  // rule changes (geometry/front_faces.h: a closed, untransformed knot or
+  // sphere seen from outside never shows a back face first, so culling
+  // them only skips fragments that a front face covers).
   std::vector<size_t> draw_slot;
-  for (const DrawRun& run : geometry.runs) {
-    d.draws.push_back(Draw{});
-    d.draws.back().first = run.first, d.draws.back().count = run.count;
-    draw_slot.push_back(run.slot);
+  {
+    std::vector<GLint> mesh_first(sm.meshes.size() + 1, 0);  // each mesh's corners, in walk order
+    for (size_t mi = 0; mi < sm.meshes.size(); ++mi)
+      mesh_first[mi + 1] = mesh_first[mi] + GLint(3 * sm.meshes[mi].triangles.size());
+    size_t mi = 0;
+    for (const DrawRun& run : geometry.runs) {
+      for (; mi < sm.meshes.size() && mesh_first[mi] < run.first + run.count; ++mi) {
+        if (mesh_first[mi + 1] == mesh_first[mi]) continue;  // no triangles
+        const bool cull = objectBackFacesNeverFirstHit(scene.objects[sm.object[mi]], sm.meshes[mi], cam.origin);
+        Draw* last = d.draws.empty() ? nullptr : &d.draws.back();
+        if (last && draw_slot.back() == run.slot && last->cull_back_faces == cull &&
+            last->first + last->count == mesh_first[mi]) {
+          last->count += mesh_first[mi + 1] - mesh_first[mi];
+          continue;
+        }
+        d.draws.push_back(Draw{});
+        d.draws.back().first = mesh_first[mi], d.draws.back().count = mesh_first[mi + 1] - mesh_first[mi];
+        d.draws.back().cull_back_faces = cull;
+        draw_slot.push_back(run.slot);
+      }
+    }
   }
   const double near = geometry.near;
-
-  d.program = buildProgram(vertexShaderSource(), "vertex shader", fragmentShaderSource(), "fragment shader");
 
   glCreateVertexArrays(1, &d.vao);
   glCreateBuffers(1, &d.vbo);
@@ -264,15 +288,27 @@ GlScene::GlScene(const Scene& input) : impl_(new Impl) {
   // Lights, relative to the eye (shading/lights.h prepareLights): the
   // scene's, and for the luma-only mode their greys in each luma space
   // (greyLights), so that every model's GLSL reads the lights it is given.
-  size_t light_count = 0;
+  // The sets differ in colour only: one list of kinds for the programs.
+  std::vector<int> light_kinds;
+  std::vector<bool> light_attenuated;
   for (size_t set = 0; set < d.light_sets.size(); ++set) {
     std::vector<PreparedLight<float>> lights;
     prepareLights<float>(set == 0 ? scene.lights : greyLights(scene.lights, LumaSpace(set - 1)),
                          d.light_sets[set].ambient, lights, cam.origin);
-    light_count = lights.size();
+    std::vector<int> kinds;
+    std::vector<bool> attenuated;
     std::vector<LightBlock> blocks;
-    for (const auto& l : lights) blocks.push_back(lightBlock(l));
-    if (blocks.empty()) blocks.push_back(LightBlock{});  // a buffer may not be empty; u_light_count says 0
+    for (const auto& l : lights) {
+      blocks.push_back(lightBlock(l));
+      kinds.push_back(lightKind(l));
+      attenuated.push_back(l.has_attenuation);
+    }
+    if (set == 0)
+      light_kinds = kinds, light_attenuated = attenuated;
+    else if (kinds != light_kinds || attenuated != light_attenuated)
+      throw std::logic_error("gl: the grey lights of luma space " + std::string(kLumaSpaceNames[set - 1]) +
+                             " differ from the scene's lights in kind or attenuation");
+    if (blocks.empty()) blocks.push_back(LightBlock{});  // a buffer may not be empty; k_light_count says 0
     glCreateBuffers(1, &d.light_sets[set].ssbo);
     glNamedBufferStorage(d.light_sets[set].ssbo, GLsizeiptr(blocks.size() * sizeof(LightBlock)), blocks.data(), 0);
   }
@@ -285,34 +321,56 @@ GlScene::GlScene(const Scene& input) : impl_(new Impl) {
   for (size_t k = 0; k < slots.materials.size(); ++k)
     if (slots.used[k] && slots.materials[k]->texture)
       std::tie(slot_texture[k], slot_texture_mode[k]) = uploadTexture(*slots.materials[k]->texture, d.textures);
+
+  // Per draw: its uniforms and its program, one per distinct variant.
+  std::vector<ShaderVariant> variants;
+  std::vector<int> draws_of_program;
   for (size_t i = 0; i < d.draws.size(); ++i) {
+    Draw& dr = d.draws[i];
     const Material& mat = *slots.materials[draw_slot[i]];
-    d.draws[i].model = modelUniforms(mat.model);
-    d.draws[i].base = glm::vec3(mat.base_color);
-    d.draws[i].texture = slot_texture[draw_slot[i]];
-    d.draws[i].texture_mode = slot_texture_mode[draw_slot[i]];
-    d.draws[i].luma_only = mat.luma_only ? 1 + int(*mat.luma_only) : 0;
+    ShaderVariant& v = dr.variant;
+    dr.model = modelUniforms(mat.model, v);
+    dr.base = glm::vec3(mat.base_color);
+    dr.texture = slot_texture[draw_slot[i]];
+    v.shading = scene.shading == ShadingMode::Flat ? 0 : scene.shading == ShadingMode::Gouraud ? 1 : 2;
+    v.normalize_normal = scene.normalize_normal;
+    v.texture = slot_texture_mode[draw_slot[i]];
+    v.luma_only = mat.luma_only ? 1 + int(*mat.luma_only) : 0;
+    v.light_kinds = light_kinds, v.light_attenuated = light_attenuated;
+    dr.program = size_t(std::find(variants.begin(), variants.end(), v) - variants.begin());
+    if (dr.program == variants.size()) {
+      variants.push_back(v);
+      draws_of_program.push_back(0);
+      d.programs.push_back(buildProgram(vertexShaderSource(v).c_str(), "vertex shader",
+                                        fragmentShaderSource(v).c_str(), "fragment shader"));
+    }
+    ++draws_of_program[dr.program];
   }
 
   // Targets.
   d.targets = makeFrameTargets(d.width, d.height);
 
-  // Uniforms.
-  const GLuint p = d.program;
-  glUseProgram(p);
-  auto loc = [p](const char* name) { return glGetUniformLocation(p, name); };
+  // Uniforms: the camera's in every program; a draw's own once here when
+  // its program draws nothing else, else in each frame.
   const float view[9] = {float(cam.right.x),   float(cam.right.y),   float(cam.right.z),
                          float(cam.up.x),      float(cam.up.y),      float(cam.up.z),
                          float(cam.forward.x), float(cam.forward.y), float(cam.forward.z)};
-  glUniformMatrix3fv(loc("u_view"), 1, GL_TRUE, view);  // rows as written
-  glUniform2f(loc("u_scale"), float(1.0 / (cam.tan_half_fov * cam.aspect)), float(1.0 / cam.tan_half_fov));
-  glUniform1f(loc("u_near"), float(near));
-  glUniform1i(loc("u_shading"), scene.shading == ShadingMode::Flat ? 0 : scene.shading == ShadingMode::Gouraud ? 1 : 2);
-  glUniform1i(loc("u_normalize_normal"), scene.normalize_normal);
-  glUniform1i(loc("u_light_count"), GLint(light_count));
+  for (GLuint p : d.programs) {
+    glUseProgram(p);
+    auto loc = [p](const char* name) { return glGetUniformLocation(p, name); };
+    glUniformMatrix3fv(loc("u_view"), 1, GL_TRUE, view);  // rows as written
+    glUniform2f(loc("u_scale"), float(1.0 / (cam.tan_half_fov * cam.aspect)), float(1.0 / cam.tan_half_fov));
+    glUniform1f(loc("u_near"), float(near));
+  }
+  for (Draw& dr : d.draws) {
+    dr.uniforms_per_frame = draws_of_program[dr.program] > 1;
+    if (dr.uniforms_per_frame) continue;
+    glUseProgram(d.programs[dr.program]);
+    setMaterialUniforms(d.programs[dr.program], dr, d.light_sets[size_t(dr.variant.luma_only)]);
+  }
   checkGl("setting the uniforms");
 
-  // Fixed state: reversed Z, the whole frame, no culling or blending.
+  // Fixed state: reversed Z, the whole frame, no blending; culling per draw.
   setDrawState(GL_GREATER, d.targets, d.width, d.height, d.vao);
   checkGl("setting the state");
   d.setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -328,12 +386,16 @@ void GlScene::draw() {
   glClearNamedFramebufferfv(d.targets.fbo, GL_DEPTH, 0, &clear_depth);
   for (const Draw& dr : d.draws) {
     if (dr.count == 0) continue;
-    setMaterialUniforms(d.program, dr);
-    const LightSet& ls = d.light_sets[size_t(dr.luma_only)];
+    const GLuint p = d.programs[dr.program];
+    const LightSet& ls = d.light_sets[size_t(dr.variant.luma_only)];
+    glUseProgram(p);
+    if (dr.uniforms_per_frame) setMaterialUniforms(p, dr, ls);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightsBinding, ls.ssbo);
-    glUniform3f(glGetUniformLocation(d.program, "u_ambient"), ls.ambient.x, ls.ambient.y, ls.ambient.z);
-    glUniform1f(glGetUniformLocation(d.program, "u_ambient_luma"), models::lightLuma(ls.ambient));
     if (dr.texture) glBindTextureUnit(kTextureUnit, dr.texture);
+    if (dr.cull_back_faces)
+      glEnable(GL_CULL_FACE);  // GL_BACK of GL_CCW: the mesh's winding normal faces the eye when counter-clockwise
+    else
+      glDisable(GL_CULL_FACE);
     glDrawArrays(GL_TRIANGLES, dr.first, dr.count);
   }
   glFinish();

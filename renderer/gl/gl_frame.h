@@ -17,8 +17,15 @@
 // (glGenerateTextureMipmap) and is read by texture() through the sampler,
 // LINEAR_MIPMAP_LINEAR, REPEAT, no anisotropy. The meshes are drawn in
 // scene order, one draw per run of meshes of one material, with that
-// material's uniforms and texture. No face culling, no blending, no
-// multisampling.
+// material's uniforms and texture, and a program specialised to its
+// switches (glsl_models.h ShaderVariant: model, variant, texture filter,
+// shading, luma-only mode, the lights' kinds), one per distinct variant.
+// Back faces culled (GL_BACK, counter-clockwise front) in the draws whose
+// meshes pass objectBackFacesNeverFirstHit (geometry/front_faces.h: a
+// closed, untransformed knot or sphere, or a closed model mesh, seen from
+// outside: a back face is never the first hit, so culling changes a pixel
+// only where a back face won a silhouette tie by rounding), not elsewhere.
+// No blending, no multisampling.
 //
 // render.spp = n^2: the frame is n W x n H, one fragment on each pixel
 // centre (common/supersample.h), box-filtered as the external renderers'

@@ -1,7 +1,9 @@
 #include "gl/glsl_models.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include <fmt/format.h>
@@ -14,10 +16,11 @@ namespace xval::gl {
 namespace {
 
 // What both stages share: the inputs' uniforms, the lights, the texture
-// lookups and the models. Kinds: shading 0 flat, 1 gouraud, 2 phong;
-// model: MODEL_<NAME>, the registry's id (shading/model/registry.h,
-// written by modelIdConstants); light 0 point,
-// 1 directional, 2 spot; texture 0 none (u_base), 1 nearest, 2 bilinear,
+// lookups and the models. The switches are the program's constants
+// (variantConstants, ShaderVariant's fields): k_shading 0 flat, 1 gouraud,
+// 2 phong; k_model: MODEL_<NAME>, the registry's id (shading/model/
+// registry.h, written by modelIdConstants); k_light_kind 0 point,
+// 1 directional, 2 spot; k_texture 0 none (u_base), 1 nearest, 2 bilinear,
 // 3 trilinear (the sampler's LINEAR_MIPMAP_LINEAR on the GL mip chain).
 const char* kVersion = R"GLSL(
 #version 450 core
@@ -27,28 +30,19 @@ const char* kCommon = R"GLSL(
 uniform mat3 u_view;       // rows: right, up', forward (camera/camera.h)
 uniform vec2 u_scale;      // 1 / (tan(fov/2) aspect), 1 / tan(fov/2)
 uniform float u_near;      // the fitted near plane (reversed Z: depth = near / z)
-uniform int u_shading;
-uniform int u_model;
-uniform bool u_course;     // classic_phong's course variant
-uniform bool u_specular;   // ks != 0
 uniform float u_ka, u_kd, u_ks, u_n, u_offset, u_factor;
 uniform vec3 u_c0, u_c1, u_c2;
-uniform bool u_on_cycles;  // oren_nayar's variant cycles
 uniform float u_on_a, u_on_b;  // oren_nayar's A, B
 uniform vec3 u_ambient;    // A: the ambient lights' summed colour (of the draw's light set)
 uniform float u_ambient_luma;  // A_Y = lightLuma(A)
 uniform vec3 u_base;
-uniform int u_texture;
-uniform bool u_normalize_normal;  // phong: re-normalise the interpolated normal
-uniform int u_light_count;
-uniform int u_luma_only;   // the luma-only mode: 0 off, 1 yiq, 2 cie_lstar (LumaSpace + 1)
 layout(binding = 0) uniform sampler2D u_tex;  // RGBA32F, row 0 = the image's top, read by texelFetch
 
 struct Light {
-  vec4 position_kind;    // xyz: position relative to the eye; w: kind
+  vec4 position_kind;    // xyz: position relative to the eye; w: unused (the kind is k_light_kind)
   vec4 direction_cos;    // xyz: unit direction the light travels; w: cos(cutoff)
   vec4 colour_luma;      // rgb: colour; w: lightLuma(colour)
-  vec4 attenuation;      // constant, linear, quadratic; w: 1 when attenuated
+  vec4 attenuation;      // constant, linear, quadratic; w: unused (k_light_attenuated)
 };
 layout(std430, binding = 0) readonly buffer Lights { Light u_lights[]; };
 
@@ -80,18 +74,20 @@ void towardsLight(vec3 D, out vec3 L, out float d) {
   L = u / lu;
 }
 
-// L towards the light, att = 1 / (c + l d + q d^2), lit: inside a spot's cone.
-void sampleLight(Light l, vec3 p, out vec3 L, out float att, out bool lit) {
+// Light i: L towards it, att = 1 / (c + l d + q d^2), lit: inside a spot's
+// cone. Its kind and whether it is attenuated are the program's constants.
+void sampleLight(int i, vec3 p, out vec3 L, out float att, out bool lit) {
+  Light l = u_lights[i];
   att = 1.0;
   lit = true;
-  int kind = int(l.position_kind.w);
+  int kind = k_light_kind[i];
   if (kind == 1) {
     L = -l.direction_cos.xyz;
     return;
   }
   float dist;
   towardsLight(l.position_kind.xyz - p, L, dist);
-  if (l.attenuation.w != 0.0)
+  if (k_light_attenuated[i])
     att = 1.0 / (l.attenuation.x + l.attenuation.y * dist + l.attenuation.z * dist * dist);
   if (kind == 2) lit = dot(-L, l.direction_cos.xyz) >= l.direction_cos.w;
 }
@@ -112,11 +108,11 @@ float listingSpecular(vec3 N, vec3 L, float x, vec3 V) {
 const char* kCommonModels = R"GLSL(
 // ---- Forsyth's family, per unit light colour ---------------------------
 vec3 forsyth(float x) {
-  if (u_model == MODEL_LAMBERT) return u_c0 * clamp0(x);
-  if (u_model == MODEL_WRAP_AROUND) return u_c0 * (clamp0(x + u_factor) / (1.0 + u_factor));
-  if (u_model == MODEL_HEMISPHERICAL) return u_c2 + (u_c0 - u_c2) * ((x + 1.0) * 0.5);
-  if (u_model == MODEL_BIDIRECTIONAL) return u_c0 * clamp0(x) + u_c2 * clamp0(-x);
-  if (u_model == MODEL_TRILIGHT) return u_c0 * clamp0(x) + u_c1 * (1.0 - abs(x)) + u_c2 * clamp0(-x);
+  if (k_model == MODEL_LAMBERT) return u_c0 * clamp0(x);
+  if (k_model == MODEL_WRAP_AROUND) return u_c0 * (clamp0(x + u_factor) / (1.0 + u_factor));
+  if (k_model == MODEL_HEMISPHERICAL) return u_c2 + (u_c0 - u_c2) * ((x + 1.0) * 0.5);
+  if (k_model == MODEL_BIDIRECTIONAL) return u_c0 * clamp0(x) + u_c2 * clamp0(-x);
+  if (k_model == MODEL_TRILIGHT) return u_c0 * clamp0(x) + u_c1 * (1.0 - abs(x)) + u_c2 * clamp0(-x);
   return vec3(0.0);  // not of Forsyth's family: shade() does not call this
 }
 
@@ -136,7 +132,7 @@ float orenNayarTerm(float x, float y, float lv) {
   if (!(x > 0.0)) return 0.0;
   float yc = clamp0(y);
   float s = lv - x * yc;
-  float t = s > 0.0 ? s / max(x, yc) : (u_on_cycles ? s : 0.0);
+  float t = s > 0.0 ? s / max(x, yc) : (k_on_cycles ? s : 0.0);
   return x * (u_on_a + u_on_b * t);
 }
 // Blinn-Phong: clamp(N.H)^n, H = normalize(L + V) (0 where L + V = 0); n = 0 gives 1.
@@ -150,13 +146,12 @@ float blinnSpecular(vec3 N, vec3 L, vec3 V) {
 }
 
 // ---- Cook-Torrance (shading/models.h cookTorranceSpecular) -------------
-// u_ct_distribution 0 Beckmann, 1 GGX; u_ct_geometry 0 V-groove, 1 Smith;
-// u_ct_fresnel 0 none, 1 Schlick (the models::Microfacet* enums' values).
-uniform int u_ct_distribution, u_ct_geometry, u_ct_fresnel;
+// k_ct_distribution 0 Beckmann, 1 GGX; k_ct_geometry 0 V-groove, 1 Smith;
+// k_ct_fresnel 0 none, 1 Schlick (the models::Microfacet* enums' values).
 uniform float u_ct_alpha, u_ct_f0;
 float ctD(float c, float s2) {
   float a2 = u_ct_alpha * u_ct_alpha, c2 = c * c;
-  if (u_ct_distribution == 0) {
+  if (k_ct_distribution == 0) {
     float e = exp(-s2 / (c2 * a2));
     return e > 0.0 ? e / (3.14159265358979 * a2 * c2 * c2) : 0.0;
   }
@@ -164,7 +159,7 @@ float ctD(float c, float s2) {
   return r * r / 3.14159265358979;
 }
 float ctG1OverCos(float x, float s2) {  // Smith's G1(x) / x
-  if (u_ct_distribution == 1) return 2.0 / (x + sqrt(x * x + u_ct_alpha * u_ct_alpha * s2));
+  if (k_ct_distribution == 1) return 2.0 / (x + sqrt(x * x + u_ct_alpha * u_ct_alpha * s2));
   float as = u_ct_alpha * sqrt(s2);
   if (x >= 1.6 * as) return 1.0 / x;
   float a = x / as;
@@ -184,7 +179,7 @@ float cookTorranceSpecular(vec3 n, vec3 l, vec3 v) {
   float d = ctD(nh, dot(nxh, nxh));
   if (!(d > 0.0)) return 0.0;
   float g;
-  if (u_ct_geometry == 1) {
+  if (k_ct_geometry == 1) {
     vec3 nxl = cross(n, l), nxv = cross(n, v);
     g = nl * ctG1OverCos(nl, dot(nxl, nxl)) * ctG1OverCos(nv, dot(nxv, nxv));
   } else {
@@ -192,91 +187,91 @@ float cookTorranceSpecular(vec3 n, vec3 l, vec3 v) {
     g = min(1.0 / nv, min(k, k * nl / nv));
   }
   float m = 1.0 - vh, m2 = m * m;
-  float f = u_ct_fresnel == 1 ? u_ct_f0 + (1.0 - u_ct_f0) * (m2 * m2 * m) : 1.0;
+  float f = k_ct_fresnel == 1 ? u_ct_f0 + (1.0 - u_ct_f0) * (m2 * m2 * m) : 1.0;
   return 3.14159265358979 * f * d * g * 0.25;
 }
 
 // ---- the model at one point (shading/shader.h), unsaturated -------------
 // p: relative to the eye, n: unit normal, v: unit towards the eye, c: C.
 vec3 shadeModel(vec3 p, vec3 n, vec3 v, vec3 c) {
-  if (u_model == MODEL_CLASSIC_PHONG) {
-    if (u_course) {
+  if (k_model == MODEL_CLASSIC_PHONG) {
+    if (k_course) {
       vec3 acc = u_ka * u_ambient;
-      for (int i = 0; i < u_light_count; ++i) {
+      for (int i = 0; i < k_light_count; ++i) {
         vec3 L; float att; bool lit;
-        sampleLight(u_lights[i], p, L, att, lit);
+        sampleLight(i, p, L, att, lit);
         vec3 w = att * u_lights[i].colour_luma.rgb;
         float term = u_ka;
         if (lit) {
           float x = dot(n, L);
           term += u_kd * clamp0(x);
-          if (u_specular) term += u_ks * listingSpecular(n, L, x, v);
+          if (k_specular) term += u_ks * listingSpecular(n, L, x, v);
         }
         acc += w * term;
       }
       return c * acc;
     }
     vec3 diff = vec3(0.0), spec = vec3(0.0);
-    for (int i = 0; i < u_light_count; ++i) {
+    for (int i = 0; i < k_light_count; ++i) {
       vec3 L; float att; bool lit;
-      sampleLight(u_lights[i], p, L, att, lit);
+      sampleLight(i, p, L, att, lit);
       if (!lit) continue;
       vec3 w = att * u_lights[i].colour_luma.rgb;
       float x = dot(n, L);
       diff += w * clamp0(x);
-      if (u_specular) spec += w * listingSpecular(n, L, x, v);
+      if (k_specular) spec += w * listingSpecular(n, L, x, v);
     }
     return c * (u_ka * u_ambient + u_kd * diff) + u_ks * spec;
   }
-  if (u_model == MODEL_YIQ_LUMA) {
+  if (k_model == MODEL_YIQ_LUMA) {
     // Diffuse = saturate(A_Y + kd sum att Y(Lc) saturate(N.L)),
     // Specular = ks sum att Y(Lc) pow(saturate(R.V), n).
     float dsum = 0.0, ssum = 0.0;
-    for (int i = 0; i < u_light_count; ++i) {
+    for (int i = 0; i < k_light_count; ++i) {
       vec3 L; float att; bool lit;
-      sampleLight(u_lights[i], p, L, att, lit);
+      sampleLight(i, p, L, att, lit);
       if (!lit) continue;
       float w = att * u_lights[i].colour_luma.w;
       float x = dot(n, L);
       dsum += w * saturate1(x);
-      if (u_specular) ssum += w * listingSpecular(n, L, x, v);
+      if (k_specular) ssum += w * listingSpecular(n, L, x, v);
     }
     float dl = saturate1(u_ambient_luma + u_kd * dsum);
     vec3 yiq = rgbToYiq(c);
     yiq.x = yiq.x * dl + u_ks * ssum - u_offset;  // WorkCol.y = WorkCol.y * Diffuse + Specular - 0.1
     return yiqToRgb(yiq);
   }
-  if ((u_model == MODEL_MINNAERT) || (u_model == MODEL_OREN_NAYAR)) {
+  if ((k_model == MODEL_MINNAERT) || (k_model == MODEL_OREN_NAYAR)) {
     vec3 diff = vec3(0.0);
-    for (int i = 0; i < u_light_count; ++i) {
+    for (int i = 0; i < k_light_count; ++i) {
       vec3 L; float att; bool lit;
-      sampleLight(u_lights[i], p, L, att, lit);
+      sampleLight(i, p, L, att, lit);
       if (!lit) continue;
       float x = dot(n, L), y = dot(n, v);
-      float o = (u_model == MODEL_MINNAERT) ? minnaertTerm(x, y) : orenNayarTerm(x, y, dot(L, v));
+      float o = (k_model == MODEL_MINNAERT) ? minnaertTerm(x, y) : orenNayarTerm(x, y, dot(L, v));
       diff += att * u_lights[i].colour_luma.rgb * o;
     }
     return c * (u_ambient + u_kd * diff);
   }
   // A Lambert diffuse and a highlight: blinn_phong's or cook_torrance's
   // (u_ka is 1 for cook_torrance).
-  if ((u_model == MODEL_BLINN_PHONG) || (u_model == MODEL_COOK_TORRANCE)) {
+  if ((k_model == MODEL_BLINN_PHONG) || (k_model == MODEL_COOK_TORRANCE)) {
     vec3 diff = vec3(0.0), spec = vec3(0.0);
-    for (int i = 0; i < u_light_count; ++i) {
+    for (int i = 0; i < k_light_count; ++i) {
       vec3 L; float att; bool lit;
-      sampleLight(u_lights[i], p, L, att, lit);
+      sampleLight(i, p, L, att, lit);
       if (!lit) continue;
       vec3 w = att * u_lights[i].colour_luma.rgb;
       diff += w * clamp0(dot(n, L));
-      if (u_specular)
-        spec += w * ((u_model == MODEL_BLINN_PHONG) ? blinnSpecular(n, L, v) : cookTorranceSpecular(n, L, v));
+      if (k_specular)
+        spec += w * ((k_model == MODEL_BLINN_PHONG) ? blinnSpecular(n, L, v) : cookTorranceSpecular(n, L, v));
     }
     return c * (u_ka * u_ambient + u_kd * diff) + u_ks * spec;
   }
   vec3 acc = u_ambient;
-  for (int i = 0; i < u_light_count; ++i) {
+  for (int i = 0; i < k_light_count; ++i) {
     vec3 L; float att; bool lit;
-    sampleLight(u_lights[i], p, L, att, lit);
+    sampleLight(i, p, L, att, lit);
     if (!lit) continue;
     acc += att * u_lights[i].colour_luma.rgb * forsyth(dot(n, L));
   }
@@ -287,8 +282,8 @@ vec3 shadeModel(vec3 p, vec3 n, vec3 v, vec3 c) {
 // The model lit in grey (the draw's light set is then greyLights'), its
 // luma replacing C's, C's chroma kept.
 vec3 shade(vec3 p, vec3 n, vec3 v, vec3 c) {
-  if (u_luma_only == 0) return shadeModel(p, n, v, c);
-  bool cie = u_luma_only == 2;
+  if (k_luma_only == 0) return shadeModel(p, n, v, c);
+  bool cie = k_luma_only == 2;
   float yc = cie ? relativeXyz(c).y : rgbToYiq(c).x;
   vec3 g = shadeModel(p, n, v, vec3(yc));
   float yout = cie ? relativeXyz(g).y : yiqLightLuma(g);
@@ -301,15 +296,15 @@ vec3 shade(vec3 p, vec3 n, vec3 v, vec3 c) {
 // ---- the texture (texture/texture.h): wrap, nearest or bilinear ---------
 vec3 texel(int x, int y) { return texelFetch(u_tex, ivec2(x, y), 0).rgb; }
 vec3 surfaceColour(vec2 uv) {
-  if (u_texture == 0) return u_base;
+  if (k_texture == 0) return u_base;
   // The hardware's trilinear filter (GL_REPEAT wrapping) on the triangle's
   // own uv, unwrapped, so its derivatives across the pixel quad are smooth.
-  if (u_texture == 3) return texture(u_tex, uv).rgb;
+  if (k_texture == 3) return texture(u_tex, uv).rgb;
   ivec2 size = textureSize(u_tex, 0);
   float fu = uv.x - floor(uv.x), fv = uv.y - floor(uv.y);
   if (!(fu >= 0.0 && fu <= 1.0)) fu = 0.0;  // NaN: a non-finite u
   if (!(fv >= 0.0 && fv <= 1.0)) fv = 0.0;
-  if (u_texture == 1)
+  if (k_texture == 1)
     return texel(min(int(fu * float(size.x)), size.x - 1), min(int(fv * float(size.y)), size.y - 1));
   float x = fu * float(size.x) - 0.5, y = fv * float(size.y) - 0.5;
   float x0f = floor(x), y0f = floor(y);
@@ -354,7 +349,7 @@ void main() {
   v_uv = a_uv;
   v_face_normal = a_face_normal;
   v_colour = vec3(0.0);
-  if (u_shading == 1)
+  if (k_shading == 1)
     v_colour = shade(a_position, a_normal, normalize(-a_position), surfaceColour(a_uv));
 }
 )GLSL";
@@ -373,11 +368,11 @@ in vec3 v_colour;
 layout(location = 0) out vec4 o_colour;
 
 void main() {
-  if (u_shading == 1) {
+  if (k_shading == 1) {
     o_colour = vec4(v_colour, 1.0);
     return;
   }
-  vec3 n = u_shading == 0 ? v_face_normal : u_normalize_normal ? unitOrZero(v_normal) : v_normal;
+  vec3 n = k_shading == 0 ? v_face_normal : k_normalize_normal ? unitOrZero(v_normal) : v_normal;
   vec3 v = normalize(-v_position);
   o_colour = vec4(shade(v_position, n, v, surfaceColour(v_uv)), 1.0);
 }
@@ -439,6 +434,39 @@ std::string modelIdConstants() {
   return s;
 }
 
+// The variant's switches as constants (ShaderVariant); the light arrays
+// have at least one entry (GLSL has no empty array), read only below
+// k_light_count.
+std::string variantConstants(const ShaderVariant& v) {
+  if (v.light_attenuated.size() != v.light_kinds.size())
+    throw std::logic_error("ShaderVariant: " + std::to_string(v.light_kinds.size()) + " light kinds but " +
+                           std::to_string(v.light_attenuated.size()) + " attenuation flags");
+  auto b = [](bool x) { return x ? "true" : "false"; };
+  std::string kinds, attenuated;
+  for (size_t i = 0; i < std::max<size_t>(v.light_kinds.size(), 1); ++i) {
+    const bool real = i < v.light_kinds.size();
+    kinds += fmt::format("{}{}", i ? ", " : "", real ? v.light_kinds[i] : 0);
+    attenuated += fmt::format("{}{}", i ? ", " : "", b(real && v.light_attenuated[i]));
+  }
+  const size_t n = std::max<size_t>(v.light_kinds.size(), 1);
+  return fmt::format(
+      "const int k_shading = {};\n"
+      "const int k_model = {};\n"
+      "const bool k_course = {};\n"
+      "const bool k_specular = {};\n"
+      "const bool k_on_cycles = {};\n"
+      "const int k_ct_distribution = {}, k_ct_geometry = {}, k_ct_fresnel = {};\n"
+      "const int k_texture = {};\n"
+      "const bool k_normalize_normal = {};\n"
+      "const int k_luma_only = {};\n"
+      "const int k_light_count = {};\n"
+      "const int k_light_kind[{}] = int[]({});\n"
+      "const bool k_light_attenuated[{}] = bool[]({});\n",
+      v.shading, glslModelConstant(v.model), b(v.course), b(v.specular), b(v.on_cycles), v.ct_distribution,
+      v.ct_geometry, v.ct_fresnel, v.texture, b(v.normalize_normal), v.luma_only, v.light_kinds.size(), n, kinds,
+      n, attenuated);
+}
+
 }  // namespace
 
 std::string glslModelConstant(ModelId id) {
@@ -447,14 +475,14 @@ std::string glslModelConstant(ModelId id) {
   return s;
 }
 
-const char* vertexShaderSource() {
-  static const std::string s = std::string(kVersion) + modelIdConstants() + kCommon + yiqFunctions() + lumaOnlyFunctions() + kCommonModels + kVertex;
-  return s.c_str();
+std::string vertexShaderSource(const ShaderVariant& variant) {
+  return std::string(kVersion) + modelIdConstants() + variantConstants(variant) + kCommon + yiqFunctions() +
+         lumaOnlyFunctions() + kCommonModels + kVertex;
 }
 
-const char* fragmentShaderSource() {
-  static const std::string s = std::string(kVersion) + modelIdConstants() + kCommon + yiqFunctions() + lumaOnlyFunctions() + kCommonModels + kFragment;
-  return s.c_str();
+std::string fragmentShaderSource(const ShaderVariant& variant) {
+  return std::string(kVersion) + modelIdConstants() + variantConstants(variant) + kCommon + yiqFunctions() +
+         lumaOnlyFunctions() + kCommonModels + kFragment;
 }
 
 }  // namespace xval::gl

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "shading/model/registry.h"
 
@@ -35,11 +36,34 @@ inline constexpr int kTextureUnit = 0;       // the RGBA32F texture
 
 // The GLSL name of a model's id constant ("MODEL_LAMBERT"): both shaders
 // declare one per model of the registry (shading/model/registry.h), equal
-// to its ModelId, and the shaders' code tests u_model against those names;
-// gl_frame.cpp sets u_model to the scene's ModelId.
+// to its ModelId, and the shaders' code tests k_model against those names.
 std::string glslModelConstant(ModelId id);
 
-const char* vertexShaderSource();
-const char* fragmentShaderSource();
+// What a program is specialised on: every switch that selects a code path,
+// compiled in as a constant (k_<name> in the GLSL) rather than read from a
+// uniform. llvmpipe runs a fragment shader on a vector of fragments with
+// an execution mask and does not skip a branch that no lane takes, so a
+// branch on a uniform costs its whole body; with the switches constant the
+// compiler drops every path the draw does not take, and the paths it takes
+// compute what they computed before. The numbers (ka, kd, n, the colours,
+// the lights' positions and colours) stay uniforms. One program per
+// distinct variant of a scene's draws (gl_frame.cpp).
+struct ShaderVariant {
+  int shading = 2;  // 0 flat, 1 gouraud, 2 phong
+  ModelId model{};
+  bool course = false;            // classic_phong's course variant
+  bool specular = false;          // ks != 0
+  bool on_cycles = false;         // oren_nayar's variant cycles
+  int ct_distribution = 0, ct_geometry = 0, ct_fresnel = 0;  // models::Microfacet* enums' values
+  int texture = 0;                // 0 none (u_base), 1 nearest, 2 bilinear, 3 trilinear
+  bool normalize_normal = true;   // phong: re-normalise the interpolated normal
+  int luma_only = 0;              // the luma-only mode: 0 off, 1 yiq, 2 cie_lstar (LumaSpace + 1)
+  std::vector<int> light_kinds;   // per light of the draw's set: 0 point, 1 directional, 2 spot
+  std::vector<bool> light_attenuated;  // per light: 1 / (c + l d + q d^2) applies
+  bool operator==(const ShaderVariant&) const = default;
+};
+
+std::string vertexShaderSource(const ShaderVariant& variant);
+std::string fragmentShaderSource(const ShaderVariant& variant);
 
 }  // namespace xval::gl

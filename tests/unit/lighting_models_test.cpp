@@ -134,16 +134,21 @@ TEST(LightingModels, ThePrecisionLimitsCheckEveryParameter) {
 }
 
 TEST(LightingModels, EveryModelHasAGlslIdThatBothShadersTest) {
-  const std::string vs = gl::vertexShaderSource(), fs = gl::fragmentShaderSource();
   for (ModelId id : allModels()) {
     const std::string c = gl::glslModelConstant(id);
     SCOPED_TRACE(c);
+    gl::ShaderVariant v;
+    v.model = id;
+    const std::string vs = gl::vertexShaderSource(v), fs = gl::fragmentShaderSource(v);
     const std::string decl = "const int " + c + " = " + std::to_string(size_t(id)) + ";";
     EXPECT_NE(vs.find(decl), std::string::npos);
     EXPECT_NE(fs.find(decl), std::string::npos);
-    EXPECT_NE(vs.find("u_model == " + c + ")"), std::string::npos) << "the shaders have no case for it";
+    // The program of a draw of this model is specialised to it.
+    EXPECT_NE(vs.find("const int k_model = " + c + ";"), std::string::npos);
+    EXPECT_NE(fs.find("const int k_model = " + c + ";"), std::string::npos);
+    EXPECT_NE(vs.find("k_model == " + c + ")"), std::string::npos) << "the shaders have no case for it";
+    EXPECT_EQ(vs.find("k_model == 0"), std::string::npos) << "a model tested by a literal id";
   }
-  EXPECT_EQ(vs.find("u_model == 0"), std::string::npos) << "a model tested by a literal id";
 }
 
 TEST(LightingModels, EveryModelHasItsGltfConstants) {
@@ -243,6 +248,7 @@ TEST(LightingModels, TheShadersYiqFunctionsAreTheListingsMatrices) {
       "              yiq.x - 0.27137664 * yiq.y - 0.64860590 * yiq.z,\n"
       "              yiq.x - 1.10561724 * yiq.y + 1.70250126 * yiq.z);\n"
       "}\n";
-  EXPECT_NE(std::string(gl::vertexShaderSource()).find(expected), std::string::npos) << gl::vertexShaderSource();
-  EXPECT_NE(std::string(gl::fragmentShaderSource()).find(expected), std::string::npos);
+  const gl::ShaderVariant v;
+  EXPECT_NE(gl::vertexShaderSource(v).find(expected), std::string::npos) << gl::vertexShaderSource(v);
+  EXPECT_NE(gl::fragmentShaderSource(v).find(expected), std::string::npos);
 }

@@ -14,7 +14,7 @@
 //
 // The order is the scene format's: the loader's message lists the names so,
 // and a model's id (ModelId, its index in the variant, the gl renderer's
-// u_model) is its position.
+// k_model) is its position.
 #pragma once
 
 #include <array>
