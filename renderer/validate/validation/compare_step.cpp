@@ -379,11 +379,13 @@ J compareCase(const CompareContext& cx, size_t k, std::vector<std::string>& remo
   std::vector<int> differ = verdict;
   std::replace(differ.begin(), differ.end(), kFinding, kFail);
   std::string who = attribution(rs, differ, renders, blamed);
-  for (const auto& [id, why] : scene.findings)
-    if (std::any_of(jpairs.begin(), jpairs.end(), [&](const J& p) {
+  for (const auto& finding : scene.findings) {
+    const std::string& id = finding.first;  // a name a lambda can capture (not a structured binding)
+    if (std::any_of(jpairs.begin(), jpairs.end(), [&id](const J& p) {
           return p.value("verdict", "") == "finding" && p["finding"]["renderer"] == id;
         }))
       who += "; " + renderers::registry().at(id).display_name + " differs as the scene's finding declares";
+  }
   const std::string nothing = "nothing to compare";
   if (who.rfind(nothing, 0) == 0 && geometryChecksWith(checks, "pass") + geometryChecksWith(checks, "fail") > 0)
     who = "no image pair to compare" + who.substr(nothing.size());
