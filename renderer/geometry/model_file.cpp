@@ -24,27 +24,13 @@
 #include <string_view>
 
 #include "geometry/assimp_dump.h"
+#include "geometry/assimp_read.h"
 #include "geometry/degenerate_triangles.h"
 #include "geometry/model_references.h"
 #include "geometry/transform.h"
 #include "process/run_process.h"
 #include "scene/json_reader.h"
 
-// Debian's Assimp 5.2.5 is built with its internal assertions on, and a
-// failed one calls this hook, whose library definition prints and calls
-// abort(): a malformed file (a PLY face with 0 indices fails an assertion
-// of aiProcess_Triangulate) would end the program. The library exports the
-// hook and calls it through the dynamic symbol table, so this definition in
-// the program takes precedence: it throws instead, and Importer::ReadFile
-// (which catches std::exception around reading and post-processing) turns
-// that into a failed read with this message. tests/unit/model_file_test.cpp
-// (ModelFile.AssimpAssertionIsAnError) aborts without it.
-namespace Assimp {
-void aiAssertViolation(const char* expression, const char* file, int line) {
-  throw std::runtime_error(std::string("Assimp internal check failed: ") + expression + " (" + file + ":" +
-                           std::to_string(line) + ")");
-}
-}  // namespace Assimp
 
 namespace xval {
 
@@ -65,67 +51,6 @@ std::string lower(std::string s) {
   return s;
 }
 
-// The model's folder and the files it may read: inside it, regular, within
-// the size limits. Assimp opens every file through this, the model itself
-// included; each refusal is kept for the error message.
-class GuardedIO : public Assimp::DefaultIOSystem {
- public:
-  GuardedIO(fs::path folder, const ModelLimits& limits) : folder_(std::move(folder)), limits_(limits) {}
-
-  bool Exists(const char* file) const override { return allowed(file, nullptr).has_value(); }
-
-  Assimp::IOStream* Open(const char* file, const char* mode) override {
-    if (std::strchr(mode, 'w') || std::strchr(mode, 'a') || std::strchr(mode, '+')) {
-      refusals_.push_back(std::string(file) + ": opened for writing (refused)");
-      return nullptr;
-    }
-    std::string why;
-    auto path = allowed(file, &why);
-    if (!path) {
-      refusals_.push_back(why);
-      return nullptr;
-    }
-    std::error_code ec;
-    const auto size = (long long)fs::file_size(*path, ec);
-    if (ec) {
-      refusals_.push_back(std::string(file) + ": " + ec.message());
-      return nullptr;
-    }
-    if (size > limits_.max_file_bytes) {
-      refusals_.push_back(std::string(file) + ": " + std::to_string(size) + " bytes; the limit is " +
-                          std::to_string(limits_.max_file_bytes));
-      return nullptr;
-    }
-    if (total_ + size > limits_.max_total_bytes) {
-      refusals_.push_back(std::string(file) + ": the files read for this model exceed " +
-                          std::to_string(limits_.max_total_bytes) + " bytes in all");
-      return nullptr;
-    }
-    total_ += size;
-    if (std::find(opened_.begin(), opened_.end(), *path) == opened_.end()) opened_.push_back(*path);
-    return DefaultIOSystem::Open(path->c_str(), "rb");
-  }
-
-  const std::vector<std::string>& refusals() const { return refusals_; }
-  // The files opened, canonical, in order, each once.
-  const std::vector<fs::path>& opened() const { return opened_; }
-
-  // The file `name` names, when it may be read: inside the folder after
-  // following symlinks, a regular file. Else nullopt and why.
-  std::optional<fs::path> allowed(const std::string& name, std::string* why) const {
-    const ResolvedName r = resolveInsideFolder(folder_, name);
-    if (r.kind == NameResolution::RegularFile) return r.real;
-    if (why) *why = r.why;
-    return std::nullopt;
-  }
-
- private:
-  fs::path folder_;
-  ModelLimits limits_;
-  long long total_ = 0;
-  mutable std::vector<std::string> refusals_;
-  std::vector<fs::path> opened_;
-};
 
 // --- checks before Assimp reads -----------------------------------------
 
@@ -504,28 +429,6 @@ long long checkGlb(const fs::path& file, long long size, const ModelLimits& limi
 
 // --- Assimp -------------------------------------------------------------
 
-// The Importer with only the readers of modelFileExtensions() (glTF 2.0's,
-// not glTF 1.0's): a file is never handed to another format's reader, even
-// by Assimp's content sniffing. The unregistered readers are ours to delete.
-struct RestrictedImporter {
-  Assimp::Importer importer;
-  std::vector<std::unique_ptr<Assimp::BaseImporter>> removed;
-  RestrictedImporter() {
-    std::vector<Assimp::BaseImporter*> others;
-    for (size_t i = 0; i < importer.GetImporterCount(); ++i) {
-      Assimp::BaseImporter* r = importer.GetImporter(i);
-      std::set<std::string> exts;
-      r->GetExtensionList(exts);
-      const std::string name = r->GetInfo()->mName ? r->GetInfo()->mName : "";
-      bool keep = name.find("glTF Importer") == std::string::npos;  // glTF 1.0
-      bool ours = false;
-      for (const auto& e : modelFileExtensions()) ours = ours || exts.count(e.substr(1));
-      if (!(keep && ours)) others.push_back(r);
-    }
-    for (auto* r : others)
-      if (importer.UnregisterLoader(r) == aiReturn_SUCCESS) removed.emplace_back(r);
-  }
-};
 
 glm::dvec3 d3(const aiVector3D& v) { return {v.x, v.y, v.z}; }
 bool finite3(const aiVector3D& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
@@ -630,20 +533,15 @@ std::optional<ModelTexture> baseColorTexture(const aiScene* scene, const aiMesh*
 // AddressSanitizer, a heap-buffer-overflow in the GLB reader and a bus
 // error in a post-processing step on a PLY file, past every check above
 // (kept in tests/fuzz/seeds/model; ModelFile.AssimpCrashIsAnError). So Assimp reads the
-// file in a forked child (process/run_process.h, runForked: its own
-// process group, a time-out, killed on an interrupt), with everything of
-// Assimp's that touches the file's bytes: the reader and the
-// post-processing steps. The child writes back, as fields of an 8-byte
-// little-endian length and the bytes:
-//   error      Assimp's error string (empty: it read a scene)
-//   refusals   count, then each: the files GuardedIO refused
-//   opened     count, then each: the files it opened, canonical
-//   scene      the part of the scene the loader reads (assimp_dump.h;
-//              empty with an error)
-// and this process rebuilds the aiScene from the dump, checking every
-// count of it (a defect of Assimp's may have corrupted the child's
-// memory). A crash, a sanitizer report or a hang of the child is this
-// file's ModelFileError, naming what happened.
+// file in a child process, xval-model-reader (geometry/assimp_read.h: what
+// it writes back, and why a program of its own rather than a fork), run by
+// process/run_process.h's runCaptured (its own process group, a time-out,
+// killed on an interrupt), with everything of Assimp's that touches the
+// file's bytes: the reader and the post-processing steps. This process
+// rebuilds the aiScene from the dump, checking every count of it (a
+// defect of Assimp's may have corrupted the child's memory). A crash, a
+// sanitizer report or a hang of the child is this file's ModelFileError,
+// naming what happened.
 
 // An allocation past ModelLimits::max_import_memory_bytes fails in the
 // child with std::bad_alloc: out of Assimp's ReadFile as its error string,
@@ -664,11 +562,6 @@ struct ChildRead {
   std::string_view scene() const { return std::string_view(output).substr(scene_at); }
 };
 
-void putField(std::string& out, const std::string& bytes) {
-  const uint64_t n = bytes.size();
-  for (int k = 0; k < 8; ++k) out.push_back(char((n >> (8 * k)) & 0xff));
-  out += bytes;
-}
 
 // The next field of `in` from `at`: its bytes are [begin, at) afterwards;
 // false if it runs past the end.
@@ -690,39 +583,28 @@ bool takeField(const std::string& in, size_t& at, std::string& field) {
   return true;
 }
 
+// xval-model-reader beside the running program (xval's build folder), else
+// where the build put it (XVAL_MODEL_READER_BUILT: the tests and tools are
+// programs in other folders of the build).
+fs::path modelReader(const std::string& file) {
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec && fs::is_regular_file(self.parent_path() / kModelReader, ec)) return self.parent_path() / kModelReader;
+  const fs::path built = XVAL_MODEL_READER_BUILT;
+  if (fs::is_regular_file(built, ec)) return built;
+  throw ModelFileError(file + ": cannot read it: " + kModelReader + " is neither beside " +
+                       (self.empty() ? std::string("this program") : self.string()) + " nor at " + built.string() +
+                       " (it is built with xval: cmake --build build)");
+}
+
 ChildRead readInChildProcess(const fs::path& real, const ModelLimits& lim) {
   const std::string file = real.string();
-  auto work = [&]() {
-    RestrictedImporter ri;
-    Assimp::Importer& imp = ri.importer;
-    auto io_owner = std::make_unique<GuardedIO>(real.parent_path(), lim);
-    GuardedIO* io = io_owner.get();
-    imp.SetIOHandler(io_owner.release());  // the Importer owns it now
-    imp.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    const aiScene* scene = nullptr;
-    std::string error;
-    try {
-      scene = imp.ReadFile(file, aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_SortByPType);
-    } catch (const std::exception& e) {  // should ReadFile let one through
-      error = e.what();
-    }
-    if (!scene && error.empty()) error = imp.GetErrorString();
-    if (!scene && error.empty()) error = "Assimp read no scene and gave no reason";
-    const std::string dump = scene ? writeAssimpDump(*scene) : std::string();
-    std::string out;
-    putField(out, error);
-    putField(out, std::to_string(io->refusals().size()));
-    for (const auto& r : io->refusals()) putField(out, r);
-    putField(out, std::to_string(io->opened().size()));
-    for (const auto& o : io->opened()) putField(out, o.string());
-    putField(out, dump);
-    return out;
-  };
   // The dump holds every vertex with its attributes as floats, which can
   // be several times the files' bytes (an OBJ corner's indices become a
   // vertex of its own).
   const size_t max_output = size_t(16 * lim.max_total_bytes + (64ll << 20));
-  ForkedResult f = runForked(work, lim.max_import_seconds, max_output, size_t(lim.max_import_memory_bytes));
+  const CapturedResult f =
+      runCaptured(modelReaderArguments(modelReader(file), real, lim), lim.max_import_seconds, max_output);
   if (!f.process.ok()) {
     std::string what = f.process.describe();
     const std::string summary = f.summary();
@@ -770,7 +652,7 @@ ChildRead readInChildProcess(const fs::path& real, const ModelLimits& lim) {
 // The child's reads this process has made, kept with the bytes of every
 // file the child opened (kChildReadMemoBytes in all): a validate run loads
 // each scene several times (its plan, its jobs, its compare), and the
-// forked Assimp read is most of a load. A kept read is used only when its
+// child's Assimp read is most of a load. A kept read is used only when its
 // limits are the same and every file it opened still holds exactly the
 // bytes it held (read again and compared, never a time stamp); a read that
 // failed or refused a file is never kept.
@@ -866,10 +748,6 @@ ChildRead readInChildProcessOnce(const fs::path& real, const ModelLimits& lim) {
 
 }  // namespace
 
-const std::vector<std::string>& modelFileExtensions() {
-  static const std::vector<std::string> e{".obj", ".ply", ".stl", ".off", ".gltf", ".glb"};
-  return e;
-}
 
 long long Model::triangleCount() const {
   long long n = 0;

@@ -25,17 +25,6 @@
 
 extern char** environ;
 
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(undefined_behavior_sanitizer)
-#define XVAL_HAS_SANITIZER 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__)
-#define XVAL_HAS_SANITIZER 1
-#endif
-#ifdef XVAL_HAS_SANITIZER
-#include <sanitizer/common_interface_defs.h>
-#endif
 
 namespace xval {
 
@@ -242,18 +231,6 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const std::filesy
 
 namespace {
 
-// Writes all of [data, data + n) to fd; false on an error (the child then
-// exits with a code of its own).
-bool writeAll(int fd, const char* data, size_t n) {
-  while (n > 0) {
-    const ssize_t w = write(fd, data, n);
-    if (w < 0 && errno == EINTR) continue;
-    if (w <= 0) return false;
-    data += w, n -= size_t(w);
-  }
-  return true;
-}
-
 // The bytes of an in-memory file from `from` to its end (at most `cap`).
 std::string readBack(int fd, off_t from, size_t cap) {
   struct stat st;
@@ -270,53 +247,10 @@ std::string readBack(int fd, off_t from, size_t cap) {
   return s;
 }
 
-[[noreturn]] void childMain(const std::function<std::string()>& work, int out_fd, int err_fd,
-                            size_t max_memory_bytes) {
-  setpgid(0, 0);
-#ifndef XVAL_HAS_SANITIZER
-  if (max_memory_bytes > 0) {
-    const rlimit cap{rlim_t(max_memory_bytes), rlim_t(max_memory_bytes)};
-    if (setrlimit(RLIMIT_AS, &cap) != 0) {
-      const std::string m = std::string("setrlimit(RLIMIT_AS): ") + std::strerror(errno) + "\n";
-      writeAll(2, m.data(), m.size());
-      _exit(70);
-    }
-  }
-#else
-  (void)max_memory_bytes;
-#endif
-  sigset_t none;
-  sigemptyset(&none);
-  sigprocmask(SIG_SETMASK, &none, nullptr);
-  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGSEGV, SIGBUS, SIGABRT, SIGILL, SIGFPE, SIGALRM})
-    signal(sig, SIG_DFL);
-#ifdef XVAL_HAS_SANITIZER
-  __sanitizer_set_death_callback(nullptr);
-#endif
-  const int null_fd = open("/dev/null", O_RDONLY | O_CLOEXEC);
-  if (null_fd >= 0) dup2(null_fd, 0);
-  dup2(err_fd, 1);
-  dup2(err_fd, 2);
-  try {
-    const std::string result = work();
-    if (!writeAll(out_fd, result.data(), result.size())) {
-      const std::string m = std::string("writing the result: ") + std::strerror(errno) + "\n";
-      writeAll(2, m.data(), m.size());
-      _exit(72);
-    }
-  } catch (const std::exception& e) {
-    const std::string m = std::string("exception: ") + e.what() + "\n";
-    writeAll(2, m.data(), m.size());
-    _exit(70);
-  } catch (...) {
-    _exit(70);
-  }
-  _exit(0);
-}
 
 }  // namespace
 
-std::string ForkedResult::summary() const {
+std::string CapturedResult::summary() const {
   std::string last;
   size_t start = 0;
   while (start < diagnostics.size()) {
@@ -332,54 +266,53 @@ std::string ForkedResult::summary() const {
   return last;
 }
 
-bool runForkedCapsMemory() {
-#ifdef XVAL_HAS_SANITIZER
-  return false;
-#else
-  return true;
-#endif
-}
-
-ForkedResult runForked(const std::function<std::string()>& work, double timeout_seconds,
-                       size_t max_output_bytes, size_t max_memory_bytes) {
-  ForkedResult f;
+CapturedResult runCaptured(const std::vector<std::string>& argv, double timeout_seconds, size_t max_output_bytes) {
+  CapturedResult f;
   ProcessResult& r = f.process;
   r.timeout_seconds = timeout_seconds;
-  const int out_fd = memfd_create("xval-forked-output", MFD_CLOEXEC);
-  const int err_fd = memfd_create("xval-forked-stderr", MFD_CLOEXEC);
+  const std::string& exe = argv.at(0);
+  const int out_fd = memfd_create("xval-captured-output", MFD_CLOEXEC);
+  const int err_fd = memfd_create("xval-captured-stderr", MFD_CLOEXEC);
   if (out_fd < 0 || err_fd < 0) {
     r.error = std::string("memfd_create: ") + std::strerror(errno);
     if (out_fd >= 0) close(out_fd);
     if (err_fd >= 0) close(err_fd);
     return f;
   }
-  // Nothing buffered may be written twice (the child's own stdio is not
-  // flushed: it leaves with _exit).
-  std::fflush(nullptr);
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_adddup2(&fa, out_fd, 1);  // dup2 clears close-on-exec on 1 and 2
+  posix_spawn_file_actions_adddup2(&fa, err_fd, 2);
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+  posix_spawnattr_setpgroup(&attr, 0);
+  sigset_t none, defaults;
+  sigemptyset(&none);
+  sigemptyset(&defaults);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE}) sigaddset(&defaults, sig);
+  posix_spawnattr_setsigmask(&attr, &none);
+  posix_spawnattr_setsigdefault(&attr, &defaults);
+  std::vector<char*> args;
+  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
   pid_t pid = -1;
-  int fork_errno = 0;
+  int rc;
   const auto t0 = std::chrono::steady_clock::now();
   {
     std::lock_guard<std::mutex> g(g_children_lock);
-    if (g_interrupted) {
-      fork_errno = EINTR;
-    } else {
-      pid = fork();
-      if (pid == 0) childMain(work, out_fd, err_fd, max_memory_bytes);
-      if (pid < 0) fork_errno = errno;
-      else g_children.insert(pid);
-    }
+    rc = g_interrupted ? EINTR : posix_spawn(&pid, exe.c_str(), &fa, &attr, args.data(), environ);
+    if (rc == 0) g_children.insert(pid);
   }
-  if (pid < 0) {
-    r.error = fork_errno == EINTR ? "not started: xval is being interrupted"
-                                  : std::string("fork: ") + std::strerror(fork_errno);
+  posix_spawn_file_actions_destroy(&fa);
+  posix_spawnattr_destroy(&attr);
+  if (rc != 0) {
+    r.error = exe + ": " + (rc == EINTR ? std::string("not started: xval is being interrupted") : std::strerror(rc));
     close(out_fd);
     close(err_fd);
     return f;
   }
-  // Also here, so the group exists before a kill: the child's own call may
-  // not have run yet (whichever runs first, the result is the same).
-  setpgid(pid, pid);
   r.started = true;
   int status = 0;
   auto pause_for = std::chrono::microseconds(100);
@@ -396,7 +329,7 @@ ForkedResult runForked(const std::function<std::string()>& work, double timeout_
     std::this_thread::sleep_for(pause_for);
     pause_for = std::min(pause_for * 2, std::chrono::microseconds(20000));
   }
-  kill(-pid, SIGKILL);  // anything the child left in its group
+  kill(-pid, SIGKILL);  // anything it left in its group
   forget(pid);
   waitIfInterrupted();
   if (!r.timed_out) {
@@ -412,16 +345,16 @@ ForkedResult runForked(const std::function<std::string()>& work, double timeout_
   if (r.ok()) {
     if (fstat(out_fd, &st) != 0) {
       r.exit_code = 71;
-      f.diagnostics += "\nxval: cannot read the child's output: " + std::string(std::strerror(errno));
+      f.diagnostics += "\nxval: cannot read the output: " + std::string(std::strerror(errno));
     } else if (size_t(st.st_size) > max_output_bytes) {
       r.exit_code = 71;
-      f.diagnostics += "\nxval: the child's output is " + std::to_string(st.st_size) + " bytes; the limit is " +
+      f.diagnostics += "\nxval: its output is " + std::to_string(st.st_size) + " bytes; the limit is " +
                        std::to_string(max_output_bytes);
     } else {
       f.output = readBack(out_fd, 0, size_t(st.st_size));
       if (f.output.size() != size_t(st.st_size)) {
         r.exit_code = 71;
-        f.diagnostics += "\nxval: read " + std::to_string(f.output.size()) + " of the child's " +
+        f.diagnostics += "\nxval: read " + std::to_string(f.output.size()) + " of its " +
                          std::to_string(st.st_size) + " output bytes";
         f.output.clear();
       }

@@ -38,39 +38,25 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const std::filesy
                          const std::filesystem::path& log, double timeout_seconds,
                          const std::filesystem::path& progress = {});
 
-// Work that may crash or hang on hostile input (a third-party parser:
-// Assimp reading a model file) run in a forked child of this process, so
-// a crash or a hang costs that one input, never xval.
-//
-// The child runs in a process group of its own (the time-out and an
-// interrupt kill it like a tool of runProcess), with no signal blocked,
-// the interrupt and crash signals at their default action and, in a
-// sanitizer build, no death callback (a fuzzer's crash report is about
-// the parent's input, not a child's); stdin is /dev/null, stdout and
-// stderr go to a buffer the parent keeps the end of. `work` returns its
-// result, which the child writes to an in-memory file (writing never
-// blocks on the parent); the child then leaves with _exit(0), running no
-// atexit handler or static destructor of the parent's. An exception out
-// of `work` makes it exit with code 70 after printing the exception's
-// message to its stderr; a failed write of the result, code 72.
-struct ForkedResult {
-  ProcessResult process;    // how the child ended (`log` is unused)
-  std::string output;       // what `work` returned, when the child exited with 0
+// A program that may crash or hang on hostile input (xval-model-reader:
+// Assimp reading a model file, geometry/assimp_read.h), run so that a
+// crash or a hang costs that one input, never xval: like runProcess (no
+// shell, its own process group, killed at the time-out and on an
+// interrupt, no signal blocked, the interrupt signals at their default
+// action, stdin /dev/null), with its stdout and stderr in in-memory files
+// (its writes never block on this process) of which this one reads the
+// output whole and the end of stderr. `argv[0]` is the program's path (no
+// PATH search).
+struct CapturedResult {
+  ProcessResult process;    // how it ended (`log` is unused)
+  std::string output;       // its stdout, when it exited with 0
   std::string diagnostics;  // the end of its stderr (at most kLogTailBytes), control characters blanked
   // The line of `diagnostics` saying what went wrong: a sanitizer's
   // "ERROR: ..." line, else the last non-empty one; empty if none.
   std::string summary() const;
 };
 // `max_output_bytes`: a larger output is an error (exit code 71), not read.
-// `max_memory_bytes` (0: none): the child's whole address space, the part
-// it inherits included (RLIMIT_AS), so an allocation past it fails in the
-// child (std::bad_alloc) instead of taking the machine's memory; not set
-// in a sanitizer build, whose shadow memory reserves far more.
-ForkedResult runForked(const std::function<std::string()>& work, double timeout_seconds,
-                       size_t max_output_bytes, size_t max_memory_bytes = 0);
-// Whether runForked sets `max_memory_bytes` in this build (false in a
-// sanitizer build).
-bool runForkedCapsMemory();
+CapturedResult runCaptured(const std::vector<std::string>& argv, double timeout_seconds, size_t max_output_bytes);
 
 // SIGINT, SIGTERM and SIGHUP (unless SIGHUP was ignored, as under nohup)
 // are taken by a thread of their own: on the first one, every process

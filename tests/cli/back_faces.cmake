@@ -18,8 +18,12 @@ endforeach()
 find_program(IDIFF idiff REQUIRED)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
+# Each command has its own time-out (a render here takes under 2 s, 10 s
+# under the sanitizers), so a hang names its scene instead of using up the
+# test's time-out.
+set(_cmd_timeout 120)
 execute_process(COMMAND ${XVAL} extremes -o ${WORK}/extremes --no-external --size 64
-                RESULT_VARIABLE _rc ERROR_VARIABLE _err)
+                RESULT_VARIABLE _rc ERROR_VARIABLE _err TIMEOUT 300)
 if(NOT _rc EQUAL 0)
   message(FATAL_ERROR "xval extremes exited ${_rc}:\n${_err}")
 endif()
@@ -50,12 +54,13 @@ foreach(_scene ${_scenes})
     set(_b ${WORK}/${_name}.${_p}.kept.exr)
     execute_process(COMMAND ${XVAL} render ${_scene} -o ${_a} --precision ${_p} --no-diagnostics -q
                             --stats ${WORK}/${_name}.${_p}.json
-                    RESULT_VARIABLE _rc1 ERROR_VARIABLE _e1)
+                    RESULT_VARIABLE _rc1 ERROR_VARIABLE _e1 TIMEOUT ${_cmd_timeout})
     execute_process(COMMAND ${XVAL} render ${_scene} -o ${_b} --precision ${_p} --no-diagnostics -q
                             --keep-back-faces
-                    RESULT_VARIABLE _rc2 ERROR_VARIABLE _e2)
+                    RESULT_VARIABLE _rc2 ERROR_VARIABLE _e2 TIMEOUT ${_cmd_timeout})
     if(NOT _rc1 EQUAL 0 OR NOT _rc2 EQUAL 0)
-      message(FATAL_ERROR "${_name} (${_p}): render failed:\n${_e1}\n${_e2}")
+      message(FATAL_ERROR "${_name} (${_p}): render failed (exit ${_rc1} without, ${_rc2} with --keep-back-faces; "
+                          "'Process terminated due to timeout' is the ${_cmd_timeout} s time-out):\n${_e1}\n${_e2}")
     endif()
     file(READ ${WORK}/${_name}.${_p}.json _stats)
     string(JSON _culled GET "${_stats}" culled_triangles)
@@ -63,7 +68,7 @@ foreach(_scene ${_scenes})
       math(EXPR _skipping "${_skipping} + 1")
     endif()
     execute_process(COMMAND ${IDIFF} -a -fail 0 -warn 0 ${_a} ${_b}
-                    RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _out)
+                    RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _out TIMEOUT ${_cmd_timeout})
     if(NOT _rc EQUAL 0)
       message(FATAL_ERROR "${_name} (${_p}): skipping ${_culled} back faces changed the image:\n${_out}")
     endif()

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "geometry/model_file.h"
+#include "geometry/assimp_read.h"
 #include "process/run_process.h"
 
 namespace xval {
@@ -272,19 +273,15 @@ TEST_F(ModelFile, AssimpHangIsTimedOut) {
 }
 
 TEST_F(ModelFile, AssimpChildMemoryIsCapped) {
-  // The child's address space capped at what it inherits plus 16 MiB: a
-  // model whose read needs more fails with the limit named, and loads
-  // under the default cap.
-  if (!runForkedCapsMemory()) GTEST_SKIP() << "a sanitizer build sets no memory cap (process/run_process.h)";
+  // The reader's address space capped at CAP: a model whose read needs
+  // more fails with the limit named, and loads under the default cap.
+  if (!modelReaderCapsMemory()) GTEST_SKIP() << "a sanitizer build sets no memory cap (geometry/assimp_read.h)";
   std::string obj;
   for (int k = 0; k < 200000; ++k) obj += "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n";
   const auto f = write("big.obj", obj);
   EXPECT_EQ(loadModelFile(f).triangleCount(), 200000);
-  long long pages = 0;
-  std::ifstream("/proc/self/statm") >> pages;
-  ASSERT_GT(pages, 0);
   ModelLoadOptions o;
-  o.limits.max_import_memory_bytes = pages * sysconf(_SC_PAGESIZE) + (16ll << 20);
+  o.limits.max_import_memory_bytes = 64ll << 20;
   o.limits.max_triangles += 1;  // another key: the read above is not reused
   expectError(f, "Assimp's child process ran out of the memory it may use reading it", o);
 }
@@ -527,8 +524,7 @@ TEST_F(ModelFile, GltfNodeGraphIsCountedBeforeAssimpExpandsIt) {
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 5.0);
   // Neither an Assimp child nor this process built the expansion (2^21
   // aiNodes of over 1 KB each): the largest resident memory of each stayed
-  // within 256 MiB of this process's before the read (a forked child's
-  // counts the pages it shares with its parent).
+  // within 256 MiB of this process's before the read.
   rusage children{}, self{};
   getrusage(RUSAGE_CHILDREN, &children);
   getrusage(RUSAGE_SELF, &self);
