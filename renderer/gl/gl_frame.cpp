@@ -41,7 +41,7 @@ struct Vertex {
 
 void put(float* out, glm::dvec3 v) { out[0] = float(v.x), out[1] = float(v.y), out[2] = float(v.z); }
 
-// The light as the shaders' std430 block (glsl_models.cpp, struct Light).
+// The light as the shaders' std140 uniform block (glsl_models.cpp, struct Light).
 struct LightBlock {
   float position_kind[4], direction_cos[4], colour_luma[4], attenuation[4];
 };
@@ -157,7 +157,7 @@ struct Draw {
 
 // One set of lights as the shaders read them: the buffer and the ambient.
 struct LightSet {
-  GLuint ssbo = 0;
+  GLuint buffer = 0;  // the shaders' uniform block Lights
   glm::vec3 ambient{0};
 };
 
@@ -201,7 +201,7 @@ struct GlScene::Impl {
     if (!context) return;
     deleteFrameTargets(targets);
     if (!textures.empty()) glDeleteTextures(GLsizei(textures.size()), textures.data());
-    for (const LightSet& l : light_sets) glDeleteBuffers(1, &l.ssbo);
+    for (const LightSet& l : light_sets) glDeleteBuffers(1, &l.buffer);
     glDeleteBuffers(1, &vbo);
     glDeleteVertexArrays(1, &vao);
     for (GLuint p : programs) glDeleteProgram(p);
@@ -309,8 +309,14 @@ GlScene::GlScene(const Scene& input) : impl_(new Impl) {
       throw std::logic_error("gl: the grey lights of luma space " + std::string(kLumaSpaceNames[set - 1]) +
                              " differ from the scene's lights in kind or attenuation");
     if (blocks.empty()) blocks.push_back(LightBlock{});  // a buffer may not be empty; k_light_count says 0
-    glCreateBuffers(1, &d.light_sets[set].ssbo);
-    glNamedBufferStorage(d.light_sets[set].ssbo, GLsizeiptr(blocks.size() * sizeof(LightBlock)), blocks.data(), 0);
+    GLint max_block = 0;  // the uniform block's limit (at least 16 KB: 256 lights)
+    glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &max_block);
+    if (blocks.size() * sizeof(LightBlock) > size_t(max_block))
+      throw std::runtime_error("OpenGL: " + std::to_string(blocks.size()) + " lights take " +
+                               std::to_string(blocks.size() * sizeof(LightBlock)) +
+                               " bytes, more than this driver's uniform block of " + std::to_string(max_block));
+    glCreateBuffers(1, &d.light_sets[set].buffer);
+    glNamedBufferStorage(d.light_sets[set].buffer, GLsizeiptr(blocks.size() * sizeof(LightBlock)), blocks.data(), 0);
   }
   checkGl("uploading the lights");
 
@@ -390,7 +396,7 @@ void GlScene::draw() {
     const LightSet& ls = d.light_sets[size_t(dr.variant.luma_only)];
     glUseProgram(p);
     if (dr.uniforms_per_frame) setMaterialUniforms(p, dr, ls);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightsBinding, ls.ssbo);
+    glBindBufferBase(GL_UNIFORM_BUFFER, kLightsBinding, ls.buffer);
     if (dr.texture) glBindTextureUnit(kTextureUnit, dr.texture);
     if (dr.cull_back_faces)
       glEnable(GL_CULL_FACE);  // GL_BACK of GL_CCW: the mesh's winding normal faces the eye when counter-clockwise

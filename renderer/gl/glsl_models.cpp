@@ -44,7 +44,9 @@ struct Light {
   vec4 colour_luma;      // rgb: colour; w: lightLuma(colour)
   vec4 attenuation;      // constant, linear, quadratic; w: unused (k_light_attenuated)
 };
-layout(std430, binding = 0) readonly buffer Lights { Light u_lights[]; };
+// A uniform block, not a storage buffer: llvmpipe loads a storage buffer
+// lane by lane in a fragment shader, a uniform block's constant index once.
+layout(std140, binding = 0) uniform Lights { Light u_lights[k_light_array_size]; };
 
 // clamp(x) and saturate(x), NaN -> 0 (shading/models.h)
 float clamp0(float x) { return x > 0.0 ? x : 0.0; }
@@ -459,11 +461,11 @@ std::string variantConstants(const ShaderVariant& v) {
       "const int k_texture = {};\n"
       "const bool k_normalize_normal = {};\n"
       "const int k_luma_only = {};\n"
-      "const int k_light_count = {};\n"
+      "const int k_light_count = {}, k_light_array_size = {};\n"
       "const int k_light_kind[{}] = int[]({});\n"
       "const bool k_light_attenuated[{}] = bool[]({});\n",
       v.shading, glslModelConstant(v.model), b(v.course), b(v.specular), b(v.on_cycles), v.ct_distribution,
-      v.ct_geometry, v.ct_fresnel, v.texture, b(v.normalize_normal), v.luma_only, v.light_kinds.size(), n, kinds,
+      v.ct_geometry, v.ct_fresnel, v.texture, b(v.normalize_normal), v.luma_only, v.light_kinds.size(), n, n, kinds,
       n, attenuated);
 }
 

@@ -31,7 +31,7 @@ inline constexpr int kAttribPosition = 0;    // vec3: vertex - eye (camera-relat
 inline constexpr int kAttribNormal = 1;      // vec3: the vertex normal
 inline constexpr int kAttribUv = 2;          // vec2: frac(uv0) + (uv_k - uv0) of its triangle
 inline constexpr int kAttribFaceNormal = 3;  // vec3: flat shading's normal (shading/flat_normals.h)
-inline constexpr int kLightsBinding = 0;     // the lights' shader storage block
+inline constexpr int kLightsBinding = 0;     // the lights' uniform block
 inline constexpr int kTextureUnit = 0;       // the RGBA32F texture
 
 // The GLSL name of a model's id constant ("MODEL_LAMBERT"): both shaders
