@@ -155,6 +155,24 @@ struct Draw {
   bool cull_back_faces = false;
 };
 
+// Per light: whether the shaders' towardsLight can take its rescaling path
+// on a triangle of `dr` (shading/lights.h towardsLightMayRescale of each
+// triangle's box; a directional light never calls it).
+std::vector<bool> lightsMayRescale(const std::vector<Vertex>& vertices, const Draw& dr, const std::vector<int>& kinds,
+                                   const std::vector<glm::dvec3>& positions) {
+  std::vector<bool> may(kinds.size(), false);
+  for (GLint t = dr.first; t + 2 < dr.first + dr.count; t += 3) {
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    for (GLint k = t; k < t + 3; ++k) {
+      const float* p = vertices[size_t(k)].position;
+      lo = glm::min(lo, glm::dvec3(p[0], p[1], p[2])), hi = glm::max(hi, glm::dvec3(p[0], p[1], p[2]));
+    }
+    for (size_t i = 0; i < kinds.size(); ++i)
+      if (kinds[i] != 1 && !may[i]) may[i] = towardsLightMayRescale(positions[i], lo, hi);
+  }
+  return may;
+}
+
 // One set of lights as the shaders read them: the buffer and the ambient.
 struct LightSet {
   GLuint buffer = 0;  // the shaders' uniform block Lights
@@ -291,6 +309,7 @@ GlScene::GlScene(const Scene& input) : impl_(new Impl) {
   // The sets differ in colour only: one list of kinds for the programs.
   std::vector<int> light_kinds;
   std::vector<bool> light_attenuated;
+  std::vector<glm::dvec3> light_positions;  // relative to the eye, as the shaders read them
   for (size_t set = 0; set < d.light_sets.size(); ++set) {
     std::vector<PreparedLight<float>> lights;
     prepareLights<float>(set == 0 ? scene.lights : greyLights(scene.lights, LumaSpace(set - 1)),
@@ -303,8 +322,10 @@ GlScene::GlScene(const Scene& input) : impl_(new Impl) {
       kinds.push_back(lightKind(l));
       attenuated.push_back(l.has_attenuation);
     }
-    if (set == 0)
+    if (set == 0) {
       light_kinds = kinds, light_attenuated = attenuated;
+      for (const auto& l : lights) light_positions.push_back(glm::dvec3(l.position));
+    }
     else if (kinds != light_kinds || attenuated != light_attenuated)
       throw std::logic_error("gl: the grey lights of luma space " + std::string(kLumaSpaceNames[set - 1]) +
                              " differ from the scene's lights in kind or attenuation");
@@ -343,6 +364,7 @@ GlScene::GlScene(const Scene& input) : impl_(new Impl) {
     v.texture = slot_texture_mode[draw_slot[i]];
     v.luma_only = mat.luma_only ? 1 + int(*mat.luma_only) : 0;
     v.light_kinds = light_kinds, v.light_attenuated = light_attenuated;
+    v.light_may_rescale = lightsMayRescale(vertices, dr, light_kinds, light_positions);
     dr.program = size_t(std::find(variants.begin(), variants.end(), v) - variants.begin());
     if (dr.program == variants.size()) {
       variants.push_back(v);

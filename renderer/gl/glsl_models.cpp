@@ -54,12 +54,13 @@ float saturate1(float x) { return x > 0.0 ? (x < 1.0 ? x : 1.0) : 0.0; }
 
 // ---- lights (shading/lights.h) ---------------------------------------
 // towardsLight: L and d of D = p_light - p, rescaled by the largest
-// |component| where D.D is not a normal float.
+// |component| where D.D is not a normal float; may_rescale false (a
+// constant, k_light_may_rescale): D.D is known to be normal, not tested.
 const float kFloatMin = 1.17549435e-38;
 const float kFloatMax = 3.40282347e38;
-void towardsLight(vec3 D, out vec3 L, out float d) {
+void towardsLight(vec3 D, bool may_rescale, out vec3 L, out float d) {
   float dd = dot(D, D);
-  if (dd >= kFloatMin && dd <= kFloatMax) {
+  if (!may_rescale || (dd >= kFloatMin && dd <= kFloatMax)) {
     d = sqrt(dd);
     L = D / d;
     return;
@@ -88,7 +89,7 @@ void sampleLight(int i, vec3 p, out vec3 L, out float att, out bool lit) {
     return;
   }
   float dist;
-  towardsLight(l.position_kind.xyz - p, L, dist);
+  towardsLight(l.position_kind.xyz - p, k_light_may_rescale[i], L, dist);
   if (k_light_attenuated[i])
     att = 1.0 / (l.attenuation.x + l.attenuation.y * dist + l.attenuation.z * dist * dist);
   if (kind == 2) lit = dot(-L, l.direction_cos.xyz) >= l.direction_cos.w;
@@ -440,15 +441,17 @@ std::string modelIdConstants() {
 // have at least one entry (GLSL has no empty array), read only below
 // k_light_count.
 std::string variantConstants(const ShaderVariant& v) {
-  if (v.light_attenuated.size() != v.light_kinds.size())
+  if (v.light_attenuated.size() != v.light_kinds.size() || v.light_may_rescale.size() != v.light_kinds.size())
     throw std::logic_error("ShaderVariant: " + std::to_string(v.light_kinds.size()) + " light kinds but " +
-                           std::to_string(v.light_attenuated.size()) + " attenuation flags");
+                           std::to_string(v.light_attenuated.size()) + " attenuation flags and " +
+                           std::to_string(v.light_may_rescale.size()) + " rescaling flags");
   auto b = [](bool x) { return x ? "true" : "false"; };
-  std::string kinds, attenuated;
+  std::string kinds, attenuated, may_rescale;
   for (size_t i = 0; i < std::max<size_t>(v.light_kinds.size(), 1); ++i) {
     const bool real = i < v.light_kinds.size();
     kinds += fmt::format("{}{}", i ? ", " : "", real ? v.light_kinds[i] : 0);
     attenuated += fmt::format("{}{}", i ? ", " : "", b(real && v.light_attenuated[i]));
+    may_rescale += fmt::format("{}{}", i ? ", " : "", b(real && v.light_may_rescale[i]));
   }
   const size_t n = std::max<size_t>(v.light_kinds.size(), 1);
   return fmt::format(
@@ -463,10 +466,11 @@ std::string variantConstants(const ShaderVariant& v) {
       "const int k_luma_only = {};\n"
       "const int k_light_count = {}, k_light_array_size = {};\n"
       "const int k_light_kind[{}] = int[]({});\n"
-      "const bool k_light_attenuated[{}] = bool[]({});\n",
+      "const bool k_light_attenuated[{}] = bool[]({});\n"
+      "const bool k_light_may_rescale[{}] = bool[]({});\n",
       v.shading, glslModelConstant(v.model), b(v.course), b(v.specular), b(v.on_cycles), v.ct_distribution,
       v.ct_geometry, v.ct_fresnel, v.texture, b(v.normalize_normal), v.luma_only, v.light_kinds.size(), n, n, kinds,
-      n, attenuated);
+      n, attenuated, n, may_rescale);
 }
 
 }  // namespace

@@ -60,6 +60,11 @@ struct ShaderVariant {
   int luma_only = 0;              // the luma-only mode: 0 off, 1 yiq, 2 cie_lstar (LumaSpace + 1)
   std::vector<int> light_kinds;   // per light of the draw's set: 0 point, 1 directional, 2 spot
   std::vector<bool> light_attenuated;  // per light: 1 / (c + l d + q d^2) applies
+  // Per light: towardsLight's rescaling can be reached from the draw's
+  // triangles (shading/lights.h towardsLightMayRescale); where it cannot,
+  // the test for it is left out (llvmpipe would run the rescaling for
+  // every fragment: its divisions and square root), the result the same.
+  std::vector<bool> light_may_rescale;
   bool operator==(const ShaderVariant&) const = default;
 };
 
