@@ -133,6 +133,60 @@ std::pair<GLuint, int> uploadTexture(const TextureSpec& spec, std::vector<GLuint
   return {t, trilinear ? 3 : spec.filter == TextureFilter::Nearest ? 1 : 2};
 }
 
+// Whether this driver's GLSL decodes every 8-bit code c to c / 255 in float
+// exactly (glsl_models.h codeValueCheckSource; GLSL allows a division 2.5
+// ULP of error, llvmpipe's is IEEE's): run once, read back, compared.
+bool codeValuesExact() {
+  const GLuint cs = compileStage(GL_COMPUTE_SHADER, codeValueCheckSource().c_str(), "code value check");
+  const GLuint p = glCreateProgram();
+  glAttachShader(p, cs);
+  glLinkProgram(p);
+  glDeleteShader(cs);
+  GLint ok = 0;
+  glGetProgramiv(p, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    glDeleteProgram(p);
+    throw std::runtime_error("OpenGL: the code value check does not link");
+  }
+  GLuint buffer = 0;
+  glCreateBuffers(1, &buffer);
+  glNamedBufferStorage(buffer, 256 * sizeof(float), nullptr, 0);
+  glUseProgram(p);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer);
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  float v[256] = {};
+  glGetNamedBufferSubData(buffer, 0, sizeof v, v);
+  glDeleteBuffers(1, &buffer);
+  glDeleteProgram(p);
+  checkGl("checking the shaders' code values");
+  for (int c = 0; c < 256; ++c)
+    if (v[c] != float(c) / 255.0f) return false;
+  return true;
+}
+
+// `tex`'s 8-bit codes (Texture::packed) as an RGBA8UI texture of one level,
+// row 0 the image's top, alpha 0 (unread).
+GLuint uploadTextureCodes(const Texture& tex) {
+  std::vector<unsigned char> codes(tex.packed.size() * 4, 0);
+  for (size_t i = 0; i < tex.packed.size(); ++i)
+    for (int c = 0; c < 3; ++c) codes[4 * i + size_t(c)] = (unsigned char)((tex.packed[i] >> (8 * c)) & 255u);
+  GLint max_tex = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_tex);
+  if (tex.width > max_tex || tex.height > max_tex)
+    throw std::runtime_error("OpenGL: a " + std::to_string(tex.width) + " x " + std::to_string(tex.height) +
+                             " texture exceeds GL_MAX_TEXTURE_SIZE " + std::to_string(max_tex));
+  GLuint t = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &t);
+  glTextureStorage2D(t, 1, GL_RGBA8UI, tex.width, tex.height);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTextureSubImage2D(t, 0, 0, 0, tex.width, tex.height, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, codes.data());
+  glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  checkGl("uploading the texture's codes");
+  return t;
+}
+
 }  // namespace
 
 // One draw call: a run of vertices of one material, its uniforms and texture.
@@ -343,11 +397,28 @@ GlScene::GlScene(const Scene& input) : impl_(new Impl) {
 
   // Per material slot: its uniforms and texture (RGBA32F, one level, read
   // by texelFetch only), uploaded once and shared by its draws.
+  // Nearest and bilinear read the 8-bit codes where they give the same
+  // values (ShaderVariant::texture_codes).
   std::vector<int> slot_texture_mode(slots.materials.size(), 0);
   std::vector<GLuint> slot_texture(slots.materials.size(), 0);
-  for (size_t k = 0; k < slots.materials.size(); ++k)
-    if (slots.used[k] && slots.materials[k]->texture)
-      std::tie(slot_texture[k], slot_texture_mode[k]) = uploadTexture(*slots.materials[k]->texture, d.textures);
+  std::vector<bool> slot_texture_codes(slots.materials.size(), false);
+  std::optional<bool> codes_exact;  // codeValuesExact, asked once when needed
+  for (size_t k = 0; k < slots.materials.size(); ++k) {
+    if (!slots.used[k] || !slots.materials[k]->texture) continue;
+    const TextureSpec& spec = *slots.materials[k]->texture;
+    if (spec.filter != TextureFilter::Trilinear) {
+      const Texture tex = loadTexture(spec);
+      if (!tex.packed.empty() && tex.codes_are_c_over_255 && !codes_exact) codes_exact = codeValuesExact();
+      if (!tex.packed.empty() && tex.codes_are_c_over_255 && *codes_exact) {
+        slot_texture[k] = uploadTextureCodes(tex);
+        d.textures.push_back(slot_texture[k]);
+        slot_texture_mode[k] = spec.filter == TextureFilter::Nearest ? 1 : 2;
+        slot_texture_codes[k] = true;
+        continue;
+      }
+    }
+    std::tie(slot_texture[k], slot_texture_mode[k]) = uploadTexture(spec, d.textures);
+  }
 
   // Per draw: its uniforms and its program, one per distinct variant.
   std::vector<ShaderVariant> variants;
@@ -362,6 +433,7 @@ GlScene::GlScene(const Scene& input) : impl_(new Impl) {
     v.shading = scene.shading == ShadingMode::Flat ? 0 : scene.shading == ShadingMode::Gouraud ? 1 : 2;
     v.normalize_normal = scene.normalize_normal;
     v.texture = slot_texture_mode[draw_slot[i]];
+    v.texture_codes = slot_texture_codes[draw_slot[i]];
     v.luma_only = mat.luma_only ? 1 + int(*mat.luma_only) : 0;
     v.light_kinds = light_kinds, v.light_attenuated = light_attenuated;
     v.light_may_rescale = lightsMayRescale(vertices, dr, light_kinds, light_positions);
@@ -419,7 +491,7 @@ void GlScene::draw() {
     glUseProgram(p);
     if (dr.uniforms_per_frame) setMaterialUniforms(p, dr, ls);
     glBindBufferBase(GL_UNIFORM_BUFFER, kLightsBinding, ls.buffer);
-    if (dr.texture) glBindTextureUnit(kTextureUnit, dr.texture);
+    if (dr.texture) glBindTextureUnit(dr.variant.texture_codes ? kCodesUnit : kTextureUnit, dr.texture);
     if (dr.cull_back_faces)
       glEnable(GL_CULL_FACE);  // GL_BACK of GL_CCW: the mesh's winding normal faces the eye when counter-clockwise
     else

@@ -37,6 +37,7 @@ uniform vec3 u_ambient;    // A: the ambient lights' summed colour (of the draw'
 uniform float u_ambient_luma;  // A_Y = lightLuma(A)
 uniform vec3 u_base;
 layout(binding = 0) uniform sampler2D u_tex;  // RGBA32F, row 0 = the image's top, read by texelFetch
+layout(binding = 2) uniform usampler2D u_codes;  // k_texture_codes: RGBA8UI codes, as u_tex
 
 struct Light {
   vec4 position_kind;    // xyz: position relative to the eye; w: unused (the kind is k_light_kind)
@@ -297,13 +298,16 @@ vec3 shade(vec3 p, vec3 n, vec3 v, vec3 c) {
 }
 
 // ---- the texture (texture/texture.h): wrap, nearest or bilinear ---------
-vec3 texel(int x, int y) { return texelFetch(u_tex, ivec2(x, y), 0).rgb; }
+vec3 texel(int x, int y) {
+  if (k_texture_codes) return codeValue(texelFetch(u_codes, ivec2(x, y), 0).rgb);
+  return texelFetch(u_tex, ivec2(x, y), 0).rgb;
+}
 vec3 surfaceColour(vec2 uv) {
   if (k_texture == 0) return u_base;
   // The hardware's trilinear filter (GL_REPEAT wrapping) on the triangle's
   // own uv, unwrapped, so its derivatives across the pixel quad are smooth.
   if (k_texture == 3) return texture(u_tex, uv).rgb;
-  ivec2 size = textureSize(u_tex, 0);
+  ivec2 size = k_texture_codes ? textureSize(u_codes, 0) : textureSize(u_tex, 0);
   float fu = uv.x - floor(uv.x), fv = uv.y - floor(uv.y);
   if (!(fu >= 0.0 && fu <= 1.0)) fu = 0.0;  // NaN: a non-finite u
   if (!(fv >= 0.0 && fv <= 1.0)) fv = 0.0;
@@ -327,6 +331,12 @@ vec3 unitOrZero(vec3 a) {
   float len = length(a);
   return len > 0.0 ? a / len : vec3(0.0);
 }
+)GLSL";
+
+// An 8-bit code's value, c / 255 (Texture::codes_are_c_over_255), in the
+// shaders and in the driver's check (codeValueCheckSource).
+const char* kCodeValue = R"GLSL(
+vec3 codeValue(uvec3 c) { return vec3(c) / 255.0; }
 )GLSL";
 
 // Camera-relative position to clip space, reversed Z with an infinite far
@@ -462,6 +472,7 @@ std::string variantConstants(const ShaderVariant& v) {
       "const bool k_on_cycles = {};\n"
       "const int k_ct_distribution = {}, k_ct_geometry = {}, k_ct_fresnel = {};\n"
       "const int k_texture = {};\n"
+      "const bool k_texture_codes = {};\n"
       "const bool k_normalize_normal = {};\n"
       "const int k_luma_only = {};\n"
       "const int k_light_count = {}, k_light_array_size = {};\n"
@@ -469,8 +480,8 @@ std::string variantConstants(const ShaderVariant& v) {
       "const bool k_light_attenuated[{}] = bool[]({});\n"
       "const bool k_light_may_rescale[{}] = bool[]({});\n",
       v.shading, glslModelConstant(v.model), b(v.course), b(v.specular), b(v.on_cycles), v.ct_distribution,
-      v.ct_geometry, v.ct_fresnel, v.texture, b(v.normalize_normal), v.luma_only, v.light_kinds.size(), n, n, kinds,
-      n, attenuated, n, may_rescale);
+      v.ct_geometry, v.ct_fresnel, v.texture, b(v.texture_codes), b(v.normalize_normal), v.luma_only,
+      v.light_kinds.size(), n, n, kinds, n, attenuated, n, may_rescale);
 }
 
 }  // namespace
@@ -481,14 +492,25 @@ std::string glslModelConstant(ModelId id) {
   return s;
 }
 
+std::string codeValueCheckSource() {
+  return std::string(kVersion) + kCodeValue + R"GLSL(
+layout(local_size_x = 256) in;
+layout(std430, binding = 0) writeonly buffer Values { float v[]; };
+void main() {
+  uint c = gl_GlobalInvocationID.x;
+  v[c] = codeValue(uvec3(c)).x;
+}
+)GLSL";
+}
+
 std::string vertexShaderSource(const ShaderVariant& variant) {
   return std::string(kVersion) + modelIdConstants() + variantConstants(variant) + kCommon + yiqFunctions() +
-         lumaOnlyFunctions() + kCommonModels + kVertex;
+         lumaOnlyFunctions() + kCodeValue + kCommonModels + kVertex;
 }
 
 std::string fragmentShaderSource(const ShaderVariant& variant) {
   return std::string(kVersion) + modelIdConstants() + variantConstants(variant) + kCommon + yiqFunctions() +
-         lumaOnlyFunctions() + kCommonModels + kFragment;
+         lumaOnlyFunctions() + kCodeValue + kCommonModels + kFragment;
 }
 
 }  // namespace xval::gl
