@@ -171,11 +171,7 @@ GLuint uploadTextureCodes(const Texture& tex) {
   std::vector<unsigned char> codes(tex.packed.size() * 4, 0);
   for (size_t i = 0; i < tex.packed.size(); ++i)
     for (int c = 0; c < 3; ++c) codes[4 * i + size_t(c)] = (unsigned char)((tex.packed[i] >> (8 * c)) & 255u);
-  GLint max_tex = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_tex);
-  if (tex.width > max_tex || tex.height > max_tex)
-    throw std::runtime_error("OpenGL: a " + std::to_string(tex.width) + " x " + std::to_string(tex.height) +
-                             " texture exceeds GL_MAX_TEXTURE_SIZE " + std::to_string(max_tex));
+  checkTextureSize(tex.width, tex.height);
   GLuint t = 0;
   glCreateTextures(GL_TEXTURE_2D, 1, &t);
   glTextureStorage2D(t, 1, GL_RGBA8UI, tex.width, tex.height);
