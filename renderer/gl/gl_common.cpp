@@ -92,6 +92,14 @@ GlName buildProgram(const char* vertex, const std::string& vertex_name, const ch
   return p;
 }
 
+void checkTextureSize(int width, int height) {
+  GLint max_tex = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_tex);
+  if (width > max_tex || height > max_tex)
+    throw std::runtime_error("OpenGL: a " + std::to_string(width) + " x " + std::to_string(height) +
+                             " texture exceeds GL_MAX_TEXTURE_SIZE " + std::to_string(max_tex));
+}
+
 GlName uploadTextureRgba32f(const TextureSpec& spec, bool mip_chain) {
   const Texture tex = loadTexture(spec);
   std::vector<float> rgba(size_t(tex.width) * tex.height * 4, 1.0f);
@@ -101,11 +109,7 @@ GlName uploadTextureRgba32f(const TextureSpec& spec, bool mip_chain) {
       float* o = &rgba[(size_t(y) * tex.width + x) * 4];
       o[0] = c.x, o[1] = c.y, o[2] = c.z;
     }
-  GLint max_tex = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_tex);
-  if (tex.width > max_tex || tex.height > max_tex)
-    throw std::runtime_error("OpenGL: a " + std::to_string(tex.width) + " x " + std::to_string(tex.height) +
-                             " texture exceeds GL_MAX_TEXTURE_SIZE " + std::to_string(max_tex));
+  checkTextureSize(tex.width, tex.height);
   GLsizei levels = 1;  // a chain: every level down to 1 x 1, floor(log2(max)) + 1
   while (mip_chain && std::max(tex.width, tex.height) >> levels) ++levels;
   GLuint t = 0;

@@ -53,6 +53,9 @@ GlName compileStage(unsigned int stage, const char* source, const std::string& n
 GlName buildProgram(const char* vertex, const std::string& vertex_name, const char* fragment,
                     const std::string& fragment_name);
 
+// Throws when a width x height texture exceeds GL_MAX_TEXTURE_SIZE.
+void checkTextureSize(int width, int height);
+
 // `spec`'s texture as RGBA32F (alpha 1), `levels` mip levels (1: the image
 // only; more: filled by glGenerateTextureMipmap). Throws when it exceeds
 // GL_MAX_TEXTURE_SIZE.

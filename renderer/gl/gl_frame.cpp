@@ -41,7 +41,7 @@ struct Vertex {
 
 void put(float* out, glm::dvec3 v) { out[0] = float(v.x), out[1] = float(v.y), out[2] = float(v.z); }
 
-// The light as the shaders' std430 block (glsl_models.cpp, struct Light).
+// The light as the shaders' std140 uniform block (glsl_models.cpp, struct Light).
 struct LightBlock {
   float position_kind[4], direction_cos[4], colour_luma[4], attenuation[4];
 };
@@ -133,6 +133,56 @@ std::pair<GLuint, int> uploadTexture(const TextureSpec& spec, std::vector<GLuint
   return {t, trilinear ? 3 : spec.filter == TextureFilter::Nearest ? 1 : 2};
 }
 
+// Whether this driver's GLSL decodes every 8-bit code c to c / 255 in float
+// exactly (glsl_models.h codeValueCheckSource; GLSL allows a division 2.5
+// ULP of error, llvmpipe's is IEEE's): run once, read back, compared.
+bool codeValuesExact() {
+  const GLuint cs = compileStage(GL_COMPUTE_SHADER, codeValueCheckSource().c_str(), "code value check");
+  const GLuint p = glCreateProgram();
+  glAttachShader(p, cs);
+  glLinkProgram(p);
+  glDeleteShader(cs);
+  GLint ok = 0;
+  glGetProgramiv(p, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    glDeleteProgram(p);
+    throw std::runtime_error("OpenGL: the code value check does not link");
+  }
+  GLuint buffer = 0;
+  glCreateBuffers(1, &buffer);
+  glNamedBufferStorage(buffer, 256 * sizeof(float), nullptr, 0);
+  glUseProgram(p);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer);
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  float v[256] = {};
+  glGetNamedBufferSubData(buffer, 0, sizeof v, v);
+  glDeleteBuffers(1, &buffer);
+  glDeleteProgram(p);
+  checkGl("checking the shaders' code values");
+  for (int c = 0; c < 256; ++c)
+    if (v[c] != float(c) / 255.0f) return false;
+  return true;
+}
+
+// `tex`'s 8-bit codes (Texture::packed) as an RGBA8UI texture of one level,
+// row 0 the image's top, alpha 0 (unread).
+GLuint uploadTextureCodes(const Texture& tex) {
+  std::vector<unsigned char> codes(tex.packed.size() * 4, 0);
+  for (size_t i = 0; i < tex.packed.size(); ++i)
+    for (int c = 0; c < 3; ++c) codes[4 * i + size_t(c)] = (unsigned char)((tex.packed[i] >> (8 * c)) & 255u);
+  checkTextureSize(tex.width, tex.height);
+  GLuint t = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &t);
+  glTextureStorage2D(t, 1, GL_RGBA8UI, tex.width, tex.height);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTextureSubImage2D(t, 0, 0, 0, tex.width, tex.height, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, codes.data());
+  glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  checkGl("uploading the texture's codes");
+  return t;
+}
+
 }  // namespace
 
 // One draw call: a run of vertices of one material, its uniforms and texture.
@@ -155,9 +205,27 @@ struct Draw {
   bool cull_back_faces = false;
 };
 
+// Per light: whether the shaders' towardsLight can take its rescaling path
+// on a triangle of `dr` (shading/lights.h towardsLightMayRescale of each
+// triangle's box; a directional light never calls it).
+std::vector<bool> lightsMayRescale(const std::vector<Vertex>& vertices, const Draw& dr, const std::vector<int>& kinds,
+                                   const std::vector<glm::dvec3>& positions) {
+  std::vector<bool> may(kinds.size(), false);
+  for (GLint t = dr.first; t + 2 < dr.first + dr.count; t += 3) {
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    for (GLint k = t; k < t + 3; ++k) {
+      const float* p = vertices[size_t(k)].position;
+      lo = glm::min(lo, glm::dvec3(p[0], p[1], p[2])), hi = glm::max(hi, glm::dvec3(p[0], p[1], p[2]));
+    }
+    for (size_t i = 0; i < kinds.size(); ++i)
+      if (kinds[i] != 1 && !may[i]) may[i] = towardsLightMayRescale(positions[i], lo, hi);
+  }
+  return may;
+}
+
 // One set of lights as the shaders read them: the buffer and the ambient.
 struct LightSet {
-  GLuint ssbo = 0;
+  GLuint buffer = 0;  // the shaders' uniform block Lights
   glm::vec3 ambient{0};
 };
 
@@ -201,7 +269,7 @@ struct GlScene::Impl {
     if (!context) return;
     deleteFrameTargets(targets);
     if (!textures.empty()) glDeleteTextures(GLsizei(textures.size()), textures.data());
-    for (const LightSet& l : light_sets) glDeleteBuffers(1, &l.ssbo);
+    for (const LightSet& l : light_sets) glDeleteBuffers(1, &l.buffer);
     glDeleteBuffers(1, &vbo);
     glDeleteVertexArrays(1, &vao);
     for (GLuint p : programs) glDeleteProgram(p);
@@ -291,6 +359,7 @@ GlScene::GlScene(const Scene& input) : impl_(new Impl) {
   // The sets differ in colour only: one list of kinds for the programs.
   std::vector<int> light_kinds;
   std::vector<bool> light_attenuated;
+  std::vector<glm::dvec3> light_positions;  // relative to the eye, as the shaders read them
   for (size_t set = 0; set < d.light_sets.size(); ++set) {
     std::vector<PreparedLight<float>> lights;
     prepareLights<float>(set == 0 ? scene.lights : greyLights(scene.lights, LumaSpace(set - 1)),
@@ -303,24 +372,49 @@ GlScene::GlScene(const Scene& input) : impl_(new Impl) {
       kinds.push_back(lightKind(l));
       attenuated.push_back(l.has_attenuation);
     }
-    if (set == 0)
+    if (set == 0) {
       light_kinds = kinds, light_attenuated = attenuated;
+      for (const auto& l : lights) light_positions.push_back(glm::dvec3(l.position));
+    }
     else if (kinds != light_kinds || attenuated != light_attenuated)
       throw std::logic_error("gl: the grey lights of luma space " + std::string(kLumaSpaceNames[set - 1]) +
                              " differ from the scene's lights in kind or attenuation");
     if (blocks.empty()) blocks.push_back(LightBlock{});  // a buffer may not be empty; k_light_count says 0
-    glCreateBuffers(1, &d.light_sets[set].ssbo);
-    glNamedBufferStorage(d.light_sets[set].ssbo, GLsizeiptr(blocks.size() * sizeof(LightBlock)), blocks.data(), 0);
+    GLint max_block = 0;  // the uniform block's limit (at least 16 KB: 256 lights)
+    glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &max_block);
+    if (blocks.size() * sizeof(LightBlock) > size_t(max_block))
+      throw std::runtime_error("OpenGL: " + std::to_string(blocks.size()) + " lights take " +
+                               std::to_string(blocks.size() * sizeof(LightBlock)) +
+                               " bytes, more than this driver's uniform block of " + std::to_string(max_block));
+    glCreateBuffers(1, &d.light_sets[set].buffer);
+    glNamedBufferStorage(d.light_sets[set].buffer, GLsizeiptr(blocks.size() * sizeof(LightBlock)), blocks.data(), 0);
   }
   checkGl("uploading the lights");
 
   // Per material slot: its uniforms and texture (RGBA32F, one level, read
   // by texelFetch only), uploaded once and shared by its draws.
+  // Nearest and bilinear read the 8-bit codes where they give the same
+  // values (ShaderVariant::texture_codes).
   std::vector<int> slot_texture_mode(slots.materials.size(), 0);
   std::vector<GLuint> slot_texture(slots.materials.size(), 0);
-  for (size_t k = 0; k < slots.materials.size(); ++k)
-    if (slots.used[k] && slots.materials[k]->texture)
-      std::tie(slot_texture[k], slot_texture_mode[k]) = uploadTexture(*slots.materials[k]->texture, d.textures);
+  std::vector<bool> slot_texture_codes(slots.materials.size(), false);
+  std::optional<bool> codes_exact;  // codeValuesExact, asked once when needed
+  for (size_t k = 0; k < slots.materials.size(); ++k) {
+    if (!slots.used[k] || !slots.materials[k]->texture) continue;
+    const TextureSpec& spec = *slots.materials[k]->texture;
+    if (spec.filter != TextureFilter::Trilinear) {
+      const Texture tex = loadTexture(spec);
+      if (!tex.packed.empty() && tex.codes_are_c_over_255 && !codes_exact) codes_exact = codeValuesExact();
+      if (!tex.packed.empty() && tex.codes_are_c_over_255 && *codes_exact) {
+        slot_texture[k] = uploadTextureCodes(tex);
+        d.textures.push_back(slot_texture[k]);
+        slot_texture_mode[k] = spec.filter == TextureFilter::Nearest ? 1 : 2;
+        slot_texture_codes[k] = true;
+        continue;
+      }
+    }
+    std::tie(slot_texture[k], slot_texture_mode[k]) = uploadTexture(spec, d.textures);
+  }
 
   // Per draw: its uniforms and its program, one per distinct variant.
   std::vector<ShaderVariant> variants;
@@ -335,8 +429,10 @@ GlScene::GlScene(const Scene& input) : impl_(new Impl) {
     v.shading = scene.shading == ShadingMode::Flat ? 0 : scene.shading == ShadingMode::Gouraud ? 1 : 2;
     v.normalize_normal = scene.normalize_normal;
     v.texture = slot_texture_mode[draw_slot[i]];
+    v.texture_codes = slot_texture_codes[draw_slot[i]];
     v.luma_only = mat.luma_only ? 1 + int(*mat.luma_only) : 0;
     v.light_kinds = light_kinds, v.light_attenuated = light_attenuated;
+    v.light_may_rescale = lightsMayRescale(vertices, dr, light_kinds, light_positions);
     dr.program = size_t(std::find(variants.begin(), variants.end(), v) - variants.begin());
     if (dr.program == variants.size()) {
       variants.push_back(v);
@@ -390,8 +486,8 @@ void GlScene::draw() {
     const LightSet& ls = d.light_sets[size_t(dr.variant.luma_only)];
     glUseProgram(p);
     if (dr.uniforms_per_frame) setMaterialUniforms(p, dr, ls);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightsBinding, ls.ssbo);
-    if (dr.texture) glBindTextureUnit(kTextureUnit, dr.texture);
+    glBindBufferBase(GL_UNIFORM_BUFFER, kLightsBinding, ls.buffer);
+    if (dr.texture) glBindTextureUnit(dr.variant.texture_codes ? kCodesUnit : kTextureUnit, dr.texture);
     if (dr.cull_back_faces)
       glEnable(GL_CULL_FACE);  // GL_BACK of GL_CCW: the mesh's winding normal faces the eye when counter-clockwise
     else

@@ -37,6 +37,7 @@ uniform vec3 u_ambient;    // A: the ambient lights' summed colour (of the draw'
 uniform float u_ambient_luma;  // A_Y = lightLuma(A)
 uniform vec3 u_base;
 layout(binding = 0) uniform sampler2D u_tex;  // RGBA32F, row 0 = the image's top, read by texelFetch
+layout(binding = 2) uniform usampler2D u_codes;  // k_texture_codes: RGBA8UI codes, as u_tex
 
 struct Light {
   vec4 position_kind;    // xyz: position relative to the eye; w: unused (the kind is k_light_kind)
@@ -44,7 +45,9 @@ struct Light {
   vec4 colour_luma;      // rgb: colour; w: lightLuma(colour)
   vec4 attenuation;      // constant, linear, quadratic; w: unused (k_light_attenuated)
 };
-layout(std430, binding = 0) readonly buffer Lights { Light u_lights[]; };
+// A uniform block, not a storage buffer: llvmpipe loads a storage buffer
+// lane by lane in a fragment shader, a uniform block's constant index once.
+layout(std140, binding = 0) uniform Lights { Light u_lights[k_light_array_size]; };
 
 // clamp(x) and saturate(x), NaN -> 0 (shading/models.h)
 float clamp0(float x) { return x > 0.0 ? x : 0.0; }
@@ -52,12 +55,13 @@ float saturate1(float x) { return x > 0.0 ? (x < 1.0 ? x : 1.0) : 0.0; }
 
 // ---- lights (shading/lights.h) ---------------------------------------
 // towardsLight: L and d of D = p_light - p, rescaled by the largest
-// |component| where D.D is not a normal float.
+// |component| where D.D is not a normal float; may_rescale false (a
+// constant, k_light_may_rescale): D.D is known to be normal, not tested.
 const float kFloatMin = 1.17549435e-38;
 const float kFloatMax = 3.40282347e38;
-void towardsLight(vec3 D, out vec3 L, out float d) {
+void towardsLight(vec3 D, bool may_rescale, out vec3 L, out float d) {
   float dd = dot(D, D);
-  if (dd >= kFloatMin && dd <= kFloatMax) {
+  if (!may_rescale || (dd >= kFloatMin && dd <= kFloatMax)) {
     d = sqrt(dd);
     L = D / d;
     return;
@@ -86,7 +90,7 @@ void sampleLight(int i, vec3 p, out vec3 L, out float att, out bool lit) {
     return;
   }
   float dist;
-  towardsLight(l.position_kind.xyz - p, L, dist);
+  towardsLight(l.position_kind.xyz - p, k_light_may_rescale[i], L, dist);
   if (k_light_attenuated[i])
     att = 1.0 / (l.attenuation.x + l.attenuation.y * dist + l.attenuation.z * dist * dist);
   if (kind == 2) lit = dot(-L, l.direction_cos.xyz) >= l.direction_cos.w;
@@ -294,13 +298,16 @@ vec3 shade(vec3 p, vec3 n, vec3 v, vec3 c) {
 }
 
 // ---- the texture (texture/texture.h): wrap, nearest or bilinear ---------
-vec3 texel(int x, int y) { return texelFetch(u_tex, ivec2(x, y), 0).rgb; }
+vec3 texel(int x, int y) {
+  if (k_texture_codes) return codeValue(texelFetch(u_codes, ivec2(x, y), 0).rgb);
+  return texelFetch(u_tex, ivec2(x, y), 0).rgb;
+}
 vec3 surfaceColour(vec2 uv) {
   if (k_texture == 0) return u_base;
   // The hardware's trilinear filter (GL_REPEAT wrapping) on the triangle's
   // own uv, unwrapped, so its derivatives across the pixel quad are smooth.
   if (k_texture == 3) return texture(u_tex, uv).rgb;
-  ivec2 size = textureSize(u_tex, 0);
+  ivec2 size = k_texture_codes ? textureSize(u_codes, 0) : textureSize(u_tex, 0);
   float fu = uv.x - floor(uv.x), fv = uv.y - floor(uv.y);
   if (!(fu >= 0.0 && fu <= 1.0)) fu = 0.0;  // NaN: a non-finite u
   if (!(fv >= 0.0 && fv <= 1.0)) fv = 0.0;
@@ -324,6 +331,12 @@ vec3 unitOrZero(vec3 a) {
   float len = length(a);
   return len > 0.0 ? a / len : vec3(0.0);
 }
+)GLSL";
+
+// An 8-bit code's value, c / 255 (Texture::codes_are_c_over_255), in the
+// shaders and in the driver's check (codeValueCheckSource).
+const char* kCodeValue = R"GLSL(
+vec3 codeValue(uvec3 c) { return vec3(c) / 255.0; }
 )GLSL";
 
 // Camera-relative position to clip space, reversed Z with an infinite far
@@ -438,15 +451,17 @@ std::string modelIdConstants() {
 // have at least one entry (GLSL has no empty array), read only below
 // k_light_count.
 std::string variantConstants(const ShaderVariant& v) {
-  if (v.light_attenuated.size() != v.light_kinds.size())
+  if (v.light_attenuated.size() != v.light_kinds.size() || v.light_may_rescale.size() != v.light_kinds.size())
     throw std::logic_error("ShaderVariant: " + std::to_string(v.light_kinds.size()) + " light kinds but " +
-                           std::to_string(v.light_attenuated.size()) + " attenuation flags");
+                           std::to_string(v.light_attenuated.size()) + " attenuation flags and " +
+                           std::to_string(v.light_may_rescale.size()) + " rescaling flags");
   auto b = [](bool x) { return x ? "true" : "false"; };
-  std::string kinds, attenuated;
+  std::string kinds, attenuated, may_rescale;
   for (size_t i = 0; i < std::max<size_t>(v.light_kinds.size(), 1); ++i) {
     const bool real = i < v.light_kinds.size();
     kinds += fmt::format("{}{}", i ? ", " : "", real ? v.light_kinds[i] : 0);
     attenuated += fmt::format("{}{}", i ? ", " : "", b(real && v.light_attenuated[i]));
+    may_rescale += fmt::format("{}{}", i ? ", " : "", b(real && v.light_may_rescale[i]));
   }
   const size_t n = std::max<size_t>(v.light_kinds.size(), 1);
   return fmt::format(
@@ -457,14 +472,16 @@ std::string variantConstants(const ShaderVariant& v) {
       "const bool k_on_cycles = {};\n"
       "const int k_ct_distribution = {}, k_ct_geometry = {}, k_ct_fresnel = {};\n"
       "const int k_texture = {};\n"
+      "const bool k_texture_codes = {};\n"
       "const bool k_normalize_normal = {};\n"
       "const int k_luma_only = {};\n"
-      "const int k_light_count = {};\n"
+      "const int k_light_count = {}, k_light_array_size = {};\n"
       "const int k_light_kind[{}] = int[]({});\n"
-      "const bool k_light_attenuated[{}] = bool[]({});\n",
+      "const bool k_light_attenuated[{}] = bool[]({});\n"
+      "const bool k_light_may_rescale[{}] = bool[]({});\n",
       v.shading, glslModelConstant(v.model), b(v.course), b(v.specular), b(v.on_cycles), v.ct_distribution,
-      v.ct_geometry, v.ct_fresnel, v.texture, b(v.normalize_normal), v.luma_only, v.light_kinds.size(), n, kinds,
-      n, attenuated);
+      v.ct_geometry, v.ct_fresnel, v.texture, b(v.texture_codes), b(v.normalize_normal), v.luma_only,
+      v.light_kinds.size(), n, n, kinds, n, attenuated, n, may_rescale);
 }
 
 }  // namespace
@@ -475,14 +492,25 @@ std::string glslModelConstant(ModelId id) {
   return s;
 }
 
+std::string codeValueCheckSource() {
+  return std::string(kVersion) + kCodeValue + R"GLSL(
+layout(local_size_x = 256) in;
+layout(std430, binding = 0) writeonly buffer Values { float v[]; };
+void main() {
+  uint c = gl_GlobalInvocationID.x;
+  v[c] = codeValue(uvec3(c)).x;
+}
+)GLSL";
+}
+
 std::string vertexShaderSource(const ShaderVariant& variant) {
   return std::string(kVersion) + modelIdConstants() + variantConstants(variant) + kCommon + yiqFunctions() +
-         lumaOnlyFunctions() + kCommonModels + kVertex;
+         lumaOnlyFunctions() + kCodeValue + kCommonModels + kVertex;
 }
 
 std::string fragmentShaderSource(const ShaderVariant& variant) {
   return std::string(kVersion) + modelIdConstants() + variantConstants(variant) + kCommon + yiqFunctions() +
-         lumaOnlyFunctions() + kCommonModels + kFragment;
+         lumaOnlyFunctions() + kCodeValue + kCommonModels + kFragment;
 }
 
 }  // namespace xval::gl

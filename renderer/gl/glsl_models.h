@@ -31,8 +31,9 @@ inline constexpr int kAttribPosition = 0;    // vec3: vertex - eye (camera-relat
 inline constexpr int kAttribNormal = 1;      // vec3: the vertex normal
 inline constexpr int kAttribUv = 2;          // vec2: frac(uv0) + (uv_k - uv0) of its triangle
 inline constexpr int kAttribFaceNormal = 3;  // vec3: flat shading's normal (shading/flat_normals.h)
-inline constexpr int kLightsBinding = 0;     // the lights' shader storage block
+inline constexpr int kLightsBinding = 0;     // the lights' uniform block
 inline constexpr int kTextureUnit = 0;       // the RGBA32F texture
+inline constexpr int kCodesUnit = 2;         // the RGBA8UI texture of 8-bit codes (ShaderVariant::texture_codes)
 
 // The GLSL name of a model's id constant ("MODEL_LAMBERT"): both shaders
 // declare one per model of the registry (shading/model/registry.h), equal
@@ -56,12 +57,28 @@ struct ShaderVariant {
   bool on_cycles = false;         // oren_nayar's variant cycles
   int ct_distribution = 0, ct_geometry = 0, ct_fresnel = 0;  // models::Microfacet* enums' values
   int texture = 0;                // 0 none (u_base), 1 nearest, 2 bilinear, 3 trilinear
+  // Nearest, bilinear: the texture read as its 8-bit codes c (RGBA8UI), each
+  // value c / 255 in float, where every texel's value is that (Texture::
+  // codes_are_c_over_255) and this driver's GLSL division gives it exactly
+  // (gl_frame.cpp): the same texels in a quarter of the memory; llvmpipe's
+  // bilinear lookup waits on memory (docs/gl-renderer.md).
+  bool texture_codes = false;
   bool normalize_normal = true;   // phong: re-normalise the interpolated normal
   int luma_only = 0;              // the luma-only mode: 0 off, 1 yiq, 2 cie_lstar (LumaSpace + 1)
   std::vector<int> light_kinds;   // per light of the draw's set: 0 point, 1 directional, 2 spot
   std::vector<bool> light_attenuated;  // per light: 1 / (c + l d + q d^2) applies
+  // Per light: towardsLight's rescaling can be reached from the draw's
+  // triangles (shading/lights.h towardsLightMayRescale); where it cannot,
+  // the test for it is left out (llvmpipe would run the rescaling for
+  // every fragment: its divisions and square root), the result the same.
+  std::vector<bool> light_may_rescale;
   bool operator==(const ShaderVariant&) const = default;
 };
+
+// A compute shader (256 invocations) writing codeValue(c) for c = 0..255,
+// the shaders' decoding of an 8-bit code, to float v[c] of the storage
+// buffer at binding 0: gl_frame.cpp checks it against c / 255.
+std::string codeValueCheckSource();
 
 std::string vertexShaderSource(const ShaderVariant& variant);
 std::string fragmentShaderSource(const ShaderVariant& variant);

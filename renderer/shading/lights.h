@@ -66,6 +66,23 @@ template <class T> void towardsLight(glm::vec<3, T> D, glm::vec<3, T>& L, T& d) 
   L = u / lu;
 }
 
+// Whether towardsLight<float> can take its rescaling path (D.D not a normal
+// float) for a light at `light` and a point of the box [lo, hi] (the same
+// coordinates): no when every point of the box is at least
+// 1e-4 (1 + m) from the light, m the largest |coordinate| of the light and
+// the box, and at most 1e15 from it. The float D of such a point, rounding of
+// its position and of its interpolation across a triangle included (relative
+// errors near 1e-7 of m), then has D.D between 1e-8 and 1e30 (x 1.001),
+// inside float's normal range [1.2e-38, 3.4e38]. Non-finite input: yes.
+inline bool towardsLightMayRescale(glm::dvec3 light, glm::dvec3 lo, glm::dvec3 hi) {
+  const glm::dvec3 nearest = glm::clamp(light, lo, hi);
+  const glm::dvec3 farthest = glm::max(glm::abs(light - lo), glm::abs(light - hi));
+  const double m = std::max({std::abs(light.x), std::abs(light.y), std::abs(light.z), std::abs(lo.x),
+                             std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y), std::abs(hi.z)});
+  const double min_d = glm::length(light - nearest), max_d = glm::length(farthest);
+  return !(std::isfinite(m) && min_d >= 1e-4 * (1.0 + m) && max_d <= 1e15);
+}
+
 template <class T>
 LightSample<T> sampleLight(const PreparedLight<T>& l, glm::vec<3, T> p) {
   using K = typename PreparedLight<T>::Kind;

@@ -2,7 +2,8 @@
 # without the precision probes), the whole process of `xval render` with
 # its stages, validate's reference job of the scene with and without the
 # probes and their share of it, and one line per performance target (docs/performance.md,
-# "Targets") with the measured figure; --json holds the same.
+# "Targets") with the measured figure; --json holds the same. With gl in
+# --renderers, the gl frame's target has its figure; without, it says why not.
 # Arguments: XVAL, SCENE (a small scene file), WORK.
 foreach(_v XVAL SCENE WORK)
   if(NOT DEFINED ${_v})
@@ -31,10 +32,11 @@ expect("${_o}" "precision probes <= 10% of validate's reference job \\(CPU\\) +-
        "the reference job's probes target")
 # POV-Ray was not asked for: the process target says why it has no figure.
 expect("${_o}" "5x faster than POV-Ray's +not measured: needs reference and povray" "the process target")
+expect("${_o}" "gl frame <= 20 ms \\(wall median\\) +not measured: needs gl in --renderers" "the gl frame target")
 file(READ ${WORK}/bench.json _j)
 string(JSON _n LENGTH "${_j}" targets)
-if(NOT _n EQUAL 5)
-  message(FATAL_ERROR "bench.json: ${_n} targets, expected 5:\n${_j}")
+if(NOT _n EQUAL 6)
+  message(FATAL_ERROR "bench.json: ${_n} targets, expected 6:\n${_j}")
 endif()
 string(JSON _s GET "${_j}" xval_render process_median_s)
 if(NOT _s GREATER 0)
@@ -43,4 +45,18 @@ endif()
 string(JSON _s GET "${_j}" validate_reference_job_no_probes cpu_median_s)
 if(NOT _s GREATER 0)
   message(FATAL_ERROR "bench.json: validate_reference_job_no_probes.cpu_median_s is ${_s}, expected > 0")
+endif()
+
+# gl's frames: the gl target with its figure, met or not, in the JSON too.
+run_xval(0 _o bench ${SCENE} --renderers gl --frames 2 --runs 1 --json ${WORK}/bench_gl.json)
+expect("${_o}" "gl frame <= 20 ms \\(wall median\\) +[0-9.]+ ms \\([0-9.]+ frames per second\\) +(met|not met)"
+       "the gl frame target")
+file(READ ${WORK}/bench_gl.json _j)
+string(JSON _n LENGTH "${_j}" targets)
+math(EXPR _last "${_n} - 1")
+string(JSON _what GET "${_j}" targets ${_last} target)
+string(JSON _at_all GET "${_j}" targets ${_last} measured_at_all)
+if(NOT _what STREQUAL "gl frame <= 20 ms (wall median)" OR NOT _at_all)
+  message(FATAL_ERROR "bench_gl.json: the last target is \"${_what}\", measured_at_all ${_at_all}; "
+                      "expected the gl frame's, measured:\n${_j}")
 endif()

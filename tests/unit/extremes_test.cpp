@@ -102,6 +102,33 @@ TEST(ExtremesFix, LightVectorWithoutOverflowOrUnderflowInFloat) {
   EXPECT_EQ(L, glm::vec3(0.0f));
 }
 
+// towardsLightMayRescale: the gl renderer leaves the rescaling out where it
+// says no, so it must say yes wherever a point of the box could need it.
+TEST(ExtremesFix, LightMayRescaleOnlyNearOrFarFromTheBox) {
+  const glm::dvec3 lo(-1.0), hi(1.0);
+  EXPECT_FALSE(towardsLightMayRescale(glm::dvec3(-0.5, 2.0, 1.25), lo, hi));  // Table 2's light, the knot's box
+  EXPECT_TRUE(towardsLightMayRescale(glm::dvec3(0.0), lo, hi));               // inside the box
+  EXPECT_TRUE(towardsLightMayRescale(glm::dvec3(1.0 + 1e-5, 0.0, 0.0), lo, hi));  // within the margin
+  EXPECT_FALSE(towardsLightMayRescale(glm::dvec3(1.0 + 1e-3, 0.0, 0.0), lo, hi));
+  EXPECT_TRUE(towardsLightMayRescale(glm::dvec3(0.0, 1e20, 0.0), lo, hi));  // docs/extremes.md light_far_1e20
+  EXPECT_TRUE(towardsLightMayRescale(glm::dvec3(0.0, 0.0, 1e-21), glm::dvec3(0.0), glm::dvec3(0.0)));
+  EXPECT_TRUE(towardsLightMayRescale(glm::dvec3(std::nan(""), 0.0, 0.0), lo, hi));
+  // Where it says no, every corner of the box (and so every point of it)
+  // takes towardsLight's usual path in float.
+  for (double far : {2.0, 1e6, 1e14})
+    for (double size : {1e-3, 1.0, 1e4}) {
+      const glm::dvec3 light(0.3 * far, far, -0.2 * far), a(-size), b(size);
+      if (towardsLightMayRescale(light, a, b)) continue;
+      for (int k = 0; k < 8; ++k) {
+        const glm::vec3 corner((k & 1) ? b.x : a.x, (k & 2) ? b.y : a.y, (k & 4) ? b.z : a.z);
+        const glm::vec3 D = glm::vec3(light) - corner;
+        const float dd = glm::dot(D, D);
+        EXPECT_TRUE(dd >= std::numeric_limits<float>::min() && dd <= std::numeric_limits<float>::max())
+            << far << " " << size;
+      }
+    }
+}
+
 TEST(ExtremesFix, PointLightFarAwayStillLightsInFloat) {
   Material mat;
   mat.model = Lambert{};
