@@ -6,6 +6,7 @@
 #include <hwy/foreach_target.h>  // must come before highway.h
 #include <hwy/highway.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -186,42 +187,76 @@ HWY_INLINE VF specular(DF d, float shininess, V3 n, V3 L, VF x, V3 v) {
   return hn::Load(d, s);
 }
 
+// Hits per chunk: the kernel runs in three passes over a chunk so that
+// the memory reads of many hits are in flight at once (the mesh and the
+// texture each about the size of the L2 cache: a hit's vertex records and
+// texels are often misses). Shading a hit in one pass chained a vertex miss,
+// then a texel miss, then the lighting, hit after hit. Each value is still
+// computed by the same operations; it only goes through memory (exactly)
+// between the passes.
+constexpr size_t kChunk = 256;
+static_assert(kChunk % kMaxLanes == 0, "whole vectors per chunk");
+
 void ShadeBatchImpl(const BatchShading& s, const BatchMesh& m, size_t count, const std::uint32_t* tri,
                     const float* b1p, const float* b2p, float* r_out, float* g_out, float* b_out) {
   const DF d;
   const DI di;
   const size_t N = hn::Lanes(d);
   const VF one = hn::Set(d, 1.0f), zero = hn::Zero(d);
-  for (size_t k = 0; k < count; k += N) {
-    // The hit: its triangle's vertices and the barycentrics.
-    // The vertex indices by scalar loads: a gather here would put its
-    // latency in front of every vertex gather below.
-    alignas(64) std::int32_t idx[3][kMaxLanes];
-    for (size_t q = 0; q < N; ++q) {
-      const glm::u32vec3& t = m.triangles[tri[k + q]];
+  alignas(64) std::int32_t idx[3][kChunk];
+  alignas(64) float px[3][kChunk], nx[3][kChunk], uu[kChunk], vv_[kChunk];
+  for (size_t k0 = 0; k0 < count; k0 += kChunk) {
+    // Whole vectors: the arrays are padded to kBatchPad.
+    const size_t end = std::min(count - k0, kChunk), vend = (end + N - 1) / N * N;
+    // Pass 1: the hits' vertex indices, by scalar loads (independent, so
+    // many in flight; a gather would put its latency in front of every
+    // vertex gather).
+    for (size_t q = 0; q < vend; ++q) {
+      const glm::u32vec3& t = m.triangles[tri[k0 + q]];
       idx[0][q] = std::int32_t(t.x), idx[1][q] = std::int32_t(t.y), idx[2][q] = std::int32_t(t.z);
     }
-    const VI i0 = hn::Load(di, idx[0]), i1 = hn::Load(di, idx[1]), i2 = hn::Load(di, idx[2]);
-    const VF b1 = hn::LoadU(d, b1p + k), b2 = hn::LoadU(d, b2p + k);
-    const VF b0 = (one - b1) - b2;
-    // Phong mode: p, normal (renormalised; 0 stays 0), uv, V.
-    const VertexV A = gatherVertex(d, m.vertices.data(), i0), B = gatherVertex(d, m.vertices.data(), i1),
-                  C = gatherVertex(d, m.vertices.data(), i2);
-    const V3 p = add(add(mul(b0, A.p), mul(b1, B.p)), mul(b2, C.p));
-    V3 n = add(add(mul(b0, A.n), mul(b1, B.n)), mul(b2, C.n));
-    const VF len = hn::Sqrt(dot(n, n));
-    const MF has_len = len > zero;
-    n = {hn::IfThenElseZero(has_len, n.x / len), hn::IfThenElseZero(has_len, n.y / len),
-         hn::IfThenElseZero(has_len, n.z / len)};
+    // Pass 2: the hit's position, normal and texture coordinates.
+    for (size_t q = 0; q < vend; q += N) {
+      const size_t k = k0 + q;
+      const VI i0 = hn::Load(di, idx[0] + q), i1 = hn::Load(di, idx[1] + q), i2 = hn::Load(di, idx[2] + q);
+      const VF b1 = hn::LoadU(d, b1p + k), b2 = hn::LoadU(d, b2p + k);
+      const VF b0 = (one - b1) - b2;
+      // Phong mode: p, normal (renormalised; 0 stays 0), uv.
+      const VertexV A = gatherVertex(d, m.vertices.data(), i0), B = gatherVertex(d, m.vertices.data(), i1),
+                    C = gatherVertex(d, m.vertices.data(), i2);
+      const V3 p = add(add(mul(b0, A.p), mul(b1, B.p)), mul(b2, C.p));
+      V3 n = add(add(mul(b0, A.n), mul(b1, B.n)), mul(b2, C.n));
+      const VF len = hn::Sqrt(dot(n, n));
+      const MF has_len = len > zero;
+      n = {hn::IfThenElseZero(has_len, n.x / len), hn::IfThenElseZero(has_len, n.y / len),
+           hn::IfThenElseZero(has_len, n.z / len)};
+      hn::Store(p.x, d, px[0] + q), hn::Store(p.y, d, px[1] + q), hn::Store(p.z, d, px[2] + q);
+      hn::Store(n.x, d, nx[0] + q), hn::Store(n.y, d, nx[1] + q), hn::Store(n.z, d, nx[2] + q);
+      if (s.texture) {
+        const VF u0 = A.u, v0 = A.v, u1 = B.u, v1 = B.v, u2 = C.u, v2 = C.v;
+        hn::Store(((u0 - hn::Floor(u0)) + b1 * (u1 - u0)) + b2 * (u2 - u0), d, uu + q);
+        hn::Store(((v0 - hn::Floor(v0)) + b1 * (v1 - v0)) + b2 * (v2 - v0), d, vv_ + q);
+      }
+    }
+    // Pass 3: the texture colour (a short loop: the texel reads of several
+    // vectors in flight), in place of u, v and a third array.
+    alignas(64) float cb[kChunk];
+    if (s.texture)
+      for (size_t q = 0; q < vend; q += N) {
+        const V3 c = lookup(d, *s.texture, s.filter, hn::Load(d, uu + q), hn::Load(d, vv_ + q));
+        hn::Store(c.x, d, uu + q), hn::Store(c.y, d, vv_ + q), hn::Store(c.z, d, cb + q);
+      }
+    // Pass 4: the lighting.
+    for (size_t q = 0; q < vend; q += N) {
+    const size_t k = k0 + q;
+    const V3 p = {hn::Load(d, px[0] + q), hn::Load(d, px[1] + q), hn::Load(d, px[2] + q)};
+    const V3 n = {hn::Load(d, nx[0] + q), hn::Load(d, nx[1] + q), hn::Load(d, nx[2] + q)};
     const V3 to_eye = {zero - p.x, zero - p.y, zero - p.z};
     const VF inv = one / hn::Sqrt(dot(to_eye, to_eye));
     const V3 v = mul(to_eye, V3{inv, inv, inv});
     V3 c;
     if (s.texture) {
-      const VF u0 = A.u, v0 = A.v, u1 = B.u, v1 = B.v, u2 = C.u, v2 = C.v;
-      const VF u = ((u0 - hn::Floor(u0)) + b1 * (u1 - u0)) + b2 * (u2 - u0);
-      const VF vv = ((v0 - hn::Floor(v0)) + b1 * (v1 - v0)) + b2 * (v2 - v0);
-      c = lookup(d, *s.texture, s.filter, u, vv);
+      c = {hn::Load(d, uu + q), hn::Load(d, vv_ + q), hn::Load(d, cb + q)};
     } else {
       c = splat(d, s.base);
     }
@@ -269,6 +304,7 @@ void ShadeBatchImpl(const BatchShading& s, const BatchMesh& m, size_t count, con
     hn::StoreU(saturate(d, out.x), d, r_out + k);
     hn::StoreU(saturate(d, out.y), d, g_out + k);
     hn::StoreU(saturate(d, out.z), d, b_out + k);
+    }
   }
 }
 
