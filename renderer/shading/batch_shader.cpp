@@ -74,6 +74,51 @@ HWY_INLINE VertexV gatherVertex(DF d, const float* vertices, VI index) {
   return {{even[0], odd[0], even[1]}, {odd[1], even[2], odd[2]}, even[3], odd[3]};
 }
 
+// The records of the vertices index[0..N), for 16 lanes of AVX-512: each
+// record (8 floats, 32 bytes) by one 256-bit load, lane q's in the lower
+// half and lane q + 8's in the upper half of vector q, then the 8 x 8
+// transposition of each half (unpack, shuffle, and a two-source permute
+// that puts lanes 0-3, 4-7, 8-11, 12-15 in order). The same floats as
+// gatherVertex, in 40 instructions instead of 8 gathers of 8 pairs (a
+// gather is microcoded, element by element, on the CPUs measured).
+// Other targets: gatherVertex.
+#if HWY_ARCH_X86 && HWY_TARGET <= HWY_AVX3
+HWY_INLINE VertexV loadVertices(DF d, const float* vertices, const std::int32_t* index) {
+  static_assert(kBatchVertexFloats == 8, "a record is one 256-bit load");
+  static_assert(hn::MaxLanes(DF()) == 16, "16 lanes: two records per vector");
+  __m512 r[8];
+  for (int q = 0; q < 8; ++q) {
+    const __m256 lo = _mm256_loadu_ps(vertices + size_t(std::uint32_t(index[q])) * kBatchVertexFloats);
+    const __m256 hi = _mm256_loadu_ps(vertices + size_t(std::uint32_t(index[q + 8])) * kBatchVertexFloats);
+    r[q] = _mm512_insertf32x8(_mm512_castps256_ps512(lo), hi, 1);
+  }
+  __m512 t[8], s[8];
+  for (int q = 0; q < 8; q += 2)
+    t[q] = _mm512_unpacklo_ps(r[q], r[q + 1]), t[q + 1] = _mm512_unpackhi_ps(r[q], r[q + 1]);
+  // Per 128-bit block: s[4h + 2g + w] holds, for records 4h..4h+3 (and
+  // those + 8 in the upper half), component 2g + w (block 0) and 4 + 2g +
+  // w (block 1).
+  for (int h = 0; h < 2; ++h)
+    for (int g = 0; g < 2; ++g) {
+      const __m512 a = t[4 * h + g], b = t[4 * h + 2 + g];
+      s[4 * h + 2 * g] = _mm512_shuffle_ps(a, b, 0x44), s[4 * h + 2 * g + 1] = _mm512_shuffle_ps(a, b, 0xEE);
+    }
+  const __m512i first = _mm512_setr_epi32(0, 1, 2, 3, 16, 17, 18, 19, 8, 9, 10, 11, 24, 25, 26, 27);
+  const __m512i second = _mm512_setr_epi32(4, 5, 6, 7, 20, 21, 22, 23, 12, 13, 14, 15, 28, 29, 30, 31);
+  VF c[8];
+  for (int k = 0; k < 4; ++k) {
+    c[k].raw = _mm512_permutex2var_ps(s[k], first, s[4 + k]);
+    c[4 + k].raw = _mm512_permutex2var_ps(s[k], second, s[4 + k]);
+  }
+  (void)d;
+  return {{c[0], c[1], c[2]}, {c[3], c[4], c[5]}, c[6], c[7]};
+}
+#else
+HWY_INLINE VertexV loadVertices(DF d, const float* vertices, const std::int32_t* index) {
+  return gatherVertex(d, vertices, hn::Load(DI(), index));
+}
+#endif
+
 // Texture::texel for texel index `at` (y * width + x).
 HWY_INLINE V3 texel(DF d, const Texture& t, VI at) {
   if (!t.packed.empty()) {
@@ -200,7 +245,6 @@ static_assert(kChunk % kMaxLanes == 0, "whole vectors per chunk");
 void ShadeBatchImpl(const BatchShading& s, const BatchMesh& m, size_t count, const std::uint32_t* tri,
                     const float* b1p, const float* b2p, float* r_out, float* g_out, float* b_out) {
   const DF d;
-  const DI di;
   const size_t N = hn::Lanes(d);
   const VF one = hn::Set(d, 1.0f), zero = hn::Zero(d);
   alignas(64) std::int32_t idx[3][kChunk];
@@ -218,12 +262,12 @@ void ShadeBatchImpl(const BatchShading& s, const BatchMesh& m, size_t count, con
     // Pass 2: the hit's position, normal and texture coordinates.
     for (size_t q = 0; q < vend; q += N) {
       const size_t k = k0 + q;
-      const VI i0 = hn::Load(di, idx[0] + q), i1 = hn::Load(di, idx[1] + q), i2 = hn::Load(di, idx[2] + q);
       const VF b1 = hn::LoadU(d, b1p + k), b2 = hn::LoadU(d, b2p + k);
       const VF b0 = (one - b1) - b2;
       // Phong mode: p, normal (renormalised; 0 stays 0), uv.
-      const VertexV A = gatherVertex(d, m.vertices.data(), i0), B = gatherVertex(d, m.vertices.data(), i1),
-                    C = gatherVertex(d, m.vertices.data(), i2);
+      const VertexV A = loadVertices(d, m.vertices.data(), idx[0] + q),
+                    B = loadVertices(d, m.vertices.data(), idx[1] + q),
+                    C = loadVertices(d, m.vertices.data(), idx[2] + q);
       const V3 p = add(add(mul(b0, A.p), mul(b1, B.p)), mul(b2, C.p));
       V3 n = add(add(mul(b0, A.n), mul(b1, B.n)), mul(b2, C.n));
       const VF len = hn::Sqrt(dot(n, n));
