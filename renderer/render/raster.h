@@ -93,4 +93,13 @@ class Rasteriser {
   std::vector<std::vector<std::uint64_t>> bins_;        // per band: (mesh << 32) | triangle
 };
 
+// The samples k in [0, count) of a band's hits (Rasteriser::visibility)
+// that hit mesh `mesh`, in ascending k (render/raster_band.cpp): at[c] = k, tri[c] = its triangle,
+// b1[c], b2[c] its barycentrics as float (float(double), to nearest);
+// returns how many. SIMD across samples: each output array needs count +
+// kCompactPad elements (whole vectors are stored).
+inline constexpr size_t kCompactPad = 16;
+size_t compactBandHits(const Rasteriser::BandHits& hits, size_t count, std::uint32_t mesh, std::uint32_t* at,
+                       std::uint32_t* tri, float* b1, float* b2);
+
 }  // namespace xval

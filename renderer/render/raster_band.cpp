@@ -147,6 +147,39 @@ void RasterBandImpl(const RasterBand& job) {
   }
 }
 
+// compactBandHits: the hits on `mesh` in sample order, N samples at a time
+// (compressed stores keep their order; the float conversion rounds as the
+// scalar float(double) does, to nearest).
+size_t CompactBandHitsImpl(const double* best, const std::uint64_t* key, const double* b1, const double* b2,
+                           size_t count, std::uint32_t mesh, std::uint32_t* at, std::uint32_t* tri, float* b1f,
+                           float* b2f) {
+  const hn::ScalableTag<double> d;
+  const hn::RebindToUnsigned<decltype(d)> du;
+  const hn::Rebind<float, decltype(d)> df;
+  const hn::Rebind<std::uint32_t, decltype(d)> d32;
+  const size_t N = hn::Lanes(d);
+  const auto want = hn::Set(du, std::uint64_t(mesh));
+  size_t c = 0, k = 0;
+  for (; k + N <= count; k += N) {
+    const auto on_mesh = hn::Eq(hn::ShiftRight<32>(hn::LoadU(du, key + k)), want);
+    const auto hit = hn::And(hn::LoadU(d, best + k) > hn::Zero(d), hn::RebindMask(d, on_mesh));
+    if (hn::AllFalse(d, hit)) continue;
+    // The mask in 32-bit lanes: all-ones lanes truncate to all-ones.
+    const auto m32 = hn::Ne(hn::TruncateTo(d32, hn::BitCast(du, hn::VecFromMask(d, hit))), hn::Zero(d32));
+    const auto mf = hn::RebindMask(df, m32);
+    hn::CompressStore(hn::Iota(d32, std::uint32_t(k)), m32, d32, at + c);
+    hn::CompressStore(hn::TruncateTo(d32, hn::LoadU(du, key + k)), m32, d32, tri + c);
+    hn::CompressStore(hn::DemoteTo(df, hn::LoadU(d, b1 + k)), mf, df, b1f + c);
+    c += hn::CompressStore(hn::DemoteTo(df, hn::LoadU(d, b2 + k)), mf, df, b2f + c);
+  }
+  for (; k < count; ++k) {
+    if (!(best[k] > 0.0) || (key[k] >> 32) != mesh) continue;
+    at[c] = std::uint32_t(k), tri[c] = std::uint32_t(key[k]), b1f[c] = float(b1[k]), b2f[c] = float(b2[k]);
+    ++c;
+  }
+  return c;
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace xval
 HWY_AFTER_NAMESPACE();
@@ -154,6 +187,12 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace xval {
 HWY_EXPORT(RasterBandImpl);
+HWY_EXPORT(CompactBandHitsImpl);
 void rasterBand(const RasterBand& job) { HWY_DYNAMIC_DISPATCH(RasterBandImpl)(job); }
+size_t compactBandHits(const Rasteriser::BandHits& hits, size_t count, std::uint32_t mesh, std::uint32_t* at,
+                       std::uint32_t* tri, float* b1, float* b2) {
+  return HWY_DYNAMIC_DISPATCH(CompactBandHitsImpl)(hits.best.data(), hits.key.data(), hits.b1.data(),
+                                                    hits.b2.data(), count, mesh, at, tri, b1, b2);
+}
 }  // namespace xval
 #endif

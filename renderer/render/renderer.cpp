@@ -450,8 +450,9 @@ template <class T> struct Accumulation {
 struct BatchBuffers {
   std::vector<std::uint32_t> at, tri;
   std::vector<float> b1, b2, r, g, b;
+  static constexpr size_t kPad = std::max(kBatchPad, kCompactPad);
   explicit BatchBuffers(size_t n)
-      : at(n), tri(n + kBatchPad), b1(n + kBatchPad), b2(n + kBatchPad), r(n + kBatchPad),
+      : at(n + kPad), tri(n + kPad), b1(n + kPad), b2(n + kPad), r(n + kBatchPad),
         g(n + kBatchPad), b(n + kBatchPad) {}
 };
 
@@ -463,13 +464,9 @@ template <class Emit>
 void shadeBatched(const BatchShading& kernel, const std::vector<BatchMesh>& meshes,
                   const Rasteriser::BandHits& hits, size_t count, BatchBuffers& bb, Emit&& emit) {
   for (size_t mi = 0; mi < meshes.size(); ++mi) {
-    size_t c = 0;
-    for (size_t k = 0; k < count; ++k) {
-      if (!hits.hit(k) || (hits.key[k] >> 32) != mi) continue;
-      bb.at[c] = std::uint32_t(k), bb.tri[c] = std::uint32_t(hits.key[k]);
-      bb.b1[c] = float(hits.b1[k]), bb.b2[c] = float(hits.b2[k]);  // as the scalar path's T(h.b1)
-      ++c;
-    }
+    // b1, b2 as float: as the scalar path's T(h.b1).
+    const size_t c = compactBandHits(hits, count, std::uint32_t(mi), bb.at.data(), bb.tri.data(), bb.b1.data(),
+                                     bb.b2.data());
     if (c == 0) continue;
     for (size_t k = c; k < (c + kBatchPad - 1) / kBatchPad * kBatchPad; ++k)
       bb.tri[k] = 0, bb.b1[k] = bb.b2[k] = 0.0f;  // padding: a valid triangle

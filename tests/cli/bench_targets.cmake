@@ -25,6 +25,11 @@ expect("${_o}" "stages: scene load [0-9.]+ ms, set-up [0-9.]+ ms, frame with dia
        "the render's stages")
 expect("${_o}" "reference float frame <= 3 ms \\(wall median, 1 spp as asked\\) +[0-9.]+ ms +(met|not met)"
        "the float frame target")
+# The double frame at 16 spp: timed apart (the scene's spp is 1), its target
+# line with the CPU and the wall median.
+expect("${_o}" "reference_double_16spp +frame +[0-9.]+ ms .*CPU time +[0-9.]+ ms" "the double frame at 16 spp")
+expect("${_o}" "reference double frame at 16 spp <= 0.25 s \\(CPU median\\) +[0-9.]+ ms \\(wall median [0-9.]+ ms\\) +(met|not met)"
+       "the 16-spp double frame target")
 expect("${_o}" "validate ref. job +with probes +[0-9.]+ ms .*CPU time +[0-9.]+ ms" "validate's reference job")
 expect("${_o}" "without probes +[0-9.]+ ms .*CPU time +[0-9.]+ ms" "validate's reference job without probes")
 expect("${_o}" "the probes' share of the job: -?[0-9]+% of its CPU time, -?[0-9]+% of its wall time" "the probes' share")
@@ -41,6 +46,10 @@ endif()
 string(JSON _s GET "${_j}" xval_render process_median_s)
 if(NOT _s GREATER 0)
   message(FATAL_ERROR "bench.json: xval_render.process_median_s is ${_s}, expected > 0")
+endif()
+string(JSON _s GET "${_j}" reference_double_16spp spp)
+if(NOT _s EQUAL 16)
+  message(FATAL_ERROR "bench.json: reference_double_16spp.spp is ${_s}, expected 16")
 endif()
 string(JSON _s GET "${_j}" validate_reference_job_no_probes cpu_median_s)
 if(NOT _s GREATER 0)

@@ -17,6 +17,10 @@
 // diagnostics (what an interactive renderer redoes every frame; the paper's
 // Table 2 counts the same). Frame figures are wall-clock and the process's
 // CPU time (all threads); on a busy machine only the CPU time means much.
+// With the reference double path also the frame at 16 spp (the target's
+// spp), when the frames above were at another: at most 3 frames after a
+// warm-up ("reference_double_16spp"; a scene over the budget at 16 spp is
+// not timed and its target line says so).
 // With the reference renderer also, per precision, the validate-style
 // frame (diagnostics on: every channel a validate run's render has) with
 // the precision probes and without them (RenderOptions::precision_probes:
