@@ -2,6 +2,8 @@
 #include "render/precision_probe.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace xval {
 
@@ -47,11 +49,17 @@ ProjectedTriangle projectTriangle(const CameraRays& cam, const glm::dvec3 P[3]) 
     t.c[size_t(k)] = projectToPixels(cam, P[k], &z);
     t.in_front = t.in_front && z > 0.0;
   }
+  t.lo = glm::min(t.c[0], glm::min(t.c[1], t.c[2]));
+  t.hi = glm::max(t.c[0], glm::max(t.c[1], t.c[2]));
   return t;
 }
 
 glm::dvec2 projectSample(const CameraRays& cam, double x, double y) {
-  const glm::dvec3 d = cam.direction(x, y);
+  return projectScreenSample(cam, cam.screenX(x), cam.screenY(y));
+}
+
+glm::dvec2 projectScreenSample(const CameraRays& cam, double sx, double sy) {
+  const glm::dvec3 d = cam.directionFromScreen(sx, sy);
   return projectToPixels(cam, cam.origin + d / glm::dot(d, cam.forward));
 }
 
@@ -66,6 +74,39 @@ bool nearProjectedBoundary(const ProjectedTriangle& t, glm::dvec2 p, double with
   if (!t.in_front) return true;
   for (int k = 0; k < 3; ++k)
     if (segmentDistance(p, t.c[size_t(k)], t.c[size_t(k + 1) % 3]) <= within) return true;
+  return false;
+}
+
+BoundaryNearness::BoundaryNearness(double w) : within(w) {
+  if (!(w >= 0.0)) {  // negative or NaN: no distance is within it, no square either (dot(q, q) >= 0 or NaN)
+    squared = -1.0;
+    return;
+  }
+  double x = w * w;  // within an ulp or two of the bound: step to it
+  while (x > 0.0 && !(std::sqrt(x) <= w)) x = std::nextafter(x, 0.0);
+  for (double up = std::nextafter(x, HUGE_VAL); up != x && std::sqrt(up) <= w; up = std::nextafter(x, HUGE_VAL)) x = up;
+  squared = x;
+}
+
+bool BoundaryNearness::segment(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) const {
+  const glm::dvec2 ab = b - a, ap = p - a;
+  const double len2 = glm::dot(ab, ab);
+  double f = 0.0;
+  if (len2 > 0.0) {
+    const double t = glm::dot(ap, ab);
+    if (!(len2 <= std::numeric_limits<double>::max()))
+      f = std::clamp(t / len2, 0.0, 1.0);  // len2 infinite: t / len2 may be NaN, as segmentDistance's
+    else if (!(t <= 0.0))
+      f = t >= len2 ? 1.0 : std::clamp(t / len2, 0.0, 1.0);  // NaN t: as segmentDistance's
+  }
+  const glm::dvec2 q = ap - f * ab;
+  return glm::dot(q, q) <= squared;
+}
+
+bool BoundaryNearness::operator()(const ProjectedTriangle& t, glm::dvec2 p) const {
+  if (!t.in_front) return true;
+  for (int k = 0; k < 3; ++k)
+    if (segment(p, t.c[size_t(k)], t.c[size_t(k + 1) % 3])) return true;
   return false;
 }
 

@@ -132,9 +132,11 @@ template <class T> T largestChannelDifference(glm::vec<3, T> a, glm::vec<3, T> b
 // in_front false: a corner is not in front of the camera (depth <= 0), its
 // projection meaningless: such a triangle counts as near every sample (a
 // possible false failure, never a false pass).
+// lo, hi: the corners' bounding box (component-wise min and max).
 struct ProjectedTriangle {
   std::array<glm::dvec2, 3> c;
   bool in_front = true;
+  glm::dvec2 lo{0}, hi{0};
 };
 ProjectedTriangle projectTriangle(const CameraRays& cam, const glm::dvec3 P[3]);
 
@@ -142,6 +144,10 @@ ProjectedTriangle projectTriangle(const CameraRays& cam, const glm::dvec3 P[3]);
 // point at depth 1 along its ray, cam.origin + direction(x, y) /
 // (direction . forward).
 glm::dvec2 projectSample(const CameraRays& cam, double x, double y);
+// The same from the point's screen coordinates sx = cam.screenX(x), sy =
+// cam.screenY(y) (bit-identical to projectSample(cam, x, y)), for a caller
+// that projects many points of the same columns and rows.
+glm::dvec2 projectScreenSample(const CameraRays& cam, double sx, double sy);
 
 // Distance from p to the segment a b.
 double segmentDistance(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b);
@@ -149,5 +155,20 @@ double segmentDistance(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b);
 // True when p lies within `within` pixels of one of t's three edge
 // segments (or t is not in front of the camera).
 bool nearProjectedBoundary(const ProjectedTriangle& t, glm::dvec2 p, double within);
+
+// The same test, faster, for a caller testing many points against one
+// distance: segmentDistance(p, a, b) <= within decided without its square
+// root and, where the clamp decides the nearest point (an end of the
+// segment), without its division, with the same result for every p, a, b.
+// sqrt is correctly rounded and so non-decreasing: sqrt(x) <= within holds
+// exactly for x <= squared, the largest double for which it holds; and
+// f = clamp(t / len2, 0, 1) is 0 for t <= 0 (a zero f of either sign moves
+// no coordinate's magnitude) and 1 for t >= len2 (len2 > 0).
+struct BoundaryNearness {
+  double within = 0.0, squared = 0.0;
+  explicit BoundaryNearness(double within);
+  bool segment(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) const;
+  bool operator()(const ProjectedTriangle& t, glm::dvec2 p) const;  // nearProjectedBoundary
+};
 
 }  // namespace xval

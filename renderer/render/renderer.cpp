@@ -253,17 +253,41 @@ __attribute__((flatten)) glm::vec<3, T> shadeHit(const Shading<T>& sh, const Hit
   return sh.shaders[m.object].shade(s.p, s.nrm, s.v, hitColour(sh, h, s.uv, step, nudge->dlambda));
 }
 
+// A (non-Gouraud) hit shaded in parts, for its probes: shadeHit's surface
+// s, backfacing flag and surface colour C, the lights sampled at s.p
+// (into `lights`, Shader::sampleLights) and their sums, and c =
+// shadeWith(sums, C): shadeHit's colour bit for bit (the same operations).
+template <class T> struct HitParts {
+  HitSurface<T> s;
+  glm::vec<3, T> C{0}, c{0};
+  typename Shader<T>::LightSums sums;
+  bool backfacing = false;
+};
+template <class T>
+HitParts<T> shadeHitParts(const Shading<T>& sh, const Hit& h, double step, std::vector<LightSample<T>>& lights) {
+  const Shader<T>& shader = sh.shaders[sh.meshes[h.mesh].object];
+  HitParts<T> out;
+  out.s = hitSurface(sh, h);
+  out.backfacing = glm::dot(out.s.nrm, out.s.v) < T(0);
+  out.C = hitColour(sh, h, out.s.uv, step);
+  shader.sampleLights(out.s.p, lights);
+  out.sums = shader.lit(lights, out.s.nrm, out.s.v);
+  out.c = shader.shadeWith(out.sums, out.C);
+  return out;
+}
+
 // The precision probes of one sample (render/precision_probe.h): the
 // largest channel change of its saturated colour c under each probe, and
 // its saturated colour with N turned around (when backfacing: shadeHit's
-// flag for it). at: the sample's image point; n: samples per pixel side.
+// flag for it). at: the sample's image point; n: samples per pixel side;
+// parts, lights: the sample's shadeHitParts (null for Gouraud).
 template <class T> struct SampleProbes {
   double position = 0.0, uv = 0.0, normal = 0.0;
   glm::vec<3, T> flipped{0};
 };
 template <class T>
 SampleProbes<T> probeSample(const Shading<T>& sh, const Hit& h, double step, glm::vec<3, T> c, bool backfacing,
-                            glm::dvec2 at, int n) {
+                            glm::dvec2 at, int n, const HitParts<T>* parts, const std::vector<LightSample<T>>& lights) {
   using V = glm::vec<3, T>;
   SampleProbes<T> out;
   const ShadedMesh<T>& m = sh.meshes[h.mesh];
@@ -282,23 +306,30 @@ SampleProbes<T> probeSample(const Shading<T>& sh, const Hit& h, double step, glm
   }
   if (sh.mode == ShadingMode::Gouraud) return out;  // the model ran at the vertices: no uv, N or flip here
   // The probes below change N, uv or the level at the hit itself: its
-  // surface, and the colour where uv and level stay, are computed once and
-  // shaded as shadeHit with the nudge would (the same operations).
-  const HitSurface<T> s = hitSurface(sh, h);
+  // surface, the colour where uv and level stay and the lights' samples
+  // come from the sample's own shading (parts), and each is shaded as
+  // shadeHit with the nudge would (the same operations).
+  const HitSurface<T>& s = parts->s;
   const Shader<T>& shader = sh.shaders[m.object];
-  const V C = hitColour(sh, h, s.uv, step);
+  const V& C = parts->C;
   auto changeAt = [&](const V& nrm, const V& colour) {
-    return double(largestChannelDifference(models::saturate(shader.shade(s.p, nrm, s.v, colour)), c));
+    return double(largestChannelDifference(models::saturate(shader.shadeWith(shader.lit(lights, nrm, s.v), colour)), c));
   };
-  if (backfacing) out.flipped = models::saturate(shader.shade(s.p, -s.nrm, s.v, C));
+  if (backfacing) out.flipped = models::saturate(shader.shadeWith(shader.lit(lights, -s.nrm, s.v), C));
   // uv: one 1/256 texel of level 0 along u and v; a trilinear level by its
   // quad estimate's difference.
   const SurfaceColour<T>& colour = sh.colours[m.object];
   if (colour.texture) {
+    // Only the surface colour changes: the sample's own sums serve
+    // (Shader::lit; shadeWith is shade's result bit for bit).
+    const typename Shader<T>::LightSums& sums = parts->sums;
+    auto changeWith = [&](const V& moved) {
+      return double(largestChannelDifference(models::saturate(shader.shadeWith(sums, moved)), c));
+    };
     const T du = T(kUvStepTexels / colour.texture->width), dv = T(kUvStepTexels / colour.texture->height);
     for (const glm::vec<2, T> duv : {glm::vec<2, T>(du, 0), glm::vec<2, T>(-du, 0), glm::vec<2, T>(0, dv),
                                      glm::vec<2, T>(0, -dv)})
-      out.uv = std::max(out.uv, changeAt(s.nrm, hitColour(sh, h, s.uv + duv, step)));
+      out.uv = std::max(out.uv, changeWith(hitColour(sh, h, s.uv + duv, step)));
     if (colour.usesFootprint()) {
       const glm::dvec2 uv[3] = {m.src->uvs[tri[0]], m.src->uvs[tri[1]], m.src->uvs[tri[2]]};
       const double exact = hitLambda(sh, h, step);
@@ -306,7 +337,7 @@ SampleProbes<T> probeSample(const Shading<T>& sh, const Hit& h, double step, glm
       for (const auto& q : quadUvDerivativeChoices(sh.cam, P, uv, at.x, at.y, n))
         far = std::max(far, std::abs(colour.mips->lambda(q[0], q[1]) - exact));
       const double dl = kLodStep + far;
-      for (const double sd : {dl, -dl}) out.uv = std::max(out.uv, changeAt(s.nrm, hitColour(sh, h, s.uv, step, sd)));
+      for (const double sd : {dl, -dl}) out.uv = std::max(out.uv, changeWith(hitColour(sh, h, s.uv, step, sd)));
     }
   }
   // Normal: turned about two axes perpendicular to it, both ways. The
@@ -319,10 +350,15 @@ SampleProbes<T> probeSample(const Shading<T>& sh, const Hit& h, double step, glm
     const T b1 = T(h.b1), b2 = T(h.b2), b0 = T(1) - b1 - b2;
     nrm = b0 * m.n[tri[0]] + b1 * m.n[tri[1]] + b2 * m.n[tri[2]];
   }
+  // cos and sin of +-kNormalStepRadians, once.
+  static const struct Turn {
+    double cos[2], sin[2];
+  } kTurn{{std::cos(kNormalStepRadians), std::cos(-kNormalStepRadians)},
+          {std::sin(kNormalStepRadians), std::sin(-kNormalStepRadians)}};
   if (glm::dot(nrm, nrm) > T(0)) {
     for (const V& axis : turnAxes(nrm))
-      for (const double a : {kNormalStepRadians, -kNormalStepRadians}) {
-        const T turn_cos = T(std::cos(a)), turn_sin = T(std::sin(a));
+      for (int k = 0; k < 2; ++k) {
+        const T turn_cos = T(kTurn.cos[k]), turn_sin = T(kTurn.sin[k]);
         out.normal = std::max(out.normal, changeAt(turn_cos * s.nrm + turn_sin * glm::cross(axis, s.nrm), C));
       }
   }
@@ -396,13 +432,20 @@ template <class T> struct Accumulation {
       px.triangle_edge = std::min(px.triangle_edge, triangleEdgePixels(cam, P, h.b1, h.b2));
     }
     bool back = false;
-    const glm::vec<3, T> c = shadeHit(sh, h, step, back);
+    // With the probes the hit is shaded in parts (the same colour), which
+    // its probes reuse.
+    thread_local std::vector<LightSample<T>> lights;
+    const bool in_parts = diag && probes && sh.mode != ShadingMode::Gouraud;
+    HitParts<T> parts;
+    if (in_parts) parts = shadeHitParts(sh, h, step, lights), back = parts.backfacing;
+    const glm::vec<3, T> c = in_parts ? parts.c : shadeHit(sh, h, step, back);
     px.backfacing += back;
     px.final_sum += models::saturate(c);
     if (diag) {
       px.raw_sum += c;
       if (probes) {
-        const SampleProbes<T> p = probeSample(sh, h, step, models::saturate(c), back, at, n);
+        const SampleProbes<T> p = probeSample(sh, h, step, models::saturate(c), back, at, n,
+                                                    in_parts ? &parts : nullptr, lights);
         px.position += p.position, px.uv += p.uv, px.normal += p.normal;
         px.flipped_sum += back ? p.flipped : models::saturate(c);
       }
@@ -751,21 +794,41 @@ void edgeFractionPass(const std::vector<TriangleMesh>& meshes, const CameraRays&
   const double within = kTriangleEdgePixels;
   const ProjectedMeshes projected = projectAll(meshes, cam, threads);
   const OpenPixelTriangles binned = openPixelTriangles(meshes, projected, cam, img);
+  // A triangle's index over all meshes, for the per-thread marks that keep
+  // a pixel from testing a candidate twice.
+  std::vector<uint32_t> first(meshes.size() + 1, 0);
+  for (size_t mi = 0; mi < meshes.size(); ++mi) first[mi + 1] = first[mi] + uint32_t(meshes[mi].triangles.size());
+  // Every sample column's and row's screen coordinate, once per frame
+  // (projectScreenSample: the same points as projectSample).
+  std::vector<double> screen_x(size_t(W) * n), screen_y(size_t(H) * n);
+  for (int i = 0; i < W; ++i)
+    for (int sx = 0; sx < n; ++sx) screen_x[size_t(i) * n + sx] = cam.screenX(i + (sx + 0.5) / n);
+  for (int j = 0; j < H; ++j)
+    for (int sy = 0; sy < n; ++sy) screen_y[size_t(j) * n + sy] = cam.screenY(j + (sy + 0.5) / n);
+  const BoundaryNearness nearness(within);  // nearProjectedBoundary(t, p, within)
   std::atomic<int> next_row{0};
   auto worker = [&]() {
+    // mark[first[mesh] + triangle]: 1 + the last pixel (j W + i) that took
+    // the triangle as a candidate.
+    std::vector<uint32_t> mark(first.back(), 0);
     std::vector<std::pair<uint32_t, uint32_t>> seen;
-    std::vector<ProjectedTriangle> near;
+    std::vector<const ProjectedTriangle*> near;
     std::vector<glm::dvec2> samples(size_t(n) * n);
     for (int j = next_row++; j < H; j = next_row++)
       for (int i = 0; i < W; ++i) {
+        const uint32_t stamp = uint32_t(size_t(j) * W + i) + 1;
         seen.clear(), near.clear();
+        auto take = [&](uint32_t mi, uint32_t ti) {
+          uint32_t& m = mark[first[mi] + ti];
+          if (m != stamp) m = stamp, seen.emplace_back(mi, ti);
+        };
         for (int y = std::max(0, j - 1); y <= std::min(H - 1, j + 1); ++y)
           for (int x = std::max(0, i - 1); x <= std::min(W - 1, i + 1); ++x) {
             const PixelTriangles& t = triangles[size_t(y) * W + x];
-            for (int k = 0; k < t.count; ++k) seen.emplace_back(t.mesh[size_t(k)], t.triangle[size_t(k)]);
+            for (int k = 0; k < t.count; ++k) take(t.mesh[size_t(k)], t.triangle[size_t(k)]);
           }
         if (const int32_t k = binned.index[size_t(j) * W + i]; k >= 0)
-          seen.insert(seen.end(), binned.triangles[size_t(k)].begin(), binned.triangles[size_t(k)].end());
+          for (const auto& [mi, ti] : binned.triangles[size_t(k)]) take(mi, ti);
         if (seen.empty()) {  // no candidate: no sample is near an edge (the background away from the objects)
           img.edge_fraction[size_t(j) * W + i] = 0.0f;
           continue;
@@ -773,24 +836,23 @@ void edgeFractionPass(const std::vector<TriangleMesh>& meshes, const CameraRays&
         glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
         for (int sy = 0; sy < n; ++sy)
           for (int sx = 0; sx < n; ++sx) {
-            const glm::dvec2 p = projectSample(cam, i + (sx + 0.5) / n, j + (sy + 0.5) / n);
+            const glm::dvec2 p =
+                projectScreenSample(cam, screen_x[size_t(i) * n + sx], screen_y[size_t(j) * n + sy]);
             samples[size_t(sy) * n + sx] = p;
             lo = glm::min(lo, p), hi = glm::max(hi, p);
           }
         lo -= within, hi += within;
-        std::sort(seen.begin(), seen.end());
-        seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
         for (const std::pair<uint32_t, uint32_t>& key : seen) {
           const ProjectedTriangle& pt = projected[key.first][key.second];
-          const glm::dvec2 tlo = glm::min(pt.c[0], glm::min(pt.c[1], pt.c[2]));
-          const glm::dvec2 thi = glm::max(pt.c[0], glm::max(pt.c[1], pt.c[2]));
-          if (pt.in_front && (thi.x < lo.x || thi.y < lo.y || tlo.x > hi.x || tlo.y > hi.y)) continue;
-          near.push_back(pt);
+          if (pt.in_front && (pt.hi.x < lo.x || pt.hi.y < lo.y || pt.lo.x > hi.x || pt.lo.y > hi.y)) continue;
+          near.push_back(&pt);
         }
+        // Whether a sample is near some candidate does not depend on the
+        // order they are tried in.
         int count = 0;
         for (const glm::dvec2& p : samples)
-          for (const ProjectedTriangle& t : near)
-            if (nearProjectedBoundary(t, p, within)) {
+          for (const ProjectedTriangle* t : near)
+            if (nearness(*t, p)) {
               ++count;
               break;
             }

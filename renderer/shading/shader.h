@@ -82,26 +82,63 @@ template <class T> class Shader {
   V ambient() const { return ambient_; }
   T ambientLuma() const { return ambient_luma_; }
 
+  // What the model sums over its lights at a point, none of it depending
+  // on the surface colour c (by model: classic_phong paper, blinn_phong,
+  // cook_torrance: diff and spec; course: diff = ka A + the per-light
+  // terms; yiq_luma: dsum and ssum; Forsyth's family: diff = A + the
+  // per-light terms; minnaert, oren_nayar: diff). shade() is
+  // shadeWith(lit(p, n, v), c), the same operations in the same order, so a
+  // caller shading one point with several colours (the precision probes'
+  // uv and level steps, render/renderer.cpp) sums the lights once and gets
+  // shade()'s result bit for bit.
+  struct LightSums {
+    V diff{0}, spec{0};
+    T dsum = 0, ssum = 0;
+  };
+
   // p: surface point (relative to origin()), n: unit normal, v: unit
   // direction to the eye, c: the surface colour (texture or base colour).
-  V shade(V p, V n, V v, V c) const {
-    if (!luma_only_) return shadeModel(p, n, v, c);
+  V shade(V p, V n, V v, V c) const { return shadeWith(lit(p, n, v), c); }
+
+  // The colour from the lights' sums at a point (lit) and its surface
+  // colour c; luma_only: the model with the grey Y_C, then Y_C's luma
+  // replaced (the header's comment).
+  V shadeWith(const LightSums& sums, V c) const {
+    if (!luma_only_) return colourOf(sums, c);
     const LumaSpace s = *luma_only_;
     const T y_c = luma_only::surfaceLuma(s, c);
-    const T y_out = luma_only::lightLuma(s, shadeModel(p, n, v, V(y_c)));
+    const T y_out = luma_only::lightLuma(s, colourOf(sums, V(y_c)));
     return luma_only::withLuma(s, c, y_c, y_out);
   }
 
+  // The sums of the material's model (the formulas above) at p, n, v.
+  LightSums lit(V p, V n, V v) const {
+    return litFrom(n, v, [&](size_t k) { return sampleLight(lights_[k], p); });
+  }
+  // The same from the lights sampled at p beforehand (sampleLights), for a
+  // caller shading one point with several normals (the precision probes'
+  // normal turns): the same numbers, sampleLight being a function of the
+  // light and p alone.
+  void sampleLights(V p, std::vector<LightSample<T>>& out) const {
+    out.clear();
+    for (const auto& l : lights_) out.push_back(sampleLight(l, p));
+  }
+  LightSums lit(const std::vector<LightSample<T>>& sampled, V n, V v) const {
+    return litFrom(n, v, [&](size_t k) { return sampled[k]; });
+  }
+
  private:
-  // The material's model as it is (the formulas above).
-  V shadeModel(V p, V n, V v, V c) const {
+  // lit() with light k's sample from sample(k).
+  template <class Sample> LightSums litFrom(V n, V v, const Sample& sample) const {
     using namespace models;
+    LightSums out;
     switch (kind_) {
       case ModelId::ClassicPhong: {
         if (course_) {
           V acc = ka_ * ambient_;
-          for (const auto& l : lights_) {
-            LightSample<T> s = sampleLight(l, p);
+          for (size_t k = 0; k < lights_.size(); ++k) {
+            const PreparedLight<T>& l = lights_[k];
+            LightSample<T> s = sample(k);
             V w = s.att * l.color;
             T term = ka_;
             if (s.lit) {
@@ -111,23 +148,27 @@ template <class T> class Shader {
             }
             acc += w * term;
           }
-          return c * acc;
+          out.diff = acc;
+          return out;
         }
         V diff(0), spec(0);
-        for (const auto& l : lights_) {
-          LightSample<T> s = sampleLight(l, p);
+        for (size_t k = 0; k < lights_.size(); ++k) {
+          const PreparedLight<T>& l = lights_[k];
+          LightSample<T> s = sample(k);
           if (!s.lit) continue;
           V w = s.att * l.color;
           T x = glm::dot(n, s.L);
           diff += w * clamp0(x);
           if (specular_) spec += w * phongSpecular(mirror(n, s.L, x), v, n_);
         }
-        return c * (ka_ * ambient_ + kd_ * diff) + ks_ * spec;
+        out.diff = diff, out.spec = spec;
+        return out;
       }
       case ModelId::YiqLuma: {
         T dsum = 0, ssum = 0;
-        for (const auto& l : lights_) {
-          LightSample<T> s = sampleLight(l, p);
+        for (size_t k = 0; k < lights_.size(); ++k) {
+          const PreparedLight<T>& l = lights_[k];
+          LightSample<T> s = sample(k);
           if (!s.lit) continue;
           T w = s.att * l.color_luma;
           T x = glm::dot(n, s.L);
@@ -136,8 +177,8 @@ template <class T> class Shader {
           // only removes rounding, which the |R - V| form has none of.
           if (specular_) ssum += w * phongSpecular(mirror(n, s.L, x), v, n_);
         }
-        T dl = saturate(ambient_luma_ + kd_ * dsum);
-        return yiqLuma(c, dl, ks_ * ssum, offset_);
+        out.dsum = dsum, out.ssum = ssum;
+        return out;
       }
       case ModelId::Lambert:
       case ModelId::WrapAround:
@@ -145,19 +186,22 @@ template <class T> class Shader {
       case ModelId::BiDirectional:
       case ModelId::Trilight: {
         V acc = ambient_;
-        for (const auto& l : lights_) {
-          LightSample<T> s = sampleLight(l, p);
+        for (size_t k = 0; k < lights_.size(); ++k) {
+          const PreparedLight<T>& l = lights_[k];
+          LightSample<T> s = sample(k);
           if (!s.lit) continue;
           acc += s.att * l.color * forsyth(glm::dot(n, s.L));
         }
-        return c * acc;
+        out.diff = acc;
+        return out;
       }
       // Lambert-like diffuse terms of N.L and N.V: Minnaert, Oren-Nayar.
       case ModelId::Minnaert:
       case ModelId::OrenNayar: {
         V diff(0);
-        for (const auto& l : lights_) {
-          LightSample<T> s = sampleLight(l, p);
+        for (size_t k = 0; k < lights_.size(); ++k) {
+          const PreparedLight<T>& l = lights_[k];
+          LightSample<T> s = sample(k);
           if (!s.lit) continue;
           const T x = glm::dot(n, s.L), y = glm::dot(n, v);
           const T o = kind_ == ModelId::Minnaert ? minnaert(x, y, n_)
@@ -165,15 +209,17 @@ template <class T> class Shader {
                                                : orenNayarQualitative(x, y, glm::dot(s.L, v), on_a_, on_b_);
           diff += s.att * l.color * o;
         }
-        return c * (ambient_ + kd_ * diff);
+        out.diff = diff;
+        return out;
       }
       // A Lambert diffuse and a highlight: blinn_phong's clamp(N.H)^n or
       // cook_torrance's microfacet S (its ka is 1).
       case ModelId::BlinnPhong:
       case ModelId::CookTorrance: {
         V diff(0), spec(0);
-        for (const auto& l : lights_) {
-          LightSample<T> s = sampleLight(l, p);
+        for (size_t k = 0; k < lights_.size(); ++k) {
+          const PreparedLight<T>& l = lights_[k];
+          LightSample<T> s = sample(k);
           if (!s.lit) continue;
           V w = s.att * l.color;
           diff += w * clamp0(glm::dot(n, s.L));
@@ -183,8 +229,33 @@ template <class T> class Shader {
                              : cookTorranceSpecular(n, s.L, v, ct_.distribution, ct_.geometry, ct_.fresnel,
                                                     T(ct_.roughness), T(ct_.f0)));
         }
-        return c * (ka_ * ambient_ + kd_ * diff) + ks_ * spec;
+        out.diff = diff, out.spec = spec;
+        return out;
       }
+    }
+    return out;  // unreachable: the switch covers every ModelId
+  }
+
+  // The material's model (the formulas above) from its sums (lit) and c.
+  V colourOf(const LightSums& s, V c) const {
+    using namespace models;
+    switch (kind_) {
+      case ModelId::ClassicPhong:
+        if (course_) return c * s.diff;
+        return c * (ka_ * ambient_ + kd_ * s.diff) + ks_ * s.spec;
+      case ModelId::YiqLuma: {
+        T dl = saturate(ambient_luma_ + kd_ * s.dsum);
+        return yiqLuma(c, dl, ks_ * s.ssum, offset_);
+      }
+      case ModelId::Lambert:
+      case ModelId::WrapAround:
+      case ModelId::Hemispherical:
+      case ModelId::BiDirectional:
+      case ModelId::Trilight: return c * s.diff;
+      case ModelId::Minnaert:
+      case ModelId::OrenNayar: return c * (ambient_ + kd_ * s.diff);
+      case ModelId::BlinnPhong:
+      case ModelId::CookTorrance: return c * (ka_ * ambient_ + kd_ * s.diff) + ks_ * s.spec;
     }
     return V(0);  // unreachable: the switch covers every ModelId
   }

@@ -118,6 +118,45 @@ TEST(PrecisionProbe, AnUnperturbedProbeIsTheSampleColourBitForBit) {
 // per pixel: offsets 0.25, 0.75): those two samples of pixel 40 miss,
 // within 2^-8 px of the edge of the triangle the pixel's other samples
 // hit: 2 / 4. Pixels 39 and 41: no sample within 2^-8 px of any edge.
+// BoundaryNearness decides segmentDistance(p, a, b) <= within without the
+// square root and the clamp's division: the same answer for every point,
+// including a squared distance just above within^2 whose square root still
+// rounds to within (2^-16 (1 + 2^-52) for within = 2^-8), points beyond
+// either end, degenerate and non-finite segments.
+TEST(PrecisionProbe, BoundaryNearnessIsSegmentDistanceWithin) {
+  const double w = kTriangleEdgePixels;
+  const BoundaryNearness near(w);
+  auto check = [&](glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
+    EXPECT_EQ(near.segment(p, a, b), segmentDistance(p, a, b) <= w)
+        << "p " << p.x << " " << p.y << " a " << a.x << " " << a.y << " b " << b.x << " " << b.y;
+  };
+  // Past the end (0, 0) of the segment (-1, 0)-(0, 0): q = (2^-34, 2^-8).
+  const glm::dvec2 edge_p(std::ldexp(1.0, -34), std::ldexp(1.0, -8));
+  ASSERT_EQ(glm::dot(edge_p, edge_p), std::ldexp(1.0, -16) * (1.0 + std::ldexp(1.0, -52)));
+  check(edge_p, {-1, 0}, {0, 0});
+  EXPECT_TRUE(near.segment(edge_p, {-1, 0}, {0, 0}));
+  // Around the distance w from segments of every direction and length, along them and past their ends.
+  uint64_t state = 12345;
+  auto uniform = [&]() {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return double(state >> 11) * 0x1p-53;
+  };
+  for (int k = 0; k < 200000; ++k) {
+    const glm::dvec2 a(1000.0 * uniform() - 500.0, 1000.0 * uniform() - 500.0);
+    const double len = k % 7 == 0 ? 0.0 : std::ldexp(uniform(), -int(uniform() * 12)) * 4.0;
+    const double ang = 6.283185307179586 * uniform();
+    const glm::dvec2 dir(std::cos(ang), std::sin(ang)), b = a + len * dir;
+    const double along = 1.5 * uniform() - 0.25, off = w * (1.0 + (uniform() - 0.5) * std::ldexp(1.0, -int(uniform() * 50)));
+    const glm::dvec2 p = a + along * (b - a) + off * glm::dvec2(-dir.y, dir.x);
+    check(p, a, b);
+    check(a + off * dir * (uniform() < 0.5 ? -1.0 : 1.0), a, b);
+  }
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  for (const glm::dvec2 p : {glm::dvec2(0, 0), glm::dvec2(nan, 0), glm::dvec2(inf, 0), glm::dvec2(1e300, 1e300)})
+    for (const glm::dvec2 b : {glm::dvec2(0, 0), glm::dvec2(1, 0), glm::dvec2(inf, 0), glm::dvec2(nan, 1), glm::dvec2(1e200, -1e200)})
+      check(p, {0, 0}, b), check(p, {-1e200, 0}, b);
+}
+
 TEST(PrecisionProbe, EdgeFractionCountsTheSamplesNearAnEdgeOfAHitTriangle) {
   const Image img = render(squareWithLeftEdgeAt(40.253), 4);
   ASSERT_EQ(img.edge_fraction.size(), 100u * 100u);
