@@ -10,7 +10,7 @@ packages=(
   # the sanitizer build and the fuzz targets (docs/robustness.md)
   clang libclang-rt-14-dev
   # libraries
-  libopenimageio-dev openimageio-tools libglm-dev nlohmann-json3-dev libcli11-dev
+  libopenimageio-dev openimageio-tools libopenexr-dev libpng-dev libglm-dev nlohmann-json3-dev libcli11-dev
   libfmt-dev libtinygltf-dev libassimp-dev libembree-dev libhwy-dev libgtest-dev libgmock-dev libbenchmark-dev
   # the report's template (renderer/validate/report/report_page.mustache)
   libkainjow-mustache-dev

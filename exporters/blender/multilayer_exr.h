@@ -19,7 +19,7 @@ namespace xval {
 
 struct MultilayerChannels {
   int width = 0, height = 0;
-  int nchannels = 0;          // all channels of the file
+  int nchannels = 0;          // the channels read: one per requested suffix
   std::vector<float> pixels;  // width x height x nchannels, float, as stored
   std::vector<int> index;     // per requested suffix: its channel in `pixels`
 
@@ -28,7 +28,8 @@ struct MultilayerChannels {
 };
 
 // Reads `file`, which must be width x height, and finds for each suffix
-// the first channel whose name ends with it. Throws ExternalToolError
+// the first channel whose name ends with it, in the file's order (OpenEXR
+// lists channels sorted by name); only those channels are read. Throws ExternalToolError
 // (exporters/common/export_common.h) naming the file for a file that is
 // not a regular file, cannot be opened or read, has another size, or lacks
 // a channel ("no channel *<suffix>").

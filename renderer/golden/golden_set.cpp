@@ -1,7 +1,6 @@
 // Golden images: paths, hashes and the manifest (golden/golden_set.h).
 #include "golden/golden_set.h"
 
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 
@@ -12,6 +11,7 @@
 #include <vector>
 
 #include "files/atomic_write.h"
+#include "image/exr_file.h"
 #include "files/sha256.h"
 #include "image/image_header.h"
 #include "image/pixel_classes.h"
@@ -55,49 +55,35 @@ float storedDistance(float v, float bound) {
 }  // namespace
 
 void writeGoldenImage(const Image& img, const fs::path& file) {
-  namespace OIIO = OIIO_NAMESPACE;
   const size_t n = size_t(img.width) * size_t(img.height);
   const bool diag = img.depth.size() == n && img.backfacing.size() == n && img.incidence.size() == n;
   const bool texel = diag && img.texel_edge.size() == n;
   const bool edge = diag && img.triangle_edge.size() == n;
   if (file.has_parent_path()) fs::create_directories(file.parent_path());
-  writeFileAtomically(file, [&](const fs::path& tmp) {
-    auto out = OIIO::ImageOutput::create(tmp.string());
-    if (!out) throw std::runtime_error(file.string() + ": cannot create image writer: " + OIIO::geterror());
-    std::vector<const DiagnosticsChannel*> probes;  // kProbeChannels present, in order
+  // Colour in float, the diagnostics in half (what the classification
+  // needs of them), the edge distances as storedDistance keeps them.
+  std::vector<float> texel_stored, edge_stored;
+  if (texel)
+    for (float v : img.texel_edge) texel_stored.push_back(storedDistance(v, kTexelEdgeRoundings));
+  if (edge)
+    for (float v : img.triangle_edge) edge_stored.push_back(storedDistance(v, kTriangleEdgePixels));
+  const size_t w = size_t(img.width);
+  std::vector<ExrChannel> channels;
+  const char* rgba[] = {"R", "G", "B", "A"};
+  for (size_t c = 0; c < 4; ++c) channels.push_back({rgba[c], img.rgba.data() + c, 4, w * 4});
+  auto half = [&](const char* name, const std::vector<float>& v) { channels.push_back({name, v.data(), 1, w, true}); };
+  if (diag) {
+    half("Z", img.depth);
+    half("backfacing", img.backfacing);
+    half("incidence", img.incidence);
+    if (texel) half("texel_edge", texel_stored);
+    if (edge) half("triangle_edge", edge_stored);
     for (const DiagnosticsChannel& c : kProbeChannels)
-      if (diag && (img.*c.member).size() == n) probes.push_back(&c);
-    const int nc = diag ? 7 + texel + edge + int(probes.size()) : 4;
-    OIIO::ImageSpec spec(img.width, img.height, nc, OIIO::TypeDesc::FLOAT);
-    spec.channelnames = {"R", "G", "B", "A"};
-    spec.channelformats.assign(size_t(nc), OIIO::TypeDesc::FLOAT);
-    if (diag) {
-      spec.channelnames.insert(spec.channelnames.end(), {"Z", "backfacing", "incidence"});
-      if (texel) spec.channelnames.push_back("texel_edge");
-      if (edge) spec.channelnames.push_back("triangle_edge");
-      for (const DiagnosticsChannel* c : probes) spec.channelnames.push_back(c->name);
-      for (int c = 4; c < nc; ++c) spec.channelformats[size_t(c)] = OIIO::TypeDesc::HALF;
-      spec.z_channel = 4;
-    }
-    spec.alpha_channel = 3;
-    spec.attribute("compression", "zip");
-    spec.attribute("xval:encoding", kColourEncoding);  // as every image xval writes (image/image.h)
-    std::vector<float> buf(n * size_t(nc));
-    for (size_t i = 0; i < n; ++i) {
-      std::copy_n(&img.rgba[i * 4], 4, &buf[i * nc]);
-      if (diag) {
-        buf[i * nc + 4] = img.depth[i];
-        buf[i * nc + 5] = img.backfacing[i];
-        buf[i * nc + 6] = img.incidence[i];
-        if (texel) buf[i * nc + 7] = storedDistance(img.texel_edge[i], kTexelEdgeRoundings);
-        if (edge) buf[i * nc + 7 + texel] = storedDistance(img.triangle_edge[i], kTriangleEdgePixels);
-        for (size_t k = 0; k < probes.size(); ++k)
-          buf[i * nc + 7 + texel + edge + k] = (img.*probes[k]->member)[i];
-      }
-    }
-    bool ok = out->open(tmp.string(), spec) && out->write_image(OIIO::TypeDesc::FLOAT, buf.data());
-    ok = out->close() && ok;
-    if (!ok) throw std::runtime_error(file.string() + ": cannot write image: " + out->geterror());
+      if ((img.*c.member).size() == n) half(c.name, img.*c.member);
+  }
+  writeFileAtomically(file, [&](const fs::path& tmp) {
+    // The encoding attribute as every image xval writes (image/image.h).
+    writeExrFile(tmp, img.width, img.height, channels, "zip", {{"xval:encoding", kColourEncoding}});
     requireDecodable(tmp, img.width, img.height);
     return true;
   });

@@ -1,8 +1,5 @@
 #include "image/heat_map.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -13,24 +10,34 @@ namespace xval {
 
 namespace {
 
-// The ramp's knots, equally spaced over t in [0, 1]; OpenImageIO's
-// color_map interpolates linearly between neighbours (fmath.h
-// interpolate_linear: k_i (1 - f) + k_{i+1} f, i + f = 6 t, in float).
+// The ramp's knots, equally spaced over t in [0, 1], interpolated
+// linearly between neighbours in float: t clamped to [0, 1], i + f = 6 t
+// (i = floor), colour k_i (1 - f) + k_{i+1} f, k_7 = k_6. (The formula of
+// OpenImageIO's color_map, which made the heat maps before: the same
+// bits.)
 constexpr float kRampKnots[] = {0, 0, 0, 0, 0, 1, 0, 1, 1, 0, 1, 0, 1, 1, 0, 1, 0, 0, 1, 1, 1};
 constexpr int kRampKnotCount = 7;
 
-// The ramp's colour at each t of a w x h image (row-major), 3 floats each.
-std::vector<float> ramp(const std::vector<float>& t, int w, int h) {
+// The ramp's colour at each t, 3 floats each.
+std::vector<float> ramp(const std::vector<float>& t) {
   std::vector<float> rgb(t.size() * 3);
-  if (t.empty()) return rgb;
-  const OIIO::ImageBuf src(OIIO::ImageSpec(w, h, 1, OIIO::TypeDesc::FLOAT), const_cast<float*>(t.data()));
-  const OIIO::ImageBuf out = OIIO::ImageBufAlgo::color_map(src, 0, kRampKnotCount, 3, kRampKnots);
-  if (out.has_error() || out.nchannels() != 3 ||
-      !out.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, rgb.data()))
-    throw std::runtime_error("heat map: OpenImageIO color_map failed on a " + std::to_string(w) + "x" +
-                             std::to_string(h) + " image: " + out.geterror());
+  for (size_t i = 0; i < t.size(); ++i) heatRampColour(t[i], &rgb[i * 3]);
   return rgb;
 }
+
+}  // namespace
+
+void heatRampColour(float t, float* rgb) {
+  constexpr int segments = kRampKnotCount - 1;
+  // Clamped so that NaN gives 0 (std::clamp would keep it).
+  const float x = (t >= 0.0f ? (t <= 1.0f ? t : 1.0f) : 0.0f) * float(segments);
+  const float whole = std::floor(x);
+  const int k = int(whole), next = std::min(k + 1, segments);
+  const float f = x - whole;
+  for (int c = 0; c < 3; ++c) rgb[c] = kRampKnots[k * 3 + c] * (1.0f - f) + kRampKnots[next * 3 + c] * f;
+}
+
+namespace {
 
 double heatT(double err16) {
   if (!(err16 == err16)) return 1.0;  // NaN: the top of the scale
@@ -46,7 +53,7 @@ Image heatMap(const Image& d) {
   for (size_t i = 0; i < n; ++i)
     if (d.rgba[i * 4 + 3] > 0)
       t[i] = float(heatT(std::max({d.rgba[i * 4], d.rgba[i * 4 + 1], d.rgba[i * 4 + 2]}) * 65535.0));
-  const std::vector<float> rgb = ramp(t, d.width, d.height);
+  const std::vector<float> rgb = ramp(t);
   Image h(d.width, d.height, false);
   for (size_t i = 0; i < n; ++i) {
     for (int k = 0; k < 3; ++k)  // grey 0.35: covered by neither render
@@ -75,7 +82,7 @@ void writeHeatScalePng(const std::filesystem::path& png) {
   const int W = 512, H = 16;
   std::vector<float> t(size_t(W) * H);
   for (size_t i = 0; i < t.size(); ++i) t[i] = float(int(i % W) / double(W - 1));  // left 0, right 1
-  const std::vector<float> rgb = ramp(t, W, H);
+  const std::vector<float> rgb = ramp(t);
   Image s(W, H, false);
   for (size_t i = 0; i < t.size(); ++i) {
     for (int k = 0; k < 3; ++k) s.rgba[i * 4 + k] = rgb[i * 3 + k];

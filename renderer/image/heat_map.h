@@ -17,6 +17,11 @@ namespace xval {
 
 inline constexpr double kHeatMin16 = 1.0, kHeatMax16 = 4096.0;
 
+// The scale's colour at t in [0, 1] (clamped; NaN gives t = 0): seven
+// knots (the colours above) equally spaced, linear in float between them.
+// rgb receives 3 floats.
+void heatRampColour(float t, float* rgb);
+
 // diff: a difference image (image/compare.h differenceImage): |a - b| per
 // channel, alpha = covered by either. Returns the RGB heat map, alpha 1.
 Image heatMap(const Image& diff);

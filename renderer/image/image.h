@@ -145,27 +145,29 @@ inline constexpr int kPngFilter = 8;  // PNG_FILTER_NONE
 // raw.B, Z, backfacing, incidence, albedo.R/G/B (only when present),
 // texel_edge, triangle_edge and kProbeChannels (each only when present); its colour
 // encoding in the attribute xval:encoding, since OpenEXR has no attribute
-// for a transfer function and OpenImageIO 2.4 neither writes nor reads
-// oiio:ColorSpace in an EXR: it reads every EXR as "Linear") or, by extension
+// for a transfer function) or, by extension
 // .png, a 16-bit RGBA PNG: alpha = coverage, colour unassociated as PNG
 // defines it (premultiplied colour / alpha), round(v * 65535) of the
-// clamped values, no gamma. An EXR is compressed with exr_compression (an
-// OpenImageIO "compression" value: kRenderExrCompression or
-// kDifferenceExrCompression), a PNG at kPngZlibLevel. Every image is read
-// back before it is renamed into place (requireDecodable); with read_back,
-// that read is readImage's and its image is stored there (what
-// readImage(file) returns, without decoding the file again). Throws
-// std::runtime_error naming the file.
+// clamped values, no gamma. An EXR (written by OpenEXR: image/exr_file.h)
+// is compressed with exr_compression (kRenderExrCompression or
+// kDifferenceExrCompression), a PNG (libpng: image/png_file.h) at
+// kPngZlibLevel. Every image is decoded again before it is renamed into
+// place: an EXR from the file (requireDecodable), a PNG from the bytes just
+// encoded, which are then written with every write checked
+// (requirePngDecodable); with read_back, that decoding is readImage's and
+// its image is stored there (what readImage(file) returns, without
+// decoding the file again). Throws std::runtime_error naming the file.
 void writeImage(const Image& img, const std::filesystem::path& file,
                 const char* exr_compression = kRenderExrCompression, Image* read_back = nullptr);
 // An 8-bit RGB PNG for looking at (reports): the clamped colour over black,
 // box-filtered down by the smallest integer factor that brings the larger
 // side to at most max_side pixels.
 void writePreviewPng(const Image& img, const std::filesystem::path& file, int max_side);
-// Throws std::runtime_error unless `file` decodes whole as a width x height
-// image. OpenImageIO's PNG writer can report success for a file a full disk
-// left empty, so every image xval writes is read back before it is renamed
-// into place (files/atomic_write.h).
+// Throws std::runtime_error unless `file` (an EXR or a PNG) decodes whole as
+// a width x height image: a writer that reports success for a file a full
+// disk left short is caught before the file is renamed into place
+// (files/atomic_write.h). An EXR's channels are decoded a row at a time
+// into one reused row, never a copy of the image.
 void requireDecodable(const std::filesystem::path& file, int width, int height);
 // Images read back (from the external renderers, by `xval compare` and
 // `xval validate`): at most the largest image xval renders (kMaxImageSide,
@@ -182,7 +184,10 @@ struct ImageLimits;
 ImageHeader readImageHeader(const std::filesystem::path& file);
 ImageLimits readImageLimits(int expect_width = 0, int expect_height = 0);
 
-// Reads R,G,B,A (and raw.* when present) from any file OpenImageIO reads.
+// Reads R,G,B,A (and raw.* when present) from an EXR (OpenEXR), a PNG
+// (libpng) or any other format OpenImageIO reads (image/other_formats.h:
+// its module is loaded for such a file only); integer codes c as
+// c x (1 / (2^bits - 1)) in float.
 // The colour comes back premultiplied by alpha (as EXR stores it): a file
 // with unassociated alpha (PNG) is read as stored and multiplied here.
 // A non-regular file (FIFO, device, folder) is refused before it is opened.

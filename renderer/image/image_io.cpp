@@ -1,71 +1,176 @@
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <type_traits>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "files/atomic_write.h"
+#include "image/exr_file.h"
 #include "image/image.h"
 #include "image/image_header.h"
+#include "image/other_formats.h"
+#include "image/png_file.h"
 #include "scene/scene_limits.h"
 
 namespace xval {
-
-namespace OIIO = OIIO_NAMESPACE;
 
 namespace {
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
   return s;
 }
+}  // namespace
 
-// Images are written and read in strips of this many rows through one
-// buffer of a strip, not through a copy of the whole image: a render's EXR
-// (up to 20 float channels, 41 MB at 720x720) would otherwise be a second
-// and, read back, a third copy of the image in fresh memory, each page of
-// it a page fault (docs/performance.md, "Where the time goes"). A multiple
-// of every EXR compression's chunk height (PIZ: 32 rows), so each strip is
-// whole chunks, which OpenEXR compresses on its threads side by side.
-inline constexpr int kStripRows = 64;
+namespace {
+enum class FileKind { Exr, Png, Other };
 
-// Reads the open image `in` (subimage 0, every channel, as float) strip by
-// strip in order and hands each to use(first_row, rows, pixels): rows x
-// width x nchannels floats, interleaved. False when a read fails
-// (in->geterror() says why).
-// A tiled file (another tool's EXR) is read whole, as one strip:
-// OpenImageIO 2.4's read_scanlines stops such a process with a division by
-// zero.
-template <class Use> bool forEachStrip(OIIO::ImageInput& in, Use&& use) {
-  const OIIO::ImageSpec& spec = in.spec();
-  if (spec.tile_width > 0) {
-    std::vector<float> all(size_t(spec.width) * spec.height * spec.nchannels);
-    if (!in.read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data())) return false;
-    use(0, spec.height, all.data());
-    return true;
+// Which decoder reads `file`: by its first bytes, not its name.
+FileKind fileKind(const std::filesystem::path& file) {
+  unsigned char magic[8] = {};
+  size_t got = 0;
+  if (std::FILE* f = std::fopen(file.c_str(), "rb")) {
+    got = std::fread(magic, 1, sizeof magic, f);
+    std::fclose(f);
   }
-  std::vector<float> strip(size_t(std::min(kStripRows, spec.height)) * spec.width * spec.nchannels);
-  for (int y = 0; y < spec.height; y += kStripRows) {
-    const int rows = std::min(kStripRows, spec.height - y);
-    if (!in.read_scanlines(0, 0, spec.y + y, spec.y + y + rows, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT,
-                           strip.data()))
-      return false;
-    use(y, rows, strip.data());
-  }
-  return true;
+  return isExrSignature(magic, got) ? FileKind::Exr : isPngSignature(magic, got) ? FileKind::Png : FileKind::Other;
+}
+
+std::string sizeText(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
+
+void requireSize(const ImageHeader& h, int width, int height) {
+  if (h.width != width || h.height != height)
+    throw std::runtime_error("written as " + sizeText(h.width, h.height) + ", expected " + sizeText(width, height));
+}
+
+// Decodes every chunk of the EXR `file` whole: OpenEXR reads and
+// decompresses each chunk (all channels of its rows) before it copies the
+// requested channels out, so asking for one channel, into one reused row,
+// checks every byte of the file as asking for all of them would, without
+// converting the other channels' values (measured: the read-back of the
+// Table 2 render's 20 channels, a tenth of `xval render`'s CPU, mostly
+// OpenEXR's per-value copies).
+void requireExrDecodable(const std::filesystem::path& file, int width, int height) {
+  ExrInput in(file);
+  requireSize(in.header(), width, height);
+  if (in.channels().empty()) throw std::runtime_error(file.string() + ": written without a channel");
+  std::vector<float> row(static_cast<size_t>(width));
+  in.read({{in.channels().front(), row.data(), 1, 0}});
 }
 }  // namespace
 
-void requireDecodable(const std::filesystem::path& file, int width, int height) {
-  auto in = OIIO::ImageInput::open(file.string());
-  if (!in) throw std::runtime_error("written but unreadable: " + OIIO::geterror());
-  const OIIO::ImageSpec spec = in->spec();
-  if (spec.width != width || spec.height != height)
-    throw std::runtime_error("written as " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-                             ", expected " + std::to_string(width) + "x" + std::to_string(height));
-  const bool whole = forEachStrip(*in, [&](int, int, const float*) {});
-  if (!whole) throw std::runtime_error("written incompletely: " + in->geterror());
+namespace {
+// Integer codes as float: c x (1 / max), the conversion every image read
+// back has had (OpenImageIO's, bit for bit, before xval decoded PNGs itself).
+inline float codeValue(std::uint8_t c) { return float(c) * (1.0f / 255.0f); }
+inline float codeValue(std::uint16_t c) { return float(c) * (1.0f / 65535.0f); }
+
+// readImage of decoded samples (PNG, or another format through
+// other_formats.h): R, G, B, A by name, raw.* when present; alpha, when
+// unassociated, multiplied in.
+template <class Sample>
+Image imageOfSamples(int width, int height, const std::vector<std::string>& names, const std::vector<Sample>& px,
+                     bool unassociated, const std::string& name) {
+  auto channel = [&names](const char* c) {
+    for (size_t i = 0; i < names.size(); ++i)
+      if (names[i] == c) return int(i);
+    return -1;
+  };
+  const int ch[4] = {channel("R"), channel("G"), channel("B"), channel("A")};
+  if (ch[0] < 0 || ch[1] < 0 || ch[2] < 0) throw std::runtime_error(name + ": image has no R, G, B channels");
+  const int raw[3] = {channel("raw.R"), channel("raw.G"), channel("raw.B")};
+  const bool has_raw = raw[0] >= 0 && raw[1] >= 0 && raw[2] >= 0;
+  Image img(width, height, has_raw);
+  img.has_alpha = ch[3] >= 0;
+  unassociated = unassociated && img.has_alpha;
+  for (const DiagnosticsChannel& c : kProbeChannels) (img.*c.member).clear();
+  img.depth.clear(), img.backfacing.clear(), img.incidence.clear(), img.albedo.clear();
+  img.texel_edge.clear(), img.triangle_edge.clear();
+  const size_t nc = names.size(), n = size_t(width) * size_t(height);
+  auto value = [](Sample v) {
+    if constexpr (std::is_same_v<Sample, float>) return v;
+    else return codeValue(v);
+  };
+  for (size_t i = 0; i < n; ++i) {
+    const Sample* p = &px[i * nc];
+    for (int c = 0; c < 4; ++c) img.rgba[i * 4 + c] = ch[c] >= 0 ? value(p[ch[c]]) : 1.0f;
+    if (unassociated)
+      for (int c = 0; c < 3; ++c) img.rgba[i * 4 + c] *= img.rgba[i * 4 + 3];
+    if (has_raw)
+      for (int c = 0; c < 3; ++c) img.raw[i * 3 + c] = value(p[raw[c]]);
+  }
+  return img;
 }
+
+// PNG's channel names as OpenImageIO named them: grey "Y", grey + alpha
+// "Y", "A", else R, G, B, A.
+std::vector<std::string> pngChannelNames(int channels) {
+  if (channels == 1) return {"Y"};
+  if (channels == 2) return {"Y", "A"};
+  std::vector<std::string> n = {"R", "G", "B", "A"};
+  n.resize(size_t(channels));
+  return n;
+}
+
+Image imageOfPng(const PngPixels& p, const std::string& name) {
+  // PNG's alpha is unassociated.
+  return p.bits == 16 ? imageOfSamples(p.width, p.height, pngChannelNames(p.channels), p.words, true, name)
+                      : imageOfSamples(p.width, p.height, pngChannelNames(p.channels), p.bytes, true, name);
+}
+
+}  // namespace
+
+void requireDecodable(const std::filesystem::path& file, int width, int height) {
+  switch (fileKind(file)) {
+    case FileKind::Exr:
+      return requireExrDecodable(file, width, height);
+    case FileKind::Png:
+      readPngFile(file, [&](const ImageHeader& h) { requireSize(h, width, height); });
+      return;
+    case FileKind::Other:
+      break;
+  }
+  throw std::runtime_error(file.string() + ": written but neither an EXR nor a PNG");
+}
+
+namespace {
+// The EXR of writeImage: every channel straight from the Image's arrays.
+void writeImageExr(const Image& img, const std::filesystem::path& file, const char* compression) {
+  const size_t w = size_t(img.width);
+  std::vector<ExrChannel> channels;
+  auto add = [&](const char* name, const std::vector<float>& v, size_t stride, size_t offset) {
+    channels.push_back({name, v.data() + offset, stride, w * stride});
+  };
+  const char* rgba[] = {"R", "G", "B", "A"};
+  for (size_t c = 0; c < 4; ++c) add(rgba[c], img.rgba, 4, c);
+  if (!img.raw.empty()) {
+    const char* raw[] = {"raw.R", "raw.G", "raw.B"};
+    for (size_t c = 0; c < 3; ++c) add(raw[c], img.raw, 3, c);
+  }
+  if (!img.depth.empty()) {
+    add("Z", img.depth, 1, 0);
+    add("backfacing", img.backfacing, 1, 0);
+    add("incidence", img.incidence, 1, 0);
+    if (!img.albedo.empty()) {
+      const char* albedo[] = {"albedo.R", "albedo.G", "albedo.B"};
+      for (size_t c = 0; c < 3; ++c) add(albedo[c], img.albedo, 3, c);
+    }
+    if (img.texel_edge.size() == img.depth.size()) add("texel_edge", img.texel_edge, 1, 0);
+    if (img.triangle_edge.size() == img.depth.size()) add("triangle_edge", img.triangle_edge, 1, 0);
+    for (const DiagnosticsChannel& c : kProbeChannels)
+      if ((img.*c.member).size() == img.depth.size()) add(c.name, img.*c.member, 1, 0);
+  }
+  // The colour channels hold display-referred code values: the models
+  // work on stored texture codes and no transfer function is applied
+  // (docs/scene-format.md), so a value of 0.5 is meant to be shown as the
+  // code 0.5, as the 2012 shader's render target showed it. OpenEXR has
+  // no attribute for that: the encoding is said in xval:encoding, which
+  // every EXR and PNG xval writes carries.
+  writeExrFile(file, img.width, img.height, channels, compression, {{"xval:encoding", kColourEncoding}});
+}
+}  // namespace
 
 void writeImage(const Image& img, const std::filesystem::path& file, const char* exr_compression, Image* read_back) {
   const std::string name = file.string();
@@ -74,86 +179,12 @@ void writeImage(const Image& img, const std::filesystem::path& file, const char*
     throw std::runtime_error(name + ": unsupported output extension \"" + ext +
                              "\" (expected .exr or .png)");
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
-  // Written whole or not at all (files/atomic_write.h).
-  writeFileAtomically(file, [&](const std::filesystem::path& tmp_path) {
-  const std::string tmp = tmp_path.string();
-  auto out = OIIO::ImageOutput::create(tmp);
-  if (!out) throw std::runtime_error("cannot create image writer: " + OIIO::geterror());
-  const size_t n = size_t(img.width) * img.height;
-  bool ok;
-  if (ext == ".exr") {
-    const bool raw = !img.raw.empty();
-    const bool diag = !img.depth.empty();
-    const bool albedo = diag && !img.albedo.empty();
-    const bool texel = diag && img.texel_edge.size() == img.depth.size();
-    const bool edge = diag && img.triangle_edge.size() == img.depth.size();
-    std::vector<const std::vector<float>*> probes;  // kProbeChannels present, in order
-    for (const DiagnosticsChannel& c : kProbeChannels)
-      if (diag && (img.*c.member).size() == img.depth.size()) probes.push_back(&(img.*c.member));
-    OIIO::ImageSpec spec(img.width, img.height,
-                         4 + (raw ? 3 : 0) + (diag ? 3 : 0) + (albedo ? 3 : 0) + (texel ? 1 : 0) + (edge ? 1 : 0) +
-                             int(probes.size()),
-                         OIIO::TypeDesc::FLOAT);
-    spec.channelnames = {"R", "G", "B", "A"};
-    if (raw) spec.channelnames.insert(spec.channelnames.end(), {"raw.R", "raw.G", "raw.B"});
-    if (diag) {
-      spec.channelnames.insert(spec.channelnames.end(), {"Z", "backfacing", "incidence"});
-      if (albedo) spec.channelnames.insert(spec.channelnames.end(), {"albedo.R", "albedo.G", "albedo.B"});
-      if (texel) spec.channelnames.push_back("texel_edge");
-      if (edge) spec.channelnames.push_back("triangle_edge");
-      for (const DiagnosticsChannel& c : kProbeChannels)
-        if ((img.*c.member).size() == img.depth.size()) spec.channelnames.push_back(c.name);
-      spec.z_channel = 4 + (raw ? 3 : 0);
-    }
-    spec.alpha_channel = 3;
-    spec.attribute("compression", exr_compression);
-    // The colour channels hold display-referred code values: the models
-    // work on stored texture codes and no transfer function is applied
-    // (docs/scene-format.md), so a value of 0.5 is meant to be shown as the
-    // code 0.5, as the 2012 shader's render target showed it. OpenEXR has
-    // no attribute for that, and OpenImageIO 2.4 drops oiio:ColorSpace when
-    // it writes an EXR (and reads every EXR back as "Linear"; measured with
-    // oiiotool --attrib oiio:ColorSpace sRGB): the encoding is said in
-    // xval:encoding, which every EXR and PNG xval writes carries.
-    spec.attribute("xval:encoding", kColourEncoding);
-    // Strip by strip (kStripRows): pixel i's channels at buf[(i - first) * nc].
-    const size_t nc = size_t(spec.nchannels);
-    std::vector<float> buf(size_t(std::min(kStripRows, img.height)) * img.width * nc);
-    ok = out->open(tmp, spec);
-    for (int y = 0; ok && y < img.height; y += kStripRows) {
-      const int rows = std::min(kStripRows, img.height - y);
-      const size_t first = size_t(y) * img.width;
-      for (size_t i = first; i < first + size_t(rows) * img.width; ++i) {
-        float* px = &buf[(i - first) * nc];
-        std::copy_n(&img.rgba[i * 4], 4, px);
-        if (raw) std::copy_n(&img.raw[i * 3], 3, px + 4);
-        if (diag) {
-          px[spec.z_channel] = img.depth[i];
-          px[spec.z_channel + 1] = img.backfacing[i];
-          px[spec.z_channel + 2] = img.incidence[i];
-          if (albedo)
-            for (int c = 0; c < 3; ++c) px[spec.z_channel + 3 + c] = img.albedo[i * 3 + c];
-          if (texel) px[spec.z_channel + 3 + (albedo ? 3 : 0)] = img.texel_edge[i];
-          if (edge) px[spec.z_channel + 3 + (albedo ? 3 : 0) + (texel ? 1 : 0)] = img.triangle_edge[i];
-          float* first_probe = px + nc - probes.size();
-          for (size_t k = 0; k < probes.size(); ++k) first_probe[k] = (*probes[k])[i];
-        }
-      }
-      ok = out->write_scanlines(y, y + rows, 0, OIIO::TypeDesc::FLOAT, buf.data());
-    }
-  } else {
+  if (ext == ".png") {
     // RGBA, 16 bits. PNG's alpha is unassociated: the stored colour is
     // the premultiplied colour divided by the coverage (0 where nothing is
-    // hit), clamped to [0,1], so a reader that associates it again (OIIO does)
-    // gets colour = stored x alpha back, within half a step.
-    OIIO::ImageSpec spec(img.width, img.height, 4, OIIO::TypeDesc::UINT16);
-    spec.alpha_channel = 3;
-    // The buffer below is already unassociated: without this OpenImageIO
-    // would take it as premultiplied and divide by alpha again.
-    spec.attribute("oiio:UnassociatedAlpha", 1);
-    spec.attribute("xval:encoding", kColourEncoding);
-    spec.attribute("png:compressionLevel", kPngZlibLevel);
-    spec.attribute("png:filter", kPngFilter);
+    // hit), clamped to [0,1], so a reader that associates it again (readImage
+    // does) gets colour = stored x alpha back, within half a step.
+    const size_t n = size_t(img.width) * img.height;
     std::vector<uint16_t> buf(n * 4);
     auto code = [](float v) { return uint16_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 65535.0f)); };
     for (size_t i = 0; i < n; ++i) {
@@ -161,14 +192,19 @@ void writeImage(const Image& img, const std::filesystem::path& file, const char*
       for (int c = 0; c < 3; ++c) buf[i * 4 + c] = a > 0.0f ? code(img.rgba[i * 4 + c] / a) : 0;
       buf[i * 4 + 3] = code(a);
     }
-    ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::UINT16, buf.data());
+    const std::string png = encodePng(img.width, img.height, 4, 16, buf.data(), {{"xval:encoding", kColourEncoding}}, name);
+    const PngPixels back = requirePngDecodable(png, name, img.width, img.height);
+    if (read_back) *read_back = imageOfPng(back, name);
+    writeFileAtomically(file, png);
+    return;
   }
-  ok = out->close() && ok;
-  if (!ok) throw std::runtime_error("cannot write image: " + out->geterror());
-  // The read-back that checks the write is also the image handed back.
-  if (read_back) *read_back = readImage(tmp_path, img.width, img.height);
-  else requireDecodable(tmp_path, img.width, img.height);
-  return true;
+  // Written whole or not at all (files/atomic_write.h).
+  writeFileAtomically(file, [&](const std::filesystem::path& tmp_path) {
+    writeImageExr(img, tmp_path, exr_compression);
+    // The read-back that checks the write is also the image handed back.
+    if (read_back) *read_back = readImage(tmp_path, img.width, img.height);
+    else requireDecodable(tmp_path, img.width, img.height);
+    return true;
   });
 }
 
@@ -197,26 +233,22 @@ void writePreviewPng(const Image& img, const std::filesystem::path& file, int ma
       }
     }
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
-  writeFileAtomically(file, [&](const std::filesystem::path& tmp) {
-    auto out = OIIO::ImageOutput::create(tmp.string());
-    if (!out) throw std::runtime_error("cannot create PNG: " + OIIO::geterror());
-    OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::UINT8);
-    spec.attribute("png:compressionLevel", kPngZlibLevel);
-    spec.attribute("png:filter", kPngFilter);
-    bool ok = out->open(tmp.string(), spec) && out->write_image(OIIO::TypeDesc::UINT8, px.data());
-    ok = out->close() && ok;
-    if (!ok) throw std::runtime_error("cannot write PNG: " + out->geterror());
-    requireDecodable(tmp, w, h);
-    return true;
-  });
+  const std::string png = encodePng(w, h, 3, 8, px.data(), {}, file.string());
+  requirePngDecodable(png, file.string(), w, h);
+  writeFileAtomically(file, png);
 }
 
 ImageHeader readImageHeader(const std::filesystem::path& file) {
   requireRegularImageFile(file);
-  auto in = OIIO::ImageInput::open(file.string());
-  if (!in) throw std::runtime_error(file.string() + ": cannot open image: " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  return {spec.width, spec.height, spec.depth, spec.nchannels};
+  switch (fileKind(file)) {
+    case FileKind::Exr:
+      return ExrInput(file).header();
+    case FileKind::Png:
+      return readPngHeader(file);
+    case FileKind::Other:
+      break;
+  }
+  return otherFormatHeader(file);
 }
 
 ImageLimits readImageLimits(int expect_width, int expect_height) {
@@ -225,77 +257,84 @@ ImageLimits readImageLimits(int expect_width, int expect_height) {
   return l;
 }
 
+namespace {
+// readImage of an EXR: each channel read straight into the Image's arrays.
+Image readImageExr(const std::filesystem::path& file, int expect_width, int expect_height) {
+  const std::string name = file.string();
+  ExrInput in(file);
+  const ImageHeader header = in.header();
+  // The header's size is checked before the pixels are allocated.
+  const std::string problem = imageHeaderProblem(header, readImageLimits(expect_width, expect_height));
+  if (!problem.empty()) throw std::runtime_error(name + ": the image " + problem);
+  if (!in.has("R") || !in.has("G") || !in.has("B")) throw std::runtime_error(name + ": image has no R, G, B channels");
+  const bool has_raw = in.has("raw.R") && in.has("raw.G") && in.has("raw.B");
+  Image img(header.width, header.height, has_raw);
+  const size_t w = size_t(img.width), n = w * size_t(img.height);
+  std::vector<ExrTarget> targets;
+  auto add = [&](const char* channel, std::vector<float>& v, size_t stride, size_t offset) {
+    targets.push_back({channel, v.data() + offset, stride, w * stride});
+  };
+  img.has_alpha = in.has("A");
+  const char* rgba[] = {"R", "G", "B", "A"};
+  for (size_t c = 0; c < 4; ++c)
+    if (c < 3 || img.has_alpha) add(rgba[c], img.rgba, 4, c);
+  if (!img.has_alpha)
+    for (size_t i = 0; i < n; ++i) img.rgba[i * 4 + 3] = 1.0f;
+  if (has_raw) {
+    const char* raw[] = {"raw.R", "raw.G", "raw.B"};
+    for (size_t c = 0; c < 3; ++c) add(raw[c], img.raw, 3, c);
+  }
+  const bool diag = in.has("Z") && in.has("backfacing") && in.has("incidence");
+  const bool albedo = diag && in.has("albedo.R") && in.has("albedo.G") && in.has("albedo.B");
+  img.depth.assign(diag ? n : 0, 0.0f);
+  img.backfacing.assign(img.depth.size(), 0.0f);
+  img.incidence.assign(img.depth.size(), 0.0f);
+  img.albedo.assign(albedo ? n * 3 : 0, 0.0f);
+  // Channels absent from EXRs older than them are left empty.
+  img.texel_edge.assign(diag && in.has("texel_edge") ? n : 0, kFarFromTexelEdge);
+  img.triangle_edge.assign(diag && in.has("triangle_edge") ? n : 0, kFarFromTriangleEdge);
+  for (const DiagnosticsChannel& c : kProbeChannels) (img.*c.member).assign(diag && in.has(c.name) ? n : 0, 0.0f);
+  if (diag) {
+    add("Z", img.depth, 1, 0);
+    add("backfacing", img.backfacing, 1, 0);
+    add("incidence", img.incidence, 1, 0);
+    if (albedo) {
+      const char* names[] = {"albedo.R", "albedo.G", "albedo.B"};
+      for (size_t c = 0; c < 3; ++c) add(names[c], img.albedo, 3, c);
+    }
+    if (!img.texel_edge.empty()) add("texel_edge", img.texel_edge, 1, 0);
+    if (!img.triangle_edge.empty()) add("triangle_edge", img.triangle_edge, 1, 0);
+    for (const DiagnosticsChannel& c : kProbeChannels)
+      if (!(img.*c.member).empty()) add(c.name, img.*c.member, 1, 0);
+  }
+  in.read(targets);
+  return img;
+}
+}  // namespace
+
 Image readImage(const std::filesystem::path& file, int expect_width, int expect_height) {
   const std::string name = file.string();
   requireRegularImageFile(file);
-  // Formats whose alpha is unassociated (PNG) are read as stored, whatever
-  // OpenImageIO's default, and associated below: the Image holds colour
-  // premultiplied by coverage, as EXR stores it.
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  auto in = OIIO::ImageInput::open(name, &config);
-  if (!in) throw std::runtime_error(name + ": cannot open image: " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
   // The header's size is checked before the pixels are allocated.
-  const std::string problem = imageHeaderProblem({spec.width, spec.height, spec.depth, spec.nchannels},
-                                                 readImageLimits(expect_width, expect_height));
-  if (!problem.empty()) throw std::runtime_error(name + ": the image " + problem);
-  const int nc = spec.nchannels;
-  auto channel = [&spec](const char* c) {
-    for (int i = 0; i < spec.nchannels; ++i)
-      if (spec.channelnames[i] == c) return i;
-    return -1;
+  auto check = [&](const ImageHeader& h) {
+    const std::string problem = imageHeaderProblem(h, readImageLimits(expect_width, expect_height));
+    if (!problem.empty()) throw std::runtime_error(name + ": the image " + problem);
   };
-  int ch[4] = {channel("R"), channel("G"), channel("B"), channel("A")};
-  if (ch[0] < 0 || ch[1] < 0 || ch[2] < 0)
-    throw std::runtime_error(name + ": image has no R, G, B channels");
-  int raw[3] = {channel("raw.R"), channel("raw.G"), channel("raw.B")};
-  bool has_raw = raw[0] >= 0 && raw[1] >= 0 && raw[2] >= 0;
-  Image img(spec.width, spec.height, has_raw);
-  img.has_alpha = ch[3] >= 0;
-  const bool unassociated = img.has_alpha && spec.get_int_attribute("oiio:UnassociatedAlpha", 0) != 0;
-  int zc = channel("Z"), bc = channel("backfacing"), ic = channel("incidence");
-  int ac[3] = {channel("albedo.R"), channel("albedo.G"), channel("albedo.B")};
-  const bool diag = zc >= 0 && bc >= 0 && ic >= 0;
-  const bool albedo = diag && ac[0] >= 0 && ac[1] >= 0 && ac[2] >= 0;
-  img.depth.assign(diag ? size_t(spec.width) * spec.height : 0, 0.0f);
-  img.backfacing.assign(img.depth.size(), 0.0f);
-  img.incidence.assign(img.depth.size(), 0.0f);
-  img.albedo.assign(albedo ? img.depth.size() * 3 : 0, 0.0f);
-  const int tc = channel("texel_edge");  // absent from EXRs older than it: left empty
-  img.texel_edge.assign(diag && tc >= 0 ? img.depth.size() : 0, kFarFromTexelEdge);
-  const int ec = channel("triangle_edge");  // likewise
-  img.triangle_edge.assign(diag && ec >= 0 ? img.depth.size() : 0, kFarFromTriangleEdge);
-  std::vector<std::pair<int, std::vector<float>*>> probes;  // kProbeChannels in the file: likewise
-  for (const DiagnosticsChannel& c : kProbeChannels) {
-    const int pc = channel(c.name);
-    (img.*c.member).assign(diag && pc >= 0 ? img.depth.size() : 0, 0.0f);
-    if (diag && pc >= 0) probes.emplace_back(pc, &(img.*c.member));
+  switch (fileKind(file)) {
+    case FileKind::Exr:
+      return readImageExr(file, expect_width, expect_height);
+    case FileKind::Png:
+      return imageOfPng(readPngFile(file, check), name);
+    case FileKind::Other:
+      break;
   }
-  // Strip by strip (forEachStrip): pixel i's channels at px.
-  const bool whole = forEachStrip(*in, [&](int y, int rows, const float* strip) {
-    const size_t first = size_t(y) * spec.width;
-    for (size_t i = first; i < first + size_t(rows) * spec.width; ++i) {
-      const float* px = strip + (i - first) * size_t(nc);
-      if (diag) {
-        img.depth[i] = px[zc];
-        img.backfacing[i] = px[bc];
-        img.incidence[i] = px[ic];
-        if (albedo)
-          for (int c = 0; c < 3; ++c) img.albedo[i * 3 + c] = px[ac[c]];
-        if (!img.texel_edge.empty()) img.texel_edge[i] = px[tc];
-        if (!img.triangle_edge.empty()) img.triangle_edge[i] = px[ec];
-        for (const auto& [pc, v] : probes) (*v)[i] = px[pc];
-      }
-      for (int c = 0; c < 4; ++c) img.rgba[i * 4 + c] = ch[c] >= 0 ? px[ch[c]] : 1.0f;
-      if (unassociated)
-        for (int c = 0; c < 3; ++c) img.rgba[i * 4 + c] *= img.rgba[i * 4 + 3];
-      if (has_raw)
-        for (int c = 0; c < 3; ++c) img.raw[i * 3 + c] = px[raw[c]];
-    }
-  });
-  if (!whole) throw std::runtime_error(name + ": cannot read image: " + in->geterror());
-  return img;
+  // Formats whose alpha is unassociated (TIFF may be) are read as stored
+  // and associated here: the Image holds colour premultiplied by coverage,
+  // as EXR stores it.
+  const OtherFormatImage o = decodeOtherFormat(file, nullptr, check);
+  return o.bits == 8    ? imageOfSamples(o.width, o.height, o.names, o.u8, o.unassociated, name)
+         : o.bits == 16 ? imageOfSamples(o.width, o.height, o.names, o.u16, o.unassociated, name)
+                        : imageOfSamples(o.width, o.height, o.names, o.f32, o.unassociated, name);
 }
 
 }  // namespace xval

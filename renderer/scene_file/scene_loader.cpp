@@ -2,12 +2,12 @@
 
 #include "geometry/model_file.h"
 #include "geometry/transform.h"
+#include "image/image.h"
 #include "image/image_header.h"
 #include "image/metric_criteria.h"
 #include "scene_file/precision_limits.h"
 #include "texture/texture.h"
 
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cmath>
@@ -192,18 +192,14 @@ std::filesystem::path readInputPath(JsonReader& r, const std::filesystem::path& 
 // Opens the image's header (no pixels are read) and checks that the
 // texture reader (texture/texture_io.cpp) will accept it.
 void checkTextureImage(JsonReader& r, const std::filesystem::path& file, const std::string& quoted) {
-  namespace OIIO = OIIO_NAMESPACE;
-  auto in = OIIO::ImageInput::open(file.string());
-  if (!in) {
-    std::string why = OIIO::geterror();
-    r.fail("path", "texture file " + quoted + " is not an image OpenImageIO can read" +
-                       (why.empty() ? std::string() : ": " + why));
+  ImageHeader header;
+  try {
+    header = readImageHeader(file);
+  } catch (const std::runtime_error& e) {
+    r.fail("path", "texture file " + quoted + " is not an image xval can read: " + e.what());
   }
-  const OIIO::ImageSpec& spec = in->spec();
-  const std::string problem = imageHeaderProblem({spec.width, spec.height, spec.depth, spec.nchannels},
-                                                 textureLimits());
+  const std::string problem = imageHeaderProblem(header, textureLimits());
   if (!problem.empty()) r.fail("path", "texture file " + quoted + " " + problem);
-  in->close();
 }
 
 TextureSpec readTexture(JsonReader r, const std::filesystem::path& scene_dir) {

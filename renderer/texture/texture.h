@@ -83,7 +83,9 @@ struct Texture {
   }
 };
 
-// Loads an image file through OpenImageIO (any format it reads). 8-bit and
+// Loads an image file: PNG (libpng), EXR (OpenEXR: R, G, B or its one
+// channel) or any format OpenImageIO reads (through its module,
+// image/other_formats.h). 8-bit and
 // 16-bit integer images keep their code values c, and rgb = c / 255 or
 // c / 65535 (float division); R, G, B are the stored values, never
 // multiplied by alpha; alpha is dropped; grey is replicated. Throws

@@ -1,10 +1,8 @@
-// Texture image I/O through OpenImageIO.
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
+// Texture image I/O: PNG through libpng, EXR through OpenEXR, other formats
+// through the OpenImageIO module (image/other_formats.h).
 #include <cmath>
-#include <fstream>
-#include <iterator>
+#include <cstdio>
+#include <type_traits>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -15,81 +13,95 @@
 
 #include "files/atomic_write.h"
 #include "image/image.h"
+#include "image/exr_file.h"
 #include "image/image_header.h"
+#include "image/other_formats.h"
+#include "image/png_file.h"
 #include "scene/scene_limits.h"
 #include "texture/brick.h"
 #include "texture/texture.h"
 
 namespace xval {
 
-namespace OIIO = OIIO_NAMESPACE;
-
 namespace {
-// The file name OpenImageIO chooses an embedded image's reader by: from
-// its first bytes (JPEG's FF D8 FF, else PNG: a PNG reader refuses
-// anything that does not start with PNG's signature).
-std::string embeddedImageName(const std::vector<std::uint8_t>& b) {
-  return b.size() >= 3 && b[0] == 0xFF && b[1] == 0xD8 && b[2] == 0xFF ? "embedded.jpg" : "embedded.png";
+// Replicates grey (and grey + alpha) to R, G, B: the first 3 channels, or
+// the first one (alpha and any further channels are dropped).
+template <class Sample> void rgbOf(const std::vector<Sample>& px, int channels, std::vector<Sample>& out) {
+  const size_t nc = size_t(channels), texels = px.size() / nc;
+  out.resize(texels * 3);
+  for (size_t i = 0; i < texels; ++i)
+    for (size_t c = 0; c < 3; ++c) out[i * 3 + c] = px[i * nc + (nc >= 3 ? c : 0)];
+}
+
+// A texture's codes: 8-bit codes c give rgb = c / 255, 16-bit c / 65535
+// (float division); float samples are the values.
+template <class Sample> void setCodes(Texture& t, const std::vector<Sample>& px, int channels) {
+  if constexpr (std::is_same_v<Sample, std::uint8_t>) {
+    rgbOf(px, channels, t.rgb8);
+    t.rgb.resize(t.rgb8.size());
+    for (size_t i = 0; i < t.rgb.size(); ++i) t.rgb[i] = float(t.rgb8[i]) / 255.0f;
+  } else if constexpr (std::is_same_v<Sample, std::uint16_t>) {
+    rgbOf(px, channels, t.rgb16);
+    t.rgb.resize(t.rgb16.size());
+    for (size_t i = 0; i < t.rgb.size(); ++i) t.rgb[i] = float(t.rgb16[i]) / 65535.0f;
+  } else {
+    rgbOf(px, channels, t.rgb);
+  }
+}
+
+// An EXR texture: R, G, B, or its one channel as grey.
+void readExrTexture(const std::filesystem::path& file, Texture& t, const std::string& what) {
+  ExrInput in(file);
+  const ImageHeader h = in.header();
+  const std::string problem = imageHeaderProblem(h, textureLimits());
+  if (!problem.empty()) throw std::runtime_error(what + ": texture image " + problem);
+  t.width = h.width, t.height = h.height;
+  const size_t texels = size_t(t.width) * t.height;
+  std::vector<std::string> names;
+  if (in.has("R") && in.has("G") && in.has("B")) names = {"R", "G", "B"};
+  else if (in.channels().size() == 1) names = {in.channels()[0]};
+  else throw std::runtime_error(what + ": an EXR texture needs channels R, G, B or exactly one channel");
+  std::vector<float> px(texels * names.size());
+  std::vector<ExrTarget> targets;
+  for (size_t c = 0; c < names.size(); ++c)
+    targets.push_back({names[c], px.data() + c, names.size(), size_t(t.width) * names.size()});
+  in.read(targets);
+  setCodes(t, px, int(names.size()));
 }
 
 // `file` names the image in messages; `embedded`, when given, holds its
 // encoded bytes, read instead of the file.
 Texture readTextureImage(const std::filesystem::path& file, const std::vector<std::uint8_t>* embedded) {
-  // Stored values: OpenImageIO multiplies colour by alpha on reading unless
-  // told that the caller wants the file's unassociated values.
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  std::unique_ptr<OIIO::Filesystem::IOMemReader> memory;
-  if (embedded) {
-    memory = std::make_unique<OIIO::Filesystem::IOMemReader>(embedded->data(), embedded->size());
-    // The readers take the proxy from the configuration.
-    void* proxy = memory.get();
-    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-  }
-  auto in = embedded ? OIIO::ImageInput::open(embeddedImageName(*embedded), &config, memory.get())
-                     : OIIO::ImageInput::open(file.string(), &config);
   const std::string what = embedded ? file.string() + " (embedded image)" : file.string();
-  if (!in)
-    throw std::runtime_error(what + ": cannot read texture image: " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
   // The header is checked before anything is allocated (the scene loader
   // checked it too; the file may have changed since).
-  const std::string problem = imageHeaderProblem({spec.width, spec.height, spec.depth, spec.nchannels},
-                                                 textureLimits());
-  if (!problem.empty()) throw std::runtime_error(what + ": texture image " + problem);
+  auto check = [&](const ImageHeader& h) {
+    const std::string problem = imageHeaderProblem(h, textureLimits());
+    if (!problem.empty()) throw std::runtime_error(what + ": texture image " + problem);
+  };
+  unsigned char magic[8] = {};
+  size_t got = 0;
+  if (embedded) {
+    for (; got < sizeof magic && got < embedded->size(); ++got) magic[got] = (*embedded)[got];
+  } else if (std::FILE* f = std::fopen(file.c_str(), "rb")) {
+    got = std::fread(magic, 1, sizeof magic, f);
+    std::fclose(f);
+  }
   Texture t;
-  t.width = spec.width;
-  t.height = spec.height;
-  // Only the channels used are read: R, G, B, or the one grey channel
-  // (alpha and any further channels are dropped).
-  const int nc = spec.nchannels >= 3 ? 3 : 1;
-  const size_t texels = size_t(t.width) * t.height;
-  auto read = [&](OIIO::TypeDesc type, void* data) {
-    if (!in->read_image(0, 0, 0, nc, type, data))
-      throw std::runtime_error(what + ": cannot decode texture image: " + in->geterror());
-  };
-  // Replicates grey (and grey + alpha) to R, G, B.
-  auto rgb = [nc](const auto& px, auto& out) {
-    out.resize(px.size() / nc * 3);
-    for (size_t i = 0; i < out.size() / 3; ++i)
-      for (int c = 0; c < 3; ++c) out[i * 3 + c] = px[i * nc + (nc == 3 ? c : 0)];
-  };
-  t.rgb.resize(texels * 3);
-  if (spec.format == OIIO::TypeDesc::UINT8) {
-    std::vector<unsigned char> px(texels * nc);
-    read(OIIO::TypeDesc::UINT8, px.data());
-    rgb(px, t.rgb8);
-    for (size_t i = 0; i < t.rgb.size(); ++i) t.rgb[i] = float(t.rgb8[i]) / 255.0f;
-  } else if (spec.format == OIIO::TypeDesc::UINT16) {
-    std::vector<std::uint16_t> px(texels * nc);
-    read(OIIO::TypeDesc::UINT16, px.data());
-    rgb(px, t.rgb16);
-    for (size_t i = 0; i < t.rgb.size(); ++i) t.rgb[i] = float(t.rgb16[i]) / 65535.0f;
+  if (isPngSignature(magic, got)) {
+    const PngPixels p = embedded ? decodePng(embedded->data(), embedded->size(), what, check)
+                                 : readPngFile(file, check);
+    t.width = p.width, t.height = p.height;
+    if (p.bits == 16) setCodes(t, p.words, p.channels);
+    else setCodes(t, p.bytes, p.channels);
+  } else if (!embedded && isExrSignature(magic, got)) {
+    readExrTexture(file, t, what);
   } else {
-    // Other formats (float, half, 32-bit) as OpenImageIO converts them.
-    std::vector<float> px(texels * nc);
-    read(OIIO::TypeDesc::FLOAT, px.data());
-    rgb(px, t.rgb);
+    const OtherFormatImage o = decodeOtherFormat(file, embedded, check);
+    t.width = o.width, t.height = o.height;
+    if (o.bits == 8) setCodes(t, o.u8, o.channels);
+    else if (o.bits == 16) setCodes(t, o.u16, o.channels);
+    else setCodes(t, o.f32, o.channels);
   }
   // Integer codes are finite and at most 1; a float image may hold anything.
   for (size_t i = 0; i < t.rgb.size(); ++i)
@@ -153,12 +165,6 @@ TexturePngMemo& texturePngMemo() {
   return memo;
 }
 
-std::string readWholeFile(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in.good() && !in.eof()) throw std::runtime_error(file.string() + ": cannot read back the PNG just written");
-  return bytes;
-}
 }  // namespace
 
 void writeTexturePng(const Texture& t, const std::filesystem::path& file) {
@@ -166,7 +172,6 @@ void writeTexturePng(const Texture& t, const std::filesystem::path& file) {
   const bool is8 = t.rgb8.size() == n, is16 = !is8 && t.rgb16.size() == n;
   if (!is8 && !is16)
     throw std::runtime_error(file.string() + ": texture has no 8-bit or 16-bit codes to write");
-  const OIIO::TypeDesc type = is8 ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::UINT16;
   const void* data = is8 ? static_cast<const void*>(t.rgb8.data()) : t.rgb16.data();
   const std::string_view codes(static_cast<const char*>(data), n * (is8 ? 1 : 2));
   TexturePngMemo& memo = texturePngMemo();
@@ -183,19 +188,11 @@ void writeTexturePng(const Texture& t, const std::filesystem::path& file) {
     writeFileAtomically(file, *kept);
     return;
   }
-  std::string png;
-  writeFileAtomically(file, [&](const std::filesystem::path& tmp) {
-    auto out = OIIO::ImageOutput::create(tmp.string());
-    if (!out) throw std::runtime_error("cannot create PNG: " + OIIO::geterror());
-    OIIO::ImageSpec spec(t.width, t.height, 3, type);
-    spec.attribute("png:compressionLevel", kPngZlibLevel);
-    spec.attribute("png:filter", kPngFilter);
-    if (!out->open(tmp.string(), spec) || !out->write_image(type, data) || !out->close())
-      throw std::runtime_error("cannot write PNG: " + out->geterror());
-    requireDecodable(tmp, t.width, t.height);
-    png = readWholeFile(tmp);
-    return true;
-  });
+  std::string png = encodePng(t.width, t.height, 3, is8 ? 8 : 16, data, {}, file.string());
+  // The read-back (image/image.h, requireDecodable), from the bytes that
+  // are then written, each write checked.
+  requirePngDecodable(png, file.string(), t.width, t.height);
+  writeFileAtomically(file, png);
   std::lock_guard<std::mutex> hold(memo.lock);
   if (memo.bytes + codes.size() + png.size() > kTexturePngMemoBytes) return;
   for (const EncodedTexture& e : memo.entries)

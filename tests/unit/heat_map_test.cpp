@@ -1,9 +1,12 @@
 // The heat map's scale (image/heat_map.h): its knots, its two segments,
 // the colour of NaN and of uncovered pixels.
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
 #include <glm/glm.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -83,4 +86,29 @@ TEST(HeatMap, MaxDownscaledKeepsASinglePixel) {
   ASSERT_EQ(q.width, 2);
   ASSERT_EQ(q.height, 1);
   EXPECT_EQ(q.pixel(1, 0)[0], 1.0f);
+}
+
+// The ramp is the one OpenImageIO's color_map drew before xval drew it
+// itself: the same float for every t (heat maps unchanged bit for bit).
+TEST(HeatMap, RampIsOpenImageIosColorMapBitForBit) {
+  namespace OIIO = OIIO_NAMESPACE;
+  const float knots[] = {0, 0, 0, 0, 0, 1, 0, 1, 1, 0, 1, 0, 1, 1, 0, 1, 0, 0, 1, 1, 1};
+  std::vector<float> t;
+  for (int i = -1000; i <= 101000; ++i) t.push_back(float(i) / 100000.0f);
+  for (float x : {1.0f / 7.0f, 2.0f / 7.0f, 0.5f, 6.0f / 7.0f, std::nextafter(1.0f, 0.0f),
+                  std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()})
+    t.push_back(x);
+  const OIIO::ImageBuf src(OIIO::ImageSpec(int(t.size()), 1, 1, OIIO::TypeDesc::FLOAT), t.data());
+  const OIIO::ImageBuf out = OIIO::ImageBufAlgo::color_map(src, 0, 7, 3, knots);
+  std::vector<float> want(t.size() * 3);
+  ASSERT_TRUE(out.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, want.data())) << out.geterror();
+  int wrong = 0;
+  for (size_t i = 0; i < t.size(); ++i) {
+    float got[3];
+    heatRampColour(t[i], got);
+    for (int c = 0; c < 3; ++c)
+      if (std::memcmp(&got[c], &want[i * 3 + c], sizeof(float)) != 0 && ++wrong <= 5)
+        ADD_FAILURE() << "t = " << t[i] << " channel " << c << ": " << got[c] << ", color_map " << want[i * 3 + c];
+  }
+  EXPECT_EQ(wrong, 0);
 }

@@ -1,10 +1,13 @@
-// Image write/read round trips through OpenImageIO.
+// Image write/read round trips (EXR through OpenEXR, PNG through libpng).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
@@ -208,4 +211,33 @@ TEST(ImageIo, EveryImageSaysItsColourEncoding) {
   auto png = OIIO::ImageInput::open(tmp("xval_enc.png").string());
   EXPECT_EQ(png->spec().get_string_attribute("oiio:ColorSpace"), "sRGB");
   EXPECT_EQ(png->spec().alpha_channel, 3);
+}
+
+// The read-back of a written EXR (requireDecodable) decompresses every
+// chunk although it copies out one channel: a file cut short, or whose
+// end a full disk left as zeros, is refused; the intact file passes.
+TEST(ImageIo, ReadBackRefusesAnExrCutShortOrZeroedAtTheEnd) {
+  Image img(300, 200, true);  // several chunks of every channel
+  for (size_t i = 0; i < img.rgba.size(); ++i) img.rgba[i] = float((i * 7919) % 1000) / 999.0f;
+  for (size_t i = 0; i < img.raw.size(); ++i) img.raw[i] = float((i * 104729) % 777) / 7.0f;
+  for (size_t i = 0; i < img.depth.size(); ++i) img.depth[i] = float(i % 301) + 0.5f;
+  const std::filesystem::path whole = tmp("readback_whole.exr");
+  writeImage(img, whole);
+  EXPECT_NO_THROW(requireDecodable(whole, 300, 200));
+  std::string bytes;
+  {
+    std::ifstream in(whole, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  ASSERT_GT(bytes.size(), 10000u);
+  auto write = [](const std::filesystem::path& f, const std::string& b) {
+    std::ofstream(f, std::ios::binary).write(b.data(), std::streamsize(b.size()));
+  };
+  const std::filesystem::path cut = tmp("readback_cut.exr"), zeroed = tmp("readback_zeroed.exr");
+  write(cut, bytes.substr(0, bytes.size() * 2 / 3));
+  std::string z = bytes;
+  std::fill(z.begin() + std::ptrdiff_t(z.size() * 2 / 3), z.end(), '\0');
+  write(zeroed, z);
+  EXPECT_THROW(requireDecodable(cut, 300, 200), std::runtime_error);
+  EXPECT_THROW(requireDecodable(zeroed, 300, 200), std::runtime_error);
 }

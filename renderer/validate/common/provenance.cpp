@@ -1,4 +1,6 @@
 // Provenance of a results file (validate/common/provenance.h).
+#include "image/exr_file.h"
+#include "image/png_file.h"
 #include "validate/common/provenance.h"
 
 #include <ctime>
@@ -6,7 +8,6 @@
 #include <thread>
 #include <vector>
 
-#include <OpenImageIO/oiioversion.h>
 
 #include "process/run_process.h"
 
@@ -68,7 +69,9 @@ Provenance collectProvenance(const fs::path& scratch) {
   p.hardware_threads = std::thread::hardware_concurrency();
   p.load_average_1min = loadAverage1();
   p.compiler = compilerDescription();
-  p.openimageio = OIIO_VERSION_STRING;
+  p.openexr = openexrVersion();
+  p.libpng = libpngVersion();
+  p.openimageio = XVAL_OIIO_MODULE_VERSION;
   std::error_code ec;
   const fs::path exe_dir = fs::read_symlink("/proc/self/exe", ec).parent_path();
   for (const auto& where : {fs::current_path(), exe_dir}) {

@@ -21,7 +21,11 @@
 //   compiler            the compiler that built this xval, from its own
 //                       predefined macros: "clang <__clang_version__>" or
 //                       "g++ <__VERSION__>";
-//   openimageio         OIIO_VERSION_STRING of the headers built against.
+//   openexr, libpng     the versions of the libraries xval reads and writes
+//                       EXRs and PNGs with (image/exr_file.h, png_file.h);
+//   openimageio         the OpenImageIO version the module xval_oiio was
+//                       built against (image/other_formats.h: it decodes
+//                       the other formats, loaded only when one is read).
 //
 // collectProvenance(scratch) runs git (30 s time-out each) with its output
 // in the file `scratch`, removed afterwards.
@@ -40,7 +44,7 @@ struct Provenance {
   std::string git_commit = "unknown";
   long git_modified_files = -1;
   std::string compiler;
-  std::string openimageio;
+  std::string openexr, libpng, openimageio;
   std::string date() const { return date_utc.substr(0, 10); }
 };
 

@@ -12,8 +12,8 @@
 
 #include "files/atomic_write.h"
 #include "image/image.h"
+#include "image/png_file.h"
 
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cmath>
@@ -513,19 +513,12 @@ std::vector<Case> extremesMatrix(const MatrixOptions& options) {
 }
 
 void writePaletteTexture(const std::filesystem::path& file) {
-  namespace OIIO = OIIO_NAMESPACE;
   // White, black, red, green, blue, cyan, magenta, yellow, top to bottom.
   const unsigned char px[8][3] = {{255, 255, 255}, {0, 0, 0},     {255, 0, 0},   {0, 255, 0},
                                   {0, 0, 255},     {0, 255, 255}, {255, 0, 255}, {255, 255, 0}};
-  writeFileAtomically(file, [&](const std::filesystem::path& tmp) {
-    auto out = OIIO::ImageOutput::create(tmp.string());
-    if (!out) throw std::runtime_error("cannot create: " + OIIO::geterror());
-    OIIO::ImageSpec spec(1, 8, 3, OIIO::TypeDesc::UINT8);
-    if (!out->open(tmp.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, px) || !out->close())
-      throw std::runtime_error("cannot write: " + out->geterror());
-    requireDecodable(tmp, 1, 8);
-    return true;
-  });
+  const std::string png = encodePng(1, 8, 3, 8, px, {}, file.string());
+  requirePngDecodable(png, file.string(), 1, 8);
+  writeFileAtomically(file, png);
 }
 
 std::vector<std::filesystem::path> writeCaseScenes(const std::vector<Case>& cases,

@@ -44,6 +44,8 @@ J provenanceJson(const Plan& plan, const std::vector<fs::path>& setting_files) {
   // The one provenance record (validate/common/provenance.h): the compiler
   // that built this xval, the commit (with -dirty) it ran in.
   const Provenance prov = collectProvenance(plan.dir / "version.log");
+  p["openexr"] = prov.openexr;
+  p["libpng"] = prov.libpng;
   p["openimageio"] = prov.openimageio;
   p["compiler"] = prov.compiler;
   p["tolerances"] = plan.tolerances;
