@@ -63,6 +63,37 @@ void waitIfInterrupted() {
   while (interrupted) pause();
 }
 
+// Starts `exe` with `argv` and the file actions `fa` in a process group of
+// its own (a time-out or an interrupt kills all of it), with no signal
+// blocked and the interrupt signals at their default action whatever this
+// process does with them; registered for the interrupt under the same
+// lock as the kill, so none is missed and none starts after an interrupt.
+// Returns posix_spawn's error, or EINTR after an interrupt.
+int spawnInOwnGroup(const std::string& exe, const std::vector<std::string>& argv,
+                    const posix_spawn_file_actions_t& fa, pid_t& pid) {
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+  posix_spawnattr_setpgroup(&attr, 0);
+  sigset_t none, defaults;
+  sigemptyset(&none);
+  sigemptyset(&defaults);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE}) sigaddset(&defaults, sig);
+  posix_spawnattr_setsigmask(&attr, &none);
+  posix_spawnattr_setsigdefault(&attr, &defaults);
+  std::vector<char*> args;
+  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  int rc;
+  {
+    std::lock_guard<std::mutex> g(g_children_lock);
+    rc = g_interrupted ? EINTR : posix_spawn(&pid, exe.c_str(), &fa, &attr, args.data(), environ);
+    if (rc == 0) g_children.insert(pid);
+  }
+  posix_spawnattr_destroy(&attr);
+  return rc;
+}
+
 }  // namespace
 
 void installInterruptHandler() {
@@ -162,32 +193,10 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const std::filesy
   posix_spawn_file_actions_adddup2(&fa, 1, 2);
   // posix_spawn_file_actions_addchdir_np: glibc >= 2.29.
   posix_spawn_file_actions_addchdir_np(&fa, cwd.c_str());
-  posix_spawnattr_t attr;
-  posix_spawnattr_init(&attr);
-  // Its own group (a time-out or an interrupt kills all of it), with no
-  // signal blocked and the interrupt signals at their default action
-  // whatever this process does with them.
-  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
-  posix_spawnattr_setpgroup(&attr, 0);
-  sigset_t none, defaults;
-  sigemptyset(&none);
-  sigemptyset(&defaults);
-  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE}) sigaddset(&defaults, sig);
-  posix_spawnattr_setsigmask(&attr, &none);
-  posix_spawnattr_setsigdefault(&attr, &defaults);
-  std::vector<char*> args;
-  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-  args.push_back(nullptr);
-  pid_t pid;
+  pid_t pid = -1;
   auto t0 = std::chrono::steady_clock::now();
-  int rc;
-  {
-    std::lock_guard<std::mutex> g(g_children_lock);
-    rc = g_interrupted ? EINTR : posix_spawn(&pid, exe.c_str(), &fa, &attr, args.data(), environ);
-    if (rc == 0) g_children.insert(pid);
-  }
+  const int rc = spawnInOwnGroup(exe.string(), argv, fa, pid);
   posix_spawn_file_actions_destroy(&fa);
-  posix_spawnattr_destroy(&attr);
   if (rc == EINTR) {
     r.error = exe.string() + ": not started: xval is being interrupted";
     return r;
@@ -284,29 +293,10 @@ CapturedResult runCaptured(const std::vector<std::string>& argv, double timeout_
   posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
   posix_spawn_file_actions_adddup2(&fa, out_fd, 1);  // dup2 clears close-on-exec on 1 and 2
   posix_spawn_file_actions_adddup2(&fa, err_fd, 2);
-  posix_spawnattr_t attr;
-  posix_spawnattr_init(&attr);
-  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
-  posix_spawnattr_setpgroup(&attr, 0);
-  sigset_t none, defaults;
-  sigemptyset(&none);
-  sigemptyset(&defaults);
-  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE}) sigaddset(&defaults, sig);
-  posix_spawnattr_setsigmask(&attr, &none);
-  posix_spawnattr_setsigdefault(&attr, &defaults);
-  std::vector<char*> args;
-  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-  args.push_back(nullptr);
   pid_t pid = -1;
-  int rc;
   const auto t0 = std::chrono::steady_clock::now();
-  {
-    std::lock_guard<std::mutex> g(g_children_lock);
-    rc = g_interrupted ? EINTR : posix_spawn(&pid, exe.c_str(), &fa, &attr, args.data(), environ);
-    if (rc == 0) g_children.insert(pid);
-  }
+  const int rc = spawnInOwnGroup(exe, argv, fa, pid);
   posix_spawn_file_actions_destroy(&fa);
-  posix_spawnattr_destroy(&attr);
   if (rc != 0) {
     r.error = exe + ": " + (rc == EINTR ? std::string("not started: xval is being interrupted") : std::strerror(rc));
     close(out_fd);
