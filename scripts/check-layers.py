@@ -25,6 +25,7 @@ LAYERS = [
     ["shading/model"],             # the lighting models' parameter structs
     ["scene"],                     # Scene (data), its limits, the JSON reader
     ["image"],                     # images, their I/O, compare and metrics
+    ["oiio_module"],               # OpenImageIO in a module of its own (image/other_formats.h opens it)
     ["camera"],                    # projection; triangle-edge distances
     ["texture"],                   # textures, filters, mip chains
     ["geometry"],                  # meshes, shapes, model files

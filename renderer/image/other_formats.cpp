@@ -7,7 +7,7 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "oiio_module/oiio_module_api.h"
+#include "image/oiio_module_api.h"
 
 namespace xval {
 

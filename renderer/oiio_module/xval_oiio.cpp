@@ -10,7 +10,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "oiio_module/oiio_module_api.h"
+#include "image/oiio_module_api.h"
 
 namespace xval {
 namespace {
